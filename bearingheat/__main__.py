@@ -1,0 +1,5 @@
+import sys
+
+from bearingheat.cli import main
+
+sys.exit(main())

@@ -1,0 +1,234 @@
+"""The unit boundary: pint Quantities in, catalogue-unit magnitudes out.
+
+Kernels work in catalogue units (mm, N, 1/min, mm²/s, °C, N·mm, W). Public
+functions call :func:`magnitude` once per argument and :func:`quantity` once
+per result. The registry is looked up at call time with
+``pint.get_application_registry()`` and is never modified, so a caller who
+sets their own application registry gets Quantities of that registry back.
+
+Shaft speed is revolutions per time: 50 Hz is 3000 1/min, 1 rpm is 1 1/min,
+and an angular speed in rad/s is divided by 2π (see :func:`speed_rpm`).
+"""
+from __future__ import annotations
+
+import math
+import re
+from typing import Any
+
+import numpy as np
+import pandas as pd
+import pint
+
+__all__ = [
+    "ureg",
+    "UnitError",
+    "magnitude",
+    "quantity",
+    "speed_rpm",
+    "parse_unit",
+    "normalise_unit_text",
+]
+
+TWO_PI = 2.0 * math.pi
+
+
+class UnitError(ValueError):
+    """A value has no unit, or a unit of the wrong dimension."""
+
+
+def ureg() -> pint.UnitRegistry:
+    """The application registry, looked up at call time (never cached)."""
+    return pint.get_application_registry()
+
+
+# Spellings found in engineers' sheets that pint does not read, or reads as
+# something else ('U' is the unified atomic mass unit to pint).
+_UNIT_ALIASES = {
+    "u/min": "1/min",
+    "1/min": "1/min",
+    "min^-1": "1/min",
+    "min-1": "1/min",
+    "min⁻¹": "1/min",
+    "rev/min": "rpm",
+    "r/min": "rpm",
+    "mm²/s": "mm^2/s",
+    "mm2/s": "mm^2/s",
+    "°c": "degC",
+    "c": "degC",
+    "deg c": "degC",
+    "nmm": "N*mm",
+    "n.mm": "N*mm",
+    "n·mm": "N*mm",
+    "nm": "N*m",
+    "n·m": "N*m",
+    "-": "dimensionless",
+    "": "dimensionless",
+    "1": "dimensionless",
+}
+
+
+def normalise_unit_text(text: str) -> str:
+    """Map the unit spellings of engineers' sheets onto pint syntax.
+
+    >>> normalise_unit_text(' U/min ')
+    '1/min'
+    >>> normalise_unit_text('kN')
+    'kN'
+    """
+    cleaned = str(text).strip()
+    alias = _UNIT_ALIASES.get(cleaned.lower())
+    if alias is not None:
+        return alias
+    return cleaned.replace("·", "*").replace("²", "^2").replace("³", "^3").replace("°C", "degC")
+
+
+def parse_unit(text: str, *, name: str = "value") -> pint.Unit:
+    """Parse a unit string as typed in a header or a units row.
+
+    Raises :class:`UnitError` naming the column when pint cannot read it.
+    """
+    spelled = normalise_unit_text(text)
+    try:
+        return ureg().parse_units(spelled)
+    except (pint.errors.UndefinedUnitError, pint.errors.DefinitionSyntaxError, AttributeError,
+            TypeError, ValueError, AssertionError) as exc:
+        raise UnitError(f"{name}: unknown unit {text!r}") from exc
+
+
+def _is_pint_series(value: Any) -> bool:
+    return isinstance(value, pd.Series) and str(value.dtype).startswith("pint[")
+
+
+def _as_quantity(value: Any, name: str, expected: str):
+    """Return (Quantity, index) for a Quantity or a pint-pandas Series."""
+    if _is_pint_series(value):
+        return value.pint.quantity, value.index
+    if isinstance(value, pint.Quantity):
+        return value, None
+    kind = type(value).__name__
+    raise UnitError(
+        f"{name}: expected a pint Quantity in {expected} (for example 2.5 * ureg('{expected}')); "
+        f"got a plain {kind} {_short(value)}"
+    )
+
+
+def _short(value: Any) -> str:
+    text = repr(value)
+    return text if len(text) <= 40 else text[:37] + "..."
+
+
+def _restore_index(mag: Any, index):
+    if index is None:
+        return mag
+    return pd.Series(np.asarray(mag, dtype=float), index=index)
+
+
+def magnitude(value: Any, unit: str, name: str):
+    """Convert a Quantity to ``unit`` and return its magnitude.
+
+    ``value`` is a pint Quantity (scalar or ndarray) or a pint-pandas Series;
+    a pint-pandas Series comes back as a float Series with its index.
+
+    >>> u = ureg()
+    >>> magnitude(2.5 * u.kN, "N", "Fr")
+    2500.0
+    >>> magnitude(2 * u.kg, "N", "Fr")
+    Traceback (most recent call last):
+    ...
+    bearingheat.units.UnitError: Fr: 2 kilogram is a mass, not a force; for kilogram-force write 2 kgf
+    """
+    if unit == "1/min":
+        return speed_rpm(value, name)
+    q, index = _as_quantity(value, name, unit)
+    target = ureg().parse_units(unit)
+    try:
+        converted = q.to(target)
+    except pint.errors.DimensionalityError as exc:
+        if q.dimensionality == ureg().kg.dimensionality and target.dimensionality == ureg().N.dimensionality:
+            raise UnitError(
+                f"{name}: {q.magnitude:g} {q.units} is a mass, not a force; "
+                f"for kilogram-force write {q.magnitude:g} kgf"
+            ) from exc
+        raise UnitError(
+            f"{name}: {_short(q)} cannot be converted to {unit} "
+            f"(dimension {q.dimensionality}, expected {target.dimensionality})"
+        ) from exc
+    return _restore_index(_plain(converted.magnitude), index)
+
+
+def _plain(mag: Any):
+    if isinstance(mag, np.ndarray):
+        return mag.astype(float) if mag.ndim else float(mag)
+    return float(mag)
+
+
+def speed_rpm(value: Any, name: str = "n"):
+    """Shaft speed in revolutions per minute.
+
+    Revolutions per time convert directly (50 Hz = 3000 1/min, rpm = 1/min);
+    an angular speed (rad/s, deg/s) is divided by 2π per revolution.
+
+    >>> u = ureg()
+    >>> speed_rpm(50 * u.Hz)
+    3000.0
+    >>> round(speed_rpm(100 * u('rad/s')), 6)
+    954.929659
+    >>> speed_rpm(3000 * u.rpm)
+    3000.0
+    """
+    q, index = _as_quantity(value, name, "1/min")
+    root = q.to_root_units()
+    dims = dict(root._units)
+    radians = dims.pop("radian", 0)
+    if dims != {"second": -1} or radians not in (0, 1):
+        raise UnitError(
+            f"{name}: {_short(q)} is not a shaft speed; expected revolutions per time "
+            "(1/min, rpm, Hz) or an angular speed (rad/s)"
+        )
+    per_second = np.asarray(root.magnitude, dtype=float)
+    if radians == 1:
+        per_second = per_second / TWO_PI  # rad/s -> rev/s
+    rpm = per_second * 60.0
+    return _restore_index(_plain(rpm), index)
+
+
+def quantity(mag: Any, unit: str):
+    """Wrap a kernel result in a Quantity of the application registry.
+
+    A Series result becomes a pint-pandas Series when pint-pandas is
+    installed, otherwise it stays a float Series and the unit is put in its
+    ``attrs['unit']``.
+    """
+    u = ureg()
+    if isinstance(mag, pd.Series):
+        try:
+            import pint_pandas  # noqa: F401  (registers the pint[...] dtype)
+        except ImportError:
+            out = mag.astype(float)
+            out.attrs["unit"] = unit
+            return out
+        return mag.astype(f"pint[{unit}]")
+    if unit == "degC":
+        return u.Quantity(mag, u.degC)
+    return u.Quantity(mag, unit)
+
+
+def parse_quantity(text: str, *, name: str = "value"):
+    """Parse a command-line value with its unit, e.g. ``'2mm'``, ``'2.6kg*m^2'``, ``'3000rpm'``.
+
+    >>> parse_quantity('2.6kg*m^2', name='--I').to('kg*m^2').magnitude
+    2.6
+    >>> parse_quantity('12', name='--dw')
+    Traceback (most recent call last):
+    ...
+    bearingheat.units.UnitError: --dw: '12' has no unit; write it with one, e.g. 12mm
+    """
+    raw = str(text).strip()
+    match = re.match(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*)$", raw)
+    if not match:
+        raise UnitError(f"{name}: {text!r} is not a number with a unit")
+    number, unit_text = match.groups()
+    if not unit_text:
+        raise UnitError(f"{name}: {text!r} has no unit; write it with one, e.g. {number}mm")
+    unit = parse_unit(unit_text, name=name)
+    return ureg().Quantity(float(number), unit)
