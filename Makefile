@@ -14,7 +14,8 @@ $(STAMP): pyproject.toml
 	touch $(STAMP)
 
 demo: $(STAMP)
-	$(PY) -m bearingheat.demo
+	mkdir -p out
+	$(BH) calc examples/gearbox_shaft.csv -o out/gearbox_shaft_results.csv
 
 test: $(STAMP)
 	$(PY) -m pytest -q

@@ -20,6 +20,7 @@ __all__ = ["main", "COMMANDS", "UsageError"]
 # name -> module implementing it
 COMMANDS: dict[str, str] = {
     "calc": "bearingheat.cli.calc",
+    "contact": "bearingheat.cli.contact",
 }
 
 

@@ -1,0 +1,122 @@
+"""``bearingheat calc``: friction torque and power loss of every support in a table."""
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from bearingheat.cli import UsageError
+
+HELP = "friction torque, power loss (and thermal speeds) of supports in a CSV or Excel table"
+
+DESCRIPTION = """\
+Compute the catalogue friction model (seed 002) for one support per row.
+
+Input columns, headed 'name [unit]' (any pint unit of the right dimension):
+  id, designation            label and designation (6205-2Z, NU206-E, 30205-A ...)
+  type, series               optional explicit table row instead of a designation
+  d [mm], D [mm], B [mm]     bore, outside diameter, width (B for needle f0 formulas)
+  C0 [N]                     static load rating (f1 formulas in P0/C0 or Fa/C0)
+  Y, e, X0, Y0               catalogue factors (tapered: Y; spherical: e; P0: X0, Y0)
+  alpha [deg]                working contact angle (angular contact ball bearings)
+  arrangement                single (default) or paired
+  f0, f1, f2                 coefficient overrides (f2: axially loaded NJ/NUP/SL)
+  lubrication                grease | oil_mist | oil_bath | circulating_oil
+  n [1/min]                  shaft speed (rpm, Hz = rev/s, rad/s is divided by 2 pi)
+  Fr [N], Fa [N]             radial and axial load (blank = 0)
+  nu [mm^2/s]                operating viscosity (base oil viscosity for grease)
+
+Output: the input columns, then f0, f1, P0 [N], P1 [N], M0 [N*mm], M1 [N*mm],
+M2 [N*mm], MR [N*mm], NR [W], status (ok|warning|error) and message.
+Rows with M2 also get Fa/A and nu*n*dM [mm^3/(s*min)] to read f2 off the chart.
+
+Exit codes: 0 all rows ok or warning; 1 some row has an error; 2 unusable
+input (file missing, required column missing, unit of the wrong dimension).
+"""
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("input", metavar="INPUT", help="CSV (.csv) or Excel workbook (.xlsx) of supports")
+    parser.add_argument("-o", "--output", metavar="OUTPUT",
+                        help="where to write the results (.csv or .xlsx); without it a table is printed")
+    parser.add_argument("--f2-chart", metavar="CSV",
+                        help="digitised f2 chart (docs/friction.md gives the format)")
+    parser.add_argument("--effects", metavar="SUMMARY_JSON",
+                        help="apply an effect fitted by 'bearingheat diagnose' (its summary.json)")
+    parser.add_argument("--sheet", metavar="NAME", help="input sheet of an Excel workbook")
+    parser.add_argument("--in-place", action="store_true",
+                        help="Excel: write the results sheet into the input workbook (atomic)")
+    parser.add_argument("--formulas", action="store_true",
+                        help="Excel: write live formulas for M0, M1, M2, MR and NR")
+    parser.add_argument("-q", "--quiet", action="store_true", help="print nothing")
+
+
+def _read_csv(path: Path):
+    import pandas as pd
+
+    try:
+        return pd.read_csv(path, skipinitialspace=True)
+    except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError) as exc:
+        raise UsageError(f"{path}: not a readable CSV ({exc})") from exc
+
+
+def _load_effects(path: str | None):
+    if path is None:
+        return None
+    from bearingheat.diagnose import FittedEffect
+
+    try:
+        return FittedEffect.from_summary(path)
+    except (OSError, ValueError, KeyError) as exc:
+        raise UsageError(f"--effects {path}: {exc}") from exc
+
+
+def run(args: argparse.Namespace) -> int:
+    from bearingheat.f2chart import F2ChartError
+    from bearingheat.frame import InputError, calc
+
+    source = Path(args.input)
+    if not source.is_file():
+        raise UsageError(f"{source}: no such file")
+    if source.suffix.lower() in (".xlsx", ".xlsm"):
+        from bearingheat.excel import run_calc_workbook
+
+        return run_calc_workbook(args)
+    if args.in_place or args.formulas or args.sheet:
+        raise UsageError("--in-place, --formulas and --sheet apply to Excel workbooks only")
+    table = _read_csv(source)
+    try:
+        result = calc(table, f2_chart=args.f2_chart, effects=_load_effects(args.effects))
+    except (InputError, F2ChartError) as exc:
+        raise UsageError(str(exc)) from exc
+    if args.output:
+        target = Path(args.output)
+        if target.suffix.lower() in (".xlsx", ".xlsm"):
+            from bearingheat.excel import write_results_workbook
+
+            write_results_workbook(result, target)
+        else:
+            result.to_csv(target, index=False)
+    if not args.quiet:
+        print_summary(result, args.output)
+    return 1 if (result["status"] == "error").any() else 0
+
+
+def print_summary(result, output: str | None, stream=None) -> None:
+    """A readable table of the main results, then one line per warning or error."""
+    stream = stream or sys.stdout
+    label = "id" if "id" in result.columns else ("designation" if "designation" in result.columns else None)
+    shown = [c for c in (label, "designation" if label == "id" else None) if c]
+    shown += [c for c in result.columns if c.split(" [")[0] in ("f0", "f1", "P1", "M0", "M1", "M2", "MR", "NR",
+                                                              "n_thr", "n_per", "T_op")]
+    shown.append("status")
+    table = result[shown]
+    stream.write(table.to_string(index=False, na_rep="-", float_format=lambda x: f"{x:.4g}") + "\n")
+    for _, row in result.iterrows():
+        if row["status"] != "ok":
+            who = row[label] if label else ""
+            stream.write(f"{row['status']}: {who}: {row['message']}\n")
+    counts = result["status"].value_counts()
+    summary = ", ".join(f"{counts.get(s, 0)} {s}" for s in ("ok", "warning", "error"))
+    where = f"; results written to {output}" if output else ""
+    stream.write(f"{len(result)} supports: {summary}{where}\n")

@@ -1,0 +1,225 @@
+"""``bearingheat contact``: contact angle, stiffness C* and minimum axial load of a ball bearing (seed 001)."""
+from __future__ import annotations
+
+HELP = "contact angle from clearance, working angle under Fa, stiffness C*, minimum axial load (seed 001)"
+
+DESCRIPTION = """\
+Contact of a ball bearing after seed 001 (Zaitsev, Voronkin): the initial contact
+angle alpha0 (given, or from the mean radial clearance), the stiffness
+characteristic C*, the working contact angle alpha under the axial load Fa, the
+dimensionless axial displacement xi_a, and the minimum axial load Fa_min against
+gyroscopic sliding of the balls at the speed n.
+
+One bearing from arguments (every length, angle, force and speed with its unit):
+
+  bearingheat contact --z 7 --dw 2mm --dm 8.7355mm --ri 1.05mm --ro 1.16mm \\
+      --alpha0 12deg --Fa 2kgf --n 3000rpm
+
+  --z        number of balls (plain number)
+  --dw       ball diameter                 --dm  pitch diameter (ball centres)
+  --ri, --ro groove radius of the inner / outer ring
+  --alpha0   initial contact angle (deg, rad) or --clearance, mean radial clearance
+  --Fa       axial load (N, kN, kgf); default 0 N, which gives alpha = alpha0
+  --n        inner-ring speed (1/min, rpm, Hz, rad/s); needed for Fa_min
+
+Several bearings from a CSV file (--csv FILE), one bearing a row. Header cells are
+'name [unit]' with any unit of the right dimension; unknown columns are ignored:
+
+  z, Dw [mm], dm_pitch [mm], ri [mm], ro [mm], alpha0 [deg] or clearance [mm],
+  optional Fa [N], n [1/min] and designation (a text label).
+
+Output: 'key: value' lines (one bearing) or CSV (--csv); --json prints one JSON
+object (one bearing) or a list of objects (--csv). Keys: alpha0 [deg], Fa [N],
+alpha [deg], xi_a, delta_a [mm], C_star [N], sum_rho_i [1/mm], sum_rho_o [1/mm],
+cos_tau_i, cos_tau_o, 2K/(mu*pi)_i, 2K/(mu*pi)_o, and with n: n [1/min], Fa_min [N]
+(at alpha0, the seed's rule) and Fa_min at alpha [N] (at the working angle).
+A warning goes to stderr when a given Fa is below Fa_min.
+
+Exit codes: 0 ok (warnings included), 1 some CSV rows in error (reported in the
+'error' column / key and on stderr), 2 unusable input (bad argument, impossible
+geometry of the one bearing, missing file or column).
+"""
+
+# option -> (keyword of ball_bearing_contact, CSV column, kind)
+_FIELDS = {
+    "z": ("z", "z", "count"),
+    "dw": ("d_w", "Dw", "length"),
+    "dm": ("d_m", "dm_pitch", "length"),
+    "ri": ("r_i", "ri", "length"),
+    "ro": ("r_o", "ro", "length"),
+    "alpha0": ("alpha0", "alpha0", "angle"),
+    "clearance": ("clearance", "clearance", "length"),
+    "Fa": ("Fa", "Fa", "force"),
+    "n": ("n", "n", "speed"),
+}
+_REQUIRED = ("z", "dw", "dm", "ri", "ro")
+_CHECK_UNIT = {"length": "mm", "angle": "deg", "force": "N", "speed": "1/min"}
+
+
+def add_arguments(parser) -> None:
+    for option, (_, _, kind) in _FIELDS.items():
+        example = {"count": "7", "length": "2mm", "angle": "12deg", "force": "2kgf", "speed": "3000rpm"}[kind]
+        parser.add_argument(f"--{option}", metavar=example.upper() if kind == "count" else "VALUE",
+                            help=f"{kind}, e.g. {example}")
+    parser.add_argument("--csv", metavar="FILE", help="CSV file with one bearing a row (see above)")
+    parser.add_argument("--json", action="store_true", help="print JSON instead of text")
+
+
+def run(args) -> int:
+    import json
+    import sys
+
+    from bearingheat.cli import UsageError
+
+    if args.csv is not None:
+        given = [f"--{option}" for option in _FIELDS if getattr(args, option) is not None]
+        if given:
+            raise UsageError(f"--csv takes the bearings from the file; drop {', '.join(given)}")
+        return _run_csv(args.csv, args.json)
+
+    missing = [f"--{option}" for option in _REQUIRED if getattr(args, option) is None]
+    if missing:
+        raise UsageError(f"missing {', '.join(missing)} (or give --csv FILE)")
+    if (args.alpha0 is None) == (args.clearance is None):
+        raise UsageError("give exactly one of --alpha0 (e.g. 12deg) or --clearance (e.g. 0.01mm)")
+    try:
+        inputs = {_FIELDS[o][0]: _parse_argument(o, getattr(args, o)) for o in _FIELDS if getattr(args, o) is not None}
+        record, warning = _evaluate(inputs)
+    except ValueError as exc:  # UnitError and ContactInputError are ValueErrors
+        raise UsageError(str(exc)) from exc
+    if warning:
+        print(f"bearingheat contact: warning: {warning}", file=sys.stderr)
+        record["warning"] = warning
+    if args.json:
+        print(json.dumps(record, ensure_ascii=False))
+    else:
+        for key, value in record.items():
+            print(f"{key}: {value:.6g}" if isinstance(value, float) else f"{key}: {value}")
+    return 0
+
+
+def _parse_argument(option: str, text: str):
+    from bearingheat.units import UnitError, parse_quantity
+
+    kind = _FIELDS[option][2]
+    if kind == "count":
+        try:
+            return float(text)
+        except ValueError:
+            raise UnitError(f"--{option}: {text!r} is not a number") from None
+    return parse_quantity(text, name=f"--{option}")
+
+
+def _evaluate(inputs: dict) -> tuple[dict, str | None]:
+    """Run ball_bearing_contact; return the output record and a warning (or None)."""
+    from bearingheat.contact import ball_bearing_contact
+
+    result = ball_bearing_contact(**inputs)
+    record = result.to_dict()
+    warning = None
+    if inputs.get("Fa") is not None and result.Fa_min is not None:
+        fa, fa_min = record["Fa [N]"], record["Fa_min [N]"]
+        if fa < fa_min:
+            warning = (f"Fa = {fa:.4g} N is below the minimum axial load Fa_min = {fa_min:.4g} N "
+                       f"at n = {record['n [1/min]']:.6g} 1/min (gyroscopic sliding of the balls, seed 001)")
+    return record, warning
+
+
+def _split_header(cell: str) -> tuple[str, str | None]:
+    import re
+
+    match = re.match(r"^\s*(.*?)\s*\[(.*)\]\s*$", cell)
+    if match:
+        return match.group(1), match.group(2).strip()
+    return cell.strip(), None
+
+
+def _run_csv(path: str, as_json: bool) -> int:
+    import csv
+    import json
+    import sys
+    from pathlib import Path
+
+    from bearingheat.cli import UsageError
+    from bearingheat.units import UnitError, magnitude, parse_unit, ureg
+
+    file = Path(path)
+    if not file.is_file():
+        raise UsageError(f"no such file: {path}")
+    with file.open(newline="", encoding="utf-8-sig") as handle:
+        rows = list(csv.reader(handle))
+    if not rows:
+        raise UsageError(f"{path}: the file is empty")
+    header = [_split_header(cell) for cell in rows[0]]
+    by_column = {name: option for option, (_, name, _) in _FIELDS.items()}
+    columns = {}  # option -> (position, unit)
+    label_position = None
+    for position, (name, unit_text) in enumerate(header):
+        if name == "designation":
+            label_position = position
+            continue
+        option = by_column.get(name)
+        if option is None:
+            continue
+        kind = _FIELDS[option][2]
+        if kind == "count":
+            columns[option] = (position, None)
+            continue
+        if unit_text is None:
+            raise UsageError(f"{path}: column {name!r} has no unit; write it as '{name} [{_CHECK_UNIT[kind]}]'")
+        try:
+            unit = parse_unit(unit_text, name=f"column {name!r}")
+            magnitude(ureg().Quantity(1.0, unit), _CHECK_UNIT[kind], f"column {name!r}")
+        except UnitError as exc:
+            raise UsageError(f"{path}: {exc}") from exc
+        columns[option] = (position, unit)
+    missing = [_FIELDS[o][1] for o in _REQUIRED if o not in columns]
+    if "alpha0" not in columns and "clearance" not in columns:
+        missing.append("alpha0 [deg] or clearance [mm]")
+    if missing:
+        raise UsageError(f"{path}: missing column(s) {', '.join(missing)}")
+
+    records, failures = [], 0
+    for number, cells in enumerate(rows[1:], start=1):
+        if not any(cell.strip() for cell in cells):
+            continue
+        record = {"row": number}
+        if label_position is not None and label_position < len(cells):
+            record["designation"] = cells[label_position].strip()
+        try:
+            inputs = {}
+            for option, (position, unit) in columns.items():
+                text = cells[position].strip() if position < len(cells) else ""
+                column = _FIELDS[option][1]
+                if not text:
+                    if option in _REQUIRED:
+                        raise ValueError(f"{column} is empty")
+                    continue
+                try:
+                    value = float(text)
+                except ValueError:
+                    raise ValueError(f"{column}: {text!r} is not a number") from None
+                inputs[_FIELDS[option][0]] = value if unit is None else ureg().Quantity(value, unit)
+            result, warning = _evaluate(inputs)
+            record.update(result)
+            if warning:
+                record["warning"] = warning
+                print(f"bearingheat contact: warning: row {number}: {warning}", file=sys.stderr)
+        except ValueError as exc:
+            failures += 1
+            record["error"] = str(exc)
+            print(f"bearingheat contact: error: row {number}: {exc}", file=sys.stderr)
+        records.append(record)
+
+    if as_json:
+        print(json.dumps(records, ensure_ascii=False))
+    else:
+        keys = []
+        for record in records:
+            keys.extend(k for k in record if k not in keys and k not in ("warning", "error"))
+        keys += ["warning", "error"]
+        writer = csv.DictWriter(sys.stdout, fieldnames=keys, lineterminator="\n")
+        writer.writeheader()
+        for record in records:
+            writer.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v) for k, v in record.items()})
+    return 1 if failures else 0
