@@ -141,7 +141,7 @@ def rolling_bearing_M0_seed002(n, nu, dM, f0):
     temperature, dM [mm] mean diameter (d + D)/2, f0 [1].
 
     >>> round(float(rolling_bearing_M0_seed002(3000.0, 20.0, 50.0, 2.0)), 3)
-    38.981
+    38.315
     >>> round(float(rolling_bearing_M0_seed002(50.0, 20.0, 50.0, 2.0)), 3)
     4.0
     """

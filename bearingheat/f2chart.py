@@ -51,12 +51,9 @@ class F2ChartError(ValueError):
 class _Curve:
     label: str
     Fa_over_A: float
+    x_range: tuple[float, float]
     log_x: np.ndarray
     log_f2: np.ndarray
-
-    @property
-    def x_range(self) -> tuple[float, float]:
-        return float(np.exp(self.log_x[0])), float(np.exp(self.log_x[-1]))
 
 
 class F2Chart:
@@ -76,7 +73,7 @@ class F2Chart:
                 raise F2ChartError(f"{where}: Fa_over_A, nu_n_dM and f2 must all be > 0")
             if np.any(np.diff(xs) <= 0):
                 raise F2ChartError(f"{where}: nu_n_dM must increase strictly from point to point")
-            curves.append(_Curve(label, float(Fa_over_A), np.log(xs), np.log(f2s)))
+            curves.append(_Curve(label, float(Fa_over_A), (float(xs[0]), float(xs[-1])), np.log(xs), np.log(f2s)))
         if not curves:
             raise F2ChartError(f"{name}: no curves")
         curves.sort(key=lambda c: c.Fa_over_A)

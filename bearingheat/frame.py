@@ -45,7 +45,8 @@ import pandas as pd
 import pint
 
 from bearingheat.f2chart import F2Chart
-from bearingheat.model import INPUT_UNITS, M2_REPORT_UNITS, RESULT_UNITS, Labels, compute_supports
+from bearingheat.model import (INPUT_UNITS, M2_REPORT_UNITS, PLAIN_REPORT_UNITS, PLAIN_TYPES, RESULT_UNITS, Labels,
+                               compute_supports)
 from bearingheat.units import UnitError, parse_unit, speed_rpm, ureg
 
 __all__ = ["InputError", "calc", "parse_header", "EXTENSIONS", "input_units", "output_header"]
@@ -58,10 +59,12 @@ class InputError(ValueError):
 #: modules that add inputs and result columns to calc; each defines INPUT_UNITS, OUTPUT_UNITS,
 #: prepare(frame) -> (frame, problems) and extend(frame, results) -> (columns, problems),
 #: where problems are (row position, 'error' | 'warning', message).
-EXTENSIONS: list[str] = []
+EXTENSIONS: list[str] = [
+    "bearingheat.contact_calc",
+]
 
 _HEADER = re.compile(r"^\s*(?P<name>[^\[\]]+?)\s*(?:\[\s*(?P<unit>[^\]]*?)\s*\])?\s*$")
-_OUTPUT_NAMES = {"Fa_over_A": "Fa/A", "nu_n_dM": "nu*n*dM"}
+_OUTPUT_NAMES = {"Fa_over_A": "Fa/A", "nu_n_dM": "nu*n*dM", "p_plain": "p", "V_plain": "V"}
 
 
 def _extensions():
@@ -121,7 +124,11 @@ def _convert_column(values: pd.Series, header: str, unit_text: str | None, targe
     try:
         unit = parse_unit(unit_text, name=header)
         if target == "1/min":
-            return numeric * speed_rpm(ureg().Quantity(1.0, unit), header)
+            try:
+                return numeric * speed_rpm(ureg().Quantity(1.0, unit), header)
+            except UnitError as exc:
+                raise UnitError(f"{unit_text} is not a shaft speed; expected revolutions per time "
+                                "(1/min, rpm, Hz) or an angular speed (rad/s)") from exc
         q = ureg().Quantity(numeric, unit)
         return np.asarray(_to(q, target, header), dtype=float)
     except UnitError as exc:
@@ -185,11 +192,17 @@ def _unit_factor(unit_text: str, target: str, header: str) -> float:
         return math.nan
 
 
-def _require(frame: pd.DataFrame, original: pd.DataFrame) -> None:
+def _require(frame: pd.DataFrame) -> None:
     have = set(frame.columns)
+    types = frame["type"] if "type" in have else pd.Series([None] * len(frame), index=frame.index)
+    rolling = ~types.fillna("").astype(str).str.lower().isin(PLAIN_TYPES)
+    if "n" not in have:
+        raise InputError("missing column: 'n [1/min]' (any n unit of the right dimension)")
+    if not rolling.any():
+        return
     if "designation" not in have and not {"type", "series"} <= have:
         raise InputError("missing column: 'designation' (or 'type' and 'series')")
-    for name in ("D", "n", "nu"):
+    for name in ("D", "nu"):
         if name not in have:
             unit = INPUT_UNITS[name]
             raise InputError(f"missing column: '{name} [{unit}]' (any {name} unit of the right dimension)")
@@ -223,7 +236,7 @@ def calc(table: pd.DataFrame, *, f2_chart: F2Chart | str | None = None, units: d
     for ext in _extensions():
         frame, problems = ext.prepare(frame)
         extra_problems.extend(problems)
-    _require(frame, table)
+    _require(frame)
     results = compute_supports(frame.reset_index(drop=True), f2_chart=f2_chart, labels=converted.labels)
     results.index = table.index
     _merge_row_messages(results, converted.row_errors, "error")
@@ -261,7 +274,7 @@ def _assemble(table: pd.DataFrame, results: pd.DataFrame, extension_columns) -> 
     out = table.copy()
     for name, unit in RESULT_UNITS.items():
         out[output_header(name, unit)] = results[name].to_numpy()
-    for name, unit in M2_REPORT_UNITS.items():
+    for name, unit in {**M2_REPORT_UNITS, **PLAIN_REPORT_UNITS}.items():
         if name in results.columns:
             out[output_header(name, unit)] = results[name].to_numpy()
     failed = (results["status"] == "error").to_numpy()

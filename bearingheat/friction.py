@@ -196,7 +196,7 @@ def _tapered_paired(Fr, Fa, Y, e):
 def _spherical(Fr, Fa, Y, e):
     Fr = np.asarray(Fr, dtype=float)
     Fa = np.asarray(Fa, dtype=float)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         high_axial = (Fr <= 0.0) | (Fa > e * Fr)
         axial_form = 1.6 * Fa / e
         radial_form = Fr * (1.0 + 0.6 * np.power(np.where(Fr > 0.0, Fa / (e * Fr), 0.0), 3))

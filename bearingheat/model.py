@@ -40,7 +40,10 @@ INPUT_UNITS = {
     "Y": "1", "e": "1", "X0": "1", "Y0": "1", "alpha": "deg",
     "arrangement": "", "f0": "1", "f1": "1", "f2": "1",
     "lubrication": "", "n": "1/min", "Fr": "N", "Fa": "N", "nu": "mm^2/s",
+    "f_plain": "1",
 }
+#: support types that are not rolling bearings -> how their rows are computed
+PLAIN_TYPES = ("plain_bushing",)
 #: result column -> unit
 RESULT_UNITS = {
     "f0": "1", "f1": "1", "P0": "N", "P1": "N",
@@ -48,6 +51,8 @@ RESULT_UNITS = {
 }
 #: extra result columns written when a row carries M2
 M2_REPORT_UNITS = {"Fa_over_A": "1", "nu_n_dM": "mm^3/(s*min)"}
+#: extra result columns written when a row is a plain bushing (seed 004)
+PLAIN_REPORT_UNITS = {"p_plain": "N/mm^2", "V_plain": "m/s"}
 
 _F1_BASIS_CODE = {"constant": 0, "P0/C0": 1, "Fa/C0": 2}
 
@@ -143,36 +148,49 @@ def _text(frame: pd.DataFrame, name: str) -> list:
             else str(v).strip() for v in frame[name]]
 
 
-def check_and_evaluate(a: dict[str, np.ndarray], labels: Labels, f2_chart: F2Chart | None = None):
+def _at(value, i):
+    """Element i of a per-row array, or the value itself when it is one constant for all rows."""
+    return value if np.ndim(value) == 0 else value[i]
+
+
+def check_and_evaluate(a: dict, labels: Labels, f2_chart: F2Chart | None = None):
     """Checks and kernels over arrays of one length (catalogue units).
 
-    ``a`` holds the inputs (d, D, B, C0, Y, e, X0, Y0, n, nu, Fr, Fa, f0,
-    f1, f2 as floats with NaN for 'not given') and the row constants of
-    :func:`bearing_constants` as arrays. Returns (results, problems).
+    ``a`` holds the inputs (d, D, B, C0, Y, e, X0, Y0, alpha, n, nu, Fr, Fa,
+    f0, f1, f2 as float arrays with NaN for 'not given') and the row
+    constants of :func:`bearing_constants`, either as per-row arrays (many
+    bearings) or as scalars (one bearing, many operating points).
+    Returns (results, problems); every result is an array of the rows' length.
     """
     n_rows = len(a["n"])
+    shape = (n_rows,)
     problems: list[Problem] = []
 
     def add(mask, level, message):
-        mask = np.asarray(mask, dtype=bool)
+        mask = np.broadcast_to(np.asarray(mask, dtype=bool), shape)
         if mask.any():
             problems.append(Problem(mask, level, message))
 
+    def value_of(col, i):
+        return labels.value(col, _at(a[col], i))
+
     def bad_value(col, condition_text, mask):
-        add(mask, "error", lambda i, c=col: f"{labels.name(c, i)}: {labels.value(c, a[c][i])} {condition_text}")
+        add(mask, "error", lambda i, c=col: f"{labels.name(c, i)}: {value_of(c, i)} {condition_text}")
 
     def missing(col, why, mask):
         add(mask, "error", lambda i, c=col: f"{labels.name(c, i)}: missing; {why(i)}")
 
+    def label(i):
+        return _at(a["label"], i)
+
     d, D, n, nu, Fr, Fa = a["d"], a["D"], a["n"], a["nu"], a["Fr"], a["Fa"]
-    label = a["label"]
     # --- geometry and operating point (seed 002, p. 64: units and ranges of the formulas)
     missing("d", lambda i: "the bore d gives dM = (d + D)/2", np.isnan(d))
     bad_value("d", "must be > 0", d <= 0)
     missing("D", lambda i: "the outside diameter D gives dM = (d + D)/2", np.isnan(D))
     add(~np.isnan(D) & ~np.isnan(d) & (D <= d) & (d > 0), "error",
-        lambda i: f"{labels.name('D', i)}: {labels.value('D', D[i])} must be larger than "
-                  f"{labels.name('d', i)} = {labels.value('d', d[i])}")
+        lambda i: f"{labels.name('D', i)}: {value_of('D', i)} must be larger than "
+                  f"{labels.name('d', i)} = {value_of('d', i)}")
     missing("n", lambda i: "the operating speed is needed", np.isnan(n))
     bad_value("n", "must be >= 0 (speed magnitude)", n < 0)
     missing("nu", lambda i: "the operating viscosity (base oil viscosity for grease) is needed", np.isnan(nu))
@@ -184,90 +202,94 @@ def check_and_evaluate(a: dict[str, np.ndarray], labels: Labels, f2_chart: F2Cha
 
     # --- f0: user value, or the table column of the lubrication (needle formulas need B)
     f0_given = ~np.isnan(a["f0"])
-    needle_formula = (a["f0_basis"] == "B/(33+d)") & ~f0_given
-    missing("B", lambda i: f"f0 of {label[i]} is value*B/(33+d) (seed 002, p. 66)", needle_formula & np.isnan(a["B"]))
+    needle_formula = np.equal(a["f0_basis"], "B/(33+d)") & ~f0_given
+    missing("B", lambda i: f"f0 of {label(i)} is value*B/(33+d) (seed 002, p. 66)", needle_formula & np.isnan(a["B"]))
     bad_value("B", "must be > 0", a["B"] <= 0)
     f0 = np.where(f0_given, a["f0"], a["f0_table"])
-    f0 = np.where(needle_formula, friction.f0_needle(a["f0_table"], a["B"], d), f0)
+    if np.any(needle_formula):
+        f0 = np.where(needle_formula, friction.f0_needle(a["f0_table"], a["B"], d), f0)
 
     # --- P0 (only where f1 depends on P0/C0 and there is axial load)
     f1_given = ~np.isnan(a["f1"])
-    needs_c0 = (a["f1_basis"] > 0) & ~f1_given
-    missing("C0", lambda i: f"f1 of {label[i]} depends on "
-                            f"{'P0/C0' if a['f1_basis'][i] == 1 else 'Fa/C0'} (seed 002, pp. 66-68)",
+    f1_basis = a["f1_basis"]
+    needs_c0 = (f1_basis > 0) & ~f1_given
+    missing("C0", lambda i: f"f1 of {label(i)} depends on "
+                            f"{'P0/C0' if _at(f1_basis, i) == 1 else 'Fa/C0'} (seed 002, pp. 66-68)",
             needs_c0 & np.isnan(a["C0"]))
     bad_value("C0", "must be > 0", a["C0"] <= 0)
-    X0 = np.where(np.isnan(a["X0"]), a["X0_table"], a["X0"])
-    Y0 = np.where(np.isnan(a["Y0"]), a["Y0_table"], a["Y0"])
-    Y0 = _angular_contact_y0(a, Y0, add, labels)
-    needs_p0 = (a["f1_basis"] == 1) & ~f1_given & (Fa > 0)
+    X0 = np.broadcast_to(np.where(np.isnan(a["X0"]), a["X0_table"], a["X0"]), shape)
+    Y0 = np.broadcast_to(np.where(np.isnan(a["Y0"]), a["Y0_table"], a["Y0"]), shape)
+    Y0, angle_reported = _angular_contact_y0(a, Y0, add, shape)
+    needs_p0 = (f1_basis == 1) & ~f1_given & (Fa > 0)
+    angular = np.equal(a["bearing_type"], "angular_contact_ball")
     for col, values in (("X0", X0), ("Y0", Y0)):
-        missing(col, lambda i, c=col: f"P0 of {label[i]} under axial load needs the catalogue value {c} "
-                                      "(seed 000, table 1 has none for this type)",
-                needs_p0 & np.isnan(values))
+        missing(col, lambda i, c=col: f"P0 of {label(i)} under axial load needs the catalogue value {c}"
+                                      + (" or the contact angle alpha (seed 000, table 1: 18 to 36 deg)"
+                                         if _at(angular, i) else " (seed 000, table 1 has none for this type)"),
+                needs_p0 & np.isnan(values) & ~angle_reported)
     P0 = friction.static_equivalent_load(Fr, Fa, X0, Y0)
 
     # --- P1 rules (seed 002, p. 68): tapered needs Y, spherical needs e
     rules = a["p1_rule"]
-    is_p1 = (a["m1_load"] == "P1") & (rules != "")
+    is_p1 = np.equal(a["m1_load"], "P1") & np.not_equal(rules, "")
     for col, rule_names in (("Y", ("tapered_single", "tapered_paired")), ("e", ("spherical",))):
-        wanted = np.isin(rules.astype(str), rule_names) & (Fa > 0)
-        missing(col, lambda i, c=col: f"P1 of {label[i]} under axial load needs the catalogue value {c} "
+        wanted = np.isin(np.asarray(rules, dtype=str), rule_names) & (Fa > 0)
+        missing(col, lambda i, c=col: f"P1 of {label(i)} under axial load needs the catalogue value {c} "
                                       "(seed 002, p. 68)", wanted & np.isnan(a[col]))
         bad_value(col, "must be > 0", a[col] <= 0)
-    P1 = _nan_array(n_rows)
-    if is_p1.any():
-        P1[is_p1] = friction.effective_load(rules[is_p1].astype(str), Fr[is_p1], Fa[is_p1],
-                                            a["Y"][is_p1], a["e"][is_p1])
-    load = np.where(a["m1_load"] == "Fa", Fa, np.where(is_p1, P1, Fr))
+    if np.ndim(rules) == 0:
+        P1 = (friction.effective_load(rules, Fr, Fa, a["Y"], a["e"]) if is_p1 else np.full(shape, np.nan))
+    else:
+        P1 = np.full(shape, np.nan)
+        if is_p1.any():
+            Y, e = (np.broadcast_to(a[c], shape) for c in ("Y", "e"))
+            P1[is_p1] = friction.effective_load(rules[is_p1].astype(str), Fr[is_p1], Fa[is_p1], Y[is_p1], e[is_p1])
+    load = np.where(np.equal(a["m1_load"], "Fa"), Fa, np.where(is_p1, P1, Fr))
 
     # --- f1
-    with np.errstate(divide="ignore", invalid="ignore"):
-        ratio = np.where(a["f1_basis"] == 1, P0 / a["C0"], np.where(a["f1_basis"] == 2, Fa / a["C0"], 1.0))
+    ratio = np.where(f1_basis == 1, P0 / a["C0"], np.where(f1_basis == 2, Fa / a["C0"], 1.0))
     f1 = np.where(f1_given, a["f1"], friction.f1_from_load_ratio(a["f1_a"], a["f1_x"], ratio))
 
     # --- axial load on cylindrical roller bearings (seed 002, p. 69)
     add(a["no_axial"] & (Fa > 0), "error",
-        lambda i: f"{labels.name('Fa', i)}: {labels.value('Fa', Fa[i])} on {a['prefix'][i]} {label[i]}: "
+        lambda i: f"{labels.name('Fa', i)}: {value_of('Fa', i)} on {_at(a['prefix'], i)} {label(i)}: "
                   "one ring has no ribs, the bearing takes no axial load")
-    m2_rows = a["m2"] & (Fa > 0)
+    m2_rows = np.broadcast_to(a["m2"] & (Fa > 0), shape)
     add(m2_rows & (Fr <= 0), "error",
-        lambda i: f"{labels.name('Fa', i)}: {labels.value('Fa', Fa[i])} without radial load on {label[i]}: "
+        lambda i: f"{labels.name('Fa', i)}: {value_of('Fa', i)} without radial load on {label(i)}: "
                   "axially loaded cylindrical roller bearings need Fr > 0 (seed 002, p. 69)")
-    with np.errstate(divide="ignore", invalid="ignore"):
-        fa_fr = Fa / Fr
+    fa_fr = Fa / Fr
     add(m2_rows & (Fr > 0) & (fa_fr > 0.4), "warning",
-        lambda i: f"Fa/Fr = {fa_fr[i]:.3g} > 0.4: above the axial load limit of cylindrical roller bearings")
+        lambda i: f"Fa/Fr = {_at(fa_fr, i):.3g} is above 0.4, the limit for axially loaded cylindrical roller "
+                  "bearings; M2 is uncertain there")
     dM = friction.mean_diameter(d, D)
-    with np.errstate(invalid="ignore"):
+    f2 = np.zeros(shape)
+    Fa_over_A = np.full(shape, np.nan)
+    nu_n_dM = np.full(shape, np.nan)
+    if m2_rows.any():
         A = friction.axial_load_parameter(a["kB"], dM)
         Fa_over_A = np.where(m2_rows, Fa / A, np.nan)
         nu_n_dM = np.where(m2_rows, nu * n * dM, np.nan)
-    f2 = np.where(m2_rows, a["f2"], 0.0)
-    need_f2 = m2_rows & np.isnan(a["f2"])
-    if f2_chart is not None and need_f2.any():
-        missing("kB", lambda i: f"{label[i]} has no kB in seed 002 p. 70, so Fa/A for the f2 chart is unknown; "
-                                "give f2", need_f2 & np.isnan(a["kB"]))
-        rows = np.flatnonzero(need_f2 & ~np.isnan(a["kB"]))
-        chart_f2, reasons = f2_chart.lookup(Fa_over_A[rows], nu_n_dM[rows])
-        f2[rows] = chart_f2
-        refused = np.zeros(n_rows, dtype=bool)
-        refused[rows] = reasons != ""
-        reason_of = dict(zip(rows.tolist(), reasons.tolist()))
-        add(refused, "error", lambda i: f"f2: {reason_of[i]}")
-    elif need_f2.any():
-        add(need_f2, "error",
-            lambda i: f"f2: missing; {label[i]} carries Fa, so M2 = f2*Fa*dM needs f2: give f2, or a digitised "
-                      f"chart (--f2-chart); read it at Fa/A = {Fa_over_A[i]:.4g}, "
-                      f"nu*n*dM = {nu_n_dM[i]:.4g} mm^3/(s*min) (seed 002, p. 70, figs. 3 and 4)")
-    # --- warnings the seed states in words
-    add(a["seal"] == "contact", "warning",
+        f2 = np.where(m2_rows, a["f2"], 0.0)
+        need_f2 = m2_rows & np.isnan(f2)
+        if f2_chart is not None and need_f2.any():
+            no_kb = need_f2 & np.isnan(a["kB"])
+            missing("kB", lambda i: f"{label(i)} has no kB in seed 002 p. 70, so Fa/A for the f2 chart is "
+                                    "unknown; give f2", no_kb)
+            rows = np.flatnonzero(need_f2 & ~no_kb)
+            chart_f2, reasons = f2_chart.lookup(Fa_over_A[rows], nu_n_dM[rows])
+            f2[rows] = chart_f2
+            refused = np.zeros(shape, dtype=bool)
+            refused[rows] = reasons != ""
+            reason_of = dict(zip(rows.tolist(), reasons.tolist()))
+            add(refused, "error", lambda i: f"f2: {reason_of[i]}")
+        elif need_f2.any():
+            add(need_f2, "error",
+                lambda i: f"f2: missing; {label(i)} carries Fa, so M2 = f2*Fa*dM needs f2: give f2, or a "
+                          f"digitised chart (--f2-chart); read it at Fa/A = {Fa_over_A[i]:.4g}, "
+                          f"nu*n*dM = {nu_n_dM[i]:.4g} mm^3/(s*min) (seed 002, p. 70, figs. 3 and 4)")
+    add(np.equal(a["seal"], "contact"), "warning",
         lambda i: "contact seals: their friction comes on top of the catalogue model (seed 002, p. 64)")
-    for i, notes in enumerate(a["notes"]):
-        if notes:
-            mask = np.zeros(n_rows, dtype=bool)
-            mask[i] = True
-            add(mask, "warning", lambda j, text="; ".join(notes): text)
 
     M0 = friction.speed_dependent_torque(f0, nu, n, dM)
     M1 = friction.load_dependent_torque(f1, load, dM)
@@ -277,28 +299,34 @@ def check_and_evaluate(a: dict[str, np.ndarray], labels: Labels, f2_chart: F2Cha
         "f0": f0, "f1": f1, "P0": P0, "P1": P1, "M0": M0, "M1": M1, "M2": M2, "MR": MR,
         "NR": friction.power_loss(MR, n), "Fa_over_A": Fa_over_A, "nu_n_dM": nu_n_dM,
     }
-    return results, problems
+    return {k: np.broadcast_to(np.asarray(v, dtype=float), shape) for k, v in results.items()}, problems
 
 
-def _angular_contact_y0(a, Y0, add, labels):
+def _angular_contact_y0(a, Y0, add, shape):
     """Y0 of single row angular contact ball bearings from the contact angle (seed 000, table 1)."""
-    rows = (a["bearing_type"] == "angular_contact_ball") & np.isnan(a["Y0"]) & (a["Fa"] > 0)
+    rows = np.broadcast_to(np.equal(a["bearing_type"], "angular_contact_ball") & np.isnan(a["Y0"])
+                           & (a["Fa"] > 0), shape)
+    reported = np.zeros(shape, dtype=bool)
     if not rows.any():
-        return Y0
+        return Y0, reported
     from bearingheat.contact import y0_for_contact_angle
 
-    angle = np.where(np.isnan(a["alpha"]), a["contact_angle"].astype(float), a["alpha"])
-    Y0 = Y0.copy()
-    for i in np.flatnonzero(rows):
-        if np.isnan(angle[i]):
-            continue
+    angle = np.broadcast_to(np.where(np.isnan(a["alpha"]), np.asarray(a["contact_angle"], dtype=float),
+                                     a["alpha"]), shape)
+    Y0 = np.array(Y0, dtype=float)
+    wanted = rows & ~np.isnan(angle)
+    unique_angles, inverse = np.unique(angle[wanted], return_inverse=True)
+    rows_at = np.flatnonzero(wanted)
+    for k, alpha in enumerate(unique_angles):
+        these = rows_at[inverse == k]
         try:
-            Y0[i] = y0_for_contact_angle(angle[i])
+            Y0[these] = y0_for_contact_angle(alpha)
         except ValueError as exc:
-            mask = np.zeros(len(Y0), dtype=bool)
-            mask[i] = True
+            mask = np.zeros(shape, dtype=bool)
+            mask[these] = True
+            reported |= mask
             add(mask, "error", lambda j, text=str(exc): f"Y0: missing; {text}; give Y0 from the catalogue")
-    return Y0
+    return Y0, reported
 
 
 def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None,
@@ -318,8 +346,12 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None,
     arrangement = [v or "single" for v in _text(frame, "arrangement")]
     f0_user = _column(frame, "f0")
     row_errors: list[list[str]] = [[] for _ in range(n_rows)]
+    plain = np.array([(t or "").lower() in PLAIN_TYPES for t in types], dtype=bool)
     constants = []
     for i in range(n_rows):
+        if plain[i]:
+            constants.append(None)
+            continue
         try:
             resolved = resolve(designations[i], types[i], series[i])
         except DesignationError as exc:
@@ -364,10 +396,18 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None,
 
     with np.errstate(all="ignore"):
         results, problems = check_and_evaluate(arrays, labels, f2_chart)
+    for i, notes in enumerate(arrays["notes"]):
+        if notes:
+            mask = np.zeros(n_rows, dtype=bool)
+            mask[i] = True
+            problems.append(Problem(mask, "warning", lambda j, text="; ".join(notes): text))
 
     warnings_by_row: list[list[str]] = [[] for _ in range(n_rows)]
+    results = {k: np.array(v, dtype=float) for k, v in results.items()}
+    if plain.any():
+        _plain_rows(frame, plain, results, row_errors, warnings_by_row)
     for problem in problems:
-        for i in np.flatnonzero(problem.mask):
+        for i in np.flatnonzero(problem.mask & ~plain):
             target = row_errors if problem.level == "error" else warnings_by_row
             if constants[i] is None and problem.level == "error":
                 continue  # the row already failed to resolve
@@ -389,8 +429,33 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None,
     if np.any(~np.isnan(results["nu_n_dM"]) & ~failed):
         for col in M2_REPORT_UNITS:
             out[col] = np.where(failed, np.nan, results[col])
+    if plain.any():
+        for col in PLAIN_REPORT_UNITS:
+            out[col] = np.where(failed, np.nan, results[col])
     out["status"] = status
     out["message"] = message
-    out["bearing_type"] = const_frame["bearing_type"].to_numpy()
+    out["bearing_type"] = np.where(plain, "plain_bushing", const_frame["bearing_type"].to_numpy())
     out["series"] = const_frame["series"].to_numpy()
     return out
+
+
+def _plain_rows(frame, plain, results, row_errors, warnings_by_row) -> None:
+    """Plain (DU/DP) bushings by seed 004: M_R = f·F·d/2 and N = f·F·V from the bushing kernel."""
+    from bearingheat.bushing import plain_bushing_power_loss
+
+    rows = np.flatnonzero(plain)
+    d, B, F, n, f = (_column(frame, c)[rows] for c in ("d", "B", "Fr", "n", "f_plain"))
+    loss = plain_bushing_power_loss(d, B, np.nan_to_num(F, nan=0.0), n, f)
+    for col in RESULT_UNITS:
+        results[col][rows] = np.nan
+    results["MR"][rows] = loss.f_used * np.nan_to_num(F, nan=0.0) * d / 2.0
+    results["NR"][rows] = loss.power
+    results["p_plain"] = np.full(len(plain), np.nan)
+    results["V_plain"] = np.full(len(plain), np.nan)
+    results["p_plain"][rows] = loss.p
+    results["V_plain"][rows] = loss.V
+    for k, i in enumerate(rows):
+        if loss.status[k] == "error":
+            row_errors[i].append(loss.message[k])
+        elif loss.message[k]:
+            warnings_by_row[i].append(loss.message[k])

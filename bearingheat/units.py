@@ -117,6 +117,13 @@ def _short(value: Any) -> str:
     return text if len(text) <= 40 else text[:37] + "..."
 
 
+def _describe(q) -> str:
+    """'3 meter / second' for a scalar, 'values in meter / second' for an array."""
+    if np.ndim(q.magnitude) == 0:
+        return f"{float(q.magnitude):g} {q.units}"
+    return f"values in {q.units}"
+
+
 def _restore_index(mag: Any, index):
     if index is None:
         return mag
@@ -150,7 +157,7 @@ def magnitude(value: Any, unit: str, name: str):
                 f"for kilogram-force write {q.magnitude:g} kgf"
             ) from exc
         raise UnitError(
-            f"{name}: {_short(q)} cannot be converted to {unit} "
+            f"{name}: {_describe(q)} cannot be converted to {unit} "
             f"(dimension {q.dimensionality}, expected {target.dimensionality})"
         ) from exc
     return _restore_index(_plain(converted.magnitude), index)
@@ -182,7 +189,7 @@ def speed_rpm(value: Any, name: str = "n"):
     radians = dims.pop("radian", 0)
     if dims != {"second": -1} or radians not in (0, 1):
         raise UnitError(
-            f"{name}: {_short(q)} is not a shaft speed; expected revolutions per time "
+            f"{name}: {_describe(q)} is not a shaft speed; expected revolutions per time "
             "(1/min, rpm, Hz) or an angular speed (rad/s)"
         )
     per_second = np.asarray(root.magnitude, dtype=float)

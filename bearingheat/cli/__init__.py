@@ -20,6 +20,8 @@ __all__ = ["main", "COMMANDS", "UsageError"]
 # name -> module implementing it
 COMMANDS: dict[str, str] = {
     "calc": "bearingheat.cli.calc",
+    "coastdown": "bearingheat.cli.coastdown",
+    "bushing": "bearingheat.cli.bushing",
     "contact": "bearingheat.cli.contact",
 }
 

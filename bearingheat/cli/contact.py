@@ -59,7 +59,7 @@ _CHECK_UNIT = {"length": "mm", "angle": "deg", "force": "N", "speed": "1/min"}
 def add_arguments(parser) -> None:
     for option, (_, _, kind) in _FIELDS.items():
         example = {"count": "7", "length": "2mm", "angle": "12deg", "force": "2kgf", "speed": "3000rpm"}[kind]
-        parser.add_argument(f"--{option}", metavar=example.upper() if kind == "count" else "VALUE",
+        parser.add_argument(f"--{option}", metavar="N" if kind == "count" else "VALUE",
                             help=f"{kind}, e.g. {example}")
     parser.add_argument("--csv", metavar="FILE", help="CSV file with one bearing a row (see above)")
     parser.add_argument("--json", action="store_true", help="print JSON instead of text")
@@ -141,7 +141,7 @@ def _run_csv(path: str, as_json: bool) -> int:
     from pathlib import Path
 
     from bearingheat.cli import UsageError
-    from bearingheat.units import UnitError, magnitude, parse_unit, ureg
+    from bearingheat.units import UnitError, parse_unit, ureg
 
     file = Path(path)
     if not file.is_file():
@@ -169,9 +169,12 @@ def _run_csv(path: str, as_json: bool) -> int:
             raise UsageError(f"{path}: column {name!r} has no unit; write it as '{name} [{_CHECK_UNIT[kind]}]'")
         try:
             unit = parse_unit(unit_text, name=f"column {name!r}")
-            magnitude(ureg().Quantity(1.0, unit), _CHECK_UNIT[kind], f"column {name!r}")
         except UnitError as exc:
             raise UsageError(f"{path}: {exc}") from exc
+        unitless_angle = kind == "angle" and ureg().Quantity(1.0, unit).unitless
+        if unitless_angle or not ureg().Quantity(1.0, unit).is_compatible_with(_CHECK_UNIT[kind]):
+            raise UsageError(f"{path}: column {name!r}: unit {unit_text!r} is not a{'n' if kind[0] in 'ae' else ''} "
+                             f"{kind}; write it as '{name} [{_CHECK_UNIT[kind]}]'")
         columns[option] = (position, unit)
     missing = [_FIELDS[o][1] for o in _REQUIRED if o not in columns]
     if "alpha0" not in columns and "clearance" not in columns:
