@@ -61,6 +61,7 @@ class InputError(ValueError):
 #: where problems are (row position, 'error' | 'warning', message).
 EXTENSIONS: list[str] = [
     "bearingheat.contact_calc",
+    "bearingheat.thermal_calc",
 ]
 
 _HEADER = re.compile(r"^\s*(?P<name>[^\[\]]+?)\s*(?:\[\s*(?P<unit>[^\]]*?)\s*\])?\s*$")

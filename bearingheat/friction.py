@@ -70,7 +70,8 @@ def speed_dependent_torque(f0, nu, n, dM):
     1.8261
     """
     nu_n = np.asarray(nu, dtype=float) * np.asarray(n, dtype=float)
-    factor = np.where(nu_n >= REGIME_LIMIT, np.power(np.maximum(nu_n, 0.0), 2.0 / 3.0), LOW_REGIME_FACTOR)
+    root = np.cbrt(nu_n)  # (ν·n)^(2/3) as cbrt squared: exact for ν·n >= 0 and several times faster than power
+    factor = np.where(nu_n >= REGIME_LIMIT, root * root, LOW_REGIME_FACTOR)
     return np.asarray(f0, dtype=float) * factor * np.power(dM, 3) * 1e-7
 
 

@@ -1,0 +1,210 @@
+"""Benchmark: M_R of 10^6 mixed operating points (issue 2).
+
+Ways to the same numbers, timed in one run:
+
+1. a per-row Python loop calling the same formula kernels (:mod:`bearingheat.friction`) with
+   scalars, as a user would loop over operating points; timed on a sample of the points
+   (its cost per point is constant) and scaled to the full count;
+2. a hand-inlined per-row loop of the seed 002 formulas in plain Python floats, no checks:
+   the fastest a Python loop gets, reported for honesty;
+3. the array kernel :func:`bearingheat.model.check_and_evaluate` (catalogue units, all input
+   checks included);
+4. the unit-aware call :func:`bearingheat.friction_torque` with pint Quantity arrays.
+
+Targets: (3) at least 100x faster than (1); (4) within 1.2x of (3).
+The points mix six bearing types, both ν·n regimes, and radial and axial loads.
+
+    .venv/bin/python benchmarks/bench_friction.py [POINTS]
+"""
+from __future__ import annotations
+
+import math
+import sys
+import time
+
+import numpy as np
+
+# bearing, dimensions and catalogue values (d, D mm; C0 N; extras), share of the points
+BEARINGS = [
+    ("6205", dict(d=25.0, D=52.0, C0=7800.0), {}),
+    ("NU206-E", dict(d=30.0, D=62.0, C0=36000.0), {}),
+    ("30205-A", dict(d=25.0, D=52.0, C0=34500.0), dict(Y=1.6)),
+    ("22210-E1", dict(d=50.0, D=90.0, C0=134000.0), dict(e=0.24, X0=1.0, Y0=2.8)),
+    ("7205", dict(d=25.0, D=52.0, C0=9300.0), dict(alpha=30.0)),
+    ("NA4905", dict(d=25.0, D=42.0, C0=30000.0), {}),
+]
+
+
+def operating_points(count: int, seed: int = 1):
+    """n in 10..10 000 1/min, ν in 2..300 mm²/s (both regimes), loads up to 20 kN, Fa up to half of Fr."""
+    rng = np.random.default_rng(seed)
+    n = rng.uniform(10, 10_000, count)
+    nu = np.exp(rng.uniform(math.log(2), math.log(300), count))
+    Fr = rng.uniform(100, 20_000, count)
+    Fa = Fr * rng.uniform(0, 0.5, count)
+    return n, nu, Fr, Fa
+
+
+def _constants(designation, dims, extras):
+    from bearingheat.coefficients import resolve
+    from bearingheat.model import bearing_constants
+
+    const = bearing_constants(resolve(designation), "oil_bath", "single")
+    axial = designation not in ("NU206-E", "NA4905")
+    return const, axial
+
+
+def kernel_inputs(designation, dims, extras, n, nu, Fr, Fa):
+    const, axial = _constants(designation, dims, extras)
+    count = len(n)
+    nan = np.full(count, np.nan)
+    a = {"n": n, "nu": nu, "Fr": Fr, "Fa": Fa if axial else np.zeros(count),
+         "d": np.full(count, dims["d"]), "D": np.full(count, dims["D"]), "B": nan, "C0": np.full(count, dims["C0"]),
+         **{k: np.full(count, extras.get(k, np.nan)) for k in ("Y", "e", "X0", "Y0", "alpha")},
+         "f0": nan, "f1": nan, "f2": nan}
+    for key in ("f0_table", "f0_basis", "f1_a", "f1_x", "f1_basis", "m1_load", "X0_table", "Y0_table", "kB", "m2",
+                "no_axial", "seal", "label", "prefix", "bearing_type"):
+        a[key] = const[key]
+    a["p1_rule"] = const["p1_rule"] or ""
+    a["contact_angle"] = np.nan if const["contact_angle"] is None else const["contact_angle"]
+    return a
+
+
+def kernel_loop_torque(designation, dims, extras, n, nu, Fr, Fa):
+    """Per-row loop over the scalar formula kernels of bearingheat.friction."""
+    from bearingheat import friction
+
+    const, axial = _constants(designation, dims, extras)
+    dM = friction.mean_diameter(dims["d"], dims["D"])
+    X0 = extras.get("X0", const["X0_table"])
+    Y0 = extras.get("Y0", 0.33 if designation == "7205" else const["Y0_table"])
+    Y, e = extras.get("Y", math.nan), extras.get("e", math.nan)
+    out = []
+    for ni, nui, fr, fa in zip(n.tolist(), nu.tolist(), Fr.tolist(), Fa.tolist()):
+        fa = fa if axial else 0.0
+        M0 = friction.speed_dependent_torque(const["f0_table"], nui, ni, dM)
+        P0 = friction.static_equivalent_load(fr, fa, X0, Y0)
+        ratio = P0 / dims["C0"] if const["f1_basis"] == 1 else 1.0
+        f1 = friction.f1_from_load_ratio(const["f1_a"], const["f1_x"], ratio)
+        if const["m1_load"] == "P1":
+            load = friction.effective_load(const["p1_rule"], fr, fa, Y, e)
+        else:
+            load = fa if const["m1_load"] == "Fa" else fr
+        out.append(friction.total_torque(M0, friction.load_dependent_torque(f1, load, dM)))
+    return np.array(out)
+
+
+def loop_torque(designation, dims, extras, n, nu, Fr, Fa):
+    """Per-row Python loop of the seed 002 formulas inlined in plain floats, with the same coefficients."""
+    const, axial = _constants(designation, dims, extras)
+    f0, a, x, basis, load_kind = (const["f0_table"], const["f1_a"], const["f1_x"], const["f1_basis"],
+                                  const["m1_load"])
+    rule = const["p1_rule"]
+    dM = (dims["d"] + dims["D"]) / 2
+    C0 = dims["C0"]
+    X0 = extras.get("X0", const["X0_table"])
+    Y0 = extras.get("Y0", 0.33 if designation == "7205" else const["Y0_table"])
+    Y, e = extras.get("Y", math.nan), extras.get("e", math.nan)
+    out = []
+    for ni, nui, fr, fa in zip(n.tolist(), nu.tolist(), Fr.tolist(), Fa.tolist()):
+        fa = fa if axial else 0.0
+        nun = nui * ni
+        M0 = f0 * (nun ** (2 / 3) if nun >= 2000 else 160.0) * dM ** 3 * 1e-7
+        P0 = max(X0 * fr + Y0 * fa, fr) if fa > 0 else fr
+        f1 = a * (P0 / C0) ** x if basis == 1 else a
+        if load_kind == "P1":
+            if rule == "radial_ball":
+                P1 = 3.3 * fa - 0.1 * fr
+            elif rule == "angular_single":
+                P1 = fa - 0.1 * fr
+            elif rule == "tapered_single":
+                P1 = max(2 * Y * fa, fr)
+            else:  # spherical
+                P1 = 1.6 * fa / e if fa > e * fr else fr * (1 + 0.6 * (fa / (e * fr)) ** 3)
+            load = max(P1, fr)
+        else:
+            load = fa if load_kind == "Fa" else fr
+        out.append(M0 + f1 * load * dM)
+    return np.array(out)
+
+
+def main(points: int = 1_000_000, repeats: int = 3, loop_sample: int = 30_000) -> dict[str, float]:
+    import pint
+
+    from bearingheat import friction_torque
+    from bearingheat.model import Labels, check_and_evaluate
+
+    u = pint.get_application_registry()
+    n, nu, Fr, Fa = operating_points(points)
+    chunks = np.array_split(np.arange(points), len(BEARINGS))
+    work = [(b, idx) for b, idx in zip(BEARINGS, chunks)]
+
+    def run_kernel():
+        total = []
+        for (des, dims, extras), idx in work:
+            a = kernel_inputs(des, dims, extras, n[idx], nu[idx], Fr[idx], Fa[idx])
+            with np.errstate(all="ignore"):
+                results, problems = check_and_evaluate(a, Labels())
+            assert not [p for p in problems if p.level == "error"]
+            total.append(results["MR"])
+        return np.concatenate(total)
+
+    def run_units():
+        total = []
+        for (des, dims, extras), idx in work:
+            axial = des not in ("NU206-E", "NA4905")
+            r = friction_torque(des, d=dims["d"] * u.mm, D=dims["D"] * u.mm, C0=dims["C0"] * u.N,
+                                lubrication="oil_bath", n=n[idx] * u.rpm, nu=nu[idx] * u("mm^2/s"),
+                                Fr=Fr[idx] * u.N, Fa=(Fa[idx] if axial else np.zeros(len(idx))) * u.N, **{
+                                    k: (v * u.deg if k == "alpha" else v) for k, v in extras.items()})
+            total.append(r.MR.to("N*mm").magnitude)
+        return np.concatenate(total)
+
+    def run_loop():
+        return np.concatenate([loop_torque(des, dims, extras, n[idx], nu[idx], Fr[idx], Fa[idx])
+                               for (des, dims, extras), idx in work])
+
+    sample = min(loop_sample, points)
+    every = max(1, points // sample)
+
+    def run_kernel_loop():
+        return np.concatenate([kernel_loop_torque(des, dims, extras, n[idx[::every]], nu[idx[::every]],
+                                                  Fr[idx[::every]], Fa[idx[::every]])
+                               for (des, dims, extras), idx in work])
+
+    def best(func):
+        times, value = [], None
+        for _ in range(repeats):
+            start = time.perf_counter()
+            value = func()
+            times.append(time.perf_counter() - start)
+        return min(times), value
+
+    t_kernel, m_kernel = best(run_kernel)
+    t_units, m_units = best(run_units)
+    start = time.perf_counter()
+    m_loop = run_loop()
+    t_loop = time.perf_counter() - start
+    start = time.perf_counter()
+    m_kernel_loop = run_kernel_loop()
+    sampled = sum(len(idx[::every]) for _, idx in work)
+    t_kernel_loop = (time.perf_counter() - start) * points / sampled
+    np.testing.assert_allclose(m_units, m_kernel, rtol=1e-12)
+    np.testing.assert_allclose(m_loop, m_kernel, rtol=1e-12)
+    np.testing.assert_allclose(m_kernel_loop, np.concatenate([m_kernel[idx[::every]] for _, idx in work]),
+                               rtol=1e-12)
+    figures = {"points": points, "kernel_loop_s": t_kernel_loop, "inline_loop_s": t_loop, "kernel_s": t_kernel,
+               "units_s": t_units, "kernel_speedup": t_kernel_loop / t_kernel,
+               "inline_speedup": t_loop / t_kernel, "units_over_kernel": t_units / t_kernel}
+    print(f"friction M_R, {points:,} mixed points ({len(BEARINGS)} bearing types, both regimes)")
+    print(f"  per-row loop over the kernels : {t_kernel_loop:8.3f} s   (timed on {sampled:,} points, scaled)")
+    print(f"  per-row loop, inlined floats  : {t_loop:8.3f} s")
+    print(f"  array kernel (with checks)    : {t_kernel:8.3f} s   ({figures['kernel_speedup']:.0f}x the kernel "
+          f"loop, target >= 100x; {figures['inline_speedup']:.1f}x the inlined loop)")
+    print(f"  unit-aware API                : {t_units:8.3f} s   ({figures['units_over_kernel']:.2f}x the kernel; "
+          "target <= 1.2x)")
+    return figures
+
+
+if __name__ == "__main__":
+    main(int(sys.argv[1]) if len(sys.argv) > 1 else 1_000_000)
