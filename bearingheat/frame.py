@@ -187,10 +187,9 @@ def _unit_factor(unit_text: str, target: str, header: str) -> float:
     if target == "1/min":
         return float(speed_rpm(ureg().Quantity(1.0, unit), header))
     q = ureg().Quantity(1.0, unit)
-    try:
-        return float(q.to(target).magnitude) if not q._is_multiplicative is False else math.nan
-    except (pint.errors.DimensionalityError, pint.errors.OffsetUnitCalculusError):
+    if not q._is_multiplicative:  # an absolute temperature: no single factor
         return math.nan
+    return float(q.to(target).magnitude)
 
 
 def _require(frame: pd.DataFrame) -> None:

@@ -1,0 +1,102 @@
+"""``bearingheat audit``: fitted coefficients against the tables; table speeds against the catalogue."""
+from __future__ import annotations
+
+import argparse
+import sys
+
+from bearingheat.cli import UsageError
+
+HELP = "fit f0, f1 (f2) to measured torque with 95-percent intervals; audit n_thr against a catalogue list"
+
+DESCRIPTION = """\
+Two audits; DATA may be either kind (told apart by its columns), and a catalogue
+list can also be given with --reference-speeds.
+
+1. Measured torque (DATA has 'M [N*mm]'): the columns of 'bearingheat calc' plus
+   M [N*mm] (any torque unit), optional T_oil [degC] and t [h]. For each bearing
+   f0 and f1 (f1_a where f1 = f1_a*(P0/C0)^x; f2 where a cylindrical roller
+   bearing with ribs carries Fa) are fitted by least squares on relative
+   residuals, with 95 % confidence intervals; table values outside are flagged.
+2. Catalogue list (DATA or --reference-speeds has a published thermal reference
+   speed column n_thr / n_B [1/min]): designation (or type and series), d, D, B,
+   T [mm] (tapered), C0 [N]; optional family, series, shield name the series.
+   n_thr is computed from the tables for every bearing and the deviation is
+   reported per series; systematic deviations are flagged.
+
+Output: tables on stdout; with --out DIR also coefficients.csv,
+reference_speeds.csv and reference_speed_series.csv.
+Exit codes: 0 done, nothing flagged; 1 done, something flagged or a bearing could
+not be fitted; 2 unusable input.
+"""
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("input", metavar="DATA", nargs="?", help="measured torque or a catalogue list (.csv/.xlsx)")
+    parser.add_argument("--reference-speeds", metavar="CSV", help="catalogue list with published n_thr")
+    parser.add_argument("--speed-column", metavar="NAME", help="name of the published n_thr column")
+    parser.add_argument("--out", metavar="DIR", help="write the audit tables as CSV into DIR")
+    parser.add_argument("--sheet", metavar="NAME", help="sheet of an Excel workbook")
+    parser.add_argument("-q", "--quiet", action="store_true", help="print nothing")
+
+
+def run(args: argparse.Namespace) -> int:
+    from pathlib import Path
+
+    import pandas as pd
+
+    from bearingheat.audit import (REFERENCE_SPEED_COLUMNS, SYSTEMATIC_RULE, AuditError, audit_coefficients,
+                                   audit_reference_speeds, series_deviation_summary)
+    from bearingheat.cli.diagnose import read_table
+    from bearingheat.frame import parse_header
+
+    if args.input is None and args.reference_speeds is None:
+        raise UsageError("give DATA, --reference-speeds CSV, or both")
+    out_dir = Path(args.out) if args.out else None
+    if out_dir:
+        out_dir.mkdir(parents=True, exist_ok=True)
+    say = (lambda text: None) if args.quiet else (lambda text: sys.stdout.write(text + "\n"))
+    flagged = False
+    speed_names = [args.speed_column] if args.speed_column else list(REFERENCE_SPEED_COLUMNS)
+    jobs = []
+    if args.input is not None:
+        table = read_table(args.input, args.sheet)
+        names = {parse_header(h)[0] for h in table.columns}
+        if "M" in names:
+            jobs.append(("coefficients", table))
+        elif names & set(speed_names):
+            jobs.append(("speeds", table))
+        else:
+            raise UsageError(f"{args.input}: neither a measured torque column 'M [N*mm]' nor a published "
+                             f"thermal reference speed column ({', '.join(speed_names)})")
+    if args.reference_speeds is not None:
+        jobs.append(("speeds", read_table(args.reference_speeds)))
+    try:
+        for kind, table in jobs:
+            if kind == "coefficients":
+                result = audit_coefficients(table)
+                say("Coefficients fitted to the measured torque (95 % confidence intervals):")
+                say(result.to_string(index=False, float_format=lambda x: f"{x:.4g}"))
+                for message in result.attrs.get("excluded", [])[:20]:
+                    say(f"excluded: {message}")
+                flagged |= bool((result["flag"] != "").any() or (result["status"] != "ok").any())
+                if out_dir:
+                    result.to_csv(out_dir / "coefficients.csv", index=False)
+            else:
+                rows = audit_reference_speeds(table, speed_column=args.speed_column)
+                summary = series_deviation_summary(rows)
+                say("Thermal reference speed from the tables against the published value, per series "
+                    "(deviation = tables/published - 1):")
+                shown = summary.copy()
+                for col in ("median", "mean", "min", "max"):
+                    shown[col] = (shown[col] * 100).map(lambda v: f"{v:+.1f} %" if pd.notna(v) else "-")
+                say(shown.to_string(index=False))
+                say(f"rule: {SYSTEMATIC_RULE}")
+                for key in summary.loc[summary["systematic"], "series_key"]:
+                    say(f"systematic: {key}")
+                flagged |= bool(summary["systematic"].any())
+                if out_dir:
+                    rows.to_csv(out_dir / "reference_speeds.csv", index=False)
+                    summary.to_csv(out_dir / "reference_speed_series.csv", index=False)
+    except AuditError as exc:
+        raise UsageError(str(exc)) from exc
+    return 1 if flagged else 0

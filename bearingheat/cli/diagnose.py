@@ -1,0 +1,83 @@
+"""``bearingheat diagnose``: find the effect the catalogue model lacks in measured torque."""
+from __future__ import annotations
+
+import argparse
+
+from bearingheat.cli import UsageError
+
+HELP = "trace the residuals of measured torque to a missing effect; model error before and after"
+
+DESCRIPTION = """\
+Compare measured friction torque with the catalogue model (seed 002), look at the
+structure of the residuals, fit each candidate effect (seal_drag, f0_scale,
+viscosity_heating, drag_losses, run_in, preload) by least squares, choose one by
+grouped k-fold cross-validation and BIC under a stated significance rule, or
+answer 'none' when no candidate earns its parameters.
+
+Input (CSV or .xlsx): the columns of 'bearingheat calc' (designation, d, D, C0,
+lubrication, n, Fr, Fa, nu, ...) plus
+  M [N*mm]        measured friction torque (any torque unit: N*m, N*cm ...)
+  T_oil [degC]    optional oil temperature
+  t [h]           optional running time (needed by the run_in candidate)
+  group           optional label of rows that must stay in one fold (a test run)
+
+Output in --out DIR: summary.json (effect, parameters, rmse_before, rmse_after,
+cv_rmse_after [N*mm], mape_before, mape_after [%], candidates ...), report.md,
+residuals.png, measured_vs_predicted.png. Use the fitted effect in predictions
+with 'bearingheat calc INPUT --effects DIR/summary.json'.
+
+Exit codes: 0 done; 1 done, but some rows were excluded (errors listed in the
+report); 2 unusable input (file, columns, units, too few rows).
+"""
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("input", metavar="DATA", help="measured torque, CSV (.csv) or Excel (.xlsx)")
+    parser.add_argument("--out", metavar="DIR", required=True, help="folder for summary.json, report.md, plots")
+    parser.add_argument("--folds", type=int, default=5, help="k of the grouped k-fold cross-validation (default 5)")
+    parser.add_argument("--seed", type=int, default=0, help="seed of the fold assignment (default 0)")
+    parser.add_argument("--sheet", metavar="NAME", help="sheet of an Excel workbook")
+    parser.add_argument("-q", "--quiet", action="store_true", help="print nothing")
+
+
+def read_table(path_text: str, sheet: str | None = None):
+    """A CSV or xlsx file as a DataFrame; unusable files raise UsageError."""
+    from pathlib import Path
+
+    import pandas as pd
+
+    path = Path(path_text)
+    if not path.is_file():
+        raise UsageError(f"{path}: no such file")
+    try:
+        if path.suffix.lower() in (".xlsx", ".xlsm"):
+            return pd.read_excel(path, sheet_name=sheet or 0)
+        if sheet:
+            raise UsageError("--sheet applies to Excel workbooks only")
+        return pd.read_csv(path, skipinitialspace=True)
+    except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError, ValueError) as exc:
+        if isinstance(exc, UsageError):
+            raise
+        raise UsageError(f"{path}: not a readable table ({exc})") from exc
+
+
+def run(args: argparse.Namespace) -> int:
+    from bearingheat.diagnose import DiagnoseError, diagnose_table, write_outputs
+
+    if args.folds < 2:
+        raise UsageError(f"--folds: {args.folds} must be >= 2")
+    table = read_table(args.input, args.sheet)
+    try:
+        diagnosis = diagnose_table(table, k=args.folds, seed=args.seed)
+    except DiagnoseError as exc:
+        raise UsageError(str(exc)) from exc
+    summary = write_outputs(diagnosis, args.out)
+    if not args.quiet:
+        print(f"effect: {summary['effect']}  parameters: {summary['parameters']}")
+        print(f"RMSE {summary['rmse_before']:.4g} -> {summary['rmse_after']:.4g} N*mm "
+              f"(held-out {summary['cv_rmse_before']:.4g} -> {summary['cv_rmse_after']:.4g}); "
+              f"MAPE {summary['mape_before']:.3g} -> {summary['mape_after']:.3g} %")
+        if summary["n_excluded"]:
+            print(f"{summary['n_excluded']} row(s) excluded; see {args.out}/report.md")
+        print(f"report: {args.out}/report.md")
+    return 1 if summary["n_excluded"] else 0

@@ -1,0 +1,66 @@
+"""``bearingheat lab``: process DP11A lab rig readings after seed 000 (tasks 1-3, tables 4 and 5)."""
+from __future__ import annotations
+
+import argparse
+
+from bearingheat.cli import UsageError
+
+HELP = "process DP11A lab rig readings (seed 000): mu, f0 and T_F, f and T0, tables 4 and 5, plots"
+
+DESCRIPTION = """\
+Process friction torque readings of the DP11A rig (seed 000).
+
+Input (CSV or .xlsx), one reading per row:
+  bearing         seed 000 table 3: 1000095, 18 or 101
+  Q [kg]          weight (0.5, 1, 2 kg on the rig)
+  beta [deg]      inclination of the spindle axis, 0 (axial) .. 90 (radial)
+  n [1/min]       speed
+  T [N*mm]        friction torque (any torque unit)
+  nu [mm^2/s]     optional viscosity for the seed 002 comparison (or --nu)
+
+Loads Fa = 9.81*Q*cos(beta), Fr = 9.81*Q*sin(beta), P0 from seed 000 table 1.
+Task 1: mu for each speed; task 2: f0 and T_F for each beta (N = n^(2/3));
+task 3: f and T0 for each speed (N = P0^1.55).
+
+Output in --out DIR: report.md (tables 4 and 5 filled, task results, the
+comparison with the catalogue model of seed 002), CSV of each task, PNG plots.
+Exit codes: 0 done; 2 unusable input.
+"""
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("input", metavar="READINGS", help="CSV (.csv) or Excel (.xlsx) of readings")
+    parser.add_argument("--out", metavar="DIR", required=True, help="folder for report.md, CSVs and plots")
+    parser.add_argument("--nu", metavar="VISCOSITY", help="viscosity for the seed 002 comparison, e.g. 20mm^2/s")
+    parser.add_argument("--lubrication", default="grease",
+                        help="lubrication of the seed 002 comparison (default grease)")
+    parser.add_argument("--sheet", metavar="NAME", help="sheet of an Excel workbook")
+    parser.add_argument("-q", "--quiet", action="store_true", help="print nothing")
+
+
+def run(args: argparse.Namespace) -> int:
+    from bearingheat.cli.diagnose import read_table
+    from bearingheat.lab import LabError, process_lab, write_lab_outputs
+    from bearingheat.units import UnitError, parse_quantity
+
+    nu = None
+    if args.nu is not None:
+        try:
+            nu = float(parse_quantity(args.nu, name="--nu").to("mm^2/s").magnitude)
+        except UnitError as exc:
+            raise UsageError(str(exc)) from exc
+        except Exception as exc:  # pint DimensionalityError
+            raise UsageError(f"--nu: {args.nu!r} is not a kinematic viscosity (e.g. 20mm^2/s)") from exc
+    table = read_table(args.input, args.sheet)
+    try:
+        result = process_lab(table, nu=nu, lubrication=args.lubrication)
+    except LabError as exc:
+        raise UsageError(str(exc)) from exc
+    files = write_lab_outputs(result, args.out)
+    if not args.quiet:
+        print(result.task1.to_string(index=False, float_format=lambda x: f"{x:.4g}"))
+        print(result.comparison.to_string(index=False, float_format=lambda x: f"{x:.4g}"))
+        for note in result.notes:
+            print(f"note: {note}")
+        print(f"{len(files)} files written to {args.out}")
+    return 0
