@@ -16,6 +16,8 @@ $(STAMP): pyproject.toml
 demo: $(STAMP)
 	mkdir -p out
 	$(BH) calc examples/gearbox_shaft.csv -o out/gearbox_shaft_results.csv
+	$(BH) calc spreadsheets/gearbox_shaft_example.xlsx -o out/gearbox_shaft_results.xlsx --formulas
+	@echo "Excel results: out/gearbox_shaft_results.xlsx, sheet 'Results' (live formulas: change n, Fr or nu on sheet 'Supports')"
 
 test: $(STAMP)
 	$(PY) -m pytest -q

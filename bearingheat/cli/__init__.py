@@ -23,6 +23,11 @@ COMMANDS: dict[str, str] = {
     "coastdown": "bearingheat.cli.coastdown",
     "bushing": "bearingheat.cli.bushing",
     "contact": "bearingheat.cli.contact",
+    "template": "bearingheat.cli.template",
+    "plot": "bearingheat.cli.plot",
+    "lab": "bearingheat.cli.lab",
+    "audit": "bearingheat.cli.audit",
+    "diagnose": "bearingheat.cli.diagnose",
 }
 
 
