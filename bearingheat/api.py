@@ -136,7 +136,11 @@ def friction_torque(bearing: str | None = None, *, n, nu, lubrication: str | Non
     arrays = {k: (v.to_numpy(dtype=float) if isinstance(v, pd.Series) else np.asarray(v, dtype=float))
               for k, v in inputs.items()}
     shape = np.broadcast_shapes(*(v.shape for v in arrays.values()))
-    flat = {k: np.broadcast_to(v, shape).ravel() for k, v in arrays.items()}
+    rows = (int(np.prod(shape)),)
+    # arrays become one row axis; scalars stay scalars (no copies of constants)
+    flat = {k: (v if v.ndim == 0 else np.broadcast_to(v, shape).ravel()) for k, v in arrays.items()}
+    if flat["n"].ndim == 0:
+        flat["n"] = np.broadcast_to(flat["n"], rows)
     a = {**flat, **{k: const[k] for k in ("f0_table", "f0_basis", "f1_a", "f1_x", "f1_basis", "m1_load",
                                            "X0_table", "Y0_table", "kB", "m2", "no_axial", "seal", "label",
                                            "prefix", "bearing_type")}}

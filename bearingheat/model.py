@@ -162,7 +162,7 @@ def check_and_evaluate(a: dict, labels: Labels, f2_chart: F2Chart | None = None)
     bearings) or as scalars (one bearing, many operating points).
     Returns (results, problems); every result is an array of the rows' length.
     """
-    n_rows = len(a["n"])
+    n_rows = len(a["n"])  # the operating speed spans the rows; other inputs are arrays of that length or scalars
     shape = (n_rows,)
     problems: list[Problem] = []
 

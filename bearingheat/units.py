@@ -149,13 +149,16 @@ def magnitude(value: Any, unit: str, name: str):
     q, index = _as_quantity(value, name, unit)
     target = ureg().parse_units(unit)
     try:
+        if q._is_multiplicative:  # one scalar factor, one pass over an array
+            factor = ureg().Quantity(1.0, q.units).to(target).magnitude
+            return _restore_index(_scaled(q.magnitude, factor), index)
         converted = q.to(target)
     except pint.errors.DimensionalityError as exc:
         if q.dimensionality == ureg().kg.dimensionality and target.dimensionality == ureg().N.dimensionality:
-            raise UnitError(
-                f"{name}: {q.magnitude:g} {q.units} is a mass, not a force; "
-                f"for kilogram-force write {q.magnitude:g} kgf"
-            ) from exc
+            if np.ndim(q.magnitude) == 0:
+                raise UnitError(f"{name}: {_describe(q)} is a mass, not a force; "
+                                f"for kilogram-force write {float(q.magnitude):g} kgf") from exc
+            raise UnitError(f"{name}: {_describe(q)} are masses, not forces; for kilogram-force use kgf") from exc
         raise UnitError(
             f"{name}: {_describe(q)} cannot be converted to {unit} "
             f"(dimension {q.dimensionality}, expected {target.dimensionality})"
@@ -163,9 +166,16 @@ def magnitude(value: Any, unit: str, name: str):
     return _restore_index(_plain(converted.magnitude), index)
 
 
+def _scaled(mag: Any, factor: float):
+    """mag·factor as float, without a copy when the factor is exactly 1."""
+    if factor == 1.0:
+        return _plain(mag)
+    return _plain(np.multiply(mag, factor))
+
+
 def _plain(mag: Any):
     if isinstance(mag, np.ndarray):
-        return mag.astype(float) if mag.ndim else float(mag)
+        return np.asarray(mag, dtype=float) if mag.ndim else float(mag)  # no copy of a float array
     return float(mag)
 
 
@@ -184,7 +194,7 @@ def speed_rpm(value: Any, name: str = "n"):
     3000.0
     """
     q, index = _as_quantity(value, name, "1/min")
-    root = q.to_root_units()
+    root = ureg().Quantity(1.0, q.units).to_root_units()
     dims = dict(root._units)
     radians = dims.pop("radian", 0)
     if dims != {"second": -1} or radians not in (0, 1):
@@ -192,11 +202,13 @@ def speed_rpm(value: Any, name: str = "n"):
             f"{name}: {_describe(q)} is not a shaft speed; expected revolutions per time "
             "(1/min, rpm, Hz) or an angular speed (rad/s)"
         )
-    per_second = np.asarray(root.magnitude, dtype=float)
+    per_second = float(root.magnitude)
     if radians == 1:
-        per_second = per_second / TWO_PI  # rad/s -> rev/s
-    rpm = per_second * 60.0
-    return _restore_index(_plain(rpm), index)
+        per_second /= TWO_PI  # rad/s -> rev/s
+    factor = per_second * 60.0
+    if abs(factor - 1.0) < 1e-15:  # 1/min and rpm: exactly one revolution per minute
+        factor = 1.0
+    return _restore_index(_scaled(q.magnitude, factor), index)
 
 
 def quantity(mag: Any, unit: str):

