@@ -26,9 +26,20 @@ Input columns, headed 'name [unit]' (any pint unit of the right dimension):
   Fr [N], Fa [N]             radial and axial load (blank = 0)
   nu [mm^2/s]                operating viscosity (base oil viscosity for grease)
 
+Heat balance (optional; docs/thermal.md):
+  B [mm] or T [mm] (tapered), k_q [W/(mm^2*K)], T_amb [degC], T_bearing [degC],
+  V_oil [l/min], dT_oil [K], Q_E [W] (heat flowing into the bearing),
+  nu40 [mm^2/s] and nu100 [mm^2/s] or iso_vg (then nu may be left out),
+  n_G [1/min] (caps n_per), n_thr_catalogue [1/min]
+  -> n_thr [1/min], n_per [1/min], T_op [degC], nu_op [mm^2/s], Q_S [W], Q_L [W]
+Ball geometry (optional; seed 001): z, Dw [mm], dm_pitch [mm] -> Fa_min [N]
+Plain bushings (type plain_bushing; seed 004): d, B (length), Fr, n, f_plain
+  -> MR, NR, p [N/mm^2], V [m/s]
+
 Output: the input columns, then f0, f1, P0 [N], P1 [N], M0 [N*mm], M1 [N*mm],
-M2 [N*mm], MR [N*mm], NR [W], status (ok|warning|error) and message.
-Rows with M2 also get Fa/A and nu*n*dM [mm^3/(s*min)] to read f2 off the chart.
+M2 [N*mm], MR [N*mm], NR [W], the columns above where their inputs are
+present, status (ok|warning|error) and message. Rows with M2 also get Fa/A
+and nu*n*dM [mm^3/(s*min)] to read f2 off the chart.
 
 Exit codes: 0 all rows ok or warning; 1 some row has an error; 2 unusable
 input (file missing, required column missing, unit of the wrong dimension).
