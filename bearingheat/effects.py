@@ -289,6 +289,19 @@ def _nonneg_scale(M, base, extra):
     return max(0.0, float(np.sum(w2 * extra * (M - base))) / den)
 
 
+def _grid_best(objective, grid):
+    """Index of the best grid point of a 1-D objective, and the objective on the whole grid."""
+    values = [objective(g) for g in grid]
+    return int(np.argmin(values)), values
+
+
+def _refine(objective, grid, best, values, xatol):
+    """A bounded search between the neighbours of grid point ``best``; the better of it and the grid point."""
+    lo, hi = grid[max(best - 1, 0)], grid[min(best + 1, len(grid) - 1)]
+    res = optimize.minimize_scalar(objective, bounds=(lo, hi), method="bounded", options={"xatol": xatol})
+    return float(res.x) if res.fun < values[best] else float(grid[best])
+
+
 class Candidate:
     """One parametrised extension of the catalogue model.
 
@@ -393,13 +406,10 @@ class ViscosityHeating(Candidate):
             return _weighted_sse(M, self._predict(data, math.exp(log_r), rows))
 
         grid = np.linspace(math.log(R_max) - 9.0, math.log(R_max), 19)
-        values = [sse(g) for g in grid]
-        best = int(np.argmin(values))
+        best, values = _grid_best(sse, grid)
         if _weighted_sse(M, data.MR[rows]) <= values[best]:
             return {"R_th": 0.0}
-        lo, hi = grid[max(best - 1, 0)], grid[min(best + 1, len(grid) - 1)]
-        res = optimize.minimize_scalar(sse, bounds=(lo, hi), method="bounded", options={"xatol": 1e-4})
-        return {"R_th": float(math.exp(res.x)) if res.fun < values[best] else float(math.exp(grid[best]))}
+        return {"R_th": math.exp(_refine(sse, grid, best, values, 1e-4))}
 
     def predict(self, data, params, rows):
         return self._predict(data, params["R_th"], rows)
@@ -425,13 +435,11 @@ class DragLosses(Candidate):
             c = _nonneg_scale(M, base, extra)
             return c, _weighted_sse(M, base + c * extra)
 
+        def sse(p):
+            return best_c(p)[1]
+
         grid = np.linspace(*self.P_BOUNDS, 22)
-        values = [best_c(p)[1] for p in grid]
-        best = int(np.argmin(values))
-        lo, hi = grid[max(best - 1, 0)], grid[min(best + 1, len(grid) - 1)]
-        res = optimize.minimize_scalar(lambda p: best_c(p)[1], bounds=(lo, hi), method="bounded",
-                                       options={"xatol": 1e-4})
-        p = float(res.x) if res.fun < values[best] else float(grid[best])
+        p = _refine(sse, grid, *_grid_best(sse, grid), 1e-4)
         c, _ = best_c(p)
         return {"c": c, "p": p}
 
@@ -469,13 +477,11 @@ class RunIn(Candidate):
         # τ between 1 % and 100 % of the observed time span: a decay slower than that is
         # indistinguishable from a constant f0 scale within the data
         bounds = (math.log(0.01 * span), math.log(span))
+        def sse(log_tau):
+            return best_a(log_tau)[1]
+
         grid = np.linspace(*bounds, 21)
-        values = [best_a(g)[1] for g in grid]
-        best = int(np.argmin(values))
-        lo, hi = grid[max(best - 1, 0)], grid[min(best + 1, len(grid) - 1)]
-        res = optimize.minimize_scalar(lambda g: best_a(g)[1], bounds=(lo, hi), method="bounded",
-                                       options={"xatol": 1e-4})
-        log_tau = float(res.x) if res.fun < values[best] else float(grid[best])
+        log_tau = _refine(sse, grid, *_grid_best(sse, grid), 1e-4)
         a, _ = best_a(log_tau)
         return {"a": a, "tau": math.exp(log_tau)}
 
@@ -521,16 +527,11 @@ class Preload(Candidate):
                 pred = M0 + self._m1(data, mine, force)
                 return _weighted_sse(M, pred) if np.all(np.isfinite(pred)) else math.inf
 
-            base = sse(0.0)
             grid = np.concatenate([[0.0], np.geomspace(top * 1e-3, top, 16)])
-            values = [base] + [sse(g) for g in grid[1:]]
-            best = int(np.argmin(values))
+            best, values = _grid_best(sse, grid)
             if best == 0 or not math.isfinite(values[best]):
                 continue
-            lo, hi = grid[best - 1], grid[min(best + 1, len(grid) - 1)]
-            res = optimize.minimize_scalar(sse, bounds=(lo, hi), method="bounded",
-                                           options={"xatol": 1e-3 * grid[best]})
-            F_pre[code] = float(res.x) if res.fun < values[best] else float(grid[best])
+            F_pre[code] = _refine(sse, grid, best, values, 1e-3 * grid[best])
         return {"F_pre": F_pre}
 
     def predict(self, data, params, rows):
