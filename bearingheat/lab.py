@@ -315,6 +315,15 @@ def process_lab(table: pd.DataFrame, *, nu: float | None = None, lubrication: st
 # Output
 # ---------------------------------------------------------------------------------------------
 
+
+def _figure(out, files: list, bearing: str, task: int, title: str, xlabel: str, groups) -> list[str]:
+    """Plot one task of one bearing into OUT/task<k>_<bearing>.png; the report lines that show it."""
+    path = out / f"task{task}_{bearing}.png"
+    _plot_task(path, title, xlabel, groups)
+    files.append(path)
+    return ["", f"![task {task}]({path.name})", ""]
+
+
 def _plot_task(path: Path, title: str, xlabel: str, groups) -> None:
     import matplotlib
     matplotlib.use("Agg")
@@ -379,10 +388,7 @@ def write_lab_outputs(result: LabResult, out_dir) -> list[Path]:
                   "| β [deg] | n [1/min] | μ | μ (general least squares) |", "|---|---|---|---|"]
         lines += [f"| {row['beta']:g} | {row['n']:g} | {row['mu']:.5g} | {row['mu_lstsq']:.5g} |"
                   for _, row in t1.iterrows()]
-        path = out / f"task1_{bearing}.png"
-        _plot_task(path, f"{bearing}: T = μ·P0·d/2", "P0 [N]", groups1)
-        files.append(path)
-        lines += ["", f"![task 1]({path.name})", ""]
+        lines += _figure(out, files, bearing, 1, f"{bearing}: T = μ·P0·d/2", "P0 [N]", groups1)
         t2 = result.task2[result.task2["bearing"] == bearing] if not result.task2.empty else result.task2
         if len(t2):
             lines += ["### Task 2: f0 and T_F (T = f0·dm³·n^(2/3) + T_F)", "",
@@ -397,10 +403,7 @@ def write_lab_outputs(result: LabResult, out_dir) -> list[Path]:
                 equivalent = row.get("f0_seed002_equivalent", math.nan)
                 lines.append(f"| {row['Q']:g} | {row['beta']:g} | {row['f0']:.4g} | {row['T_F']:.4g} | "
                              f"{'–' if pd.isna(equivalent) else f'{equivalent:.3g}'} |")
-            path = out / f"task2_{bearing}.png"
-            _plot_task(path, f"{bearing}: T = f0·dm³·N + T_F", "N = n^(2/3)", groups2)
-            files.append(path)
-            lines += ["", f"![task 2]({path.name})", ""]
+            lines += _figure(out, files, bearing, 2, f"{bearing}: T = f0·dm³·N + T_F", "N = n^(2/3)", groups2)
         t3 = result.task3[result.task3["bearing"] == bearing] if not result.task3.empty else result.task3
         if len(t3):
             lines += ["### Task 3: f and T0 (T = T0 + f·P0·(P0/C0)^c·dm, c = 0.55)", "",
@@ -413,10 +416,8 @@ def write_lab_outputs(result: LabResult, out_dir) -> list[Path]:
                 groups3.append((f"β={row['beta']:g}°, n={row['n']:g}", N, pts["T"], x,
                                 row["T0"] + row["f"] * dm / C0 ** LOAD_EXPONENT_RADIAL * x))
                 lines.append(f"| {row['beta']:g} | {row['n']:g} | {row['f']:.4g} | {row['T0']:.4g} |")
-            path = out / f"task3_{bearing}.png"
-            _plot_task(path, f"{bearing}: T = T0 + f·(dm/C0^c)·N", "N = P0^(1+c) [N^1.55]", groups3)
-            files.append(path)
-            lines += ["", f"![task 3]({path.name})", ""]
+            lines += _figure(out, files, bearing, 3, f"{bearing}: T = T0 + f·(dm/C0^c)·N", "N = P0^(1+c) [N^1.55]",
+                             groups3)
     lines += ["## Comparison with the models of the seeds", "",
               f"Medians over the readings. seed 000: T = μ·P0·d/2 with μ = {REDUCED_FRICTION_RADIAL}; "
               "seed 002: the catalogue model M_R = M0 + M1 of the same bearing (its ISO series row).", ""]
