@@ -80,14 +80,21 @@ def input_units() -> dict[str, str]:
     return units
 
 
-def parse_header(header) -> tuple[str, str | None]:
+def parse_header(header, *, strict: bool = True) -> tuple[str, str | None]:
     """``'Fr [kN] '`` -> ``('Fr', 'kN')``; ``'id'`` -> ``('id', None)``.
+
+    A header that is not ``name [unit]`` raises :class:`InputError`, or with
+    ``strict=False`` comes back whole as a name without a unit.
 
     >>> parse_header(' n [U/min] ')
     ('n', 'U/min')
+    >>> parse_header('a] b', strict=False)
+    ('a] b', None)
     """
     match = _HEADER.match(str(header))
     if not match:
+        if not strict:
+            return str(header).strip(), None
         raise InputError(f"column {header!r}: cannot read the header; write it as 'name [unit]'")
     return match.group("name").strip(), match.group("unit")
 
@@ -105,33 +112,41 @@ class _Converted:
 
 
 def _convert_column(values: pd.Series, header: str, unit_text: str | None, target: str,
-                    cell: Callable[[str, int], str] | None, name: str, errors: list[list[str]]) -> np.ndarray:
-    """Numbers of one column in the catalogue unit; cells that are no numbers become row errors."""
+                    cell: Callable[[str, int], str] | None, name: str,
+                    errors: list[list[str]]) -> tuple[np.ndarray, float]:
+    """Numbers of one column in the catalogue unit, and the catalogue units per user unit (NaN for an
+    absolute temperature, which has no single factor); cells that are no numbers become row errors."""
     numeric = pd.to_numeric(values, errors="coerce").to_numpy(dtype=float)
     raw = values.to_numpy(dtype=object)
     for i, (num, cell_value) in enumerate(zip(numeric, raw)):
         if np.isnan(num) and not _blank(cell_value):
             where = f"{cell(name, i)}: " if cell else ""
             errors[i].append(f"{where}{cell_value!r} is not a number for {header}")
-    if target in ("", "1"):
-        if unit_text not in (None, "", "-", "1"):
-            dim = parse_unit(unit_text, name=header)
-            if not ureg().Quantity(1.0, dim).dimensionless:
-                raise InputError(f"column {header!r}: {name} is dimensionless, {unit_text!r} is not")
-            return numeric * ureg().Quantity(1.0, dim).to("dimensionless").magnitude
-        return numeric
+    if target == "1":
+        if unit_text in (None, "", "-", "1"):
+            return numeric, 1.0
+        one = ureg().Quantity(1.0, parse_unit(unit_text, name=header))
+        if not one.dimensionless:
+            raise InputError(f"column {header!r}: {name} is dimensionless, {unit_text!r} is not")
+        factor = float(one.to("dimensionless").magnitude)
+        return numeric * factor, factor
     if unit_text is None or unit_text.strip() in ("", "-"):
         raise InputError(f"column {header!r}: needs a unit, e.g. '{name} [{target}]'")
     try:
         unit = parse_unit(unit_text, name=header)
         if target == "1/min":
             try:
-                return numeric * speed_rpm(ureg().Quantity(1.0, unit), header)
+                factor = float(speed_rpm(ureg().Quantity(1.0, unit), header))
             except UnitError as exc:
                 raise UnitError(f"{unit_text} is not a shaft speed; expected revolutions per time "
                                 "(1/min, rpm, Hz) or an angular speed (rad/s)") from exc
-        q = ureg().Quantity(numeric, unit)
-        return np.asarray(_to(q, target, header), dtype=float)
+            return numeric * factor, factor
+        one = ureg().Quantity(1.0, unit)
+        if one._is_multiplicative and ureg().Quantity(1.0, target)._is_multiplicative:
+            factor = float(_to(one, target, header))
+            return numeric * factor, factor
+        # an absolute temperature (K, degC, degF): offset conversion of the whole column
+        return np.asarray(_to(ureg().Quantity(numeric, unit), target, header), dtype=float), math.nan
     except UnitError as exc:
         raise InputError(f"column {header!r}: {exc}") from exc
 
@@ -170,26 +185,13 @@ def to_catalogue_units(table: pd.DataFrame, *, units: dict[str, str] | None = No
             raise InputError(f"column {header!r}: {name} appears twice")
         target = known[name]
         display = f"{name} [{unit_text}]" if unit_text not in (None, "", "-", "1") else name
-        if target == "" or target == "text":
+        if target == "":
             columns[name] = [None if _blank(v) else str(v).strip() for v in table[header]]
             continue
-        values = _convert_column(table[header], display, unit_text, target, cell, name, errors)
-        columns[name] = values
-        factor = _unit_factor(unit_text, target, display) if target not in ("", "1") else 1.0
+        columns[name], factor = _convert_column(table[header], display, unit_text, target, cell, name, errors)
         headers[name] = (display, factor)
     frame = pd.DataFrame(columns, index=table.index)
     return _Converted(frame, Labels(headers, cell), errors)
-
-
-def _unit_factor(unit_text: str, target: str, header: str) -> float:
-    """Catalogue units per user unit, for showing a value back in the user's unit (NaN for offset units)."""
-    unit = parse_unit(unit_text, name=header)
-    if target == "1/min":
-        return float(speed_rpm(ureg().Quantity(1.0, unit), header))
-    q = ureg().Quantity(1.0, unit)
-    if not q._is_multiplicative:  # an absolute temperature: no single factor
-        return math.nan
-    return float(q.to(target).magnitude)
 
 
 def _require(frame: pd.DataFrame) -> None:

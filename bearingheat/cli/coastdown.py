@@ -2,7 +2,6 @@
 from __future__ import annotations
 
 import argparse
-import re
 
 HELP = "coast-down (run-down) analysis: reduced friction coefficient and torque components (seed 003)"
 
@@ -55,9 +54,6 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--f0", type=float, default=None, help="catalogue f0 to audit against")
 
 
-_HEADER = re.compile(r"^\s*(\w+)\s*\[(.*)\]\s*$")
-
-
 def read_rundown(path: str):
     """Read DATA.csv into (t Quantity array, n Quantity array); UsageError on unusable input."""
     import csv
@@ -65,6 +61,7 @@ def read_rundown(path: str):
     import numpy as np
 
     from bearingheat.cli import UsageError
+    from bearingheat.frame import parse_header
     from bearingheat.units import UnitError, parse_unit, ureg
 
     try:
@@ -77,9 +74,9 @@ def read_rundown(path: str):
     header = rows[0]
     found = {}
     for col, name in enumerate(header):
-        match = _HEADER.match(name)
-        if match and match.group(1) in ("t", "n"):
-            found[match.group(1)] = (col, name.strip(), match.group(2))
+        key, unit_text = parse_header(name, strict=False)
+        if key in ("t", "n") and unit_text is not None:
+            found[key] = (col, name.strip(), unit_text)
     for key, example in (("t", "t [s]"), ("n", "n [1/min]")):
         if key not in found:
             raise UsageError(f"{path}: no column '{example}' (a '{key} [unit]' column); columns are: "

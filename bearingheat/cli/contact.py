@@ -125,15 +125,6 @@ def _evaluate(inputs: dict) -> tuple[dict, str | None]:
     return record, warning
 
 
-def _split_header(cell: str) -> tuple[str, str | None]:
-    import re
-
-    match = re.match(r"^\s*(.*?)\s*\[(.*)\]\s*$", cell)
-    if match:
-        return match.group(1), match.group(2).strip()
-    return cell.strip(), None
-
-
 def _run_csv(path: str, as_json: bool) -> int:
     import csv
     import json
@@ -150,7 +141,9 @@ def _run_csv(path: str, as_json: bool) -> int:
         rows = list(csv.reader(handle))
     if not rows:
         raise UsageError(f"{path}: the file is empty")
-    header = [_split_header(cell) for cell in rows[0]]
+    from bearingheat.frame import parse_header
+
+    header = [parse_header(cell, strict=False) for cell in rows[0]]
     by_column = {name: option for option, (_, name, _) in _FIELDS.items()}
     columns = {}  # option -> (position, unit)
     label_position = None
