@@ -46,6 +46,8 @@ from typing import Any, Callable
 import numpy as np
 import pandas as pd
 
+from bearingheat import friction
+
 __all__ = [
     "TMM_7M",
     "PLAIN_MODELS",
@@ -145,12 +147,7 @@ def rolling_bearing_M0_seed002(n, nu, dM, f0):
     >>> round(float(rolling_bearing_M0_seed002(50.0, 20.0, 50.0, 2.0)), 3)
     4.0
     """
-    nu_n = np.multiply(nu, n)
-    speed_term = np.where(nu_n >= 2000.0, np.abs(nu_n) ** (2.0 / 3.0), 160.0)
-    result = f0 * speed_term * np.power(dM, 3) * 1e-7
-    if isinstance(n, pd.Series):
-        return pd.Series(np.asarray(result, dtype=float), index=n.index)
-    return result if np.ndim(result) else float(result)
+    return friction.speed_dependent_torque(f0, nu, n, dM)
 
 
 def rolling_bearing_M1_seed002(P, dM, f1):
@@ -162,7 +159,7 @@ def rolling_bearing_M1_seed002(P, dM, f1):
     >>> rolling_bearing_M1_seed002(1000.0, 50.0, 0.0005)
     25.0
     """
-    return f1 * P * dM
+    return friction.load_dependent_torque(f1, P, dM)
 
 
 # --------------------------------------------------------------------------- smoothing
