@@ -29,6 +29,7 @@ import math
 
 import numpy as np
 import pandas as pd
+from bearingheat.errors import AuditError
 
 __all__ = [
     "AuditError",
@@ -56,8 +57,6 @@ SYSTEMATIC_RULE = (
 REFERENCE_SPEED_COLUMNS = ("n_thr", "n_B", "n_theta_r", "n_θr", "n_ref", "nthr")
 
 
-class AuditError(ValueError):
-    """Input that cannot be audited (exit code 2 of the CLI)."""
 
 
 # ---------------------------------------------------------------------------------------------

@@ -31,6 +31,7 @@ from typing import Any, NamedTuple
 
 import numpy as np
 import pandas as pd
+from bearingheat.errors import OutsideMethodError
 
 __all__ = [
     "KGF_PER_CM2",
@@ -83,8 +84,6 @@ FRICTION_BANDS = {
 }
 
 
-class OutsideMethodError(ValueError):
-    """The duty lies outside the range of seed 004's method."""
 
 
 # --------------------------------------------------------------------------- definitions

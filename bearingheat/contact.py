@@ -45,6 +45,8 @@ import pandas as pd
 from scipy.optimize import brentq
 from scipy.special import ellipe, ellipk
 
+from bearingheat.errors import ContactInputError
+
 __all__ = [
     "KGF",
     "HERTZ_COMPLIANCE_CM_KGF",
@@ -96,14 +98,6 @@ GYROSCOPIC_CONSTANT_KGF = 5.75e-12
 """Seed 001 constant of the minimum axial load, kgf·min²/mm⁴ (d_w, D0 in mm, n in 1/min)."""
 
 _DEG = math.pi / 180.0
-
-
-class ContactInputError(ValueError):
-    """A contact input out of range; ``row`` is the Series label or array position (None for a scalar)."""
-
-    def __init__(self, message: str, row: Any = None):
-        super().__init__(message)
-        self.row = row
 
 
 # --------------------------------------------------------------------------- helpers

@@ -36,6 +36,7 @@ import pandas as pd
 
 from bearingheat import friction
 from bearingheat.effects import CANDIDATES, EFFECT_NAMES, ModelData, catalogue_arrays
+from bearingheat.errors import DiagnoseError
 
 __all__ = [
     "DiagnoseError",
@@ -56,8 +57,6 @@ __all__ = [
 ]
 
 
-class DiagnoseError(ValueError):
-    """Input that cannot be diagnosed (too few rows, no usable torque column)."""
 
 
 #: measured columns beyond the calc contract -> catalogue unit

@@ -36,6 +36,7 @@ import pandas as pd
 
 from bearingheat.frame import InputError, input_units, parse_header
 from bearingheat.units import UnitError, parse_unit
+from bearingheat.errors import ExcelError
 
 __all__ = [
     "ExcelError",
@@ -62,8 +63,6 @@ EXCEL_SUFFIXES = (".xlsx", ".xlsm")
 _TEXT_UNITS = ("", "-")
 
 
-class ExcelError(InputError):
-    """A workbook or sheet that cannot be used at all (exit code 2 of the CLI)."""
 
 
 # ---------------------------------------------------------------------------------------------

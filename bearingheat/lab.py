@@ -26,6 +26,7 @@ import numpy as np
 import pandas as pd
 
 from bearingheat import friction
+from bearingheat.errors import LabError
 
 __all__ = [
     "LabError",
@@ -58,8 +59,6 @@ LOAD_COEFFICIENT_RADIAL = 0.0009
 LAB_UNITS = {"bearing": "", "Q": "kg", "beta": "deg", "n": "1/min", "T": "N*mm", "nu": "mm^2/s"}
 
 
-class LabError(ValueError):
-    """Readings that cannot be processed (exit code 2 of the CLI)."""
 
 
 def lab_bearing(designation: str) -> dict:

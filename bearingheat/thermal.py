@@ -49,6 +49,7 @@ from bearingheat._series import series_aware
 from bearingheat.coefficients import resolve
 from bearingheat.designation import DesignationError
 from bearingheat.tables_io import load_table
+from bearingheat.errors import HeatBalanceError
 
 __all__ = [
     "POWER_PER_TORQUE_SPEED",
@@ -971,8 +972,6 @@ def _permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue, T_b
 
 # ---- unit-aware API ------------------------------------------------------------------------------
 
-class HeatBalanceError(ValueError):
-    """A bearing or an operating point the heat balance cannot be computed for."""
 
 
 @dataclass
@@ -1133,7 +1132,7 @@ def thermal_reference_speed(designation: str | None = None, *, d, D, C0, B=None,
     >>> thermal_reference_speed("6205-2RSR", d=25 * u.mm, D=52 * u.mm, B=15 * u.mm, C0=7.8 * u.kN)
     Traceback (most recent call last):
     ...
-    bearingheat.thermal.HeatBalanceError: 6205-2RSR: n_thr: the thermal method (ISO 15312, DIN 732) does not apply to bearings with contact seals
+    bearingheat.errors.HeatBalanceError: 6205-2RSR: n_thr: the thermal method (ISO 15312, DIN 732) does not apply to bearings with contact seals
     """
     from bearingheat.units import magnitude, quantity
 

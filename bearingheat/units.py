@@ -18,6 +18,7 @@ from typing import Any
 import numpy as np
 import pandas as pd
 import pint
+from bearingheat.errors import UnitError
 
 __all__ = [
     "ureg",
@@ -32,8 +33,6 @@ __all__ = [
 TWO_PI = 2.0 * math.pi
 
 
-class UnitError(ValueError):
-    """A value has no unit, or a unit of the wrong dimension."""
 
 
 def ureg() -> pint.UnitRegistry:
@@ -142,7 +141,7 @@ def magnitude(value: Any, unit: str, name: str):
     >>> magnitude(2 * u.kg, "N", "Fr")
     Traceback (most recent call last):
     ...
-    bearingheat.units.UnitError: Fr: 2 kilogram is a mass, not a force; for kilogram-force write 2 kgf
+    bearingheat.errors.UnitError: Fr: 2 kilogram is a mass, not a force; for kilogram-force write 2 kgf
     """
     if unit == "1/min":
         return speed_rpm(value, name)
@@ -240,7 +239,7 @@ def parse_quantity(text: str, *, name: str = "value"):
     >>> parse_quantity('12', name='--dw')
     Traceback (most recent call last):
     ...
-    bearingheat.units.UnitError: --dw: '12' has no unit; write it with one, e.g. 12mm
+    bearingheat.errors.UnitError: --dw: '12' has no unit; write it with one, e.g. 12mm
     """
     raw = str(text).strip()
     match = re.match(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*)$", raw)

@@ -34,6 +34,7 @@ import pandas as pd
 from bearingheat._series import series_aware
 from bearingheat.tables_io import load_table
 from bearingheat.units import magnitude, quantity
+from bearingheat.errors import ViscosityRangeWarning
 
 __all__ = [
     "KELVIN_OFFSET",
@@ -64,8 +65,6 @@ MIN_VISCOSITY = 2.0
 DEFAULT_VISCOSITY_INDEX = 95.0
 
 
-class ViscosityRangeWarning(UserWarning):
-    """A viscosity outside the range of ASTM D341 (ν < 2 mm²/s, or below the pour point)."""
 
 
 def _loglog(nu):

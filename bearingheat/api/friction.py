@@ -25,12 +25,11 @@ from bearingheat.coefficients import resolve
 from bearingheat.f2chart import F2Chart
 from bearingheat.model import Labels, bearing_constants, check_and_evaluate
 from bearingheat.units import magnitude, quantity, speed_rpm
+from bearingheat.errors import FrictionInputError
 
 __all__ = ["FrictionResult", "FrictionInputError", "friction_torque"]
 
 
-class FrictionInputError(ValueError):
-    """An argument of :func:`friction_torque` outside the model's range."""
 
 
 @dataclass
@@ -104,7 +103,7 @@ def friction_torque(bearing: str | None = None, *, n, nu, lubrication: str | Non
     ------
     FrictionInputError
         naming the argument and the value (and the index for arrays).
-    bearingheat.units.UnitError
+    bearingheat.errors.UnitError
         for a plain number where a Quantity is needed, or a wrong dimension.
     """
     resolved = resolve(bearing, bearing_type, series)

@@ -1,0 +1,1 @@
+"""Inverse orchestration: lab fits, coast-down fits, effect candidates, diagnose and audit."""

@@ -1,0 +1,1 @@
+"""Typed, cached lookups of the catalogue tables in ``tables/``; designations. No physics."""

@@ -1,0 +1,162 @@
+"""User-digitised f2 charts for axially loaded cylindrical roller bearings.
+
+Seed 002 (p. 70, figures 3 and 4) gives f2 as curves against the
+viscosity-speed figure ν·n·dM, one curve per value of Fa/A. The chart images
+are missing from the seed and no public digitisation is known, so bearingheat
+never ships chart values: the user digitises the chart of their catalogue and
+passes the points as a CSV.
+
+CSV format (one row per digitised point, a units row under the header)::
+
+    curve,Fa_over_A,nu_n_dM,f2,source
+    -,1,mm^3/(s*min),1,-
+    A,0.5,2000,0.012,my catalogue p. 70 fig. 3
+    A,0.5,50000,0.004,my catalogue p. 70 fig. 3
+    B,2.0,2000,0.020,my catalogue p. 70 fig. 3
+    ...
+
+- ``curve``: a label, one per curve; every point of a curve has the same ``Fa_over_A``.
+- ``nu_n_dM`` in the unit of the units row (any pint unit of volume per
+  time², e.g. ``mm^3/(s*min)``, the catalogue's mm²/s · 1/min · mm).
+- at least two points per curve, ``nu_n_dM`` strictly increasing, all
+  values > 0; ``source`` is optional.
+
+Interpolation is linear in log-log: log f2 against log(ν·n·dM) along each
+curve, then log f2 against log(Fa/A) between the two curves that bracket
+the query. A query outside the Fa/A range of the curves, or outside the
+ν·n·dM range of either bracketing curve, is refused: the seed says the
+charts must not be extrapolated.
+"""
+from __future__ import annotations
+
+import csv
+import io
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from bearingheat.units import UnitError, parse_unit, ureg
+from bearingheat.errors import F2ChartError
+
+__all__ = ["F2Chart", "F2ChartError"]
+
+_X_UNIT = "mm^3/(s*min)"
+
+
+
+
+@dataclass(frozen=True)
+class _Curve:
+    label: str
+    Fa_over_A: float
+    x_range: tuple[float, float]
+    log_x: np.ndarray
+    log_f2: np.ndarray
+
+
+class F2Chart:
+    """Curves f2(ν·n·dM) at fixed Fa/A, interpolated in log-log and never extrapolated."""
+
+    def __init__(self, points: dict[str, tuple[float, list[float], list[float]]], name: str = "f2 chart"):
+        """``points``: curve label -> (Fa/A, [ν·n·dM in mm³/(s·min)], [f2])."""
+        self.name = name
+        curves = []
+        for label, (Fa_over_A, xs, f2s) in points.items():
+            xs = np.asarray(xs, dtype=float)
+            f2s = np.asarray(f2s, dtype=float)
+            where = f"{name}, curve {label!r}"
+            if len(xs) < 2:
+                raise F2ChartError(f"{where}: needs at least two points, has {len(xs)}")
+            if not (np.all(xs > 0) and np.all(f2s > 0) and Fa_over_A > 0):
+                raise F2ChartError(f"{where}: Fa_over_A, nu_n_dM and f2 must all be > 0")
+            if np.any(np.diff(xs) <= 0):
+                raise F2ChartError(f"{where}: nu_n_dM must increase strictly from point to point")
+            curves.append(_Curve(label, float(Fa_over_A), (float(xs[0]), float(xs[-1])), np.log(xs), np.log(f2s)))
+        if not curves:
+            raise F2ChartError(f"{name}: no curves")
+        curves.sort(key=lambda c: c.Fa_over_A)
+        levels = [c.Fa_over_A for c in curves]
+        if len(set(levels)) != len(levels):
+            raise F2ChartError(f"{name}: two curves share one Fa_over_A value")
+        self._curves = curves
+        self._levels = np.array(levels)
+
+    @classmethod
+    def from_csv(cls, path: str | Path) -> "F2Chart":
+        """Read a digitised chart in the format of the module docstring."""
+        path = Path(path)
+        try:
+            text = path.read_text(encoding="utf-8-sig")
+        except OSError as exc:
+            raise F2ChartError(f"{path}: cannot read the f2 chart ({exc.strerror})") from exc
+        rows = list(csv.reader(io.StringIO(text)))
+        required = ["curve", "Fa_over_A", "nu_n_dM", "f2"]
+        if len(rows) < 2 or any(col not in rows[0] for col in required):
+            raise F2ChartError(f"{path}: an f2 chart needs the columns {', '.join(required)} and a units row")
+        header, units = rows[0], rows[1]
+        col = {name: header.index(name) for name in required}
+        try:
+            scale = ureg().Quantity(1.0, parse_unit(units[col["nu_n_dM"]], name="nu_n_dM")).to(_X_UNIT).magnitude
+        except (UnitError, Exception) as exc:  # pint DimensionalityError or an unknown unit
+            raise F2ChartError(f"{path}: units row: nu_n_dM unit {units[col['nu_n_dM']]!r} "
+                               f"is not convertible to {_X_UNIT}") from exc
+        points: dict[str, tuple[float, list[float], list[float]]] = {}
+        for line_no, row in enumerate(rows[2:], start=3):
+            if not any(cell.strip() for cell in row):
+                continue
+            try:
+                label = row[col["curve"]].strip()
+                level, x, f2 = (float(row[col[c]]) for c in ("Fa_over_A", "nu_n_dM", "f2"))
+            except (ValueError, IndexError) as exc:
+                raise F2ChartError(f"{path}, line {line_no}: not a number in {row!r}") from exc
+            known = points.setdefault(label, (level, [], []))
+            if known[0] != level:
+                raise F2ChartError(f"{path}, line {line_no}: curve {label!r} has Fa_over_A {level:g}, "
+                                   f"earlier points have {known[0]:g}")
+            known[1].append(x * scale)
+            known[2].append(f2)
+        return cls(points, name=str(path))
+
+    @property
+    def Fa_over_A_range(self) -> tuple[float, float]:
+        return float(self._levels[0]), float(self._levels[-1])
+
+    def lookup(self, Fa_over_A, nu_n_dM):
+        """f2 at each query point, and a refusal message per point ('' where f2 is valid).
+
+        ``nu_n_dM`` in mm³/(s·min). Refused points get f2 = NaN.
+        """
+        q_level = np.atleast_1d(np.asarray(Fa_over_A, dtype=float))
+        q_x = np.atleast_1d(np.asarray(nu_n_dM, dtype=float))
+        q_level, q_x = np.broadcast_arrays(q_level, q_x)
+        f2 = np.full(q_level.shape, np.nan)
+        reasons = np.full(q_level.shape, "", dtype=object)
+        lo, hi = self.Fa_over_A_range
+        for i, (level, x) in enumerate(zip(q_level.ravel(), q_x.ravel())):
+            if not (lo <= level <= hi):
+                reasons.flat[i] = (f"Fa/A = {level:.4g} is outside the f2 chart's curves ({lo:g} to {hi:g}); "
+                                   "the seed forbids extrapolating the chart")
+                continue
+            upper = int(np.searchsorted(self._levels, level, side="left"))
+            if self._levels[upper] == level:
+                bracket = [self._curves[upper]]
+            else:
+                bracket = [self._curves[upper - 1], self._curves[upper]]
+            values = []
+            for curve in bracket:
+                x_lo, x_hi = curve.x_range
+                if not (x_lo <= x <= x_hi):
+                    reasons.flat[i] = (f"nu*n*dM = {x:.4g} mm^3/(s*min) is outside curve {curve.label!r} "
+                                       f"(Fa/A = {curve.Fa_over_A:g}: {x_lo:.4g} to {x_hi:.4g}); "
+                                       "the seed forbids extrapolating the chart")
+                    break
+                values.append(np.interp(np.log(x), curve.log_x, curve.log_f2))
+            else:
+                if len(values) == 1:
+                    f2.flat[i] = np.exp(values[0])
+                else:
+                    w = (np.log(level) - np.log(bracket[0].Fa_over_A)) / (
+                        np.log(bracket[1].Fa_over_A) - np.log(bracket[0].Fa_over_A))
+                    f2.flat[i] = np.exp(values[0] + w * (values[1] - values[0]))
+        return f2, reasons

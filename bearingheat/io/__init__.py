@@ -1,0 +1,1 @@
+"""Files, workbooks, figures and reports. No physics."""

@@ -1,0 +1,1 @@
+"""Figures (matplotlib Figure API, never ``matplotlib.use``) and report writers."""
