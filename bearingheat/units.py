@@ -28,6 +28,8 @@ __all__ = [
     "speed_rpm",
     "parse_unit",
     "normalise_unit_text",
+    "parse_quantity",
+    "convert_column",
 ]
 
 TWO_PI = 2.0 * math.pi
@@ -250,3 +252,63 @@ def parse_quantity(text: str, *, name: str = "value"):
         raise UnitError(f"{name}: {text!r} has no unit; write it with one, e.g. {number}mm")
     unit = parse_unit(unit_text, name=name)
     return ureg().Quantity(float(number), unit)
+
+
+def convert_column(numbers: np.ndarray, unit_text: str | None, target: str, *, name: str,
+                   header: str | None = None) -> tuple[np.ndarray, float]:
+    """Numbers of a column headed ``name [unit_text]`` in the catalogue unit ``target``.
+
+    The one converter of header units (calc tables, workbooks, measured
+    data, lab readings, catalogue lists). Returns ``(values, factor)``:
+    ``factor`` is catalogue units per header unit (one multiplication over
+    the column), NaN for an absolute temperature (an offset conversion of
+    the whole column). ``target`` ``'1'`` is a dimensionless number and
+    ``'1/min'`` a shaft speed (revolutions per time; rad/s divided by 2π).
+    Raises :class:`UnitError` saying what is wrong with the unit; callers
+    prefix the column.
+
+    >>> import numpy as np
+    >>> convert_column(np.array([2.0, 3.5]), "kN", "N", name="Fr")
+    (array([2000., 3500.]), 1000.0)
+    >>> convert_column(np.array([50.0]), "Hz", "1/min", name="n")
+    (array([3000.]), 60.0)
+    >>> convert_column(np.array([20.0]), "degC", "delta_degC", name="dT_oil")
+    Traceback (most recent call last):
+    ...
+    bearingheat.errors.UnitError: unit degC cannot be converted to delta_degC
+    >>> convert_column(np.array([5.0]), "kg", "N", name="Fr")
+    Traceback (most recent call last):
+    ...
+    bearingheat.errors.UnitError: kilogram is a mass, not a force; for kilogram-force write kgf
+    """
+    header = header or (f"{name} [{unit_text}]" if unit_text else name)
+    numbers = np.asarray(numbers, dtype=float)
+    if target == "1":
+        if unit_text is None or unit_text.strip() in ("", "-", "1"):
+            return numbers, 1.0
+        one = ureg().Quantity(1.0, parse_unit(unit_text, name=header))
+        if not one.dimensionless:
+            raise UnitError(f"{name} is dimensionless, {unit_text!r} is not")
+        factor = float(one.to("dimensionless").magnitude)
+        return numbers * factor, factor
+    if unit_text is None or unit_text.strip() in ("", "-"):
+        raise UnitError(f"needs a unit, e.g. '{name} [{target}]'")
+    unit = parse_unit(unit_text, name=header)
+    if target == "1/min":
+        try:
+            factor = float(speed_rpm(ureg().Quantity(1.0, unit), header))
+        except UnitError as exc:
+            raise UnitError(f"{unit_text} is not a shaft speed; expected revolutions per time "
+                            "(1/min, rpm, Hz) or an angular speed (rad/s)") from exc
+        return numbers * factor, factor
+    one = ureg().Quantity(1.0, unit)
+    try:
+        if one._is_multiplicative and ureg().Quantity(1.0, target)._is_multiplicative:
+            factor = float(one.to(target).magnitude)
+            return numbers * factor, factor
+        # an absolute temperature (K, degC, degF): offset conversion of the whole column
+        return np.asarray(ureg().Quantity(numbers, unit).to(target).magnitude, dtype=float), math.nan
+    except (pint.errors.DimensionalityError, pint.errors.OffsetUnitCalculusError) as exc:
+        if one.dimensionality == ureg().kg.dimensionality and target == "N":
+            raise UnitError(f"{one.units} is a mass, not a force; for kilogram-force write kgf") from exc
+        raise UnitError(f"unit {unit_text} cannot be converted to {target}") from exc

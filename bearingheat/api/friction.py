@@ -21,13 +21,14 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from bearingheat.coefficients import resolve
-from bearingheat.f2chart import F2Chart
-from bearingheat.model import Labels, bearing_constants, check_and_evaluate
-from bearingheat.units import magnitude, quantity, speed_rpm
+from bearingheat.calc.messages import Labels
+from bearingheat.calc.models import DEFAULT_MODEL, get_model
+from bearingheat.calc.supports import build_support_arrays
+from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.errors import FrictionInputError
+from bearingheat.units import magnitude, quantity, speed_rpm
 
-__all__ = ["FrictionResult", "FrictionInputError", "friction_torque"]
+__all__ = ["FrictionResult", "friction_torque"]
 
 
 
@@ -80,7 +81,8 @@ def _optional(value, unit: str, name: str):
 def friction_torque(bearing: str | None = None, *, n, nu, lubrication: str | None = None, Fr=None, Fa=None,
                     d=None, D=None, B=None, C0=None, bearing_type: str | None = None, series: str | None = None,
                     arrangement: str = "single", Y=None, e=None, X0=None, Y0=None, alpha=None,
-                    f0=None, f1=None, f2=None, f2_chart: F2Chart | None = None) -> FrictionResult:
+                    f0=None, f1=None, f2=None, f2_chart: F2Chart | None = None,
+                    model: str = DEFAULT_MODEL) -> FrictionResult:
     """Friction torque and power loss of one bearing at one or many operating points.
 
     Parameters
@@ -97,20 +99,19 @@ def friction_torque(bearing: str | None = None, *, n, nu, lubrication: str | Non
     C0 : static load rating [force], for f1 in P0/C0 or Fa/C0.
     Y, e, X0, Y0 : catalogue factors; alpha : working contact angle [angle].
     f0, f1, f2 : coefficient overrides; f2_chart : a digitised
-        :class:`~bearingheat.f2chart.F2Chart`.
+        :class:`~bearingheat.catalogue.f2chart.F2Chart`.
+    model : the friction model, a name of :data:`bearingheat.calc.models.MODELS`.
 
     Raises
     ------
     FrictionInputError
         naming the argument and the value (and the index for arrays).
+    bearingheat.errors.ModelError
+        for an unknown model name.
     bearingheat.errors.UnitError
         for a plain number where a Quantity is needed, or a wrong dimension.
     """
-    resolved = resolve(bearing, bearing_type, series)
-    const = bearing_constants(resolved, lubrication if f0 is None or lubrication is not None else None,
-                              arrangement)
-    if const["error"]:
-        raise FrictionInputError(const["error"])
+    friction_model = get_model(model)
     inputs = {
         "n": speed_rpm(n, "n"),
         "nu": magnitude(nu, "mm^2/s", "nu"),
@@ -123,30 +124,20 @@ def friction_torque(bearing: str | None = None, *, n, nu, lubrication: str | Non
         inputs[name] = _optional(value, "mm", name)
     for name, value in zip(_FACTORS, (Y, e, X0, Y0, f0, f1, f2)):
         inputs[name] = _dimensionless(value, name)
-    if lubrication is None and f0 is None:
-        raise FrictionInputError("lubrication: missing; expected one of grease, oil_mist, oil_bath, circulating_oil")
-    parsed = resolved.designation
-    if parsed is not None and np.ndim(inputs["d"]) == 0 and math.isnan(inputs["d"]) and parsed.bore:
-        inputs["d"] = parsed.bore
-    if parsed is not None and np.ndim(inputs["B"]) == 0 and math.isnan(inputs["B"]) and parsed.width:
-        inputs["B"] = parsed.width
 
     index = next((v.index for v in inputs.values() if isinstance(v, pd.Series)), None)
     arrays = {k: (v.to_numpy(dtype=float) if isinstance(v, pd.Series) else np.asarray(v, dtype=float))
               for k, v in inputs.items()}
     shape = np.broadcast_shapes(*(v.shape for v in arrays.values()))
-    rows = (int(np.prod(shape)),)
     # arrays become one row axis; scalars stay scalars (no copies of constants)
     flat = {k: (v if v.ndim == 0 else np.broadcast_to(v, shape).ravel()) for k, v in arrays.items()}
-    if flat["n"].ndim == 0:
-        flat["n"] = np.broadcast_to(flat["n"], rows)
-    a = {**flat, **{k: const[k] for k in ("f0_table", "f0_basis", "f1_a", "f1_x", "f1_basis", "m1_load",
-                                           "X0_table", "Y0_table", "kB", "m2", "no_axial", "seal", "label",
-                                           "prefix", "bearing_type")}}
-    a["p1_rule"] = const["p1_rule"] or ""
-    a["contact_angle"] = math.nan if const["contact_angle"] is None else const["contact_angle"]
+    keys = pd.DataFrame({"designation": [bearing], "type": [bearing_type], "series": [series],
+                         "lubrication": [lubrication], "arrangement": [arrangement]})
+    supports = build_support_arrays(keys, flat)
+    if supports.error:
+        raise FrictionInputError(str(supports.error))
     with np.errstate(all="ignore"):
-        results, problems = check_and_evaluate(a, Labels(), f2_chart)
+        results, problems = friction_model.evaluate(supports, Labels(), f2_chart)
     errors = [p for p in problems if p.level == "error"]
     if errors:
         first = errors[0]
@@ -154,7 +145,7 @@ def friction_torque(bearing: str | None = None, *, n, nu, lubrication: str | Non
         where = f" (at index {np.unravel_index(i, shape) if len(shape) > 1 else i})" if shape else ""
         raise FrictionInputError(first.message(i) + where)
     messages = [p.message(int(np.flatnonzero(p.mask)[0])) for p in problems]
-    messages += list(const["notes"])
+    messages += list(supports.notes[0])
 
     def out(name, unit):
         values = results[name].reshape(shape)
@@ -170,7 +161,5 @@ def friction_torque(bearing: str | None = None, *, n, nu, lubrication: str | Non
         M0=out("M0", "N*mm"), M1=out("M1", "N*mm"), M2=out("M2", "N*mm"), MR=out("MR", "N*mm"),
         NR=out("NR", "W"), Fa_over_A=out("Fa_over_A", None), nu_n_dM=out("nu_n_dM", "mm^3/(s*min)"),
         status="warning" if messages else "ok", messages=messages,
-        bearing_type=const["bearing_type"], series=const["series"],
+        bearing_type=str(supports.bearing_type), series=str(supports.series),
     )
-
-

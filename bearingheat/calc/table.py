@@ -1,106 +1,63 @@
 """The DataFrame API: the ``bearingheat calc`` column contract on pandas.
 
 Input columns are headed ``name [unit]`` where the unit is any pint unit of
-the right dimension (``Fr [kN]``, ``n [rpm]``, ``n [Hz]``, ``nu [cSt]``):
+the right dimension (``Fr [kN]``, ``n [rpm]``, ``n [Hz]``, ``nu [cSt]``).
+The columns, their catalogue units and meanings are the column contract,
+:mod:`bearingheat.calc.contract`; each row's friction model is the
+``model`` column or the ``model`` argument (:mod:`bearingheat.calc.models`).
 
-=================  ==========  =====================================================
-column             unit        meaning
-=================  ==========  =====================================================
-id                 text        the user's label of the support
-designation        text        e.g. 6205-2Z, NU206-E, 30205-A (or give type and series)
-type, series       text        explicit table row, e.g. deep_groove_ball / 62
-d, D, B            length      bore, outside diameter, width
-C0                 force       static load rating
-Y, e, X0, Y0       1           catalogue factors (override the tables)
-alpha              angle       working contact angle of angular contact ball bearings
-arrangement        text        single (default) or paired
-f0, f1, f2         1           coefficient overrides
-lubrication        text        grease, oil_mist, oil_bath, circulating_oil
-n                  1/time      shaft speed (Hz = rev/s; rad/s is divided by 2π)
-Fr, Fa             force       radial and axial load (blank = 0)
-nu                 area/time   operating viscosity (base oil for grease)
-=================  ==========  =====================================================
-
-Result columns: ``f0``, ``f1``, ``P0 [N]``, ``P1 [N]``, ``M0 [N*mm]``,
-``M1 [N*mm]``, ``M2 [N*mm]``, ``MR [N*mm]``, ``NR [W]``, ``status``
-(ok | warning | error), ``message``; ``Fa/A`` and ``nu*n*dM [mm^3/(s*min)]``
-when a row carries M2. Extensions (the heat balance, contact checks, plain
-bushings) add their own columns when their inputs are present.
+Result columns: the model's results (``f0``, ``f1``, ``P0 [N]``, ``P1 [N]``,
+``M0 [N*mm]``, ``M1 [N*mm]``, ``M2 [N*mm]``, ``MR [N*mm]``, ``NR [W]`` for
+the catalogue model), ``status`` (ok | warning | error) and ``message``;
+``Fa/A`` and ``nu*n*dM [mm^3/(s*min)]`` when a row carries M2. Extensions
+(the heat balance, contact checks) add their own columns when their inputs
+are present.
 
 A bad row gets ``status = error`` and a message naming the column and the
 value; the other rows are still computed. Input that cannot be used at all
 (a required column missing, a unit of the wrong dimension) raises
-:class:`InputError`.
+:class:`~bearingheat.errors.InputError`.
 """
 from __future__ import annotations
 
-import importlib
 import math
-import re
 from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
 import pandas as pd
-import pint
 
-from bearingheat.f2chart import F2Chart
-from bearingheat.model import (INPUT_UNITS, M2_REPORT_UNITS, PLAIN_REPORT_UNITS, PLAIN_TYPES, RESULT_UNITS, Labels,
-                               compute_supports)
-from bearingheat.units import UnitError, parse_unit, speed_rpm, ureg
-from bearingheat.errors import InputError
+from bearingheat import contact_calc, thermal_calc
+from bearingheat.calc.contract import PLAIN_TYPES, input_units, output_header, output_units, parse_header
+from bearingheat.calc.messages import Labels
+from bearingheat.calc.models import DEFAULT_MODEL, M2_REPORT_UNITS, PLAIN_REPORT_UNITS, RESULT_UNITS, \
+    compute_supports
+from bearingheat.catalogue.f2chart import F2Chart
+from bearingheat.errors import InputError, UnitError
+from bearingheat.units import convert_column
 
-__all__ = ["InputError", "calc", "parse_header", "EXTENSIONS", "input_units", "output_header"]
-
-
-
-
-#: modules that add inputs and result columns to calc; each defines INPUT_UNITS, OUTPUT_UNITS,
-#: prepare(frame) -> (frame, problems) and extend(frame, results) -> (columns, problems),
-#: where problems are (row position, 'error' | 'warning', message).
-EXTENSIONS: list[str] = [
-    "bearingheat.contact_calc",
-    "bearingheat.thermal_calc",
-]
-
-_HEADER = re.compile(r"^\s*(?P<name>[^\[\]]+?)\s*(?:\[\s*(?P<unit>[^\]]*?)\s*\])?\s*$")
-_OUTPUT_NAMES = {"Fa_over_A": "Fa/A", "nu_n_dM": "nu*n*dM", "p_plain": "p", "V_plain": "V"}
+__all__ = ["calc", "to_catalogue_units", "require_columns", "Extension", "EXTENSIONS"]
 
 
-def _extensions():
-    return [importlib.import_module(path) for path in EXTENSIONS]
+@dataclass(frozen=True)
+class Extension:
+    """A calc extension: it reads and writes the contract columns of its ``owner``.
 
-
-def input_units() -> dict[str, str]:
-    """Every input column calc reads (with its extensions) -> its catalogue unit."""
-    units = dict(INPUT_UNITS)
-    for ext in _extensions():
-        units.update(ext.INPUT_UNITS)
-    return units
-
-
-def parse_header(header, *, strict: bool = True) -> tuple[str, str | None]:
-    """``'Fr [kN] '`` -> ``('Fr', 'kN')``; ``'id'`` -> ``('id', None)``.
-
-    A header that is not ``name [unit]`` raises :class:`InputError`, or with
-    ``strict=False`` comes back whole as a name without a unit.
-
-    >>> parse_header(' n [U/min] ')
-    ('n', 'U/min')
-    >>> parse_header('a] b', strict=False)
-    ('a] b', None)
+    ``prepare(frame) -> (frame, problems)`` runs before the friction model,
+    ``extend(frame, results) -> (columns, problems)`` after it; problems
+    are (row position, 'error' | 'warning', message).
     """
-    match = _HEADER.match(str(header))
-    if not match:
-        if not strict:
-            return str(header).strip(), None
-        raise InputError(f"column {header!r}: cannot read the header; write it as 'name [unit]'")
-    return match.group("name").strip(), match.group("unit")
+
+    owner: str
+    prepare: Callable
+    extend: Callable
 
 
-def output_header(name: str, unit: str) -> str:
-    shown = _OUTPUT_NAMES.get(name, name)
-    return shown if unit in ("", "1") else f"{shown} [{unit}]"
+#: the extensions in the order their columns are written; keys are the contract owners
+EXTENSIONS: dict[str, Extension] = {e.owner: e for e in (
+    Extension("contact", contact_calc.prepare, contact_calc.extend),
+    Extension("thermal", thermal_calc.prepare, thermal_calc.extend),
+)}
 
 
 @dataclass
@@ -121,42 +78,10 @@ def _convert_column(values: pd.Series, header: str, unit_text: str | None, targe
         if np.isnan(num) and not _blank(cell_value):
             where = f"{cell(name, i)}: " if cell else ""
             errors[i].append(f"{where}{cell_value!r} is not a number for {header}")
-    if target == "1":
-        if unit_text in (None, "", "-", "1"):
-            return numeric, 1.0
-        one = ureg().Quantity(1.0, parse_unit(unit_text, name=header))
-        if not one.dimensionless:
-            raise InputError(f"column {header!r}: {name} is dimensionless, {unit_text!r} is not")
-        factor = float(one.to("dimensionless").magnitude)
-        return numeric * factor, factor
-    if unit_text is None or unit_text.strip() in ("", "-"):
-        raise InputError(f"column {header!r}: needs a unit, e.g. '{name} [{target}]'")
     try:
-        unit = parse_unit(unit_text, name=header)
-        if target == "1/min":
-            try:
-                factor = float(speed_rpm(ureg().Quantity(1.0, unit), header))
-            except UnitError as exc:
-                raise UnitError(f"{unit_text} is not a shaft speed; expected revolutions per time "
-                                "(1/min, rpm, Hz) or an angular speed (rad/s)") from exc
-            return numeric * factor, factor
-        one = ureg().Quantity(1.0, unit)
-        if one._is_multiplicative and ureg().Quantity(1.0, target)._is_multiplicative:
-            factor = float(_to(one, target, header))
-            return numeric * factor, factor
-        # an absolute temperature (K, degC, degF): offset conversion of the whole column
-        return np.asarray(_to(ureg().Quantity(numeric, unit), target, header), dtype=float), math.nan
+        return convert_column(numeric, unit_text, target, name=name, header=header)
     except UnitError as exc:
         raise InputError(f"column {header!r}: {exc}") from exc
-
-
-def _to(q: pint.Quantity, target: str, header: str):
-    try:
-        return q.to(target).magnitude
-    except pint.errors.DimensionalityError as exc:
-        if q.dimensionality == ureg().kg.dimensionality and target == "N":
-            raise UnitError(f"{q.units} is a mass, not a force; for kilogram-force write kgf") from exc
-        raise UnitError(f"unit {q.units} cannot be converted to {target}") from exc
 
 
 def _blank(value) -> bool:
@@ -193,7 +118,8 @@ def to_catalogue_units(table: pd.DataFrame, *, units: dict[str, str] | None = No
     return _Converted(frame, Labels(headers, cell), errors)
 
 
-def _require(frame: pd.DataFrame) -> None:
+def require_columns(frame: pd.DataFrame) -> None:
+    """Raise :class:`InputError` naming the first required column the frame (contract names) lacks."""
     have = set(frame.columns)
     types = frame["type"] if "type" in have else pd.Series([None] * len(frame), index=frame.index)
     rolling = ~types.fillna("").astype(str).str.lower().isin(PLAIN_TYPES)
@@ -205,19 +131,23 @@ def _require(frame: pd.DataFrame) -> None:
         raise InputError("missing column: 'designation' (or 'type' and 'series')")
     for name in ("D", "nu"):
         if name not in have:
-            unit = INPUT_UNITS[name]
+            unit = input_units()[name]
             raise InputError(f"missing column: '{name} [{unit}]' (any {name} unit of the right dimension)")
     if "lubrication" not in have and "f0" not in have:
         raise InputError("missing column: 'lubrication' (grease, oil_mist, oil_bath or circulating_oil)")
 
 
-def calc(table: pd.DataFrame, *, f2_chart: F2Chart | str | None = None, units: dict[str, str] | None = None,
-         cell: Callable[[str, int], str] | None = None, effects=None) -> pd.DataFrame:
+def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart | str | None = None,
+         units: dict[str, str] | None = None, cell: Callable[[str, int], str] | None = None,
+         effects=None) -> pd.DataFrame:
     """Run the friction model (and its extensions) on a table of supports.
 
-    Returns the input columns followed by the result columns. ``effects``
-    is an optional fitted extension of the model (``bearingheat diagnose``)
-    applied to MR and NR.
+    Returns the input columns followed by the result columns. ``model`` is
+    the friction model of rows whose ``model`` cell is blank (a name of
+    :data:`bearingheat.calc.models.MODELS`; an unknown name raises
+    :class:`~bearingheat.errors.ModelError`). ``effects`` is an optional
+    fitted extension of the model (``bearingheat diagnose``) applied to MR
+    and NR.
 
     >>> import pandas as pd
     >>> rows = pd.DataFrame({"designation": ["6205", "NU206-E"], "d [mm]": [25, 30], "D [mm]": [52, 62],
@@ -234,11 +164,12 @@ def calc(table: pd.DataFrame, *, f2_chart: F2Chart | str | None = None, units: d
     converted = to_catalogue_units(table, units=units, cell=cell)
     frame = converted.frame
     extra_problems: list[tuple[int, str, str]] = []
-    for ext in _extensions():
+    for ext in EXTENSIONS.values():
         frame, problems = ext.prepare(frame)
         extra_problems.extend(problems)
-    _require(frame)
-    results = compute_supports(frame.reset_index(drop=True), f2_chart=f2_chart, labels=converted.labels)
+    require_columns(frame)
+    results = compute_supports(frame.reset_index(drop=True), f2_chart=f2_chart, labels=converted.labels,
+                               model=model)
     results.index = table.index
     _merge_row_messages(results, converted.row_errors, "error")
     for position, level, message in extra_problems:
@@ -246,11 +177,11 @@ def calc(table: pd.DataFrame, *, f2_chart: F2Chart | str | None = None, units: d
     if effects is not None:
         effects.apply(frame, results)
     extension_columns = []
-    for ext in _extensions():
+    for ext in EXTENSIONS.values():
         columns, problems = ext.extend(frame, results)
         for position, level, message in problems:
             _add_message(results, position, level, message)
-        extension_columns.append((columns, ext.OUTPUT_UNITS))
+        extension_columns.append((columns, output_units(owner=ext.owner)))
     return _assemble(table, results, extension_columns)
 
 

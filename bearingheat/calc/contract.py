@@ -1,0 +1,298 @@
+"""The column contract of ``calc``: every input and output column, once.
+
+Each :class:`Column` says its name, its catalogue unit, what it means, who
+reads or writes it (``owner``: the friction model, an extension, or the
+table itself) and, for inputs, whether a designer must fill it and which
+values a drop-down list offers. Everything else is generated from here:
+
+- the unit conversion of ``name [unit]`` headers (:func:`input_units`),
+- the result headers (:func:`output_header`),
+- ``bearingheat calc --help`` (:func:`help_text`),
+- the Excel template's columns, comments and drop-down lists (``io/excel/template.py``),
+- the column table of the docs (:func:`markdown_table`).
+
+Catalogue units: ``''`` is text, ``'1'`` a dimensionless number, anything
+else a pint unit (temperature differences are ``delta_degC`` so that a
+header in ``degC`` is refused for them).
+
+>>> input_units()["Fr"], output_units()["MR"]
+('N', 'N*mm')
+>>> output_header("nu_n_dM")
+'nu*n*dM [mm^3/(s*min)]'
+>>> columns(owner="contact", kind="input")
+('z', 'Dw', 'dm_pitch')
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import Callable
+
+from bearingheat.catalogue.designation import BEARING_TYPES
+from bearingheat.catalogue.friction import LUBRICATION_F0_COLUMN
+from bearingheat.errors import InputError
+
+__all__ = [
+    "Column",
+    "CONTRACT",
+    "OWNERS",
+    "PLAIN_TYPES",
+    "ARRANGEMENTS",
+    "column",
+    "columns",
+    "input_units",
+    "output_units",
+    "output_header",
+    "parse_header",
+    "register_choices",
+    "choices",
+    "template_columns",
+    "help_text",
+    "markdown_table",
+]
+
+#: who reads or writes a column -> what it is, for the help and the docs
+OWNERS = {
+    "table": "the table itself",
+    "friction": "the friction model",
+    "thermal": "the heat balance (ISO 15312 reference speed, permissible speed, operating temperature)",
+    "contact": "ball contact (minimum axial load)",
+    "plain": "plain bushings (type plain_bushing)",
+}
+#: support types that are not rolling bearings
+PLAIN_TYPES = ("plain_bushing",)
+#: how a bearing is mounted
+ARRANGEMENTS = ("single", "paired")
+
+
+@dataclass(frozen=True)
+class Column:
+    """One column of the calc contract.
+
+    ``template`` is the (unit shown in the units row, column width) of the
+    column in the Excel template, or None where the template has no such
+    column; ``required`` marks the columns a designer must fill for a
+    rolling bearing (bold headers in the template). ``shown`` is the
+    header name where it differs from ``name`` (``Fa/A`` for ``Fa_over_A``).
+    """
+
+    name: str
+    unit: str
+    meaning: str
+    owner: str
+    kind: str = "input"
+    required: bool = False
+    template: tuple[str, int] | None = None
+    shown: str = ""
+
+    @property
+    def header(self) -> str:
+        """The header calc writes: ``name [unit]``, or the bare name of a text or dimensionless column."""
+        name = self.shown or self.name
+        return name if self.unit in ("", "1") else f"{name} [{self.unit}]"
+
+
+def _in(name, unit, meaning, owner="friction", *, required=False, template=None):
+    return Column(name, unit, meaning, owner, "input", required, template)
+
+
+def _out(name, unit, meaning, owner="friction", shown=""):
+    return Column(name, unit, meaning, owner, "output", shown=shown)
+
+
+#: every column, inputs in the order of the Excel template, then the optional inputs, then the results
+CONTRACT: tuple[Column, ...] = (
+    # --- inputs of the template, in its column order (Fr lands in column F)
+    _in("id", "", "your label of the support, e.g. 'input shaft A (locating)'", "table", template=("-", 26)),
+    _in("designation", "", "bearing designation, e.g. 6208, NU208-E, 30208-A, 7210-B, 6205-2Z",
+        required=True, template=("-", 14)),
+    _in("d", "mm", "bore; blank: read from the designation (6208 -> 40 mm)", template=("mm", 8)),
+    _in("D", "mm", "outside diameter", required=True, template=("mm", 8)),
+    _in("n", "1/min", "shaft speed (1/min, rpm, U/min, min^-1, Hz, rad/s)", required=True,
+        template=("1/min", 9)),
+    _in("Fr", "N", "radial load (N, kN, lbf, kgf); blank = 0", required=True, template=("kN", 9)),
+    _in("Fa", "N", "axial load; blank = 0", template=("kN", 9)),
+    _in("nu", "mm^2/s", "operating viscosity (base oil viscosity for grease); mm^2/s = cSt", required=True,
+        template=("mm^2/s", 10)),
+    _in("lubrication", "", "grease, oil_mist, oil_bath or circulating_oil (drop-down list)", required=True,
+        template=("-", 16)),
+    _in("arrangement", "", "single (blank) or paired (drop-down list)", template=("-", 13)),
+    _in("B", "mm", "width; needed for the f0 formula of needle roller bearings", template=("mm", 8)),
+    _in("C0", "N", "static load rating; needed where f1 depends on P0/C0 or Fa/C0", template=("kN", 9)),
+    _in("Y", "1", "catalogue axial factor of tapered roller bearings (P1 under axial load)", template=("1", 7)),
+    _in("e", "1", "catalogue factor e of spherical roller bearings (P1 under axial load)", template=("1", 7)),
+    _in("X0", "1", "static radial factor; blank: seed 000 table 1", template=("1", 7)),
+    _in("Y0", "1", "static axial factor; blank: seed 000 table 1 or the contact angle", template=("1", 7)),
+    _in("alpha", "deg", "working contact angle of angular contact ball bearings", template=("deg", 8)),
+    _in("type", "", "bearing type instead of a designation (drop-down list), with series", template=("-", 30)),
+    _in("series", "", "dimension series with type, e.g. 62, 302, 222", template=("-", 9)),
+    _in("f0", "1", "override of the table f0", template=("1", 7)),
+    _in("f1", "1", "override of the table f1", template=("1", 9)),
+    _in("f2", "1", "f2 of axially loaded cylindrical roller bearings (read off the chart)", template=("1", 7)),
+    # --- optional inputs outside the template
+    _in("model", "", "friction model of the row (blank: the table's --model, default schaeffler)", "table"),
+    _in("f_plain", "1", "friction coefficient of a plain bushing (blank: the middle of the catalogue band)",
+        "plain"),
+    _in("T", "mm", "total width of tapered roller bearings: A_r = pi*T*(D+d)", "thermal"),
+    _in("k_q", "W/(mm^2*K)", "heat transfer coefficient of the seat; default q_r/50 K", "thermal"),
+    _in("T_amb", "degC", "ambient temperature", "thermal"),
+    _in("T_bearing", "degC", "bearing (outer ring) temperature for n_per", "thermal"),
+    _in("V_oil", "l/min", "circulating oil flow", "thermal"),
+    _in("dT_oil", "delta_degC", "oil temperature rise; default T_bearing - T_amb (oil fed at ambient)", "thermal"),
+    _in("Q_E", "W", "external heat flowing INTO the bearing (negative: cooling)", "thermal"),
+    _in("nu40", "mm^2/s", "oil viscosity at 40 degC (ASTM D341 with nu100)", "thermal"),
+    _in("nu100", "mm^2/s", "oil viscosity at 100 degC (ASTM D341 with nu40)", "thermal"),
+    _in("iso_vg", "1", "ISO VG grade instead of nu40/nu100", "thermal"),
+    _in("VI", "1", "viscosity index of an ISO VG oil (default 95)", "thermal"),
+    _in("n_G", "1/min", "limiting speed: n_per is capped at it (warning)", "thermal"),
+    _in("n_thr_catalogue", "1/min", "catalogue n_thr; n_per then uses it instead of the computed one", "thermal"),
+    _in("z", "1", "number of balls", "contact"),
+    _in("Dw", "mm", "ball diameter", "contact"),
+    _in("dm_pitch", "mm", "ball pitch diameter", "contact"),
+    # --- results
+    _out("f0", "1", "speed-dependent friction coefficient (table, formula or override)"),
+    _out("f1", "1", "load-dependent friction coefficient"),
+    _out("P0", "N", "static equivalent load (f1 in P0/C0)"),
+    _out("P1", "N", "equivalent load of M1"),
+    _out("M0", "N*mm", "speed-dependent friction torque"),
+    _out("M1", "N*mm", "load-dependent friction torque"),
+    _out("M2", "N*mm", "axial-load torque of cylindrical roller bearings"),
+    _out("MR", "N*mm", "total friction torque"),
+    _out("NR", "W", "friction power loss"),
+    _out("Fa_over_A", "1", "Fa/A, to read f2 off the chart (rows with M2)", shown="Fa/A"),
+    _out("nu_n_dM", "mm^3/(s*min)", "nu*n*dM, to read f2 off the chart (rows with M2)", shown="nu*n*dM"),
+    _out("p_plain", "N/mm^2", "bearing pressure of a plain bushing", "plain", shown="p"),
+    _out("V_plain", "m/s", "sliding speed of a plain bushing", "plain", shown="V"),
+    _out("n_thr", "1/min", "thermal reference speed (ISO 15312)", "thermal"),
+    _out("n_per", "1/min", "thermally permissible speed at T_bearing", "thermal"),
+    _out("T_op", "degC", "operating temperature at the speed n", "thermal"),
+    _out("nu_op", "mm^2/s", "viscosity at T_op", "thermal"),
+    _out("Q_S", "W", "heat carried away through the seat", "thermal"),
+    _out("Q_L", "W", "heat carried away by the circulating oil", "thermal"),
+    _out("Fa_min", "N", "minimum axial load against ball skidding", "contact"),
+    _out("status", "", "ok | warning | error", "table"),
+    _out("message", "", "what is wrong or uncertain, naming the column (and the cell in a workbook)", "table"),
+)
+
+_BY_KIND = {kind: {c.name: c for c in CONTRACT if c.kind == kind} for kind in ("input", "output")}
+
+#: drop-down lists: input column -> the values it takes (the model names are added by calc/models.py)
+_CHOICES: dict[str, Callable[[], tuple[str, ...]]] = {
+    "lubrication": lambda: tuple(LUBRICATION_F0_COLUMN),
+    "arrangement": lambda: ARRANGEMENTS,
+    "type": lambda: tuple(BEARING_TYPES),
+}
+
+
+def register_choices(name: str, values: Callable[[], tuple[str, ...]]) -> None:
+    """Let a registry (the friction models) supply the drop-down values of an input column."""
+    column(name, "input")
+    _CHOICES[name] = values
+
+
+def column(name: str, kind: str = "input") -> Column:
+    """The contract entry of a column; an unknown name is an :class:`InputError` listing the known ones.
+
+    >>> column("T_amb").unit
+    'degC'
+    >>> column("speed")
+    Traceback (most recent call last):
+    ...
+    bearingheat.errors.InputError: 'speed' is not an input column of calc; known: id, designation, ...
+    """
+    try:
+        return _BY_KIND[kind][name]
+    except KeyError:
+        known = ", ".join(_BY_KIND[kind])
+        raise InputError(f"{name!r} is not an {kind} column of calc; known: {known}") from None
+
+
+def columns(*, owner: str | None = None, kind: str = "input") -> tuple[str, ...]:
+    """Names of the columns of one kind (and one owner), in contract order."""
+    return tuple(c.name for c in CONTRACT if c.kind == kind and (owner is None or c.owner == owner))
+
+
+def input_units(owner: str | None = None) -> dict[str, str]:
+    """Input column -> catalogue unit (of one owner, or all)."""
+    return {c.name: c.unit for c in CONTRACT if c.kind == "input" and (owner is None or c.owner == owner)}
+
+
+def output_units(owner: str | None = None) -> dict[str, str]:
+    """Result column -> unit (of one owner, or all; without status and message)."""
+    return {c.name: c.unit for c in CONTRACT
+            if c.kind == "output" and c.owner != "table" and (owner is None or c.owner == owner)}
+
+
+def output_header(name: str, unit: str | None = None) -> str:
+    """The header of a result column: ``MR [N*mm]``, ``f0``, ``Fa/A``."""
+    entry = _BY_KIND["output"].get(name)
+    shown = entry.shown or name if entry else name
+    unit = (entry.unit if entry else "") if unit is None else unit
+    return shown if unit in ("", "1") else f"{shown} [{unit}]"
+
+
+_HEADER = re.compile(r"^\s*(?P<name>[^\[\]]+?)\s*(?:\[\s*(?P<unit>[^\]]*?)\s*\])?\s*$")
+
+
+def parse_header(header, *, strict: bool = True) -> tuple[str, str | None]:
+    """``'Fr [kN] '`` -> ``('Fr', 'kN')``; ``'id'`` -> ``('id', None)``.
+
+    A header that is not ``name [unit]`` raises :class:`InputError`, or with
+    ``strict=False`` comes back whole as a name without a unit.
+
+    >>> parse_header(' n [U/min] ')
+    ('n', 'U/min')
+    >>> parse_header('a] b', strict=False)
+    ('a] b', None)
+    """
+    match = _HEADER.match(str(header))
+    if not match:
+        if not strict:
+            return str(header).strip(), None
+        raise InputError(f"column {header!r}: cannot read the header; write it as 'name [unit]'")
+    return match.group("name").strip(), match.group("unit")
+
+
+def choices(name: str) -> tuple[str, ...]:
+    """The values a drop-down list offers for an input column (empty: free input)."""
+    provider = _CHOICES.get(name)
+    return provider() if provider else ()
+
+
+def template_columns() -> tuple[Column, ...]:
+    """The input columns of the Excel template, in sheet order."""
+    return tuple(c for c in CONTRACT if c.kind == "input" and c.template is not None)
+
+
+def _unit_text(unit: str) -> str:
+    return {"": "text", "1": "1"}.get(unit, unit)
+
+
+def help_text() -> str:
+    """The column part of ``bearingheat calc --help``, grouped by owner."""
+    lines = []
+    for owner, title in OWNERS.items():
+        ins = [c for c in CONTRACT if c.owner == owner and c.kind == "input"]
+        outs = [c for c in CONTRACT if c.owner == owner and c.kind == "output"]
+        if not ins and not outs:
+            continue
+        lines.append(f"{title[0].upper()}{title[1:]}:")
+        for c in ins:
+            flag = " (required)" if c.required else ""
+            lines.append(f"  {c.name + ' [' + _unit_text(c.unit) + ']':<26} {c.meaning}{flag}")
+        if outs:
+            lines.append("  -> " + ", ".join(c.header for c in outs))
+    return "\n".join(lines)
+
+
+def markdown_table(kind: str = "input") -> str:
+    """The docs table of the contract's columns of one kind.
+
+    >>> print(markdown_table("output").splitlines()[2])
+    | f0 | 1 | the friction model | speed-dependent friction coefficient (table, formula or override) |
+    """
+    rows = ["| column | unit | owner | meaning |", "|---|---|---|---|"]
+    for c in CONTRACT:
+        if c.kind == kind:
+            rows.append(f"| {c.shown or c.name} | {_unit_text(c.unit)} | {OWNERS[c.owner]} | {c.meaning} |")
+    return "\n".join(rows)

@@ -1,0 +1,244 @@
+"""The support arrays: every input and catalogue constant of many supports, built once.
+
+One builder, :func:`build_support_arrays`, serves the table (``calc``), the
+unit-aware API (one bearing at many operating points) and the effect
+candidates of ``diagnose``. Bearings are resolved once per distinct key
+(designation, type, series, lubrication, arrangement), not once per row;
+where every row is one bearing the catalogue constants stay scalars, so an
+API call over 10^6 operating points copies no constant 10^6 times.
+
+Numbers are in catalogue units (mm, N, 1/min, mm²/s, deg) with NaN for
+"not given"; Fr and Fa default to 0.
+"""
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+import pandas as pd
+
+from bearingheat.calc.contract import ARRANGEMENTS, PLAIN_TYPES
+from bearingheat.catalogue.friction import LUBRICATION_F0_COLUMN, ResolvedBearing, resolve
+from bearingheat.errors import DesignationError
+
+__all__ = ["SupportArrays", "build_support_arrays", "bearing_constants", "NUMBER_INPUTS", "KEY_INPUTS",
+           "text_column", "number_column"]
+
+#: numeric inputs of the friction model, in catalogue units
+NUMBER_INPUTS = ("d", "D", "B", "C0", "Y", "e", "X0", "Y0", "alpha", "f0", "f1", "f2", "n", "nu", "Fr", "Fa")
+#: text inputs that select a bearing's catalogue constants
+KEY_INPUTS = ("designation", "type", "series", "lubrication", "arrangement")
+
+_F1_BASIS_CODE = {"constant": 0, "P0/C0": 1, "Fa/C0": 2}
+
+#: constants of a row that did not resolve (its error is reported; the kernels see neutral values)
+_BLANK = {"bearing_type": "", "series": "", "f0_table": math.nan, "f0_basis": "", "f1_a": math.nan,
+          "f1_x": math.nan, "f1_basis": 0, "m1_load": "Fr", "p1_rule": "", "X0_table": math.nan,
+          "Y0_table": math.nan, "kB": math.nan, "m2": False, "no_axial": False, "seal": "open",
+          "contact_angle": math.nan, "label": "", "prefix": "", "notes": (), "bore": math.nan,
+          "width": math.nan, "error": "", "resolved": False}
+_TEXT = ("bearing_type", "series", "f0_basis", "m1_load", "p1_rule", "seal", "label", "prefix", "error")
+_FLOAT = ("f0_table", "f1_a", "f1_x", "X0_table", "Y0_table", "kB", "contact_angle")
+_BOOL = ("m2", "no_axial", "resolved")
+
+
+@dataclass
+class SupportArrays:
+    """Inputs and catalogue constants of ``size`` supports (catalogue units).
+
+    Every field is an array of length ``size`` or a scalar shared by all
+    rows. ``error`` holds the reason a row's bearing could not be resolved
+    ('' where it could); ``resolved`` is False where no catalogue entry was
+    found (its other errors are then not reported); ``plain`` marks plain
+    bushings, which the rolling-bearing models skip. ``notes`` holds the
+    designation notes per row, or one entry shared by all rows.
+    """
+
+    size: int
+    d: np.ndarray
+    D: np.ndarray
+    B: np.ndarray
+    C0: np.ndarray
+    Y: np.ndarray
+    e: np.ndarray
+    X0: np.ndarray
+    Y0: np.ndarray
+    alpha: np.ndarray
+    f0: np.ndarray
+    f1: np.ndarray
+    f2: np.ndarray
+    n: np.ndarray
+    nu: np.ndarray
+    Fr: np.ndarray
+    Fa: np.ndarray
+    bearing_type: object
+    series: object
+    f0_basis: object
+    m1_load: object
+    p1_rule: object
+    seal: object
+    label: object
+    prefix: object
+    f0_table: object
+    f1_a: object
+    f1_x: object
+    X0_table: object
+    Y0_table: object
+    kB: object
+    contact_angle: object
+    f1_basis: object
+    m2: object
+    no_axial: object
+    error: object
+    resolved: object
+    plain: np.ndarray
+    notes: list = field(default_factory=list)
+
+    def take(self, rows: np.ndarray) -> SupportArrays:
+        """The supports at positions ``rows`` (scalars stay scalars)."""
+        rows = np.asarray(rows)
+        changes = {}
+        for f in dataclasses.fields(self):
+            value = getattr(self, f.name)
+            if f.name == "size":
+                changes["size"] = len(rows)
+            elif f.name == "notes":
+                changes["notes"] = [value[i] for i in rows] if len(value) == self.size else value
+            elif isinstance(value, np.ndarray) and value.ndim == 1:
+                changes[f.name] = value[rows]
+        return dataclasses.replace(self, **changes)
+
+    def replace(self, **values) -> SupportArrays:
+        """A copy with some fields replaced (e.g. another axial load)."""
+        return dataclasses.replace(self, **values)
+
+
+def text_column(frame: pd.DataFrame, name: str) -> list:
+    """A text column as stripped strings, None for blank cells (or a column of None where it is absent)."""
+    if name not in frame.columns:
+        return [None] * len(frame)
+    return [None if (v is None or (isinstance(v, float) and math.isnan(v)) or str(v).strip() == "")
+            else str(v).strip() for v in frame[name]]
+
+
+def number_column(frame: pd.DataFrame, name: str, default: float = math.nan) -> np.ndarray:
+    """A numeric column as floats (NaN for blanks and text), or ``default`` where it is absent."""
+    if name in frame.columns:
+        return pd.to_numeric(frame[name], errors="coerce").to_numpy(dtype=float)
+    return np.full(len(frame), default, dtype=float)
+
+
+def bearing_constants(resolved: ResolvedBearing, lubrication: str | None, arrangement: str) -> dict:
+    """Row-constant coefficients of one bearing, with an 'error' entry saying why they cannot be used.
+
+    ``lubrication`` None means f0 comes from the user (no table column).
+    """
+    entry = resolved.entry
+    parsed = resolved.designation
+    out = {
+        "bearing_type": entry.bearing_type, "series": entry.series,
+        "f0_table": math.nan, "f0_basis": entry.f0_basis,
+        "f1_a": entry.f1_a, "f1_x": entry.f1_x, "f1_basis": _F1_BASIS_CODE[entry.f1_basis],
+        "m1_load": entry.m1_load, "p1_rule": "",
+        "X0_table": entry.X0, "Y0_table": entry.Y0, "kB": resolved.kB,
+        "m2": resolved.takes_axial_m2, "no_axial": resolved.cannot_take_axial,
+        "seal": resolved.seal,
+        "contact_angle": math.nan if resolved.contact_angle is None else resolved.contact_angle,
+        "label": entry.label, "prefix": resolved.prefix,
+        "notes": parsed.notes if parsed else (), "error": "", "resolved": True,
+        "bore": parsed.bore if parsed and parsed.bore else math.nan,
+        "width": parsed.width if parsed and parsed.width else math.nan,
+    }
+    if lubrication is not None:
+        if lubrication not in LUBRICATION_F0_COLUMN:
+            out["error"] = (f"lubrication: {lubrication!r} is not one of "
+                            f"{', '.join(LUBRICATION_F0_COLUMN)}")
+            return out
+        f0 = entry.f0_for(lubrication)
+        if math.isnan(f0):
+            out["error"] = (f"lubrication: {lubrication!r} has no f0 for {entry.label} (seed 002 prints a dash); "
+                            "use grease or oil_mist, or give f0")
+            return out
+        out["f0_table"] = f0
+    if arrangement not in ARRANGEMENTS:
+        out["error"] = f"arrangement: {arrangement!r} is not one of {', '.join(ARRANGEMENTS)}"
+        return out
+    if entry.m1_load == "P1":
+        rule = entry.p1_single if arrangement == "single" else entry.p1_paired
+        if rule is None:
+            out["error"] = (f"arrangement: {arrangement!r} has no P1 rule for {entry.label} "
+                            "(seed 002, p. 68 prints a dash)")
+            return out
+        out["p1_rule"] = rule
+    return out
+
+
+def _constants_of_key(designation, bearing_type, series, lubrication, arrangement, f0_given) -> dict:
+    """Catalogue constants of one distinct key; an unresolved key gives the blank constants with its error."""
+    if (bearing_type or "").lower() in PLAIN_TYPES:
+        return dict(_BLANK)
+    try:
+        resolved = resolve(designation, bearing_type, series)
+    except DesignationError as exc:
+        return {**_BLANK, "error": str(exc)}
+    if lubrication is None and not f0_given:
+        return {**_BLANK, "error": "lubrication: missing; expected one of " + ", ".join(LUBRICATION_F0_COLUMN)}
+    return bearing_constants(resolved, lubrication, arrangement)
+
+
+def _fill_blank(given, printed):
+    """``given`` where it is a number, ``printed`` where it is NaN (scalars stay scalars)."""
+    return np.where(np.isnan(given), printed, given)
+
+
+def build_support_arrays(keys: pd.DataFrame, numbers: dict[str, object]) -> SupportArrays:
+    """The support arrays of a table (one row per support) or of one bearing at many operating points.
+
+    ``keys`` holds the text columns of :data:`KEY_INPUTS` that are given,
+    one row per support, or a single row for one bearing; ``numbers`` maps
+    the names of :data:`NUMBER_INPUTS` to float arrays of one length or
+    scalars (missing names are NaN, Fr and Fa default to 0). The rows'
+    count is the length of the arrays (of ``keys`` where all are scalars).
+    """
+    lengths = {np.size(v) for v in numbers.values() if np.ndim(v) > 0}
+    size = lengths.pop() if lengths else len(keys)
+    if lengths or (len(keys) not in (1, size)):
+        raise ValueError("build_support_arrays: keys and numbers must have one length (or one key row)")
+    num = {}
+    for name in NUMBER_INPUTS:
+        value = numbers.get(name, math.nan)
+        value = np.asarray(value, dtype=float)  # 0-d for a scalar: numpy division rules (x/0 = inf) everywhere
+        num[name] = np.nan_to_num(value, nan=0.0) if name in ("Fr", "Fa") else value
+    if len(keys) == size:
+        f0_given = ~np.isnan(np.broadcast_to(num["f0"], (size,)))
+    else:  # one bearing: f0 is given for all its points or for none
+        f0_given = np.array([not np.all(np.isnan(num["f0"]))])
+    columns = {name: text_column(keys, name) for name in KEY_INPUTS}
+    columns["arrangement"] = [v or "single" for v in columns["arrangement"]]
+    key_tuples = list(zip(*(columns[name] for name in KEY_INPUTS), f0_given.tolist()))
+    codes, uniques = pd.factorize(pd.Series(key_tuples, dtype=object), sort=False)
+    per_key = [_constants_of_key(*key) for key in uniques]
+    plain_keys = np.array([(key[1] or "").lower() in PLAIN_TYPES for key in uniques], dtype=bool)
+
+    if len(uniques) == 1 and len(keys) == 1:
+        def spread(name, dtype):
+            return np.asarray(per_key[0][name], dtype=dtype)[()]
+        plain = np.broadcast_to(plain_keys[0], (size,))
+        notes = [per_key[0]["notes"]]
+    else:
+        def spread(name, dtype):
+            return np.array([c[name] for c in per_key], dtype=dtype)[codes]
+        plain = plain_keys[codes]
+        notes = [per_key[c]["notes"] for c in codes]
+    constants = {name: spread(name, object) for name in _TEXT}
+    constants.update({name: spread(name, float) for name in _FLOAT})
+    constants.update({name: spread(name, bool) for name in _BOOL})
+    constants["f1_basis"] = spread("f1_basis", int)
+    # bore and width printed in the designation fill empty cells (HK2016: d = 20, B = 16)
+    num["d"] = _fill_blank(num["d"], spread("bore", float))
+    num["B"] = _fill_blank(num["B"], spread("width", float))
+    if np.ndim(num["n"]) == 0:
+        num["n"] = np.full(size, num["n"])  # the speed spans the rows
+    return SupportArrays(size=size, **num, **constants, plain=np.asarray(plain, dtype=bool), notes=notes)
