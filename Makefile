@@ -20,6 +20,7 @@ demo: $(STAMP)
 	@echo "Excel results: out/gearbox_shaft_results.xlsx, sheet 'Results' (live formulas: change n, Fr or nu on sheet 'Supports')"
 
 test: $(STAMP)
+	$(VENV)/bin/lint-imports --no-cache
 	$(PY) -m pytest -q
 
 docs: $(STAMP)

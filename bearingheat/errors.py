@@ -26,9 +26,11 @@ __all__ = [
     "ModelError",
     "FrictionInputError",
     "HeatBalanceError",
+    "ViscosityError",
     "ContactInputError",
     "OutsideMethodError",
     "NoStandardSizeError",
+    "BushingInputError",
     "CoastdownError",
     "LabError",
     "AuditError",
@@ -79,6 +81,11 @@ class HeatBalanceError(BearingheatError):
     """A bearing or an operating point the heat balance cannot be computed for."""
 
 
+class ViscosityError(BearingheatError):
+    """Oil data that fix no viscosity-temperature line: an unknown ISO VG grade, a viscosity index no oil of
+    the grade reaches (ASTM D2270), or not exactly one of nu40 and nu100, two points, iso_vg."""
+
+
 class ContactInputError(BearingheatError):
     """Ball geometry or a load outside the range of the ball contact formulas.
 
@@ -96,6 +103,12 @@ class OutsideMethodError(BearingheatError):
 
 class NoStandardSizeError(OutsideMethodError):
     """No standard bushing length or washer diameter is large enough for the duty."""
+
+
+class BushingInputError(BearingheatError):
+    """An argument of the plain-bushing sizing that cannot be used: a load, speed, bore, K or [p] that is not
+    positive, an application, shaft, life or load type that seed 004 does not tabulate, or a table cell lost in
+    the seed's OCR."""
 
 
 class CoastdownError(BearingheatError):

@@ -30,6 +30,7 @@ __all__ = [
     "normalise_unit_text",
     "parse_quantity",
     "convert_column",
+    "celsius",
 ]
 
 TWO_PI = 2.0 * math.pi
@@ -312,3 +313,30 @@ def convert_column(numbers: np.ndarray, unit_text: str | None, target: str, *, n
         if one.dimensionality == ureg().kg.dimensionality and target == "N":
             raise UnitError(f"{one.units} is a mass, not a force; for kilogram-force write kgf") from exc
         raise UnitError(f"unit {unit_text} cannot be converted to {target}") from exc
+
+
+def celsius(value: Any, name: str):
+    """An absolute temperature Quantity as a magnitude in °C (degC, K, degF); a temperature difference is refused.
+
+    Scalars come back as float, arrays as float arrays.
+
+    >>> u = ureg()
+    >>> celsius(u.Quantity(293.15, "K"), "T_ambient")
+    20.0
+    >>> celsius(u.Quantity(10, "delta_degC"), "T_ambient")
+    Traceback (most recent call last):
+    ...
+    bearingheat.errors.UnitError: T_ambient: 10 delta_degree_Celsius is a temperature difference; give an absolute temperature (degC, K)
+    """
+    if not hasattr(value, "to") or not hasattr(value, "units"):
+        raise UnitError(f"{name}: expected a temperature Quantity, e.g. Quantity(60, 'degC'); got {value!r}")
+    u = ureg()
+    if value.units in (u.delta_degC, u.delta_degF):
+        raise UnitError(f"{name}: {value} is a temperature difference; give an absolute temperature (degC, K)")
+    try:
+        mag = value.to(u.degC).magnitude
+    except Exception as exc:  # pint raises DimensionalityError / OffsetUnitCalculusError
+        raise UnitError(f"{name}: {value} is not a temperature (degC, K, degF)") from exc
+    if isinstance(mag, pd.Series):
+        return mag.astype(float)
+    return np.asarray(mag, dtype=float) if np.ndim(mag) else float(mag)

@@ -21,7 +21,7 @@ sys.path.insert(0, str(ROOT / "tests"))
 def main(rows: int = 100_000, effect: str = "preload") -> float:
     from synthetic_torque import grid, measured_set  # noqa: F401  (tests/ on the path)
 
-    from bearingheat.diagnose import diagnose, model_data, read_measurements
+    from bearingheat.analysis.diagnose import diagnose, model_data, read_measurements
 
     designations = ["6205", "6208", "7206-B", "30206-A", "NU208-E"]
     per_repeat = len(grid(designations, __import__("numpy").random.default_rng(0)))

@@ -15,6 +15,9 @@ from pathlib import Path
 import openpyxl
 import pandas as pd
 
+from bearingheat.calc.table import calc
+from bearingheat.io.excel import calc_workbook, read_supports
+
 ROOT = Path(__file__).resolve().parents[1]
 TARGET_SECONDS = 10.0
 
@@ -41,8 +44,6 @@ def build(path: Path, n_rows: int) -> Path:
 
 
 def main(n_rows: int = 10_000) -> int:
-    from bearingheat.excel import calc_workbook, read_supports
-    from bearingheat.frame import calc
 
     with tempfile.TemporaryDirectory() as folder:
         source = build(Path(folder) / "supports.xlsx", n_rows)

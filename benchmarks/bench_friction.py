@@ -2,13 +2,13 @@
 
 Ways to the same numbers, timed in one run:
 
-1. a per-row Python loop calling the same formula kernels (:mod:`bearingheat.friction`) with
+1. a per-row Python loop calling the same formula kernels (:mod:`bearingheat.kernels.friction`) with
    scalars, as a user would loop over operating points; timed on a sample of the points
    (its cost per point is constant) and scaled to the full count;
 2. a hand-inlined per-row loop of the seed 002 formulas in plain Python floats, no checks:
    the fastest a Python loop gets, reported for honesty;
-3. the array kernel :func:`bearingheat.model.check_and_evaluate` (catalogue units, all input
-   checks included);
+3. the array evaluation :func:`bearingheat.calc.friction.evaluate_catalogue_model` on support
+   arrays (catalogue units, all input checks included);
 4. the unit-aware call :func:`bearingheat.friction_torque` with pint Quantity arrays.
 
 Targets: (3) at least 100x faster than (1); (4) within 1.2x of (3).
@@ -23,6 +23,15 @@ import sys
 import time
 
 import numpy as np
+import pandas as pd
+import pint
+
+from bearingheat import friction_torque
+from bearingheat.calc.friction import evaluate_catalogue_model
+from bearingheat.calc.messages import Labels
+from bearingheat.calc.supports import bearing_constants, build_support_arrays
+from bearingheat.catalogue.friction import resolve
+from bearingheat.kernels import friction
 
 # bearing, dimensions and catalogue values (d, D mm; C0 N; extras), share of the points
 BEARINGS = [
@@ -46,9 +55,6 @@ def operating_points(count: int, seed: int = 1):
 
 
 def _constants(designation, dims, extras):
-    from bearingheat.coefficients import resolve
-    from bearingheat.model import bearing_constants
-
     const = bearing_constants(resolve(designation), "oil_bath", "single")
     axial = designation not in ("NU206-E", "NA4905")
     return const, axial
@@ -64,24 +70,14 @@ def _loop_factors(designation, dims, extras):
 
 
 def kernel_inputs(designation, dims, extras, n, nu, Fr, Fa):
-    const, axial = _constants(designation, dims, extras)
-    nan = np.float64(np.nan)
-    a = {"n": n, "nu": nu, "Fr": Fr, "Fa": Fa if axial else np.float64(0.0),
-         "d": np.float64(dims["d"]), "D": np.float64(dims["D"]), "B": nan, "C0": np.float64(dims["C0"]),
-         **{k: np.float64(extras.get(k, np.nan)) for k in ("Y", "e", "X0", "Y0", "alpha")},
-         "f0": nan, "f1": nan, "f2": nan}
-    for key in ("f0_table", "f0_basis", "f1_a", "f1_x", "f1_basis", "m1_load", "X0_table", "Y0_table", "kB", "m2",
-                "no_axial", "seal", "label", "prefix", "bearing_type"):
-        a[key] = const[key]
-    a["p1_rule"] = const["p1_rule"] or ""
-    a["contact_angle"] = np.nan if const["contact_angle"] is None else const["contact_angle"]
-    return a
+    """The support arrays of one bearing at many points (its catalogue constants stay scalars)."""
+    axial = designation not in ("NU206-E", "NA4905")
+    keys = pd.DataFrame({"designation": [designation], "lubrication": ["oil_bath"]})
+    return build_support_arrays(keys, {"n": n, "nu": nu, "Fr": Fr, "Fa": Fa if axial else 0.0, **dims, **extras})
 
 
 def kernel_loop_torque(designation, dims, extras, n, nu, Fr, Fa):
-    """Per-row loop over the scalar formula kernels of bearingheat.friction."""
-    from bearingheat import friction
-
+    """Per-row loop over the scalar formula kernels of bearingheat.kernels.friction."""
     const, axial, dM, X0, Y0, Y, e = _loop_factors(designation, dims, extras)
     out = []
     for ni, nui, fr, fa in zip(n.tolist(), nu.tolist(), Fr.tolist(), Fa.tolist()):
@@ -129,11 +125,6 @@ def loop_torque(designation, dims, extras, n, nu, Fr, Fa):
 
 
 def main(points: int = 1_000_000, repeats: int = 3, loop_sample: int = 30_000) -> dict[str, float]:
-    import pint
-
-    from bearingheat import friction_torque
-    from bearingheat.model import Labels, check_and_evaluate
-
     u = pint.get_application_registry()
     n, nu, Fr, Fa = operating_points(points)
     chunks = np.array_split(np.arange(points), len(BEARINGS))
@@ -155,7 +146,7 @@ def main(points: int = 1_000_000, repeats: int = 3, loop_sample: int = 30_000) -
         total = []
         for a in kernel_args:
             with np.errstate(all="ignore"):
-                results, problems = check_and_evaluate(a, Labels())
+                results, problems = evaluate_catalogue_model(a, Labels())
             assert not [p for p in problems if p.level == "error"]
             total.append(results["MR"])
         return np.concatenate(total)

@@ -2,8 +2,8 @@
 
 Two ways to the same numbers, timed in one run:
 
-1. one vectorised call: :func:`bearingheat.thermal.balance_speed` for n_θr at the
-   reference conditions and :func:`bearingheat.thermal.permissible_speed_factor`
+1. one vectorised call: :func:`bearingheat.kernels.thermal.balance_speed` for n_θr at the
+   reference conditions and :func:`bearingheat.kernels.thermal.permissible_speed_factor`
    for f_n at the operating conditions (exact roots, both ν·n regimes);
 2. a per-row loop of ``scipy.optimize.brentq`` on the same two heat balances.
 
@@ -40,7 +40,7 @@ def make_bearings(rows: int, seed: int = 3) -> dict[str, np.ndarray]:
 
 
 def vectorised(b: dict[str, np.ndarray]) -> np.ndarray:
-    from bearingheat.thermal import balance_speed, permissible_speed_factor, reference_heat_flux_density
+    from bearingheat.kernels.thermal import balance_speed, permissible_speed_factor, reference_heat_flux_density
 
     q_r = reference_heat_flux_density("radial", b["A_r"])
     M1_ref = b["f1_ref"] * 0.05 * b["C0"] * b["dM"]

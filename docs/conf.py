@@ -1,11 +1,32 @@
-"""Sphinx configuration: the docs are MyST Markdown pages; build with `make docs`."""
+"""Sphinx configuration: the docs are MyST Markdown pages; build with `make docs`.
+
+The column tables of ``columns.md`` are generated here from the column
+contract (``bearingheat.calc.contract``), so the docs cannot drift from the
+columns calc reads and writes.
+"""
+from pathlib import Path
+
+from bearingheat.calc import contract
+
 project = "bearingheat"
 author = "bearingheat developers"
-extensions = ["myst_parser"]
+extensions = ["myst_parser", "sphinx.ext.autodoc", "sphinx.ext.napoleon"]
 source_suffix = {".md": "markdown"}
 myst_enable_extensions = ["dollarmath"]
 myst_heading_anchors = 3
-exclude_patterns = ["_build"]
+exclude_patterns = ["_build", "_generated"]
 html_static_path = ["_static"]
 html_theme = "alabaster"
 suppress_warnings = ["myst.xref_missing"]
+autodoc_member_order = "bysource"
+autodoc_typehints = "description"
+napoleon_numpy_docstring = True
+napoleon_google_docstring = False
+
+_generated = Path(__file__).parent / "_generated"
+_generated.mkdir(exist_ok=True)
+for _kind in ("input", "output"):
+    _text = contract.markdown_table(_kind) + "\n"
+    _path = _generated / f"contract_{_kind}.md"
+    if not _path.exists() or _path.read_text(encoding="utf-8") != _text:
+        _path.write_text(_text, encoding="utf-8")

@@ -12,6 +12,12 @@ import sys
 import tempfile
 from pathlib import Path
 
+import openpyxl
+from PIL import Image, ImageChops
+
+from bearingheat.io.excel.libreoffice import convert
+from bearingheat.io.excel.workbook import calc_workbook
+
 ROOT = Path(__file__).resolve().parents[1]
 STATIC = ROOT / "docs" / "_static"
 
@@ -24,8 +30,6 @@ SHOTS = {
 
 
 def _single_sheet(source: Path, sheet: str, area: str, target: Path, data_only: bool = False) -> Path:
-    import openpyxl
-
     workbook = openpyxl.load_workbook(source, data_only=data_only)
     for name in list(workbook.sheetnames):
         if name != sheet:
@@ -44,8 +48,6 @@ def _single_sheet(source: Path, sheet: str, area: str, target: Path, data_only: 
 
 
 def _trimmed_png(pdf: Path, png: Path) -> None:
-    from PIL import Image, ImageChops
-
     stem = pdf.with_suffix("")
     subprocess.run(["pdftoppm", "-png", "-r", "110", "-f", "1", "-l", "1", "-singlefile", str(pdf), str(stem)],
                    check=True)
@@ -57,9 +59,6 @@ def _trimmed_png(pdf: Path, png: Path) -> None:
 
 
 def main() -> int:
-    from bearingheat.excel import calc_workbook
-    from bearingheat.excel_libreoffice import convert
-
     with tempfile.TemporaryDirectory() as folder:
         folder = Path(folder)
         live = folder / "gearbox_results.xlsx"

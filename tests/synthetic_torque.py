@@ -1,6 +1,6 @@
 """Synthetic measured friction torque: the catalogue model + one effect + noise (tests and benchmarks).
 
-The effects are written here independently of :mod:`bearingheat.effects`:
+The effects are written here independently of :mod:`bearingheat.kernels.effects`:
 the viscosity of the heated bearing follows a Vogel law (not the
 exponential of the candidate), the seal torque creeps up 5 % over the speed
 range, the churning loss uses its own exponents.
@@ -10,8 +10,8 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from bearingheat import friction
-from bearingheat.frame import calc
+from bearingheat.calc.table import calc
+from bearingheat.kernels import friction
 
 #: designation -> (d, D, C0 [N], extra catalogue columns); rough catalogue sizes
 BEARINGS = {

@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from bearingheat.bushing import plain_bushing_power_loss
+from bearingheat.kernels.bushing import plain_bushing_power_loss
 from bearingheat.calc.friction import RESULTS
 from bearingheat.calc.supports import number_column
 

@@ -13,7 +13,7 @@ import numpy as np
 from bearingheat.calc.messages import Labels, Problem, at
 from bearingheat.calc.supports import SupportArrays
 from bearingheat.catalogue.f2chart import F2Chart
-from bearingheat.contact import y0_for_contact_angle
+from bearingheat.catalogue.contact import y0_for_contact_angle
 from bearingheat.kernels import friction
 
 __all__ = ["RESULTS", "evaluate_catalogue_model"]

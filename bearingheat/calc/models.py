@@ -31,9 +31,11 @@ from bearingheat.calc.supports import KEY_INPUTS, NUMBER_INPUTS, SupportArrays, 
     text_column
 from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.errors import ModelError
+from bearingheat.kernels.friction import mean_diameter
+from bearingheat.kernels.thermal import friction_heat, friction_power
 
-__all__ = ["FrictionModel", "MODELS", "DEFAULT_MODEL", "get_model", "compute_supports", "RESULT_UNITS",
-           "M2_REPORT_UNITS", "PLAIN_REPORT_UNITS"]
+__all__ = ["FrictionModel", "FrictionPower", "MODELS", "DEFAULT_MODEL", "get_model", "compute_supports",
+           "RESULT_UNITS", "M2_REPORT_UNITS", "PLAIN_REPORT_UNITS"]
 
 Evaluation = Callable[[SupportArrays, Labels, "F2Chart | None"], "tuple[dict[str, np.ndarray], list[Problem]]"]
 
@@ -46,8 +48,10 @@ class FrictionModel:
     arrays of the model's ``outputs`` (catalogue units) and the rows that
     fail a check. ``speed_exponent`` is the power of the speed in the
     model's speed-dependent torque above its low-speed regime (M0 ∝ n^(2/3)
-    for the catalogue model), which gives the heat balance a closed root;
-    None means the heat balance uses the generic bracketed root.
+    for the catalogue model, whose other terms do not depend on the speed),
+    which gives the heat balance its exact 5/3 root (:class:`FrictionPower`);
+    None means the heat balance uses the generic bracketed root of
+    :mod:`bearingheat.kernels.roots`.
     """
 
     name: str
@@ -194,4 +198,65 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
     out["message"] = message
     out["bearing_type"] = np.where(plain, "plain_bushing", np.broadcast_to(supports.bearing_type, (n_rows,)))
     out["series"] = np.broadcast_to(supports.series, (n_rows,))
+    out["model"] = names
     return out
+
+
+class FrictionPower:
+    """Friction power N_R [W] of every row as a function of its speed and viscosity, by the row's model.
+
+    The heat balance solves N_R(n, ν) + Q_E = Q_S + Q_L for the speed or the
+    temperature. Rows of a model with the catalogue speed law (M0 ∝ (ν·n)^(2/3),
+    M1 and M2 independent of the speed: ``speed_exponent`` 2/3) use the
+    closed forms of :mod:`bearingheat.kernels.thermal` and keep the exact
+    5/3 root; rows of any other model are evaluated by the model itself, so
+    the heat balance finds their roots by bracketing.
+    """
+
+    def __init__(self, frame: pd.DataFrame, results: pd.DataFrame):
+        self.size = len(frame)
+        names = results["model"].to_numpy(dtype=object) if "model" in results.columns \
+            else np.full(self.size, DEFAULT_MODEL, dtype=object)
+        self.f0 = results["f0"].to_numpy(dtype=float)
+        self.load_torque = results["M1"].to_numpy(dtype=float) + np.nan_to_num(results["M2"].to_numpy(dtype=float))
+        self.dM = mean_diameter(number_column(frame, "d"), number_column(frame, "D"))
+        self.closed = np.array([MODELS[m].speed_exponent is not None if m in MODELS else True for m in names])
+        self.generic: dict[str, tuple[np.ndarray, SupportArrays]] = {}
+        if not self.closed.all():
+            keys = frame[[c for c in KEY_INPUTS if c in frame.columns]]
+            supports = build_support_arrays(keys if len(keys.columns) else pd.DataFrame(index=frame.index),
+                                            {c: number_column(frame, c) for c in NUMBER_INPUTS})
+            for name in sorted(set(names[~self.closed])):
+                rows = np.flatnonzero(names == name)
+                self.generic[name] = (rows, supports.take(rows))
+
+    def __call__(self, n, nu) -> np.ndarray:
+        """N_R [W] of every row at speeds ``n`` [1/min] and viscosities ``nu`` [mm²/s] (one per row)."""
+        n = np.broadcast_to(np.asarray(n, dtype=float), (self.size,))
+        nu = np.broadcast_to(np.asarray(nu, dtype=float), (self.size,))
+        with np.errstate(invalid="ignore", over="ignore"):
+            out = friction_heat(self.f0, nu, n, self.dM, self.load_torque)
+        for name, (rows, supports) in self.generic.items():
+            out[rows] = self._evaluate(name, supports, n[rows], nu[rows])
+        return out
+
+    def at_row(self, i: int, n, nu) -> np.ndarray:
+        """N_R [W] of row ``i`` at many speeds and viscosities (the curves of a heat-balance figure)."""
+        n, nu = np.broadcast_arrays(np.asarray(n, dtype=float), np.asarray(nu, dtype=float))
+        if self.closed[i]:
+            return friction_heat(self.f0[i], nu, n, self.dM[i], self.load_torque[i])
+        for name, (rows, supports) in self.generic.items():
+            if i in rows:
+                position = int(np.flatnonzero(rows == i)[0])
+                return self._evaluate(name, supports.take(np.full(n.size, position)), n.ravel(), nu.ravel())
+        raise KeyError(i)
+
+    def is_closed(self, i: int) -> bool:
+        """Whether row ``i`` has the catalogue speed law (exact 5/3 root)."""
+        return bool(self.closed[i])
+
+    @staticmethod
+    def _evaluate(name: str, supports: SupportArrays, n: np.ndarray, nu: np.ndarray) -> np.ndarray:
+        with np.errstate(all="ignore"):
+            results, _ = MODELS[name].evaluate(supports.replace(n=n, nu=nu), Labels(), None)
+        return friction_power(results["MR"], n)

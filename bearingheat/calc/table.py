@@ -27,7 +27,7 @@ from typing import Callable
 import numpy as np
 import pandas as pd
 
-from bearingheat import contact_calc, thermal_calc
+from bearingheat.calc import contact, thermal
 from bearingheat.calc.contract import PLAIN_TYPES, input_units, output_header, output_units, parse_header
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.models import DEFAULT_MODEL, M2_REPORT_UNITS, PLAIN_REPORT_UNITS, RESULT_UNITS, \
@@ -55,8 +55,8 @@ class Extension:
 
 #: the extensions in the order their columns are written; keys are the contract owners
 EXTENSIONS: dict[str, Extension] = {e.owner: e for e in (
-    Extension("contact", contact_calc.prepare, contact_calc.extend),
-    Extension("thermal", thermal_calc.prepare, thermal_calc.extend),
+    Extension("contact", contact.prepare, contact.extend),
+    Extension("thermal", thermal.prepare, thermal.extend),
 )}
 
 

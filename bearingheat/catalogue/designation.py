@@ -17,7 +17,7 @@ import re
 from dataclasses import dataclass, field
 from typing import Callable
 
-from bearingheat.tables_io import load_table
+from bearingheat.catalogue.tables import load_table
 from bearingheat.errors import DesignationError
 
 __all__ = [

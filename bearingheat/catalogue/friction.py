@@ -10,8 +10,9 @@ import functools
 import math
 from dataclasses import dataclass
 
-from bearingheat.designation import BEARING_TYPES, Designation, DesignationError, known_series, parse_designation
-from bearingheat.tables_io import load_table
+from bearingheat.catalogue.designation import BEARING_TYPES, Designation, known_series, parse_designation
+from bearingheat.catalogue.tables import load_table
+from bearingheat.errors import DesignationError
 
 __all__ = [
     "LUBRICATION_F0_COLUMN",
@@ -48,7 +49,7 @@ class CatalogueEntry:
     f1_basis: str           # 'constant', 'P0/C0' or 'Fa/C0'
     m1_load: str            # 'Fr', 'Fa' or 'P1'
     source: str
-    p1_single: str | None   # key of bearingheat.friction.P1_RULES
+    p1_single: str | None   # key of bearingheat.kernels.friction.P1_RULES
     p1_paired: str | None
     X0: float               # seed 000 table 1 default, NaN where it gives none
     Y0: float
@@ -78,7 +79,7 @@ def _static_defaults() -> dict[str, tuple[float, float]]:
     """Seed 000 table 1: X0 where every row of a type agrees, Y0 where the type has one row.
 
     Angular contact ball bearings get X0 = 0.5; their Y0 depends on the
-    contact angle (:func:`bearingheat.contact.y0_for_contact_angle`).
+    contact angle (:func:`bearingheat.catalogue.contact.y0_for_contact_angle`).
     """
     table = load_table("static_load_factors")
     out: dict[str, tuple[float, float]] = {}

@@ -28,6 +28,7 @@ COMMANDS: dict[str, str] = {
     "lab": "bearingheat.cli.lab",
     "audit": "bearingheat.cli.audit",
     "diagnose": "bearingheat.cli.diagnose",
+    "lookup": "bearingheat.cli.lookup",
 }
 
 

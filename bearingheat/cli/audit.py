@@ -3,8 +3,16 @@ from __future__ import annotations
 
 import argparse
 import sys
+from pathlib import Path
 
+from bearingheat.analysis.audit import (REFERENCE_SPEED_COLUMNS, audit_coefficients, audit_reference_speeds,
+                                        series_deviation_summary)
+from bearingheat.calc.contract import parse_header
 from bearingheat.cli import UsageError
+from bearingheat.cli.diagnose import read_table
+from bearingheat.errors import AuditError
+from bearingheat.io.reports.audit import (coefficient_lines, reference_speed_lines, write_coefficients,
+                                          write_reference_speeds)
 
 HELP = "fit f0, f1 (f2) to measured torque with 95-percent intervals; audit n_thr against a catalogue list"
 
@@ -40,15 +48,6 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from pathlib import Path
-
-    import pandas as pd
-
-    from bearingheat.audit import (REFERENCE_SPEED_COLUMNS, SYSTEMATIC_RULE, AuditError, audit_coefficients,
-                                   audit_reference_speeds, series_deviation_summary)
-    from bearingheat.cli.diagnose import read_table
-    from bearingheat.frame import parse_header
-
     if args.input is None and args.reference_speeds is None:
         raise UsageError("give DATA, --reference-speeds CSV, or both")
     out_dir = Path(args.out) if args.out else None
@@ -74,29 +73,19 @@ def run(args: argparse.Namespace) -> int:
         for kind, table in jobs:
             if kind == "coefficients":
                 result = audit_coefficients(table)
-                say("Coefficients fitted to the measured torque (95 % confidence intervals):")
-                say(result.to_string(index=False, float_format=lambda x: f"{x:.4g}"))
-                for message in result.attrs.get("excluded", [])[:20]:
-                    say(f"excluded: {message}")
+                for line in coefficient_lines(result):
+                    say(line)
                 flagged |= bool((result["flag"] != "").any() or (result["status"] != "ok").any())
                 if out_dir:
-                    result.to_csv(out_dir / "coefficients.csv", index=False)
+                    write_coefficients(result, out_dir)
             else:
                 rows = audit_reference_speeds(table, speed_column=args.speed_column)
                 summary = series_deviation_summary(rows)
-                say("Thermal reference speed from the tables against the published value, per series "
-                    "(deviation = tables/published - 1):")
-                shown = summary.copy()
-                for col in ("median", "mean", "min", "max"):
-                    shown[col] = (shown[col] * 100).map(lambda v: f"{v:+.1f} %" if pd.notna(v) else "-")
-                say(shown.to_string(index=False))
-                say(f"rule: {SYSTEMATIC_RULE}")
-                for key in summary.loc[summary["systematic"], "series_key"]:
-                    say(f"systematic: {key}")
+                for line in reference_speed_lines(summary):
+                    say(line)
                 flagged |= bool(summary["systematic"].any())
                 if out_dir:
-                    rows.to_csv(out_dir / "reference_speeds.csv", index=False)
-                    summary.to_csv(out_dir / "reference_speed_series.csv", index=False)
+                    write_reference_speeds(rows, summary, out_dir)
     except AuditError as exc:
         raise UsageError(str(exc)) from exc
     return 1 if flagged else 0

@@ -5,7 +5,15 @@ import argparse
 import sys
 from pathlib import Path
 
+from bearingheat.analysis.diagnose import FittedEffect
+from bearingheat.calc.table import calc
 from bearingheat.cli import UsageError
+from bearingheat.errors import ExcelError, F2ChartError, InputError
+from bearingheat.io.console import Progress, print_summary
+from bearingheat.io.excel.reader import EXCEL_SUFFIXES
+from bearingheat.io.excel.workbook import calc_workbook
+from bearingheat.io.excel.writer import write_results_workbook
+from bearingheat.io.tables import read_csv, write_csv
 
 HELP = "friction torque, power loss (and thermal speeds) of supports in a CSV or Excel table"
 
@@ -62,20 +70,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("-q", "--quiet", action="store_true", help="print nothing")
 
 
-def _read_csv(path: Path):
-    import pandas as pd
-
-    try:
-        return pd.read_csv(path, skipinitialspace=True)
-    except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError) as exc:
-        raise UsageError(f"{path}: not a readable CSV ({exc})") from exc
-
-
 def _load_effects(path: str | None):
     if path is None:
         return None
-    from bearingheat.diagnose import FittedEffect
-
     try:
         return FittedEffect.from_summary(path)
     except (OSError, ValueError, KeyError) as exc:
@@ -83,51 +80,44 @@ def _load_effects(path: str | None):
 
 
 def run(args: argparse.Namespace) -> int:
-    from bearingheat.f2chart import F2ChartError
-    from bearingheat.frame import InputError, calc
-
     source = Path(args.input)
     if not source.is_file():
         raise UsageError(f"{source}: no such file")
-    if source.suffix.lower() in (".xlsx", ".xlsm"):
-        from bearingheat.excel import run_calc_workbook
-
+    if source.suffix.lower() in EXCEL_SUFFIXES:
         return run_calc_workbook(args)
     if args.in_place or args.formulas or args.sheet:
         raise UsageError("--in-place, --formulas and --sheet apply to Excel workbooks only")
-    table = _read_csv(source)
     try:
+        table = read_csv(source)
         result = calc(table, f2_chart=args.f2_chart, effects=_load_effects(args.effects))
-    except (InputError, F2ChartError) as exc:
+        if args.output:
+            target = Path(args.output)
+            if target.suffix.lower() in EXCEL_SUFFIXES:
+                write_results_workbook(result, target)
+            else:
+                write_csv(result, target)
+    except (InputError, F2ChartError) as exc:  # ExcelError is an InputError
         raise UsageError(str(exc)) from exc
-    if args.output:
-        target = Path(args.output)
-        if target.suffix.lower() in (".xlsx", ".xlsm"):
-            from bearingheat.excel import write_results_workbook
-
-            write_results_workbook(result, target)
-        else:
-            result.to_csv(target, index=False)
     if not args.quiet:
         print_summary(result, args.output)
     return 1 if (result["status"] == "error").any() else 0
 
 
-def print_summary(result, output: str | None, stream=None) -> None:
-    """A readable table of the main results, then one line per warning or error."""
-    stream = stream or sys.stdout
-    label = "id" if "id" in result.columns else ("designation" if "designation" in result.columns else None)
-    shown = [c for c in (label, "designation" if label == "id" else None) if c]
-    shown += [c for c in result.columns if c.split(" [")[0] in ("f0", "f1", "P1", "M0", "M1", "M2", "MR", "NR",
-                                                              "n_thr", "n_per", "T_op")]
-    shown.append("status")
-    table = result[shown]
-    stream.write(table.to_string(index=False, na_rep="-", float_format=lambda x: f"{x:.4g}") + "\n")
-    for _, row in result.iterrows():
-        if row["status"] != "ok":
-            who = row[label] if label else ""
-            stream.write(f"{row['status']}: {who}: {row['message']}\n")
-    counts = result["status"].value_counts()
-    summary = ", ".join(f"{counts.get(s, 0)} {s}" for s in ("ok", "warning", "error"))
-    where = f"; results written to {output}" if output else ""
-    stream.write(f"{len(result)} supports: {summary}{where}\n")
+def run_calc_workbook(args: argparse.Namespace) -> int:
+    """``bearingheat calc IN.xlsx ...``: exit 0 (rows ok), 1 (some row in error); UsageError for exit 2."""
+    progress = Progress(enabled=not args.quiet)
+    try:
+        run = calc_workbook(args.input, args.output, sheet=args.sheet, in_place=args.in_place,
+                            formulas=args.formulas, f2_chart=args.f2_chart, effects=_load_effects(args.effects),
+                            progress=progress)
+    except ExcelError as exc:
+        raise UsageError(str(exc)) from exc
+    if not args.quiet:
+        where = None
+        if run.output is not None:
+            where = f"{run.output}" + (f", sheet {run.results_sheet!r}" if run.results_sheet else "")
+        print_summary(run.result, where)
+        if run.dropped:
+            print(f"note: {run.output} lacks the {', '.join(run.dropped)} of {args.input} (openpyxl cannot copy "
+                  f"them); {args.input} is unchanged", file=sys.stderr)
+    return 1 if (run.result["status"] == "error").any() else 0

@@ -1,6 +1,17 @@
 """``bearingheat contact``: contact angle, stiffness C* and minimum axial load of a ball bearing (seed 001)."""
 from __future__ import annotations
 
+import csv
+import json
+import sys
+from pathlib import Path
+
+from bearingheat.api.contact import ball_bearing_contact
+from bearingheat.calc.contract import parse_header
+from bearingheat.cli import UsageError
+from bearingheat.errors import BearingheatError, InputError, UnitError
+from bearingheat.units import parse_quantity, parse_unit, ureg
+
 HELP = "contact angle from clearance, working angle under Fa, stiffness C*, minimum axial load (seed 001)"
 
 DESCRIPTION = """\
@@ -66,11 +77,6 @@ def add_arguments(parser) -> None:
 
 
 def run(args) -> int:
-    import json
-    import sys
-
-    from bearingheat.cli import UsageError
-
     if args.csv is not None:
         given = [f"--{option}" for option in _FIELDS if getattr(args, option) is not None]
         if given:
@@ -85,7 +91,7 @@ def run(args) -> int:
     try:
         inputs = {_FIELDS[o][0]: _parse_argument(o, getattr(args, o)) for o in _FIELDS if getattr(args, o) is not None}
         record, warning = _evaluate(inputs)
-    except ValueError as exc:  # UnitError and ContactInputError are ValueErrors
+    except BearingheatError as exc:  # UnitError, ContactInputError: unusable input, exit 2
         raise UsageError(str(exc)) from exc
     if warning:
         print(f"bearingheat contact: warning: {warning}", file=sys.stderr)
@@ -99,8 +105,6 @@ def run(args) -> int:
 
 
 def _parse_argument(option: str, text: str):
-    from bearingheat.units import UnitError, parse_quantity
-
     kind = _FIELDS[option][2]
     if kind == "count":
         try:
@@ -112,8 +116,6 @@ def _parse_argument(option: str, text: str):
 
 def _evaluate(inputs: dict) -> tuple[dict, str | None]:
     """Run ball_bearing_contact; return the output record and a warning (or None)."""
-    from bearingheat.contact import ball_bearing_contact
-
     result = ball_bearing_contact(**inputs)
     record = result.to_dict()
     warning = None
@@ -126,14 +128,6 @@ def _evaluate(inputs: dict) -> tuple[dict, str | None]:
 
 
 def _run_csv(path: str, as_json: bool) -> int:
-    import csv
-    import json
-    import sys
-    from pathlib import Path
-
-    from bearingheat.cli import UsageError
-    from bearingheat.units import UnitError, parse_unit, ureg
-
     file = Path(path)
     if not file.is_file():
         raise UsageError(f"no such file: {path}")
@@ -141,8 +135,6 @@ def _run_csv(path: str, as_json: bool) -> int:
         rows = list(csv.reader(handle))
     if not rows:
         raise UsageError(f"{path}: the file is empty")
-    from bearingheat.frame import parse_header
-
     header = [parse_header(cell, strict=False) for cell in rows[0]]
     by_column = {name: option for option, (_, name, _) in _FIELDS.items()}
     columns = {}  # option -> (position, unit)
@@ -189,19 +181,19 @@ def _run_csv(path: str, as_json: bool) -> int:
                 column = _FIELDS[option][1]
                 if not text:
                     if option in _REQUIRED:
-                        raise ValueError(f"{column} is empty")
+                        raise InputError(f"{column} is empty")
                     continue
                 try:
                     value = float(text)
                 except ValueError:
-                    raise ValueError(f"{column}: {text!r} is not a number") from None
+                    raise InputError(f"{column}: {text!r} is not a number") from None
                 inputs[_FIELDS[option][0]] = value if unit is None else ureg().Quantity(value, unit)
             result, warning = _evaluate(inputs)
             record.update(result)
             if warning:
                 record["warning"] = warning
                 print(f"bearingheat contact: warning: row {number}: {warning}", file=sys.stderr)
-        except ValueError as exc:
+        except BearingheatError as exc:  # a row in error: reported in its record, exit 1
             failures += 1
             record["error"] = str(exc)
             print(f"bearingheat contact: error: row {number}: {exc}", file=sys.stderr)

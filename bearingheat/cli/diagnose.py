@@ -2,8 +2,14 @@
 from __future__ import annotations
 
 import argparse
+from pathlib import Path
 
+import pandas as pd
+
+from bearingheat.analysis.diagnose import diagnose_table
 from bearingheat.cli import UsageError
+from bearingheat.errors import DiagnoseError
+from bearingheat.io.reports.diagnose import summary_lines, write_outputs
 
 HELP = "trace the residuals of measured torque to a missing effect; model error before and after"
 
@@ -42,10 +48,6 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def read_table(path_text: str, sheet: str | None = None):
     """A CSV or xlsx file as a DataFrame; unusable files raise UsageError."""
-    from pathlib import Path
-
-    import pandas as pd
-
     path = Path(path_text)
     if not path.is_file():
         raise UsageError(f"{path}: no such file")
@@ -62,8 +64,6 @@ def read_table(path_text: str, sheet: str | None = None):
 
 
 def run(args: argparse.Namespace) -> int:
-    from bearingheat.diagnose import DiagnoseError, diagnose_table, write_outputs
-
     if args.folds < 2:
         raise UsageError(f"--folds: {args.folds} must be >= 2")
     table = read_table(args.input, args.sheet)
@@ -73,11 +73,6 @@ def run(args: argparse.Namespace) -> int:
         raise UsageError(str(exc)) from exc
     summary = write_outputs(diagnosis, args.out)
     if not args.quiet:
-        print(f"effect: {summary['effect']}  parameters: {summary['parameters']}")
-        print(f"RMSE {summary['rmse_before']:.4g} -> {summary['rmse_after']:.4g} N*mm "
-              f"(held-out {summary['cv_rmse_before']:.4g} -> {summary['cv_rmse_after']:.4g}); "
-              f"MAPE {summary['mape_before']:.3g} -> {summary['mape_after']:.3g} %")
-        if summary["n_excluded"]:
-            print(f"{summary['n_excluded']} row(s) excluded; see {args.out}/report.md")
-        print(f"report: {args.out}/report.md")
+        for line in summary_lines(summary, args.out):
+            print(line)
     return 1 if summary["n_excluded"] else 0

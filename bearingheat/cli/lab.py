@@ -3,7 +3,12 @@ from __future__ import annotations
 
 import argparse
 
+from bearingheat.analysis.lab import process_lab
 from bearingheat.cli import UsageError
+from bearingheat.cli.diagnose import read_table
+from bearingheat.errors import BearingheatError, UnitError
+from bearingheat.io.reports.lab import write_lab_outputs
+from bearingheat.units import magnitude, parse_quantity
 
 HELP = "process DP11A lab rig readings (seed 000): mu, f0 and T_F, f and T0, tables 4 and 5, plots"
 
@@ -39,22 +44,20 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from bearingheat.cli.diagnose import read_table
-    from bearingheat.lab import LabError, process_lab, write_lab_outputs
-    from bearingheat.units import UnitError, parse_quantity
-
     nu = None
     if args.nu is not None:
         try:
-            nu = float(parse_quantity(args.nu, name="--nu").to("mm^2/s").magnitude)
+            viscosity = parse_quantity(args.nu, name="--nu")
         except UnitError as exc:
             raise UsageError(str(exc)) from exc
-        except Exception as exc:  # pint DimensionalityError
+        try:
+            nu = float(magnitude(viscosity, "mm^2/s", "--nu"))
+        except UnitError as exc:
             raise UsageError(f"--nu: {args.nu!r} is not a kinematic viscosity (e.g. 20mm^2/s)") from exc
     table = read_table(args.input, args.sheet)
     try:
         result = process_lab(table, nu=nu, lubrication=args.lubrication)
-    except LabError as exc:
+    except BearingheatError as exc:
         raise UsageError(str(exc)) from exc
     files = write_lab_outputs(result, args.out)
     if not args.quiet:

@@ -5,6 +5,8 @@ import argparse
 from pathlib import Path
 
 from bearingheat.cli import UsageError
+from bearingheat.io.excel.template import build_template
+from bearingheat.io.excel.writer import atomic_save
 
 HELP = "write an Excel template (.xlsx) to fill in with shaft supports"
 
@@ -29,9 +31,6 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from bearingheat.excel import atomic_save
-    from bearingheat.excel_template import build_template
-
     target = Path(args.output)
     if target.suffix.lower() != ".xlsx":
         raise UsageError(f"{target}: the template is an .xlsx workbook; name it e.g. supports.xlsx")

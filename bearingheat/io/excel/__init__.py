@@ -1,1 +1,16 @@
-"""The Excel bridge: read supports from a workbook, write results, live formulas, the template."""
+"""The Excel bridge: read supports from a workbook, write results, live formulas, the template.
+
+- :mod:`.reader`: :func:`read_supports` -> (DataFrame, :class:`SheetInfo`), :func:`with_units`
+- :mod:`.writer`: :func:`write_results`, :func:`write_results_workbook`, :func:`atomic_save`
+- :mod:`.workbook`: :func:`calc_workbook` (read -> calc -> write) -> :class:`WorkbookRun`
+- :mod:`.formulas`: the live Excel formulas of ``calc --formulas``
+- :mod:`.safety`: what a rewrite would lose, and a fingerprint to prove what it kept
+- :mod:`.style`, :mod:`.template`: the named cell styles and the designer's template
+- :mod:`.libreoffice`: headless LibreOffice (recalculation, screenshots)
+"""
+from bearingheat.io.excel.reader import SheetInfo, read_supports, with_units
+from bearingheat.io.excel.workbook import WorkbookRun, calc_workbook
+from bearingheat.io.excel.writer import atomic_save, write_results, write_results_workbook
+
+__all__ = ["read_supports", "SheetInfo", "with_units", "write_results", "write_results_workbook", "atomic_save",
+           "calc_workbook", "WorkbookRun"]

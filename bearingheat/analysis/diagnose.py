@@ -1,0 +1,521 @@
+"""Close the loop: residuals of the catalogue model -> the missing effect -> the model before and after.
+
+``bearingheat diagnose DATA.csv --out DIR`` reads measured friction torque
+with the columns of ``calc`` plus ``M [N*mm]`` (any torque unit), optional
+``T_oil [degC]`` and ``t [h]``, and:
+
+1. computes the catalogue model of seed 002 for every row and its error
+   (RMSE [N·mm], MAPE [%], bias [N·mm]);
+2. measures the structure of the relative residual against n, ν·n, the
+   load, Fa/Fr, t, T_oil (Spearman rank correlation) and the bearing
+   (one-way ANOVA);
+3. fits every candidate of :data:`bearingheat.analysis.effects.CANDIDATES` by least
+   squares on relative residuals;
+4. scores each by grouped k-fold cross-validation (a group is one operating
+   point: bearing, n, ν, Fr, Fa and T_oil, or the ``group`` column when
+   given, so repeated readings never sit on both sides of a split) and by
+   the Bayesian information criterion, and applies the significance rule
+   :data:`SIGNIFICANCE_RULE`; ``none`` wins when no candidate earns its
+   parameters;
+5. reports the error before and after, on the fitting data and on the
+   held-out folds (:meth:`Diagnosis.summary`); ``summary.json``, ``report.md``
+   and the PNG plots are written by :mod:`bearingheat.io.reports.diagnose`.
+
+The fitted effect is reusable: ``bearingheat calc --effects DIR/summary.json``
+loads it with :meth:`FittedEffect.from_summary` and applies it after the
+friction model (each candidate applies itself, :meth:`Candidate.apply`).
+"""
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+from scipy import stats
+
+from bearingheat.analysis.effects import CANDIDATES, EFFECT_NAMES, ModelData, bearing_keys, catalogue_arrays
+from bearingheat.calc.contract import parse_header
+from bearingheat.calc.models import compute_supports
+from bearingheat.calc.table import to_catalogue_units
+from bearingheat.errors import DiagnoseError, InputError, UnitError
+from bearingheat.kernels import friction
+from bearingheat.units import convert_column, parse_unit
+
+__all__ = [
+    "DiagnoseError",
+    "SIGNIFICANCE_RULE",
+    "MEASURED_UNITS",
+    "REGRESSOR_UNITS",
+    "MeasuredData",
+    "CandidateScore",
+    "Diagnosis",
+    "read_measurements",
+    "model_data",
+    "diagnose",
+    "diagnose_table",
+    "error_metrics",
+    "regressors",
+    "residual_structure",
+    "key_regressor",
+    "format_value",
+    "bearing_keys",
+    "FittedEffect",
+]
+
+
+#: measured columns beyond the calc contract -> catalogue unit
+MEASURED_UNITS = {"M": "N*mm", "T_oil": "degC", "t": "h"}
+
+#: the stated rule that decides whether a candidate earns its parameters
+MIN_DELTA_BIC = 10.0          # "very strong" evidence on the Kass & Raftery (1995) scale
+MIN_CV_IMPROVEMENT = 0.05     # held-out relative RMSE at least 5 % below the catalogue model's
+MAX_P_VALUE = 0.01            # one-sided paired t-test over the held-out groups
+CV_TIE = 0.02                 # candidates within 2 % of the best held-out error count as tied
+SIGNIFICANCE_RULE = (
+    f"A candidate is significant when (a) its BIC is at least {MIN_DELTA_BIC:g} below that of 'none', "
+    f"(b) its grouped {{k}}-fold cross-validated relative RMSE is at least {MIN_CV_IMPROVEMENT:.0%} below that "
+    f"of 'none', and (c) a one-sided paired t-test of the held-out squared relative errors, averaged per "
+    f"group, gives p < {MAX_P_VALUE:g}. Among significant candidates whose held-out error is within "
+    f"{CV_TIE:.0%} of the best, the lowest BIC wins. No significant candidate: the answer is 'none'."
+)
+MIN_ROWS = 20
+
+
+# ---------------------------------------------------------------------------------------------
+# Input
+# ---------------------------------------------------------------------------------------------
+
+@dataclass
+class MeasuredData:
+    """A measured table split into the calc frame (catalogue units) and the measured columns."""
+
+    frame: pd.DataFrame           # contract names, catalogue units, positional index
+    M: np.ndarray                 # N·mm
+    T_oil: np.ndarray             # °C, NaN if not given
+    t: np.ndarray                 # h, NaN if not given
+    group: np.ndarray | None      # user's group labels, or None
+    row_errors: list[list[str]]   # per row
+    labels: object = None
+
+
+def _measured_column(table: pd.DataFrame, name: str, row_errors: list[list[str]]) -> np.ndarray:
+    target = MEASURED_UNITS[name]
+    headers = [h for h in table.columns if parse_header(h)[0] == name]
+    if not headers:
+        return np.full(len(table), np.nan)
+    if len(headers) > 1:
+        raise DiagnoseError(f"column {headers[1]!r}: {name} appears twice")
+    header = headers[0]
+    unit_text = parse_header(header)[1]
+    if unit_text is None or unit_text.strip() in ("", "-"):
+        raise DiagnoseError(f"column {header!r}: needs a unit, e.g. '{name} [{target}]'")
+    try:
+        parse_unit(unit_text, name=header)
+    except UnitError as exc:
+        raise DiagnoseError(f"column {header!r}: {exc}") from exc
+    raw = table[header]
+    numbers = pd.to_numeric(raw, errors="coerce").to_numpy(dtype=float)
+    for i, (num, value) in enumerate(zip(numbers, raw.to_numpy(dtype=object))):
+        blank = value is None or (isinstance(value, float) and math.isnan(value)) or str(value).strip() == ""
+        if np.isnan(num) and not blank:
+            row_errors[i].append(f"row {i + 1}: {value!r} is not a number for {header}")
+    try:  # the unit reads (above): a refusal here is its dimension
+        converted, _ = convert_column(numbers, unit_text, target, name=name, header=header)
+    except UnitError as exc:
+        raise DiagnoseError(f"column {header!r}: unit {unit_text} cannot be converted to {target}") from exc
+    return np.asarray(converted, dtype=float)
+
+
+def read_measurements(table: pd.DataFrame) -> MeasuredData:
+    """Split a measured table (unit headers) into the calc frame and M, T_oil, t.
+
+    Raises :class:`DiagnoseError` for unusable input (no torque column,
+    wrong units, missing calc columns); bad cells become row errors.
+    """
+    names = [parse_header(h)[0] for h in table.columns]
+    if "M" not in names:
+        raise DiagnoseError("missing column: 'M [N*mm]' (the measured friction torque, any torque unit)")
+    table = table.reset_index(drop=True)
+    row_errors: list[list[str]] = [[] for _ in range(len(table))]
+    M = _measured_column(table, "M", row_errors)
+    T_oil = _measured_column(table, "T_oil", row_errors)
+    t = _measured_column(table, "t", row_errors)
+    for i, value in enumerate(M):
+        if np.isnan(value) and not row_errors[i]:
+            row_errors[i].append(f"row {i + 1}: M is blank; every row needs a measured torque")
+        elif value <= 0:
+            row_errors[i].append(f"row {i + 1}: M = {value:g} N*mm must be > 0")
+    for i, value in enumerate(t):
+        if value < 0:
+            row_errors[i].append(f"row {i + 1}: t = {value:g} h must be >= 0")
+    measured_headers = [h for h, n in zip(table.columns, names) if n in MEASURED_UNITS or n == "group"]
+    try:
+        converted = to_catalogue_units(table.drop(columns=measured_headers))
+    except InputError as exc:
+        raise DiagnoseError(str(exc)) from exc
+    frame = converted.frame
+    have = set(frame.columns)
+    if "designation" not in have and not {"type", "series"} <= have:
+        raise DiagnoseError("missing column: 'designation' (or 'type' and 'series')")
+    for name, unit in (("D", "mm"), ("n", "1/min"), ("nu", "mm^2/s")):
+        if name not in have:
+            raise DiagnoseError(f"missing column: '{name} [{unit}]' (any {name} unit of the right dimension)")
+    if "lubrication" not in have and "f0" not in have:
+        raise DiagnoseError("missing column: 'lubrication' (grease, oil_mist, oil_bath or circulating_oil)")
+    for i, errors in enumerate(converted.row_errors):
+        row_errors[i].extend(f"row {i + 1}: {e}" for e in errors)
+    group = None
+    if "group" in names:
+        group = table[table.columns[names.index("group")]].astype(str).to_numpy()
+    return MeasuredData(frame, M, T_oil, t, group, row_errors, converted.labels)
+
+
+def model_data(measured: MeasuredData) -> tuple[ModelData, np.ndarray, list[str]]:
+    """The catalogue model on every row; returns (data of usable rows, their positions, excluded messages)."""
+    frame = measured.frame
+    results = compute_supports(frame, labels=measured.labels)
+    status = results["status"].to_numpy()
+    excluded: list[str] = []
+    usable = np.ones(len(frame), dtype=bool)
+    for i in range(len(frame)):
+        if measured.row_errors[i]:
+            usable[i] = False
+            excluded.append("; ".join(measured.row_errors[i]))
+        elif status[i] == "error":
+            usable[i] = False
+            excluded.append(f"row {i + 1}: {results['message'].iat[i]}")
+    arrays, unresolved = catalogue_arrays(frame)
+    usable &= ~unresolved
+    rows = np.flatnonzero(usable)
+    a = {k: (v[rows] if isinstance(v, np.ndarray) else [v[i] for i in rows]) for k, v in arrays.items()}
+    names_all = bearing_keys(frame)
+    codes, names = pd.factorize(pd.Series(names_all[rows], dtype=object), sort=True)
+    load = _load_column(results, a, rows)
+    data = ModelData(
+        M=measured.M[rows], M0=results["M0"].to_numpy(dtype=float)[rows],
+        M1=results["M1"].to_numpy(dtype=float)[rows], M2=results["M2"].to_numpy(dtype=float)[rows],
+        f0=results["f0"].to_numpy(dtype=float)[rows], n=a["n"], nu=a["nu"],
+        dM=friction.mean_diameter(a["d"], a["D"]), Fr=a["Fr"], Fa=a["Fa"], load=load,
+        t=measured.t[rows], T_oil=measured.T_oil[rows], bearing=codes.astype(int),
+        bearing_names=[str(n) for n in names], arrays=a,
+    )
+    return data, rows, excluded
+
+
+def _load_column(results: pd.DataFrame, a: dict, rows: np.ndarray) -> np.ndarray:
+    """The load M1 works with: P1, or F (Fr of radial, Fa of thrust bearings)."""
+    P1 = results["P1"].to_numpy(dtype=float)[rows]
+    return np.where(~np.isnan(P1), P1, np.where(a["m1_load"] == "Fa", a["Fa"], a["Fr"]))
+
+
+# ---------------------------------------------------------------------------------------------
+# Metrics and residual structure
+# ---------------------------------------------------------------------------------------------
+
+def error_metrics(measured, predicted) -> dict:
+    """RMSE [N·mm], MAPE [%], bias = mean(predicted − measured) [N·mm] and relative RMSE [1].
+
+    >>> error_metrics([10.0, 20.0], [11.0, 18.0])
+    {'rmse': 1.5811388300841898, 'mape': 10.0, 'bias': -0.5, 'rel_rmse': 0.1}
+    """
+    M = np.asarray(measured, dtype=float)
+    P = np.asarray(predicted, dtype=float)
+    err = P - M
+    return {
+        "rmse": float(np.sqrt(np.mean(err ** 2))),
+        "mape": float(np.mean(np.abs(err) / np.abs(M)) * 100.0),
+        "bias": float(np.mean(err)),
+        "rel_rmse": float(np.sqrt(np.mean((err / M) ** 2))),
+    }
+
+
+def regressors(data: ModelData) -> dict[str, np.ndarray]:
+    """The quantities the relative residual is examined against, one array per regressor (catalogue units)."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        fa_fr = np.where(data.Fr > 0, data.Fa / data.Fr, np.nan)
+    return {"n": data.n, "nu*n": data.nu * data.n, "load": data.load, "Fa/Fr": fa_fr,
+            "NR": data.NR, "t": data.t, "T_oil": data.T_oil}
+
+
+#: regressor -> unit shown in the report
+REGRESSOR_UNITS = {"n": "1/min", "nu*n": "mm^2/s*1/min", "load": "N", "Fa/Fr": "1", "NR": "W", "t": "h",
+                   "T_oil": "degC", "bearing": "-"}
+
+
+def residual_structure(data: ModelData, predicted: np.ndarray) -> list[dict]:
+    """Relative residual (M − model)/M against each regressor: Spearman ρ and p; the bearing by ANOVA."""
+    residual = (data.M - predicted) / data.M
+    out = []
+    for name, values in regressors(data).items():
+        ok = ~np.isnan(values)
+        if ok.sum() < 3 or np.ptp(values[ok]) == 0:
+            out.append({"regressor": name, "statistic": "spearman_rho", "value": None, "p_value": None,
+                        "note": "not measured" if ok.sum() == 0 else "constant in the data"})
+            continue
+        rho, p = stats.spearmanr(values[ok], residual[ok])
+        out.append({"regressor": name, "statistic": "spearman_rho", "value": float(rho), "p_value": float(p),
+                    "note": ""})
+    groups = [residual[data.bearing == c] for c in range(len(data.bearing_names))]
+    groups = [g for g in groups if len(g)]
+    if len(groups) >= 2 and all(len(g) >= 2 for g in groups):
+        f, p = stats.f_oneway(*groups)
+        out.append({"regressor": "bearing", "statistic": "anova_F", "value": float(f), "p_value": float(p),
+                    "note": ""})
+    else:
+        out.append({"regressor": "bearing", "statistic": "anova_F", "value": None, "p_value": None,
+                    "note": "one bearing only"})
+    return out
+
+
+# ---------------------------------------------------------------------------------------------
+# Fitting, cross-validation and selection
+# ---------------------------------------------------------------------------------------------
+
+@dataclass
+class CandidateScore:
+    """One candidate fitted and scored."""
+
+    name: str
+    applicable: bool
+    reason: str = ""
+    params: dict = field(default_factory=dict)
+    public: dict = field(default_factory=dict)
+    n_params: int = 0
+    fit: dict = field(default_factory=dict)       # error_metrics on the fitting data
+    cv: dict = field(default_factory=dict)        # error_metrics of the held-out predictions
+    bic: float = math.nan
+    delta_bic: float = math.nan                   # BIC(none) − BIC(candidate)
+    cv_improvement: float = math.nan              # 1 − cv rel_rmse / cv rel_rmse of none
+    p_value: float = math.nan
+    significant: bool = False
+    predicted: np.ndarray | None = None
+    cv_predicted: np.ndarray | None = None
+
+    def as_json(self) -> dict:
+        def clean(x):
+            return None if isinstance(x, float) and not math.isfinite(x) else x
+        return {
+            "applicable": self.applicable, "reason": self.reason, "parameters": self.public,
+            "n_params": self.n_params, "rmse": clean(self.fit.get("rmse", math.nan)),
+            "mape": clean(self.fit.get("mape", math.nan)), "cv_rmse": clean(self.cv.get("rmse", math.nan)),
+            "cv_mape": clean(self.cv.get("mape", math.nan)), "cv_rel_rmse": clean(self.cv.get("rel_rmse", math.nan)),
+            "bic": clean(self.bic), "delta_bic": clean(self.delta_bic),
+            "cv_improvement": clean(self.cv_improvement), "p_value": clean(self.p_value),
+            "significant": self.significant,
+        }
+
+
+@dataclass
+class Diagnosis:
+    """The outcome of :func:`diagnose`."""
+
+    data: ModelData
+    effect: str
+    scores: dict[str, CandidateScore]
+    folds: np.ndarray
+    groups: np.ndarray
+    k: int
+    structure: list[dict]
+    excluded: list[str] = field(default_factory=list)
+
+    @property
+    def chosen(self) -> CandidateScore:
+        return self.scores[self.effect]
+
+    def summary(self) -> dict:
+        none, chosen = self.scores["none"], self.chosen
+        return {
+            "effect": self.effect,
+            "parameters": chosen.public,
+            "description": CANDIDATES[self.effect].description,
+            "rmse_before": none.fit["rmse"], "rmse_after": chosen.fit["rmse"],
+            "cv_rmse_before": none.cv["rmse"], "cv_rmse_after": chosen.cv["rmse"],
+            "mape_before": none.fit["mape"], "mape_after": chosen.fit["mape"],
+            "cv_mape_before": none.cv["mape"], "cv_mape_after": chosen.cv["mape"],
+            "bias_before": none.fit["bias"], "bias_after": chosen.fit["bias"],
+            "units": {"rmse": "N*mm", "bias": "N*mm", "mape": "%"},
+            "n_rows": len(self.data), "n_excluded": len(self.excluded), "excluded": self.excluded[:50],
+            "bearings": list(self.data.bearing_names),
+            "folds": self.k, "groups": int(len(np.unique(self.groups))),
+            "selection_rule": SIGNIFICANCE_RULE.format(k=self.k),
+            "residual_structure": self.structure,
+            "candidates": {name: score.as_json() for name, score in self.scores.items()},
+        }
+
+
+def _operating_point_groups(data: ModelData, user_group: np.ndarray | None) -> np.ndarray:
+    if user_group is not None:
+        return pd.factorize(pd.Series(user_group, dtype=object))[0]
+    columns = [data.bearing.astype(float)]
+    for values in (data.n, data.nu, data.Fr, data.Fa, data.T_oil):
+        rounded = np.where(np.isnan(values), -1.0, np.round(values, 6))
+        columns.append(rounded)
+    stacked = np.column_stack(columns)
+    _, codes = np.unique(stacked, axis=0, return_inverse=True)
+    return codes.ravel()
+
+
+def _assign_folds(groups: np.ndarray, k: int, seed: int) -> np.ndarray:
+    unique = np.unique(groups)
+    rng = np.random.default_rng(seed)
+    order = rng.permutation(len(unique))
+    fold_of_group = np.empty(len(unique), dtype=int)
+    fold_of_group[order] = np.arange(len(unique)) % k
+    return fold_of_group[np.searchsorted(unique, groups)]
+
+
+def _bic(M, predicted, n_params) -> float:
+    r = (M - predicted) / M
+    sse = float(np.dot(r, r))
+    N = len(M)
+    return N * math.log(max(sse, 1e-300) / N) + n_params * math.log(N)
+
+
+def diagnose(data: ModelData, *, k: int = 5, seed: int = 0, groups: np.ndarray | None = None,
+             candidates: list[str] | None = None, excluded: list[str] | None = None) -> Diagnosis:
+    """Fit, cross-validate and rank every candidate effect; choose one by :data:`SIGNIFICANCE_RULE`."""
+    N = len(data)
+    if N < MIN_ROWS:
+        raise DiagnoseError(f"diagnose needs at least {MIN_ROWS} usable rows of measured torque; got {N}")
+    groups = _operating_point_groups(data, groups)
+    n_groups = len(np.unique(groups))
+    if n_groups < k:
+        raise DiagnoseError(f"{k}-fold cross-validation needs at least {k} operating points (groups); got {n_groups}")
+    folds = _assign_folds(groups, k, seed)
+    all_rows = np.arange(N)
+    names = candidates or list(CANDIDATES)
+    if "none" not in names:
+        names = ["none"] + names
+    scores: dict[str, CandidateScore] = {}
+    for name in names:
+        candidate = CANDIDATES[name]
+        reason = candidate.applicable(data)
+        if reason:
+            scores[name] = CandidateScore(name, False, reason)
+            continue
+        params = candidate.fit(data, all_rows)
+        predicted = candidate.predict(data, params, all_rows)
+        cv_predicted = np.empty(N)
+        for fold in range(k):
+            test = all_rows[folds == fold]
+            train = all_rows[folds != fold]
+            cv_predicted[test] = candidate.predict(data, candidate.fit(data, train), test)
+        n_params = candidate.n_params(data, params)
+        scores[name] = CandidateScore(
+            name, True, "", params, candidate.public_parameters(data, params), n_params,
+            error_metrics(data.M, predicted), error_metrics(data.M, cv_predicted),
+            _bic(data.M, predicted, n_params), predicted=predicted, cv_predicted=cv_predicted)
+    none = scores["none"]
+    none.delta_bic, none.cv_improvement = 0.0, 0.0
+    r_none = ((data.M - none.cv_predicted) / data.M) ** 2
+    for score in scores.values():
+        if not score.applicable or score.name == "none":
+            continue
+        score.delta_bic = none.bic - score.bic
+        score.cv_improvement = 1.0 - score.cv["rel_rmse"] / none.cv["rel_rmse"]
+        r_c = ((data.M - score.cv_predicted) / data.M) ** 2
+        per_group = pd.Series(r_none - r_c).groupby(groups).mean().to_numpy()
+        if np.allclose(per_group, 0.0):
+            score.p_value = 1.0
+        else:
+            score.p_value = float(stats.ttest_1samp(per_group, 0.0, alternative="greater").pvalue)
+        score.significant = bool(score.delta_bic >= MIN_DELTA_BIC and score.cv_improvement >= MIN_CV_IMPROVEMENT
+                                 and score.p_value < MAX_P_VALUE)
+    significant = [s for s in scores.values() if s.significant]
+    effect = "none"
+    if significant:
+        best_cv = min(s.cv["rel_rmse"] for s in significant)
+        tied = [s for s in significant if s.cv["rel_rmse"] <= best_cv * (1.0 + CV_TIE)]
+        effect = min(tied, key=lambda s: s.bic).name
+    structure = residual_structure(data, none.predicted)
+    return Diagnosis(data, effect, scores, folds, groups, k, structure, list(excluded or []))
+
+
+def diagnose_table(table: pd.DataFrame, *, k: int = 5, seed: int = 0,
+                   candidates: list[str] | None = None) -> Diagnosis:
+    """Read a measured table (unit headers), run the catalogue model and :func:`diagnose` it."""
+    measured = read_measurements(table)
+    data, rows, excluded = model_data(measured)
+    user_groups = measured.group[rows] if measured.group is not None else None
+    return diagnose(data, k=k, seed=seed, groups=user_groups, candidates=candidates, excluded=excluded)
+
+
+# ---------------------------------------------------------------------------------------------
+# What the report shows
+# ---------------------------------------------------------------------------------------------
+
+def key_regressor(diagnosis: Diagnosis) -> str:
+    """The regressor the residual plot is drawn against: the chosen effect's, else the strongest correlation."""
+    if diagnosis.effect != "none":
+        return CANDIDATES[diagnosis.effect].key_regressor
+    best, best_rho = "n", -1.0
+    for entry in diagnosis.structure:
+        if entry["statistic"] == "spearman_rho" and entry["value"] is not None and abs(entry["value"]) > best_rho:
+            best, best_rho = entry["regressor"], abs(entry["value"])
+    return best
+
+
+def format_value(value, digits=4) -> str:
+    """A number, None or a dict of them as the report and the calc messages show it ('–' for none).
+
+    >>> format_value({"k": 2.123456, "tau [h]": None})
+    'k: 2.123, tau [h]: –'
+    """
+    if value is None or (isinstance(value, float) and not math.isfinite(value)):
+        return "–"
+    if isinstance(value, dict):
+        return ", ".join(f"{k}: {format_value(v)}" for k, v in value.items())
+    if isinstance(value, float):
+        return f"{value:.{digits}g}"
+    return str(value)
+
+
+# ---------------------------------------------------------------------------------------------
+# The fitted effect, applied by calc
+# ---------------------------------------------------------------------------------------------
+
+@dataclass
+class FittedEffect:
+    """An effect fitted by ``diagnose``, applied to calc results (MR, NR in place).
+
+    >>> effect = FittedEffect("f0_scale", {"k": 2.0})
+    >>> frame = pd.DataFrame({"designation": ["6205"], "d": [25.0], "D": [52.0], "n": [3000.0], "nu": [12.0]})
+    >>> results = pd.DataFrame({"M0": [12.0], "M1": [8.0], "M2": [0.0], "MR": [20.0], "NR": [6.28],
+    ...                         "f0": [2.0], "status": ["ok"], "message": [""]})
+    >>> effect.apply(frame, results)
+    >>> float(results.at[0, "MR"]), round(float(results.at[0, "NR"]), 4)
+    (32.0, 10.0524)
+    """
+
+    effect: str
+    parameters: dict
+
+    def __post_init__(self):
+        if self.effect not in CANDIDATES:
+            raise DiagnoseError(f"effect {self.effect!r} is not one of {', '.join(EFFECT_NAMES)}")
+        for name in CANDIDATES[self.effect].required:
+            if name not in self.parameters:
+                raise DiagnoseError(f"effect {self.effect!r} needs the parameter {name!r}")
+
+    @classmethod
+    def from_summary(cls, path) -> "FittedEffect":
+        """Load the effect of a ``diagnose`` summary.json."""
+        text = Path(path).read_text(encoding="utf-8")
+        try:
+            summary = json.loads(text)
+        except json.JSONDecodeError as exc:
+            raise DiagnoseError(f"not a JSON file ({exc})") from exc
+        if not isinstance(summary, dict) or "effect" not in summary:
+            raise DiagnoseError("no 'effect' in the summary; expected the summary.json of bearingheat diagnose")
+        return cls(str(summary["effect"]), dict(summary.get("parameters") or {}))
+
+    def describe(self) -> str:
+        return f"diagnose effect {self.effect} ({format_value(self.parameters)})" if self.parameters else \
+            f"diagnose effect {self.effect}"
+
+    def apply(self, frame: pd.DataFrame, results: pd.DataFrame) -> None:
+        """Add the effect to MR and recompute NR for every row that is not in error (the candidate applies itself)."""
+        CANDIDATES[self.effect].apply(frame, results, self.parameters, self.describe())

@@ -1,0 +1,646 @@
+"""Candidate effects the catalogue friction model lacks: a library of parametrised extensions.
+
+Each candidate is a physical extension of the seed 002 model
+M_R = M0 + M1 (+ M2), written on the kernel outputs of
+:func:`bearingheat.calc.models.compute_supports` (catalogue units: N·mm, N,
+1/min, mm²/s, mm, W, h, °C); the physics of each extension is a kernel of
+:mod:`bearingheat.kernels.effects`. A candidate fits its parameters by least
+squares on relative residuals (M_measured − M_model)/M_measured, predicts the
+torque of any rows, and applies its fitted parameters to the results of
+``calc`` (:meth:`Candidate.apply`). :data:`CANDIDATES` maps each name to its
+candidate; the names are the public vocabulary of ``bearingheat diagnose``:
+
+================== =================================================================  =====================
+name               extension                                                          parameters
+================== =================================================================  =====================
+none               M = M0 + M1 + M2 (the catalogue model)                             (none)
+seal_drag          M += M_seal[bearing], constant in n (contact seals, seed 002 p.64)  M_seal [N*mm] per bearing
+f0_scale           M0 -> k·M0 (oil level above the lowest rolling element: k <= 3,    k [1] >= 1
+                   freshly greased: k = 2..5; seed 002 p. 64)
+viscosity_heating  the bearing runs ΔT = R_th·N_R above the oil temperature given, so   R_th [K/W] >= 0
+                   ν -> ν·exp(−b·ΔT) with b = 0.03 1/K (self-consistent in N_R)
+drag_losses        M += c·1e-7·dM³·(n·dM/1000)^p, churning faster than n^(2/3)         c [1] >= 0, p in [0.9, 3]
+run_in             M0 -> M0·(1 + a·exp(−t/τ)), extra friction that decays with t      a [1] >= 0, tau [h]
+preload            Fa -> Fa + F_pre[bearing] before P0, P1 and f1 (seed 002 p. 68)    F_pre [N] per bearing
+================== =================================================================  =====================
+
+Every bound is physical (an effect adds friction, a preload pushes), so a
+candidate fitted to data without its effect collapses onto the catalogue
+model instead of bending it; the significance rule lives in
+:mod:`bearingheat.analysis.diagnose`.
+"""
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+import pandas as pd
+from scipy import optimize
+
+from bearingheat.calc.friction import evaluate_catalogue_model
+from bearingheat.calc.messages import Labels
+from bearingheat.calc.supports import SupportArrays, bearing_constants
+from bearingheat.catalogue.contact import y0_for_contact_angle
+from bearingheat.catalogue.friction import resolve
+from bearingheat.errors import ContactInputError, DesignationError
+from bearingheat.kernels import friction
+from bearingheat.kernels.effects import (VISCOSITY_TEMPERATURE_COEFFICIENT, drag_loss_torque, heated_total_torque,
+                                         seal_drag_torque)
+
+__all__ = [
+    "EFFECT_NAMES",
+    "CANDIDATES",
+    "ModelData",
+    "CalcRows",
+    "Candidate",
+    "catalogue_arrays",
+    "evaluate_with_axial_load",
+    "bearing_keys",
+]
+
+
+# ---------------------------------------------------------------------------------------------
+# The catalogue model arrays (to re-evaluate M1 under a changed axial load)
+# ---------------------------------------------------------------------------------------------
+
+_TEXT_CONSTANTS = ("bearing_type", "f0_basis", "m1_load", "label", "seal", "prefix")
+_FLOAT_CONSTANTS = ("f0_table", "f1_a", "f1_x", "X0_table", "Y0_table", "kB")
+
+
+def _text(frame: pd.DataFrame, name: str) -> list:
+    if name not in frame.columns:
+        return [None] * len(frame)
+    out = []
+    for v in frame[name]:
+        blank = v is None or (isinstance(v, float) and math.isnan(v)) or str(v).strip() == ""
+        out.append(None if blank else str(v).strip())
+    return out
+
+
+def _numbers(frame: pd.DataFrame, name: str) -> np.ndarray:
+    if name in frame.columns:
+        return pd.to_numeric(frame[name], errors="coerce").to_numpy(dtype=float)
+    return np.full(len(frame), np.nan)
+
+
+def catalogue_arrays(frame: pd.DataFrame) -> tuple[dict, np.ndarray]:
+    """The input arrays of the catalogue model (:func:`bearingheat.calc.friction.evaluate_catalogue_model`) for a
+    catalogue-unit frame.
+
+    Bearings are resolved once per distinct (designation, type, series,
+    lubrication, arrangement); rows that do not resolve are flagged in the
+    returned boolean mask. Designation notes are dropped (they are messages,
+    reported by :func:`compute_supports`), and Y0 of angular contact ball
+    bearings is filled from the contact angle once per bearing.
+
+    This is the one builder of the candidates' arrays (``diagnose``,
+    ``audit`` and :meth:`Candidate.apply` call it, :func:`evaluate_with_axial_load`
+    evaluates them); it gives way to
+    :func:`bearingheat.calc.supports.build_support_arrays`.
+    """
+    n_rows = len(frame)
+    keys = list(zip(_text(frame, "designation"), _text(frame, "type"), _text(frame, "series"),
+                    _text(frame, "lubrication"), [v or "single" for v in _text(frame, "arrangement")]))
+    codes, uniques = pd.factorize(pd.Series([repr(k) for k in keys]), sort=False)
+    first_row = {code: i for i, code in reversed(list(enumerate(codes)))}
+    rows = []
+    for code in range(len(uniques)):
+        designation, btype, series, lub, arrangement = keys[first_row[code]]
+        try:
+            resolved = resolve(designation, btype, series)
+        except DesignationError:
+            rows.append(None)
+            continue
+        const = bearing_constants(resolved, lub, arrangement)
+        const["bore"] = resolved.designation.bore if resolved.designation else None
+        const["width"] = resolved.designation.width if resolved.designation else None
+        rows.append(None if const["error"] else const)
+    unresolved = np.array([rows[c] is None for c in codes], dtype=bool)
+    blank = {"bearing_type": "", "f0_basis": "", "m1_load": "Fr", "label": "", "seal": "open", "prefix": "",
+             "f0_table": np.nan, "f1_a": np.nan, "f1_x": np.nan, "X0_table": np.nan, "Y0_table": np.nan,
+             "kB": np.nan, "f1_basis": 0, "p1_rule": None, "m2": False, "no_axial": False,
+             "contact_angle": None, "bore": None, "width": None}
+    per_code = [r if r is not None else blank for r in rows]
+    a: dict = {col: _numbers(frame, col) for col in
+               ("d", "D", "B", "C0", "Y", "e", "X0", "Y0", "alpha", "f0", "f1", "f2", "n", "nu")}
+    a["Fr"] = np.nan_to_num(_numbers(frame, "Fr"), nan=0.0)
+    a["Fa"] = np.nan_to_num(_numbers(frame, "Fa"), nan=0.0)
+
+    def spread(name, dtype=float):
+        values = np.array([r[name] if r[name] is not None else np.nan for r in per_code], dtype=dtype)
+        return values[codes]
+
+    a["d"] = np.where(np.isnan(a["d"]), spread("bore"), a["d"])
+    a["B"] = np.where(np.isnan(a["B"]), spread("width"), a["B"])
+    for col in _TEXT_CONSTANTS:
+        a[col] = np.array([str(r[col]) for r in per_code], dtype=object)[codes]
+    for col in _FLOAT_CONSTANTS:
+        a[col] = spread(col)
+    a["f1_basis"] = np.array([int(r["f1_basis"]) for r in per_code], dtype=int)[codes]
+    a["p1_rule"] = np.array([r["p1_rule"] if isinstance(r["p1_rule"], str) else "" for r in per_code],
+                            dtype=object)[codes]
+    a["m2"] = np.array([bool(r["m2"]) for r in per_code], dtype=bool)[codes]
+    a["no_axial"] = np.array([bool(r["no_axial"]) for r in per_code], dtype=bool)[codes]
+    a["contact_angle"] = spread("contact_angle")
+    a["notes"] = [()] * n_rows
+    _fill_angular_y0(a)
+    return a, unresolved
+
+
+def _fill_angular_y0(a: dict) -> None:
+    rows = (a["bearing_type"] == "angular_contact_ball") & np.isnan(a["Y0"])
+    if not rows.any():
+        return
+    angle = np.where(np.isnan(a["alpha"]), a["contact_angle"], a["alpha"])
+    for value in np.unique(angle[rows & ~np.isnan(angle)]):
+        try:
+            y0 = float(y0_for_contact_angle(float(value)))
+        except ContactInputError:
+            continue  # outside seed 000 table 1: P0 under axial load stays unknown
+        a["Y0"] = np.where(rows & (angle == value), y0, a["Y0"])
+
+
+def _support_arrays(a: dict) -> SupportArrays:
+    """The catalogue arrays of :func:`catalogue_arrays` as the :class:`SupportArrays` the model evaluates."""
+    size = len(a["n"])
+    values = {f.name: a[f.name] for f in dataclasses.fields(SupportArrays) if f.name in a}
+    for name, default in (("size", size), ("series", ""), ("error", ""), ("resolved", True),
+                          ("plain", np.zeros(size, dtype=bool)), ("notes", [])):
+        values.setdefault(name, default)
+    return SupportArrays(**values)
+
+
+def evaluate_with_axial_load(a: dict, rows: np.ndarray, Fa: np.ndarray) -> np.ndarray:
+    """M1 + M2 [N·mm] of ``rows`` of the catalogue arrays with the axial load replaced by ``Fa``."""
+    sub = {k: (v[rows] if isinstance(v, np.ndarray) else [v[i] for i in rows]) for k, v in a.items()}
+    sub["Fa"] = np.asarray(Fa, dtype=float)
+    with np.errstate(all="ignore"):
+        results, _ = evaluate_catalogue_model(_support_arrays(sub), Labels())
+    return results["M1"] + results["M2"]
+
+
+def bearing_keys(frame: pd.DataFrame) -> np.ndarray:
+    """The name of each row's bearing: its designation, else 'type series dxD'.
+
+    The seal torque and preload of ``diagnose`` are fitted per key, and
+    ``calc --effects`` looks them up by the same key.
+    """
+    def text(col):
+        if col not in frame.columns:
+            return [None] * len(frame)
+        return [None if v is None or (isinstance(v, float) and math.isnan(v)) or str(v).strip() == ""
+                else str(v).strip() for v in frame[col]]
+
+    def number(col):
+        if col not in frame.columns:
+            return np.full(len(frame), np.nan)
+        return pd.to_numeric(frame[col], errors="coerce").to_numpy(dtype=float)
+
+    d, D = number("d"), number("D")
+    out = []
+    for des, typ, ser, di, Di in zip(text("designation"), text("type"), text("series"), d, D):
+        if des:
+            out.append(des)
+        else:
+            size = f" {di:g}x{Di:g}" if not (np.isnan(di) or np.isnan(Di)) else ""
+            out.append(f"{typ} {ser}{size}")
+    return np.array(out, dtype=object)
+
+
+# ---------------------------------------------------------------------------------------------
+# Data the candidates work on
+# ---------------------------------------------------------------------------------------------
+
+@dataclass
+class ModelData:
+    """Measured torque with the catalogue model's kernel outputs, one entry per usable row.
+
+    All arrays share one length; ``bearing`` holds integer codes into
+    ``bearing_names``. ``arrays`` are the catalogue arrays of the same rows
+    (for the preload candidate), ``t`` and ``T_oil`` are NaN when not measured.
+    """
+
+    M: np.ndarray
+    M0: np.ndarray
+    M1: np.ndarray
+    M2: np.ndarray
+    f0: np.ndarray
+    n: np.ndarray
+    nu: np.ndarray
+    dM: np.ndarray
+    Fr: np.ndarray
+    Fa: np.ndarray
+    load: np.ndarray
+    t: np.ndarray
+    T_oil: np.ndarray
+    bearing: np.ndarray
+    bearing_names: list[str]
+    arrays: dict = field(repr=False, default_factory=dict)
+
+    @property
+    def MR(self) -> np.ndarray:
+        return self.M0 + self.M1 + self.M2
+
+    @property
+    def NR(self) -> np.ndarray:
+        return friction.power_loss(self.MR, self.n)
+
+    def __len__(self) -> int:
+        return len(self.M)
+
+
+@dataclass
+class CalcRows:
+    """The results of ``calc`` as a fitted effect changes them (catalogue units, one entry per row).
+
+    ``ok`` marks the rows not in error, the only rows an effect changes.
+    ``MR`` starts as the catalogue model's torque and is changed in place;
+    ``notes`` maps a row position to the note its message gets (every ``ok``
+    row starts with the effect's description). ``keys`` are the rows'
+    :func:`bearing_keys`, ``arrays`` their :func:`catalogue_arrays`,
+    ``results`` the calc results (read only).
+    """
+
+    frame: pd.DataFrame
+    results: pd.DataFrame
+    ok: np.ndarray
+    MR: np.ndarray
+    M0: np.ndarray
+    n: np.ndarray
+    nu: np.ndarray
+    dM: np.ndarray
+    keys: np.ndarray
+    arrays: dict = field(repr=False)
+    notes: dict[int, str] = field(default_factory=dict)
+
+    @property
+    def positions(self) -> np.ndarray:
+        return np.flatnonzero(self.ok)
+
+
+def _weighted_sse(M, pred):
+    r = (M - pred) / M
+    return float(np.dot(r, r))
+
+
+def _nonneg_scale(M, base, extra):
+    """θ >= 0 minimising Σ((M − base − θ·extra)/M)² (closed form)."""
+    w2 = 1.0 / (M * M)
+    den = float(np.sum(w2 * extra * extra))
+    if den <= 0.0:
+        return 0.0
+    return max(0.0, float(np.sum(w2 * extra * (M - base))) / den)
+
+
+def _grid_best(objective, grid):
+    """Index of the best grid point of a 1-D objective, and the objective on the whole grid."""
+    values = [objective(g) for g in grid]
+    return int(np.argmin(values)), values
+
+
+def _refine(objective, grid, best, values, xatol):
+    """A bounded search between the neighbours of grid point ``best``; the better of it and the grid point."""
+    lo, hi = grid[max(best - 1, 0)], grid[min(best + 1, len(grid) - 1)]
+    res = optimize.minimize_scalar(objective, bounds=(lo, hi), method="bounded", options={"xatol": xatol})
+    return float(res.x) if res.fun < values[best] else float(grid[best])
+
+
+class Candidate:
+    """One parametrised extension of the catalogue model.
+
+    Subclasses set ``name``, ``description``, ``key_regressor`` and
+    ``required`` (the parameters of summary.json a fitted effect must hold)
+    and implement :meth:`fit` and :meth:`predict` on row positions of a
+    :class:`ModelData`, and :meth:`change`, which applies the fitted public
+    parameters to the results of ``calc``. :meth:`applicable` gives '' or
+    the reason it is not.
+    """
+
+    name = ""
+    description = ""
+    key_regressor = "n"
+    required: tuple[str, ...] = ()
+
+    def applicable(self, data: ModelData) -> str:
+        return ""
+
+    def fit(self, data: ModelData, rows: np.ndarray) -> dict:
+        raise NotImplementedError
+
+    def predict(self, data: ModelData, params: dict, rows: np.ndarray) -> np.ndarray:
+        raise NotImplementedError
+
+    def n_params(self, data: ModelData, params: dict) -> int:
+        return len(params)
+
+    def public_parameters(self, data: ModelData, params: dict) -> dict:
+        """Parameters as written to summary.json (names with units)."""
+        return dict(params)
+
+    def apply(self, frame: pd.DataFrame, results: pd.DataFrame, parameters: dict, note: str) -> None:
+        """Add the fitted effect to MR and recompute NR for every row of calc ``results`` that is not in error.
+
+        ``frame`` holds calc's inputs (contract names, catalogue units),
+        ``results`` its results (``MR``, ``M0``, ``f0``, ``NR``, ``status``,
+        ``message``; changed in place), ``parameters`` the public parameters
+        of summary.json. Each changed row's message gets ``note``.
+        """
+        ok = (results["status"] != "error").to_numpy()
+        if not ok.any():
+            return
+        frame = frame.reset_index(drop=True)
+        arrays, _ = catalogue_arrays(frame)
+        rows = CalcRows(frame, results, ok, results["MR"].to_numpy(dtype=float).copy(),
+                        results["M0"].to_numpy(dtype=float), arrays["n"], arrays["nu"],
+                        friction.mean_diameter(arrays["d"], arrays["D"]), bearing_keys(frame), arrays,
+                        {int(i): note for i in np.flatnonzero(ok)})
+        self.change(rows, parameters)
+        index = results.index
+        results["MR"] = np.where(ok, rows.MR, results["MR"].to_numpy(dtype=float))
+        results["NR"] = np.where(ok, friction.power_loss(rows.MR, rows.n), results["NR"].to_numpy(dtype=float))
+        for i, text in rows.notes.items():
+            current = results.at[index[i], "message"]
+            results.at[index[i], "message"] = f"{current}; {text}" if current else text
+
+    def change(self, rows: CalcRows, parameters: dict) -> None:
+        """Change ``rows.MR`` of the rows ``rows.ok`` by the fitted ``parameters`` (and ``rows.notes``)."""
+        raise NotImplementedError
+
+
+class NoEffect(Candidate):
+    name = "none"
+    description = "the catalogue model M0 + M1 (+ M2) as it stands"
+    key_regressor = "n"
+
+    def fit(self, data, rows):
+        return {}
+
+    def predict(self, data, params, rows):
+        return data.MR[rows]
+
+    def apply(self, frame, results, parameters, note):
+        """The catalogue model as it stands: the results are left as they are."""
+
+
+class SealDrag(Candidate):
+    name = "seal_drag"
+    description = "a contact-seal torque per bearing, constant in n (seed 002 p. 64: seal friction comes on top)"
+    key_regressor = "n"
+    required = ("M_seal [N*mm]",)
+
+    def fit(self, data, rows):
+        M, base, code = data.M[rows], data.MR[rows], data.bearing[rows]
+        w2 = 1.0 / (M * M)
+        k = len(data.bearing_names)
+        num = np.bincount(code, weights=w2 * (M - base), minlength=k)
+        den = np.bincount(code, weights=w2, minlength=k)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            M_seal = np.where(den > 0, np.maximum(num / den, 0.0), 0.0)
+        return {"M_seal": M_seal}
+
+    def predict(self, data, params, rows):
+        return data.MR[rows] + seal_drag_torque(params["M_seal"], data.bearing[rows])
+
+    def n_params(self, data, params):
+        return int(np.count_nonzero(np.bincount(data.bearing, minlength=len(data.bearing_names))))
+
+    def public_parameters(self, data, params):
+        return {"M_seal [N*mm]": {name: float(v) for name, v in zip(data.bearing_names, params["M_seal"])}}
+
+    def change(self, rows, parameters):
+        table = parameters["M_seal [N*mm]"]
+        for i in rows.positions:
+            if rows.keys[i] in table:
+                rows.MR[i] += float(table[rows.keys[i]])
+            else:
+                rows.notes[int(i)] = (f"diagnose effect {self.name}: no seal torque fitted for {rows.keys[i]}; "
+                                      "catalogue MR kept")
+
+
+class F0Scale(Candidate):
+    name = "f0_scale"
+    description = "speed-dependent friction k times the table f0 (oil level, fresh grease; seed 002 p. 64)"
+    key_regressor = "nu*n"
+    required = ("k",)
+
+    def fit(self, data, rows):
+        theta = _nonneg_scale(data.M[rows], data.MR[rows], data.M0[rows])
+        return {"k": 1.0 + theta}
+
+    def predict(self, data, params, rows):
+        return data.MR[rows] + (params["k"] - 1.0) * data.M0[rows]
+
+    def public_parameters(self, data, params):
+        return {"k": float(params["k"])}
+
+    def change(self, rows, parameters):
+        rows.MR[rows.ok] += (float(parameters["k"]) - 1.0) * rows.M0[rows.ok]
+
+
+class ViscosityHeating(Candidate):
+    name = "viscosity_heating"
+    description = ("the bearing runs R_th*N_R hotter than the oil temperature given, so nu is lower "
+                   f"(nu*exp(-{VISCOSITY_TEMPERATURE_COEFFICIENT}*dT))")
+    key_regressor = "NR"
+    required = ("R_th [K/W]",)
+
+    def _predict(self, data, R_th, rows):
+        return heated_total_torque(R_th, data.f0[rows], data.nu[rows], data.n[rows], data.dM[rows],
+                                   data.M1[rows] + data.M2[rows]) if R_th > 0 else data.MR[rows]
+
+    def fit(self, data, rows):
+        NR = data.NR[rows]
+        top = float(np.nanmax(NR)) if len(NR) else 0.0
+        if not top > 0:
+            return {"R_th": 0.0}
+        R_max = 4.0 / (VISCOSITY_TEMPERATURE_COEFFICIENT * top)  # ν down to e^-4 at the highest loss
+        M = data.M[rows]
+
+        def sse(log_r):
+            return _weighted_sse(M, self._predict(data, math.exp(log_r), rows))
+
+        grid = np.linspace(math.log(R_max) - 9.0, math.log(R_max), 19)
+        best, values = _grid_best(sse, grid)
+        if _weighted_sse(M, data.MR[rows]) <= values[best]:
+            return {"R_th": 0.0}
+        return {"R_th": math.exp(_refine(sse, grid, best, values, 1e-4))}
+
+    def predict(self, data, params, rows):
+        return self._predict(data, params["R_th"], rows)
+
+    def public_parameters(self, data, params):
+        return {"R_th [K/W]": float(params["R_th"]), "b [1/K]": VISCOSITY_TEMPERATURE_COEFFICIENT}
+
+    def n_params(self, data, params):
+        return 1
+
+    def change(self, rows, parameters):
+        ok = rows.ok
+        load_part = rows.MR - rows.M0
+        rows.MR[ok] = heated_total_torque(float(parameters["R_th [K/W]"]),
+                                          rows.results["f0"].to_numpy(dtype=float)[ok], rows.nu[ok], rows.n[ok],
+                                          rows.dM[ok], load_part[ok])
+
+
+class DragLosses(Candidate):
+    name = "drag_losses"
+    description = "oil churning c*1e-7*dM^3*(n*dM/1000)^p, growing faster than n^(2/3)"
+    key_regressor = "n"
+    required = ("c", "p")
+    P_BOUNDS = (0.9, 3.0)
+
+    def fit(self, data, rows):
+        M, base, dM, n = data.M[rows], data.MR[rows], data.dM[rows], data.n[rows]
+
+        def best_c(p):
+            extra = drag_loss_torque(1.0, p, dM, n)
+            c = _nonneg_scale(M, base, extra)
+            return c, _weighted_sse(M, base + c * extra)
+
+        def sse(p):
+            return best_c(p)[1]
+
+        grid = np.linspace(*self.P_BOUNDS, 22)
+        p = _refine(sse, grid, *_grid_best(sse, grid), 1e-4)
+        c, _ = best_c(p)
+        return {"c": c, "p": p}
+
+    def predict(self, data, params, rows):
+        return data.MR[rows] + drag_loss_torque(params["c"], params["p"], data.dM[rows], data.n[rows])
+
+    def public_parameters(self, data, params):
+        return {"c": float(params["c"]), "p": float(params["p"])}
+
+    def change(self, rows, parameters):
+        ok = rows.ok
+        rows.MR[ok] += drag_loss_torque(float(parameters["c"]), float(parameters["p"]), rows.dM[ok], rows.n[ok])
+
+
+class RunIn(Candidate):
+    name = "run_in"
+    description = "extra speed-dependent friction a*M0*exp(-t/tau) that decays with running time t"
+    key_regressor = "t"
+    required = ("a", "tau [h]")
+
+    def applicable(self, data):
+        t = data.t
+        if np.all(np.isnan(t)):
+            return "no running time column 't [h]'"
+        if np.any(np.isnan(t)):
+            return "the running time 't [h]' is blank in some rows"
+        if not np.ptp(t) > 0:
+            return "the running time t does not vary"
+        return ""
+
+    def fit(self, data, rows):
+        M, base, M0, t = data.M[rows], data.MR[rows], data.M0[rows], data.t[rows]
+        span = float(np.ptp(data.t)) or 1.0
+
+        def best_a(log_tau):
+            extra = M0 * np.exp(-t / math.exp(log_tau))
+            a = _nonneg_scale(M, base, extra)
+            return a, _weighted_sse(M, base + a * extra)
+
+        # τ between 1 % and 100 % of the observed time span: a decay slower than that is
+        # indistinguishable from a constant f0 scale within the data
+        bounds = (math.log(0.01 * span), math.log(span))
+        def sse(log_tau):
+            return best_a(log_tau)[1]
+
+        grid = np.linspace(*bounds, 21)
+        log_tau = _refine(sse, grid, *_grid_best(sse, grid), 1e-4)
+        a, _ = best_a(log_tau)
+        return {"a": a, "tau": math.exp(log_tau)}
+
+    def predict(self, data, params, rows):
+        return data.MR[rows] + params["a"] * data.M0[rows] * np.exp(-data.t[rows] / params["tau"])
+
+    def public_parameters(self, data, params):
+        return {"a": float(params["a"]), "tau [h]": float(params["tau"])}
+
+    def change(self, rows, parameters):
+        frame, ok = rows.frame, rows.ok
+        t = pd.to_numeric(frame["t"], errors="coerce").to_numpy(dtype=float) if "t" in frame.columns \
+            else np.full(len(frame), np.nan)
+        known = ok & ~np.isnan(t)
+        rows.MR[known] += float(parameters["a"]) * rows.M0[known] * np.exp(-t[known] / float(parameters["tau [h]"]))
+        for i in np.flatnonzero(ok & np.isnan(t)):
+            rows.notes[int(i)] = f"diagnose effect {self.name}: no running time t given; taken as run in (t >> tau)"
+
+
+class Preload(Candidate):
+    name = "preload"
+    description = "an undeclared axial preload F_pre per bearing added to Fa before P0, P1 and f1 (seed 002 p. 68)"
+    key_regressor = "load"
+    required = ("F_pre [N]",)
+
+    def _axial_bearings(self, data):
+        """Bearing codes whose M1 depends on the axial load (ball, tapered, spherical, thrust)."""
+        a = data.arrays
+        depends = (a["m1_load"] != "Fr") & ~a["no_axial"]
+        return np.unique(data.bearing[depends])
+
+    def applicable(self, data):
+        if not data.arrays:
+            return "no catalogue arrays"
+        if len(self._axial_bearings(data)) == 0:
+            return "no bearing in the data has an M1 that depends on the axial load"
+        return ""
+
+    def _m1(self, data, rows, F_pre):
+        return evaluate_with_axial_load(data.arrays, rows, data.Fa[rows] + F_pre)
+
+    def fit(self, data, rows):
+        F_pre = np.zeros(len(data.bearing_names))
+        for code in self._axial_bearings(data):
+            mine = rows[data.bearing[rows] == code]
+            if len(mine) == 0:
+                continue
+            M, M0 = data.M[mine], data.M0[mine]
+            C0 = np.nanmax(data.arrays["C0"][mine]) if np.any(~np.isnan(data.arrays["C0"][mine])) else np.nan
+            top = C0 if C0 > 0 else 10.0 * max(float(np.max(data.Fr[mine] + data.Fa[mine])), 1.0)
+
+            def sse(force):
+                pred = M0 + self._m1(data, mine, force)
+                return _weighted_sse(M, pred) if np.all(np.isfinite(pred)) else math.inf
+
+            grid = np.concatenate([[0.0], np.geomspace(top * 1e-3, top, 16)])
+            best, values = _grid_best(sse, grid)
+            if best == 0 or not math.isfinite(values[best]):
+                continue
+            F_pre[code] = _refine(sse, grid, best, values, 1e-3 * grid[best])
+        return {"F_pre": F_pre}
+
+    def predict(self, data, params, rows):
+        F_pre = params["F_pre"][data.bearing[rows]]
+        out = data.MR[rows].copy()
+        active = F_pre > 0
+        if active.any():
+            sub = rows[active]
+            out[active] = data.M0[sub] + self._m1(data, sub, F_pre[active])
+        return out
+
+    def n_params(self, data, params):
+        return len(self._axial_bearings(data))
+
+    def public_parameters(self, data, params):
+        return {"F_pre [N]": {name: float(v) for name, v in zip(data.bearing_names, params["F_pre"])}}
+
+    def change(self, rows, parameters):
+        table, keys, a = parameters["F_pre [N]"], rows.keys, rows.arrays
+        force = np.array([float(table.get(keys[i], 0.0)) for i in range(len(rows.frame))])
+        active = np.flatnonzero(rows.ok & (force > 0))
+        if len(active):
+            rows.MR[active] = rows.M0[active] + evaluate_with_axial_load(a, active, a["Fa"][active] + force[active])
+        for i in rows.positions:
+            if keys[i] not in table:
+                rows.notes[int(i)] = f"diagnose effect {self.name}: no preload fitted for {keys[i]}; catalogue MR kept"
+
+
+#: candidate name -> the candidate (the order is the order of the report)
+CANDIDATES: dict[str, Candidate] = {c.name: c for c in (
+    NoEffect(), SealDrag(), F0Scale(), ViscosityHeating(), DragLosses(), RunIn(), Preload())}
+
+EFFECT_NAMES = tuple(CANDIDATES)

@@ -1,0 +1,165 @@
+"""Ball bearing contact with units (seed 001): lengths, angles, forces and speeds as pint Quantities.
+
+The unit boundary of :mod:`bearingheat.kernels.contact`: every argument is
+converted once to the kernels' catalogue units (mm, N, 1/min, deg), every
+result comes back as a Quantity in a :class:`BallContact`.
+
+Source: seed 001, В.А. Зайцев, В.А. Воронкин, «Расчёт осевых усилий и рабочих
+углов контакта подшипников качения при оценке их качества на стендах»
+(ФГУП «НПП ВНИИЭМ», 2009).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from bearingheat.errors import ContactInputError, UnitError
+from bearingheat.kernels.contact import (axial_displacement, axial_displacement_ratio, hertz_coefficients,
+                                         initial_contact_angle, minimum_axial_load, race_curvatures,
+                                         stiffness_characteristic, working_contact_angle)
+from bearingheat.units import magnitude, quantity, speed_rpm
+
+__all__ = ["BallContact", "ball_bearing_contact", "contact_angle_from_clearance"]
+
+
+@dataclass(frozen=True)
+class BallContact:
+    """Contact of one ball bearing (Quantities). ``Fa_min`` needs n; it uses α0 (the seed's rule),
+    ``Fa_min_at_alpha`` the working angle under Fa."""
+
+    alpha0: Any
+    alpha: Any
+    Fa: Any
+    xi_a: Any
+    delta_a: Any
+    C_star: Any
+    sum_rho_i: Any
+    sum_rho_o: Any
+    cos_tau_i: Any
+    cos_tau_o: Any
+    deflection_i: Any
+    deflection_o: Any
+    n: Any = None
+    Fa_min: Any = None
+    Fa_min_at_alpha: Any = None
+
+    # key of to_dict() -> (attribute, unit)
+    _KEYS = {
+        "alpha0 [deg]": ("alpha0", "deg"),
+        "Fa [N]": ("Fa", "N"),
+        "alpha [deg]": ("alpha", "deg"),
+        "xi_a": ("xi_a", ""),
+        "delta_a [mm]": ("delta_a", "mm"),
+        "C_star [N]": ("C_star", "N"),
+        "sum_rho_i [1/mm]": ("sum_rho_i", "1/mm"),
+        "sum_rho_o [1/mm]": ("sum_rho_o", "1/mm"),
+        "cos_tau_i": ("cos_tau_i", ""),
+        "cos_tau_o": ("cos_tau_o", ""),
+        "2K/(mu*pi)_i": ("deflection_i", ""),
+        "2K/(mu*pi)_o": ("deflection_o", ""),
+        "n [1/min]": ("n", "1/min"),
+        "Fa_min [N]": ("Fa_min", "N"),
+        "Fa_min at alpha [N]": ("Fa_min_at_alpha", "N"),
+    }
+
+    def to_dict(self) -> dict[str, Any]:
+        """Magnitudes under keys carrying their unit, e.g. ``'alpha [deg]'``; keys of absent values left out."""
+        result = {}
+        for key, (attribute, unit) in self._KEYS.items():
+            value = getattr(self, attribute)
+            if value is None:
+                continue
+            mag = value.to(unit).magnitude if unit else value.to("dimensionless").magnitude
+            result[key] = mag.tolist() if isinstance(mag, np.ndarray) else float(mag)
+        return result
+
+
+def _angle_deg(value, name: str):
+    if getattr(value, "unitless", False):
+        raise UnitError(f"{name}: {value.magnitude!r} has no unit; write it as an angle, e.g. {value.magnitude!r} deg")
+    return magnitude(value, "deg", name)
+
+
+def _count(value, name: str):
+    if hasattr(value, "units"):
+        if not value.unitless:
+            raise UnitError(f"{name}: {value} must be a plain number of balls, without a unit")
+        value = value.magnitude
+    return value
+
+
+def contact_angle_from_clearance(clearance, r_i, r_o, d_w):
+    """Initial contact angle α0 (Quantity in degrees) from the mean radial clearance.
+
+    Unit-aware form of :func:`~bearingheat.kernels.contact.initial_contact_angle`: lengths are Quantities.
+
+    >>> from bearingheat.units import ureg
+    >>> u = ureg()
+    >>> round(contact_angle_from_clearance(10 * u.um, 1.05 * u.mm, 1.16 * u.mm, 2 * u.mm).to('deg').magnitude, 4)
+    12.5279
+    """
+    e = magnitude(clearance, "mm", "clearance")
+    ri, ro, dw = (magnitude(q, "mm", nm) for q, nm in ((r_i, "r_i"), (r_o, "r_o"), (d_w, "d_w")))
+    return quantity(initial_contact_angle(e, ri, ro, dw), "deg")
+
+
+def ball_bearing_contact(*, z, d_w, d_m, r_i, r_o, alpha0=None, clearance=None, Fa=None, n=None) -> BallContact:
+    """Contact angles, stiffness and minimum axial load of a ball bearing (seed 001), unit-aware.
+
+    z: number of balls (plain number); d_w ball diameter, d_m pitch diameter,
+    r_i, r_o groove radii: lengths; exactly one of alpha0 (angle) or clearance
+    (mean radial clearance, length); Fa axial load (force, default 0: α = α0);
+    n inner-ring speed (1/min, rpm, Hz, rad/s), optional, for the minimum
+    axial load. Returns a :class:`BallContact` of Quantities.
+
+    >>> from bearingheat.kernels.contact import degrees_to_dms
+    >>> from bearingheat.units import ureg
+    >>> u = ureg()
+    >>> r = ball_bearing_contact(z=7, d_w=2 * u.mm, d_m=8.7355 * u.mm, r_i=1.05 * u.mm, r_o=1.16 * u.mm,
+    ...                          alpha0=12 * u.deg, Fa=2 * u.kgf, n=3000 * u.rpm)
+    >>> round(r.C_star.to('kgf').magnitude), degrees_to_dms(r.alpha.to('deg').magnitude), round(r.xi_a.magnitude, 5)
+    (7803, '14°27′57″', 0.04443)
+    >>> r.Fa_min.to('mN')
+    <Quantity(10.19..., 'millinewton')>
+    """
+    if (alpha0 is None) == (clearance is None):
+        raise ContactInputError("give exactly one of alpha0 (an angle) or clearance (the mean radial clearance)")
+    count = _count(z, "z")
+    dw, dm, ri, ro = (magnitude(q, "mm", nm) for q, nm in ((d_w, "d_w"), (d_m, "d_m"), (r_i, "r_i"), (r_o, "r_o")))
+    if alpha0 is not None:
+        angle0 = _angle_deg(alpha0, "alpha0")
+    else:
+        angle0 = initial_contact_angle(magnitude(clearance, "mm", "clearance"), ri, ro, dw)
+    load = 0.0 if Fa is None else magnitude(Fa, "N", "Fa")
+
+    curv = race_curvatures(dw, dm, angle0, ri, ro)
+    hertz_i, hertz_o = hertz_coefficients(curv.cos_tau_i), hertz_coefficients(curv.cos_tau_o)
+    c_star = stiffness_characteristic(count, dw, dm, angle0, ri, ro,
+                                      deflection_coefficients=(hertz_i.deflection, hertz_o.deflection))
+    angle = working_contact_angle(load, c_star, angle0)
+    xi_a = axial_displacement_ratio(angle, angle0)
+    speed = fa_min = fa_min_working = None
+    if n is not None:
+        rpm = speed_rpm(n, "n")
+        speed = quantity(rpm, "1/min")
+        fa_min = quantity(minimum_axial_load(count, dw, dm, rpm, angle0), "N")
+        fa_min_working = quantity(minimum_axial_load(count, dw, dm, rpm, angle), "N")
+    return BallContact(
+        alpha0=quantity(angle0, "deg"),
+        alpha=quantity(angle, "deg"),
+        Fa=quantity(load, "N"),
+        xi_a=quantity(xi_a, "dimensionless"),
+        delta_a=quantity(axial_displacement(xi_a, ri, ro, dw), "mm"),
+        C_star=quantity(c_star, "N"),
+        sum_rho_i=quantity(curv.sum_rho_i, "1/mm"),
+        sum_rho_o=quantity(curv.sum_rho_o, "1/mm"),
+        cos_tau_i=quantity(curv.cos_tau_i, "dimensionless"),
+        cos_tau_o=quantity(curv.cos_tau_o, "dimensionless"),
+        deflection_i=quantity(hertz_i.deflection, "dimensionless"),
+        deflection_o=quantity(hertz_o.deflection, "dimensionless"),
+        n=speed,
+        Fa_min=fa_min,
+        Fa_min_at_alpha=fa_min_working,
+    )

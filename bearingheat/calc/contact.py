@@ -1,0 +1,74 @@
+"""calc extension ``contact``: the minimum axial load of ball bearings (seed 001) for rows with ball geometry.
+
+Optional calc inputs ``z``, ``Dw [mm]`` and ``dm_pitch [mm]`` (number of
+balls, ball diameter, pitch diameter) with the contact angle ``alpha [deg]``
+(or the nominal angle of the designation, e.g. 40° for 72..-B) give the
+output column ``Fa_min [N]``; a row whose Fa is below it at its speed gets
+a warning: the balls may skid (seed 001, p. 1). The formula is the kernel
+:func:`bearingheat.kernels.contact.minimum_axial_load`.
+"""
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from bearingheat.calc.contract import columns
+from bearingheat.catalogue.designation import parse_designation
+from bearingheat.errors import ContactInputError, DesignationError
+from bearingheat.kernels.contact import minimum_axial_load
+
+__all__ = ["prepare", "extend"]
+
+#: the contract inputs of the extension (owner "contact")
+_GEOMETRY = columns(owner="contact", kind="input")  # z, Dw, dm_pitch
+
+
+def prepare(frame: pd.DataFrame):
+    """Nothing to do before the friction model: the frame unchanged, no problems."""
+    return frame, []
+
+
+def _nominal_angle(designation) -> float:
+    if not isinstance(designation, str):
+        return np.nan
+    try:
+        angle = parse_designation(designation).contact_angle
+    except DesignationError:
+        return np.nan
+    return np.nan if angle is None else angle
+
+
+def extend(frame: pd.DataFrame, results: pd.DataFrame):
+    """The column ``Fa_min`` [N] of the ball bearing rows with geometry, and (row position, level, message) problems.
+
+    No column at all when the table has no ``z``, ``Dw`` and ``dm_pitch``.
+    """
+    if not all(col in frame.columns for col in _GEOMETRY):
+        return pd.DataFrame(index=frame.index), []
+    z, dw, pitch = (frame[c].to_numpy(dtype=float) for c in _GEOMETRY)
+    alpha = frame["alpha"].to_numpy(dtype=float) if "alpha" in frame.columns else np.full(len(frame), np.nan)
+    designations = frame["designation"] if "designation" in frame.columns else [None] * len(frame)
+    nominal = np.array([_nominal_angle(d) for d in designations], dtype=float)
+    alpha = np.where(np.isnan(alpha), nominal, alpha)
+    n = frame["n"].to_numpy(dtype=float)
+    Fa = frame["Fa"].to_numpy(dtype=float) if "Fa" in frame.columns else np.zeros(len(frame))
+    Fa = np.nan_to_num(Fa, nan=0.0)
+    is_ball = results["bearing_type"].str.contains("ball").to_numpy()
+    ok = (results["status"] != "error").to_numpy()
+    has_geometry = ~np.isnan(z) & ~np.isnan(dw) & ~np.isnan(pitch)
+    fa_min = np.full(len(frame), np.nan)
+    problems = []
+    for i in np.flatnonzero(has_geometry & is_ball & ok):
+        if np.isnan(alpha[i]):
+            problems.append((i, "warning", "Fa_min: give alpha [deg] (the contact angle) to check the minimum "
+                                           "axial load against ball skidding (seed 001)"))
+            continue
+        try:
+            fa_min[i] = minimum_axial_load(z[i], dw[i], pitch[i], n[i], alpha[i])
+        except ContactInputError as exc:
+            problems.append((i, "error", f"Fa_min: {exc}"))
+            continue
+        if Fa[i] < fa_min[i]:
+            problems.append((i, "warning", f"Fa = {Fa[i]:.4g} N is below the minimum axial load "
+                                           f"{fa_min[i]:.4g} N at {n[i]:g} 1/min: the balls may skid (seed 001)"))
+    return pd.DataFrame({"Fa_min": fa_min}, index=frame.index), problems

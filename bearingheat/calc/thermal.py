@@ -1,0 +1,648 @@
+"""The heat balance of a table of supports (catalogue units) and the ``bearingheat calc`` extension ``thermal``.
+
+Row functions: :func:`thermal_reference_speed_rows` and
+:func:`thermal_reference_speed_details` (n_θr of catalogue bearings),
+:func:`fill_viscosity` (ν from nu40/nu100 or iso_vg before the friction
+pass) and :func:`heat_balance_rows` (n_thr, n_per, T_op, nu_op, Q_S, Q_L
+after it). The formulas are :mod:`bearingheat.kernels.thermal`, the
+reference conditions :mod:`bearingheat.catalogue.thermal`; the unit-aware
+functions are :mod:`bearingheat.api.thermal` (issue 3, after Schaeffler
+HR 1, ISO 15312 and DIN 732).
+
+As a calc extension (:func:`prepare`, :func:`extend`) it reads the
+optional input columns of the column contract whose owner is ``thermal``
+(:mod:`bearingheat.calc.contract`: T, k_q, T_amb, T_bearing, V_oil,
+dT_oil, Q_E, nu40, nu100, iso_vg, VI, n_G, n_thr_catalogue) and B, C0 of
+the friction model.
+
+Output columns, each where its inputs are present: ``n_thr [1/min]`` (B or
+T, C0), ``n_per [1/min]`` (T_bearing, T_amb), ``T_op [degC]`` and
+``nu_op [mm^2/s]`` (T_amb; the operating temperature at the speed n),
+``Q_S [W]`` and ``Q_L [W]`` (heat carried away at T_bearing, or at T_op
+where T_bearing is not given).
+
+When ``nu`` is left out and ``nu40``/``nu100`` or ``iso_vg`` are given,
+:func:`prepare` fills it before the friction pass: at ``T_bearing`` where
+the row gives it, otherwise at the operating temperature T_op solved at the
+operating speed (this needs ``n`` and ``T_amb``). A ``nu`` the user gives
+is kept as it is.
+
+>>> n_thr = thermal_reference_speed_rows(pd.DataFrame(
+...     {"designation": ["6205", "NU206-E", "51105"], "d": [25, 30, 25], "D": [52, 62, 42],
+...      "B": [15, 16, 11], "C0": [7800, 36000, 28500]}))
+>>> n_thr.round(0).tolist()[:2]
+[14416.0, 9851.0]
+>>> n_thr.attrs["reason"].iloc[2]
+'n_thr: the thermal method (ISO 15312, DIN 732) does not apply to thrust ball bearings'
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Callable
+
+import numpy as np
+import pandas as pd
+
+from bearingheat.calc.models import FrictionPower, compute_supports
+from bearingheat.calc.supports import number_column, text_column
+from bearingheat.calc.viscosity import viscosity_model_rows
+from bearingheat.catalogue.friction import resolve
+from bearingheat.catalogue.thermal import THERMAL_KIND, THERMAL_KINDS, method_refusal, reference_conditions
+from bearingheat.errors import DesignationError, HeatBalanceError
+from bearingheat.kernels import friction
+from bearingheat.kernels.thermal import (APPROXIMATION_RANGE, HEAT_FLOW_AREA, balance_root, balance_speed,
+                                         default_heat_transfer_coefficient, heat_flow_area,
+                                         oil_heat_flow, operating_temperature, permissible_speed_factor,
+                                         reference_heat_flux_density, seat_heat_flow,
+                                         speed_factor_catalogue_approximation, speed_factor_coefficients,
+                                         torque_coefficients)
+from bearingheat.kernels.roots import bracketed_root
+from bearingheat.kernels.viscosity import viscosity_range_messages, walther_viscosity
+
+__all__ = [
+    "OPERATING_TEMPERATURE_LIMIT",
+    "BELOW_AMBIENT_SEARCH",
+    "SPEED_FACTOR_METHODS",
+    "SpeedFactorMethod",
+    "VISCOSITY_AT",
+    "THERMAL_INPUTS",
+    "thermal_reference_speed_details",
+    "thermal_reference_speed_rows",
+    "fill_viscosity",
+    "heat_balance_rows",
+    "heat_flow_curves",
+    "prepare",
+    "extend",
+]
+
+#: upper end of the search for the operating temperature [°C]; above it the heat is said to run away
+OPERATING_TEMPERATURE_LIMIT = 150.0
+#: the search for the operating temperature starts this far below the ambient temperature [K]
+BELOW_AMBIENT_SEARCH = 50.0
+#: where the operating viscosity is taken when it comes from nu40/nu100 or iso_vg
+VISCOSITY_AT = {
+    "auto": "T_bearing where given, otherwise the solved operating temperature T_op",
+    "bearing": "the bearing temperature T_bearing",
+    "operating": "the solved operating temperature T_op at the operating speed n",
+}
+
+
+#: input columns that only the heat balance reads (B and C0 belong to the friction model as well)
+THERMAL_INPUTS = frozenset({"T", "k_q", "T_amb", "T_bearing", "V_oil", "dT_oil", "Q_E", "nu40", "nu100", "iso_vg",
+                            "VI", "n_G", "n_thr_catalogue"})
+
+
+# ---- rows: thermal reference speed of catalogue bearings -------------------------------------
+
+def _resolve_rows(frame: pd.DataFrame):
+    """Per row: (ResolvedBearing or None, reason)."""
+    designations = text_column(frame, "designation")
+    types = text_column(frame, "type")
+    series = text_column(frame, "series")
+    out = []
+    for des, typ, ser in zip(designations, types, series):
+        try:
+            out.append((resolve(des, typ, ser), ""))
+        except DesignationError as exc:
+            out.append((None, str(exc)))
+    return out
+
+
+def thermal_reference_speed_details(frame: pd.DataFrame) -> pd.DataFrame:
+    """Thermal reference speed of every row with the quantities behind it.
+
+    ``frame`` is in catalogue units with columns ``designation`` (or
+    ``type`` and ``series``), ``d``, ``D``, ``B``, ``T`` (total width of
+    tapered roller bearings), ``C0`` [mm, N]. Returns a DataFrame with the
+    same index: ``n_thr`` [1/min], ``kind``, ``A_r`` [mm²] and ``q_r``
+    [W/mm²] (wherever the geometry allows, even without C0), ``f0``, ``f1``, ``P1`` [N], ``M1`` [N·mm], ``regime``
+    ('nu*n >= 2000' or 'nu*n < 2000') and ``reason`` ('' where n_thr was
+    computed, otherwise why not). Never raises for a bad row.
+
+    Reference conditions: 20 °C ambient, 70 °C outer ring, oil bath with
+    ν = 12 mm²/s (radial) or 24 mm²/s (thrust), load P1 = 0.05·C0 (radial)
+    or Fa = 0.02·C0 (thrust), f0 = oil-bath value, f1 at load/C0 of the
+    reference load.
+    """
+    n_rows = len(frame)
+    resolved = _resolve_rows(frame)
+    d = number_column(frame, "d").copy()       # filled from the designation below
+    D = number_column(frame, "D")
+    B = number_column(frame, "B").copy()
+    T = number_column(frame, "T")
+    C0 = number_column(frame, "C0")
+    reason = [r for _, r in resolved]
+    kind = np.array([""] * n_rows, dtype=object)
+    f0 = np.full(n_rows, np.nan)
+    f1_a = np.full(n_rows, np.nan)
+    f1_x = np.full(n_rows, np.nan)
+    geometry_ok = np.zeros(n_rows, dtype=bool)
+    for i, (res, _) in enumerate(resolved):
+        if res is None:
+            continue
+        entry = res.entry
+        if np.isnan(d[i]) and res.designation is not None and res.designation.bore is not None:
+            d[i] = res.designation.bore
+        if np.isnan(B[i]) and res.designation is not None and res.designation.width is not None:
+            B[i] = res.designation.width
+        refusal = method_refusal(entry.bearing_type, res.seal)
+        if refusal:
+            reason[i] = f"n_thr: {refusal}"
+            continue
+        kind[i] = THERMAL_KIND[entry.bearing_type]
+        checks = (
+            ("d", d[i], "the bore d gives dM = (d + D)/2", lambda v: v > 0, "must be > 0"),
+            ("D", D[i], "the outside diameter D gives dM = (d + D)/2 and A_r", lambda v: v > d[i],
+             f"must be larger than d = {d[i]:g} mm"),
+        )
+        width = HEAT_FLOW_AREA[kind[i]][2]
+        if width is not None:
+            formula = HEAT_FLOW_AREA[kind[i]][1]
+            value = B[i] if width == "B" else T[i]
+            what = "width" if width == "B" else "total width"
+            checks += ((width, value, f"the heat flow area A_r = {formula} needs the {what}",
+                        lambda v: v > 0, "must be > 0"),)
+        for column, value, why, ok, condition in checks:
+            if np.isnan(value):
+                reason[i] = f"{column} [mm]: missing; {why}"
+                break
+            if not ok(value):
+                reason[i] = f"{column} [mm]: {value:g} {condition}"
+                break
+        if reason[i]:
+            continue
+        geometry_ok[i] = True
+        f0_oil = entry.f0_oil
+        if math.isnan(f0_oil):
+            reason[i] = f"n_thr: {entry.label} has no oil-bath f0 in seed 002 (the table prints a dash)"
+            continue
+        f0[i] = friction.f0_needle(f0_oil, B[i], d[i]) if entry.f0_basis == "B/(33+d)" else f0_oil
+        f1_a[i], f1_x[i] = entry.f1_a, entry.f1_x
+        if np.isnan(C0[i]):
+            reason[i] = "C0 [N]: missing; the reference load is a fraction of C0"
+        elif not C0[i] > 0:
+            reason[i] = f"C0 [N]: {C0[i]:g} must be > 0"
+    usable = np.array([r == "" for r in reason], dtype=bool)
+    A_r = np.full(n_rows, np.nan)
+    q_r = np.full(n_rows, np.nan)
+    load_ratio = np.full(n_rows, np.nan)
+    nu_ref = np.full(n_rows, np.nan)
+    for k in THERMAL_KINDS:
+        rows = geometry_ok & (kind == k)
+        if not rows.any():
+            continue
+        ref = reference_conditions(k)
+        A_r[rows] = heat_flow_area(k, d[rows], D[rows], B[rows], T[rows])
+        q_r[rows] = reference_heat_flux_density(k, A_r[rows])
+        load_ratio[rows] = ref.load_ratio
+        nu_ref[rows] = ref.nu
+    dM = friction.mean_diameter(d, D)
+    P1 = load_ratio * C0
+    with np.errstate(invalid="ignore"):
+        f1 = friction.f1_from_load_ratio(f1_a, f1_x, load_ratio)
+        M1 = friction.load_dependent_torque(f1, P1, dM)
+        c_high, c_low = torque_coefficients(f0, dM)
+        x, _, _, low = balance_root(c_high, c_low, M1, nu_ref, q_r * A_r, 1.0)
+    n_thr = np.where(usable, x, np.nan)
+    return pd.DataFrame({
+        "n_thr": n_thr, "kind": kind, "A_r": A_r, "q_r": q_r,
+        "f0": np.where(usable, f0, np.nan), "f1": np.where(usable, f1, np.nan),
+        "P1": np.where(usable, P1, np.nan), "M1": np.where(usable, M1, np.nan),
+        "regime": np.where(usable, np.where(low, "nu*n < 2000", "nu*n >= 2000"), ""),
+        "reason": reason,
+    }, index=frame.index)
+
+
+def thermal_reference_speed_rows(frame: pd.DataFrame) -> pd.Series:
+    """Thermal reference speed n_θr [1/min] of every row of ``frame`` (catalogue units).
+
+    Columns: ``designation`` (or ``type`` + ``series``), ``d``, ``D``,
+    ``B``, ``T`` (total width, tapered roller bearings; NaN otherwise),
+    ``C0`` [mm, N]. Returns a float Series named ``n_thr`` with the index of
+    ``frame``; rows that cannot be computed are NaN (no exception), and
+    ``result.attrs['reason']`` is a Series of messages with the same index
+    ('' where n_thr was computed). :func:`thermal_reference_speed_details`
+    gives A_r, q_r, f0, f1, P1 and M1 as well.
+    """
+    details = thermal_reference_speed_details(frame)
+    out = details["n_thr"].astype(float).rename("n_thr")
+    out.attrs["reason"] = details["reason"].rename("reason")
+    return out
+
+
+
+# ---- rows: heat balance of supports (calc and the Python API) --------------------------------
+
+def _viscosity_of_rows(frame: pd.DataFrame, A, B):
+    """ν(θ) for every row: Walther where A, B are known, the constant ``nu`` column otherwise."""
+    nu_fixed = number_column(frame, "nu")
+    has_model = ~np.isnan(A)
+
+    def nu_at(theta):
+        with np.errstate(invalid="ignore", over="ignore"):
+            return np.where(has_model, walther_viscosity(A, B, theta), nu_fixed)
+
+    return nu_at
+
+
+def _walther_columns(frame: pd.DataFrame):
+    if "_walther_A" in frame.columns:
+        return number_column(frame, "_walther_A"), number_column(frame, "_walther_B"), []
+    return viscosity_model_rows(frame)
+
+
+def _heat_flow_setup(frame: pd.DataFrame):
+    """A_r, k_q, reference-speed details and the heat flows as functions of the bearing temperature."""
+    details = thermal_reference_speed_details(frame)
+    kinds = details["kind"].to_numpy(dtype=object)
+    A_r = details["A_r"].to_numpy(dtype=float)
+    k_q_default = np.full(len(frame), np.nan)
+    for k in THERMAL_KINDS:
+        rows = kinds == k
+        if rows.any():
+            k_q_default[rows] = default_heat_transfer_coefficient(k, A_r[rows])
+    k_q_user = number_column(frame, "k_q")
+    k_q = np.where(np.isnan(k_q_user), k_q_default, k_q_user)
+    T_amb = number_column(frame, "T_amb")
+    V_oil = np.nan_to_num(number_column(frame, "V_oil"), nan=0.0)
+    dT_oil = number_column(frame, "dT_oil")
+    Q_E = np.nan_to_num(number_column(frame, "Q_E"), nan=0.0)
+
+    def Q_S(theta):
+        return seat_heat_flow(k_q, A_r, np.asarray(theta, dtype=float) - T_amb)
+
+    def Q_L(theta):
+        # oil temperature rise: given dT_oil, otherwise oil fed at ambient and leaving at the bearing temperature
+        rise = np.where(np.isnan(dT_oil), np.asarray(theta, dtype=float) - T_amb, dT_oil)
+        return np.where(V_oil > 0, oil_heat_flow(V_oil, rise), 0.0)
+
+    return details, k_q, T_amb, Q_E, Q_S, Q_L
+
+
+def _operating_point(frame, results, nu_at, Q_S, Q_L, Q_E, T_amb, t_limit):
+    """(T_op, status) at the operating speed: N_R(ν(T)) + Q_E = Q_S(T) + Q_L(T), N_R by each row's model."""
+    n = number_column(frame, "n")
+    power = FrictionPower(frame, results)
+
+    def balance(theta):
+        with np.errstate(invalid="ignore", over="ignore"):
+            return power(n, nu_at(theta)) + Q_E - Q_S(theta) - Q_L(theta)
+
+    T_low = T_amb - BELOW_AMBIENT_SEARCH
+    T_high = np.full(len(frame), float(t_limit))
+    T_op, status = operating_temperature(balance, T_low, T_high)
+    return T_op, status, balance
+
+
+def fill_viscosity(frame: pd.DataFrame, *, viscosity_at: str = "auto",
+                   t_limit: float = OPERATING_TEMPERATURE_LIMIT):
+    """Fill an empty ``nu`` from ``nu40``/``nu100`` or ``iso_vg`` (catalogue units); returns (frame, problems).
+
+    Where ``viscosity_at`` is 'auto' the viscosity is taken at ``T_bearing``
+    when the row gives it, otherwise at the operating temperature T_op
+    solved at the operating speed (``n``, ``T_amb``). A ``nu`` the user
+    gives is never replaced. The Walther constants stay in the hidden
+    columns ``_walther_A`` and ``_walther_B`` for the heat balance.
+    """
+    if viscosity_at not in VISCOSITY_AT:
+        raise HeatBalanceError(f"viscosity_at: {viscosity_at!r} is not one of {', '.join(VISCOSITY_AT)}")
+    frame = frame.copy()
+    A, B, problems = _walther_columns(frame)
+    frame["_walther_A"] = A
+    frame["_walther_B"] = B
+    if np.isnan(A).all():
+        return frame, problems
+    nu = number_column(frame, "nu")
+    need = np.isnan(nu) & ~np.isnan(A)
+    T_bearing = number_column(frame, "T_bearing")
+    at_bearing = need & ~np.isnan(T_bearing) & (viscosity_at in ("auto", "bearing"))
+    at_operating = need & ~at_bearing & (viscosity_at in ("auto", "operating"))
+    with np.errstate(invalid="ignore", over="ignore"):
+        nu = np.where(at_bearing, walther_viscosity(A, B, T_bearing), nu)
+    source = np.where(at_bearing, "T_bearing", np.where(~np.isnan(number_column(frame, "nu")), "given", ""))
+    if viscosity_at == "bearing":
+        for i in np.flatnonzero(need & np.isnan(T_bearing)):
+            problems.append((int(i), "error", "T_bearing [degC]: missing; the viscosity is to be taken at the "
+                                              "bearing temperature"))
+    if at_operating.any():
+        T_op = _solve_operating_temperature(frame, A, B, at_operating, t_limit, problems)
+        with np.errstate(invalid="ignore", over="ignore"):
+            nu = np.where(at_operating, walther_viscosity(A, B, T_op), nu)
+        source = np.where(at_operating & ~np.isnan(T_op), "T_op", source)
+    frame["nu"] = nu
+    frame["_nu_source"] = source
+    return frame, problems
+
+
+def _solve_operating_temperature(frame, A, B, rows, t_limit, problems):
+    """T_op of the selected rows before the friction pass (f0, M1, M2 do not depend on ν)."""
+    T_op = np.full(len(frame), np.nan)
+    T_amb = number_column(frame, "T_amb")
+    n = number_column(frame, "n")
+    for i in np.flatnonzero(rows & (np.isnan(T_amb) | np.isnan(n))):
+        missing = "T_amb [degC]" if np.isnan(T_amb[i]) else "n [1/min]"
+        problems.append((int(i), "error", f"{missing}: missing; nu from nu40/nu100 or iso_vg is taken at the "
+                                          "operating temperature T_op, which needs n and T_amb (or give T_bearing)"))
+    rows = rows & ~np.isnan(T_amb) & ~np.isnan(n)
+    if not rows.any() or not {"D"} <= set(frame.columns):
+        return T_op
+    provisional = frame.reset_index(drop=True).copy()
+    with np.errstate(invalid="ignore", over="ignore"):
+        provisional["nu"] = np.where(np.isnan(number_column(frame, "nu")),
+                                     walther_viscosity(A, B, np.full(len(frame), 70.0)), number_column(frame, "nu"))
+    results = compute_supports(provisional)
+    details, k_q, T_amb, Q_E, Q_S, Q_L = _heat_flow_setup(provisional)
+    nu_at = _viscosity_of_rows(provisional, A, B)
+    T, status, _ = _operating_point(provisional, results, nu_at, Q_S, Q_L, Q_E, T_amb, t_limit)
+    failed = (results["status"].to_numpy() == "error") | _plain_rows(results)
+    reasons = details["reason"].to_numpy(dtype=object)
+    for i in np.flatnonzero(rows):
+        if failed[i]:
+            continue  # the friction pass reports the row's own error
+        if reasons[i]:
+            problems.append((int(i), "error", f"nu [mm^2/s]: cannot be taken at T_op; {reasons[i]}; give T_bearing"))
+        elif status[i] != 0:
+            problems.append((int(i), "error", f"nu [mm^2/s]: cannot be taken at T_op; "
+                                              f"{_no_equilibrium_text(status[i], T_amb[i], t_limit)}"))
+        else:
+            T_op[i] = T[i]
+    return T_op
+
+
+def _plain_rows(results: pd.DataFrame) -> np.ndarray:
+    if "bearing_type" not in results.columns:
+        return np.zeros(len(results), dtype=bool)
+    return (results["bearing_type"].astype(str) == "plain_bushing").to_numpy()
+
+
+def _no_equilibrium_text(status, T_amb, t_limit):
+    if status == 1:
+        return (f"no equilibrium below {t_limit:g} degC: the friction heat exceeds the heat carried away "
+                "(the temperature runs away)")
+    if status == -1:
+        return (f"no equilibrium above {T_amb - BELOW_AMBIENT_SEARCH:g} degC: the heat carried away exceeds "
+                "the friction heat")
+    return "the heat balance is undefined (missing inputs)"
+
+
+def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str = "exact",
+                      t_limit: float = OPERATING_TEMPERATURE_LIMIT):
+    """n_thr, n_per, T_op, nu_op, Q_S, Q_L of every row (catalogue units); returns (columns, problems).
+
+    ``frame`` holds the calc inputs (after :func:`fill_viscosity`),
+    ``results`` the friction results of :func:`bearingheat.calc.models.compute_supports`
+    (f0, M1, M2, status). Rows whose friction failed are skipped. Columns
+    come out only where their inputs are present: n_thr with B or T; n_per
+    with T_bearing and T_amb; T_op and nu_op with T_amb; Q_S and Q_L with
+    T_amb. problems are (row position, 'warning' | 'error', message).
+    """
+    if method not in SPEED_FACTOR_METHODS:
+        raise HeatBalanceError(f"method: {method!r} is not one of {', '.join(SPEED_FACTOR_METHODS)}")
+    n_rows = len(frame)
+    problems: list[tuple[int, str, str]] = []
+    has = set(frame.columns)
+    # rows whose friction failed, and plain bushings (no rolling bearing heat balance), are skipped
+    failed = (results["status"].to_numpy() == "error") | _plain_rows(results)
+    columns: dict[str, np.ndarray] = {}
+    wants_thr = bool({"B", "T"} & has) or "n_thr_catalogue" in has
+    wants_balance = "T_amb" in has
+    if not (wants_thr or wants_balance):
+        return pd.DataFrame(index=frame.index), problems
+    details, k_q, T_amb, Q_E, Q_S, Q_L = _heat_flow_setup(frame)
+    reasons = details["reason"].to_numpy(dtype=object)
+    n_thr = details["n_thr"].to_numpy(dtype=float)
+    n_thr_catalogue = number_column(frame, "n_thr_catalogue")
+    reported_reason = np.zeros(n_rows, dtype=bool)
+
+    # with only friction columns (B, C0) n_thr is added quietly; the reasons are told once the user asks
+    # for thermal results with a thermal input column
+    explicit = bool(has & THERMAL_INPUTS)
+
+    def reason_once(i):
+        if explicit and not reported_reason[i] and reasons[i]:
+            reported_reason[i] = True
+            problems.append((int(i), "warning", reasons[i] if reasons[i].startswith("n_thr") else
+                             f"n_thr: {reasons[i]}"))
+
+    if wants_thr:
+        columns["n_thr"] = n_thr
+        for i in np.flatnonzero(~failed & np.isnan(n_thr)):
+            reason_once(i)
+        for i in np.flatnonzero(~failed & (n_thr_catalogue <= 0)):
+            problems.append((int(i), "error", f"n_thr_catalogue [1/min]: {n_thr_catalogue[i]:g} must be > 0"))
+    if not wants_balance:
+        return pd.DataFrame(columns, index=frame.index), problems
+
+    A, B, model_problems = _walther_columns(frame)
+    if "_walther_A" not in has:
+        problems.extend(model_problems)
+    nu_at = _viscosity_of_rows(frame, A, B)
+    for i in np.flatnonzero(~failed & np.isnan(T_amb)):
+        problems.append((int(i), "warning", "T_amb [degC]: missing; the heat balance (T_op, n_per) needs the "
+                                            "ambient temperature"))
+    k_q_user = number_column(frame, "k_q")
+    for i in np.flatnonzero(~failed & (k_q_user <= 0)):
+        problems.append((int(i), "error", f"k_q [W/(mm^2*K)]: {k_q_user[i]:g} must be > 0"))
+    for name in ("V_oil",):
+        values = number_column(frame, name)
+        for i in np.flatnonzero(~failed & (values < 0)):
+            problems.append((int(i), "error", f"V_oil [l/min]: {values[i]:g} must be >= 0"))
+
+    # --- operating temperature at the operating speed
+    T_op, status, _ = _operating_point(frame, results, nu_at, Q_S, Q_L, Q_E, T_amb, t_limit)
+    usable = ~failed & ~np.isnan(T_amb) & ~np.isnan(details["A_r"].to_numpy(dtype=float))
+    for i in np.flatnonzero(usable & (status != 0)):
+        problems.append((int(i), "warning", f"T_op: {_no_equilibrium_text(status[i], T_amb[i], t_limit)}"))
+    for i in np.flatnonzero(~failed & ~np.isnan(T_amb) & np.isnan(details["A_r"].to_numpy(dtype=float))):
+        reason_once(i)
+    T_op = np.where(usable, T_op, np.nan)
+    with np.errstate(invalid="ignore", over="ignore"):
+        nu_op = nu_at(T_op)
+    for i in np.flatnonzero(~np.isnan(nu_op)):
+        message = viscosity_range_messages(nu_op[i], T_op[i])[0]
+        if message:
+            problems.append((int(i), "warning", f"nu_op: {message}"))
+    columns["T_op"] = T_op
+    columns["nu_op"] = nu_op
+
+    # --- heat carried away: at T_bearing where given, otherwise at T_op
+    T_bearing = number_column(frame, "T_bearing")
+    theta = np.where(np.isnan(T_bearing), T_op, T_bearing)
+    with np.errstate(invalid="ignore"):
+        columns["Q_S"] = np.where(usable, Q_S(theta), np.nan)
+        columns["Q_L"] = np.where(usable, Q_L(theta), np.nan)
+
+    # --- permissible speed at the bearing temperature T_bearing
+    if "T_bearing" in has:
+        columns["n_per"] = _permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue,
+                                                   T_bearing, T_amb, Q_S, Q_L, Q_E, usable, method, problems)
+    ordered = [c for c in ("n_thr", "n_per", "T_op", "nu_op", "Q_S", "Q_L") if c in columns]
+    return pd.DataFrame({c: columns[c] for c in ordered}, index=frame.index), problems
+
+
+def _exact_speed_factor(sel, n_thr, f0, nu, dM, load_torque, Q, problems):
+    return permissible_speed_factor(n_thr, f0, nu, dM, load_torque, Q)
+
+
+def _approximate_speed_factor(sel, n_thr, f0, nu, dM, load_torque, Q, problems):
+    k_L, k_P = speed_factor_coefficients(n_thr, f0, nu, dM, load_torque, Q)
+    f_n = np.full(len(sel), np.nan)
+    inside = ((k_L >= APPROXIMATION_RANGE[0]) & (k_L <= APPROXIMATION_RANGE[1])
+              & (k_P >= APPROXIMATION_RANGE[0]) & (k_P <= APPROXIMATION_RANGE[1]))
+    if inside.any():
+        f_n[inside] = speed_factor_catalogue_approximation(k_L[inside], k_P[inside])
+    for j in np.flatnonzero(~inside):
+        problems.append((int(sel[j]), "warning", f"n_per: k_L = {k_L[j]:.4g}, k_P = {k_P[j]:.4g} outside "
+                                                 "0.01..10, the range of the catalogue approximation"))
+    return f_n
+
+
+@dataclass(frozen=True)
+class SpeedFactorMethod:
+    """How n_per = n_θr·f_n finds f_n for the selected rows.
+
+    ``solve(positions, n_thr, f0, nu, dM, load_torque, Q, problems)`` returns
+    f_n for the rows at ``positions`` and appends (row position, level,
+    message) problems.
+    """
+
+    name: str
+    title: str
+    solve: Callable
+
+
+#: how the permissible speed factor is found: exact root, or the catalogue approximation
+SPEED_FACTOR_METHODS: dict[str, SpeedFactorMethod] = {m.name: m for m in (
+    SpeedFactorMethod("exact", "exact root", _exact_speed_factor),
+    SpeedFactorMethod("approximation", "catalogue approximation", _approximate_speed_factor),
+)}
+
+
+def _permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue, T_bearing, T_amb, Q_S, Q_L, Q_E,
+                            usable, method, problems):
+    n_rows = len(frame)
+    rows = usable & ~np.isnan(T_bearing)
+    for i in np.flatnonzero(usable & np.isnan(T_bearing)):
+        problems.append((int(i), "warning", "T_bearing [degC]: missing; n_per is the speed at which the bearing "
+                                            "reaches T_bearing"))
+    for i in np.flatnonzero(rows & (T_bearing <= T_amb)):
+        problems.append((int(i), "error", f"T_bearing [degC]: {T_bearing[i]:g} must be above T_amb = {T_amb[i]:g} "
+                                          "degC for heat to leave through the seat"))
+    rows &= T_bearing > T_amb
+    n_used = np.where(np.isnan(n_thr_catalogue), n_thr, n_thr_catalogue)
+    rows &= n_used > 0
+    Q = Q_S(T_bearing) + Q_L(T_bearing) - Q_E
+    for i in np.flatnonzero(rows & ~(Q > 0)):
+        problems.append((int(i), "warning", f"n_per: the external heat Q_E = {Q_E[i]:g} W is not less than the heat "
+                                            f"carried away {Q[i] + Q_E[i]:.4g} W at T_bearing; no speed is "
+                                            "permissible"))
+    rows &= Q > 0
+    out = np.full(n_rows, np.nan)
+    if not rows.any():
+        return out
+    dM = friction.mean_diameter(number_column(frame, "d"), number_column(frame, "D"))
+    nu = number_column(frame, "nu")
+    f0 = results["f0"].to_numpy(dtype=float)
+    load_torque = results["M1"].to_numpy(dtype=float) + np.nan_to_num(results["M2"].to_numpy(dtype=float))
+    power = FrictionPower(frame, results)
+    sel = np.flatnonzero(rows & power.closed)
+    if len(sel):
+        f_n = SPEED_FACTOR_METHODS[method].solve(sel, n_used[sel], f0[sel], nu[sel], dM[sel], load_torque[sel],
+                                                 Q[sel], problems)
+        out[sel] = f_n * n_used[sel]
+    generic = rows & ~power.closed
+    if generic.any():
+        out[generic] = _generic_speed(power, nu, Q)[generic]
+        if method != "exact":
+            for i in np.flatnonzero(generic):
+                problems.append((int(i), "warning", f"n_per: the {SPEED_FACTOR_METHODS[method].title} holds for "
+                                                    "the catalogue model only; the exact root is used"))
+    n_G = number_column(frame, "n_G")
+    capped = rows & (out > n_G)
+    for i in np.flatnonzero(capped):
+        problems.append((int(i), "warning", f"n_per: the thermal value {out[i]:.5g} 1/min is above the limiting "
+                                            f"speed n_G = {n_G[i]:g} 1/min; n_per = n_G"))
+    return np.where(capped, n_G, out)
+
+
+def _generic_speed(power: FrictionPower, nu: np.ndarray, Q: np.ndarray) -> np.ndarray:
+    """The speed [1/min] at which each row's friction power equals Q [W], by bracketing.
+
+    N_R grows with the speed from 0 at standstill, so the bracket [0, n_high]
+    is widened by doubling until N_R(n_high) > Q (at most to 10^9 1/min).
+    """
+    n_high = np.full(power.size, 1000.0)
+    for _ in range(20):
+        short = power(n_high, nu) < Q
+        if not short.any():
+            break
+        n_high = np.where(short, n_high * 4.0, n_high)
+    speed, status = bracketed_root(lambda n: power(n, nu) - Q, np.zeros(power.size), n_high)
+    return np.where(status == 0, speed, np.nan)
+
+
+# ---- the calc extension ``thermal`` ----------------------------------------------------------------
+
+def prepare(frame: pd.DataFrame):
+    """Fill ``nu`` from nu40/nu100 or iso_vg (at T_bearing, else at T_op); returns (frame, problems)."""
+    return fill_viscosity(frame, viscosity_at="auto", t_limit=OPERATING_TEMPERATURE_LIMIT)
+
+
+def extend(frame: pd.DataFrame, results: pd.DataFrame):
+    """The heat balance columns of every row whose friction succeeded; returns (columns, problems)."""
+    columns, problems = heat_balance_rows(frame, results, method="exact", t_limit=OPERATING_TEMPERATURE_LIMIT)
+    columns.index = frame.index
+    return columns, problems
+
+
+# ---- curves of one row (the figure of ``bearingheat plot``) ----------------------------------------
+
+def heat_flow_curves(frame: pd.DataFrame, results: pd.DataFrame, columns: pd.DataFrame, *,
+                     points: int = 200) -> dict | None:
+    """Friction heat and heat carried away of the first row against speed and temperature (catalogue units).
+
+    ``frame`` holds the calc inputs after :func:`fill_viscosity` (with
+    ``T_amb``), ``results`` the friction results of
+    :func:`bearingheat.calc.models.compute_supports` and ``columns`` those of
+    :func:`heat_balance_rows`. Returns None where the row has no heat flow
+    area A_r or no ambient temperature, otherwise a dict: ``n``, ``n_per``,
+    ``T_op``, ``T_amb``; ``theta`` (T_bearing, else T_op) and ``n_cross``,
+    the speed at which the friction heat equals Q_S + Q_L − Q_E at theta;
+    ``speeds`` [1/min] with ``friction_vs_speed`` and ``carried_vs_speed``
+    [W] at theta; ``temperatures`` [°C] with ``friction_vs_temperature``
+    (N_R(ν(T)) + Q_E) and ``carried_vs_temperature`` (Q_S + Q_L) [W] at the
+    speed n; ``heat_at_T_op`` [W].
+    """
+    details, k_q, T_amb, Q_E, Q_S, Q_L = _heat_flow_setup(frame)
+    if np.isnan(details["A_r"].iloc[0]) or np.isnan(T_amb[0]):
+        return None
+    A, B, _ = _walther_columns(frame)
+    nu_at = _viscosity_of_rows(frame, A, B)
+    power = FrictionPower(frame, results)
+    n = float(frame["n"].iloc[0])
+    T_op = float(columns["T_op"].iloc[0])
+    n_per = float(columns["n_per"].iloc[0]) if "n_per" in columns.columns else math.nan
+    T_bearing = float(frame["T_bearing"].iloc[0]) if "T_bearing" in frame.columns else math.nan
+    theta = T_bearing if not np.isnan(T_bearing) else T_op
+    nu_theta = float(nu_at(np.array([theta]))[0]) if not np.isnan(theta) else math.nan
+    carried_theta = float(Q_S(np.array([theta]))[0] + Q_L(np.array([theta]))[0] - Q_E[0])
+    n_cross = math.nan
+    if carried_theta > 0 and power.is_closed(0):
+        n_cross = float(balance_speed(power.f0[0], nu_theta, power.dM[0], power.load_torque[0], carried_theta))
+    elif carried_theta > 0:
+        n_cross = float(_generic_speed(power, np.full(power.size, nu_theta), np.full(power.size, carried_theta))[0])
+    n_top = 1.5 * np.nanmax([n, n_cross, n_per, 1.0])
+    speeds = np.linspace(0.0, n_top, points)
+    temperatures = np.linspace(T_amb[0], OPERATING_TEMPERATURE_LIMIT, points)
+    ones = np.ones(points)
+    return dict(
+        n=n, n_per=n_per, n_cross=n_cross, theta=theta, T_op=T_op, T_amb=float(T_amb[0]),
+        speeds=speeds,
+        friction_vs_speed=power.at_row(0, speeds, nu_theta),
+        carried_vs_speed=carried_theta * ones,
+        temperatures=temperatures,
+        friction_vs_temperature=power.at_row(0, n * ones, nu_at(temperatures)) + Q_E[0],
+        carried_vs_temperature=Q_S(temperatures) + Q_L(temperatures),
+        heat_at_T_op=float(Q_S(np.array([T_op]))[0] + Q_L(np.array([T_op]))[0]) if not np.isnan(T_op) else np.nan,
+    )

@@ -1,0 +1,71 @@
+"""``bearingheat lookup``: a bearing's dimensions, load ratings, factors and speeds by designation."""
+from __future__ import annotations
+
+import json
+import math
+
+from bearingheat.api.bearings import bearing
+from bearingheat.catalogue.bearings import NUMERIC, units_of_table
+from bearingheat.cli import UsageError
+from bearingheat.errors import DesignationError
+
+HELP = "a bearing's dimensions, load ratings, e, Y, Y0 and speeds by designation (Schaeffler HR 1, 2006)"
+
+DESCRIPTION = """\
+Look a bearing up in the bearing table of the package (Schaeffler HR 1, June 2006:
+deep groove ball 618, 160, 60, 62, 63, 64 open and -2Z; angular contact ball 72..-B,
+73..-B; cylindrical roller N, NU, NJ, NUP of series 2, 3, 22, 23, E design; tapered
+roller 302, 303, 313, 320, 322, 323, 330, 331, 332):
+
+  bearingheat lookup 6208
+  bearingheat lookup NU208-E --json
+
+The designation matches as printed first, then without cage, material, clearance and
+tolerance suffixes (NU208-E finds NU208-E-TVP2), then, when it has no design suffix,
+without the table's design suffix (NU208, 30208). Seal and shield suffixes must match.
+
+Output: 'name [unit]: value' lines: designation, match (exact, cage or design), note
+(how it was matched, when not exactly), family, bearing_type, series, prefix, shield,
+d, D, B, T [mm], C, C0 [N], e, Y, Y0, n_G (limiting speed), n_thr (the catalogue's
+thermal reference speed) [1/min], and source (catalogue, pages, table, row). Values the
+catalogue does not give (T, e, Y, Y0 of a ball or cylindrical roller bearing) are left
+out; --json prints one JSON object with the same keys and null for them.
+
+Exit codes: 0 found; 2 unknown or ambiguous designation (the message lists close
+designations of the table).
+"""
+
+_TEXT = ("designation", "match", "note", "family", "bearing_type", "series", "prefix", "shield")
+
+
+def add_arguments(parser) -> None:
+    parser.add_argument("designation", help="bearing designation, e.g. 6208, 6208-2Z, NU208-E-TVP2, 30208-A")
+    parser.add_argument("--json", action="store_true", help="print JSON instead of text")
+
+
+def run(args) -> int:
+    try:
+        data = bearing(args.designation)
+    except DesignationError as exc:  # unknown or ambiguous: unusable input, exit 2
+        raise UsageError(str(exc)) from exc
+    record = _record(data)
+    if args.json:
+        print(json.dumps(record, ensure_ascii=False))
+        return 0
+    for key, value in record.items():
+        if value is None or value == "":
+            continue
+        print(f"{key}: {format(value, '.15g') if isinstance(value, float) else value}")
+    return 0
+
+
+def _record(data) -> dict:
+    """The ordered output record: text fields, 'name [unit]' numbers (None for NaN), source."""
+    units = units_of_table()
+    record: dict = {key: getattr(data, key) for key in _TEXT}
+    for name in NUMERIC:
+        value = getattr(data, name)
+        key = name if units[name] == "1" else f"{name} [{units[name]}]"
+        record[key] = None if math.isnan(value) else value
+    record["source"] = data.source
+    return record

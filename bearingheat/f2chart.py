@@ -1,8 +1,0 @@
-"""Transitional alias of :mod:`bearingheat.catalogue.f2chart` while the package moves to its layers (removed when the move is done)."""
-import sys
-
-import importlib
-
-_target = importlib.import_module("bearingheat.catalogue.f2chart")
-
-sys.modules[__name__] = _target

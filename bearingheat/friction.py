@@ -1,8 +1,0 @@
-"""Transitional alias of :mod:`bearingheat.kernels.friction` while the package moves to its layers (removed when the move is done)."""
-import sys
-
-import importlib
-
-_target = importlib.import_module("bearingheat.kernels.friction")
-
-sys.modules[__name__] = _target

@@ -1,0 +1,77 @@
+"""Terminal output of the table commands: the summary table of calc results and a progress bar.
+
+:func:`print_summary` writes the readable table that ``bearingheat calc``
+prints for a CSV and for a workbook alike; :class:`Progress` draws the bar
+that :func:`bearingheat.io.excel.workbook.calc_workbook` advances while it
+reads and writes large sheets (any object with ``start``, ``update`` and
+``finish`` will do).
+"""
+from __future__ import annotations
+
+import sys
+
+import pandas as pd
+
+__all__ = ["print_summary", "Progress", "PROGRESS_MIN_ROWS"]
+
+#: sheets at least this long get a progress bar (when stderr is a terminal)
+PROGRESS_MIN_ROWS = 2000
+
+
+def print_summary(result: pd.DataFrame, output: str | None, stream=None) -> None:
+    """A readable table of the main results, then one line per warning or error."""
+    stream = stream or sys.stdout
+    label = "id" if "id" in result.columns else ("designation" if "designation" in result.columns else None)
+    shown = [c for c in (label, "designation" if label == "id" else None) if c]
+    shown += [c for c in result.columns if c.split(" [")[0] in ("f0", "f1", "P1", "M0", "M1", "M2", "MR", "NR",
+                                                              "n_thr", "n_per", "T_op")]
+    shown.append("status")
+    table = result[shown]
+    stream.write(table.to_string(index=False, na_rep="-", float_format=lambda x: f"{x:.4g}") + "\n")
+    for _, row in result.iterrows():
+        if row["status"] != "ok":
+            who = row[label] if label else ""
+            stream.write(f"{row['status']}: {who}: {row['message']}\n")
+    counts = result["status"].value_counts()
+    summary = ", ".join(f"{counts.get(s, 0)} {s}" for s in ("ok", "warning", "error"))
+    where = f"; results written to {output}" if output else ""
+    stream.write(f"{len(result)} supports: {summary}{where}\n")
+
+
+class Progress:
+    """A one-line progress bar on a terminal stream; silent when disabled.
+
+    Enabled when ``enabled`` is true and the stream is a terminal; each
+    stage (reading, writing) draws its own bar and ends it with a newline,
+    for sheets of at least :data:`PROGRESS_MIN_ROWS` rows.
+    """
+
+    def __init__(self, stream=None, enabled: bool = True, width: int = 30):
+        self.stream = stream if stream is not None else sys.stderr
+        self.enabled = enabled and hasattr(self.stream, "isatty") and self.stream.isatty()
+        self.width = width
+        self.total = 0
+        self.label = ""
+        self.active = False
+
+    def start(self, total: int, label: str) -> None:
+        self.total, self.label = total, label
+        self.active = self.enabled and total >= PROGRESS_MIN_ROWS
+        self.update(0)
+
+    def update(self, done: int) -> None:
+        if not self.active:
+            return
+        done = min(done, self.total)
+        filled = int(self.width * done / self.total) if self.total else self.width
+        bar = "#" * filled + "-" * (self.width - filled)
+        self.stream.write(f"\r{self.label:<24} [{bar}] {done}/{self.total}")
+        self.stream.flush()
+
+    def finish(self) -> None:
+        if not self.active:
+            return
+        self.update(self.total)
+        self.stream.write("\n")
+        self.stream.flush()
+        self.active = False

@@ -1,0 +1,194 @@
+"""Live Excel formulas for the results sheet (``bearingheat calc --formulas``).
+
+The result cells of P1, M0, M1, M2, M_R and N_R hold formulas that refer to
+the input cells, so a designer can change n, Fr, Fa, ν, d or D in Excel and
+see the torques and the power loss follow without Python. The inputs are in
+the user's units; every reference is multiplied by the factor to the
+catalogue unit, computed with pint from the units row (kN -> ``*1000``,
+Hz -> ``*60``, lbf -> ``*4.4482216152605``).
+
+The table lookups stay values in helper columns, because Excel cannot
+repeat them sensibly: f0 (lubrication column, needle formula), f1 (table
+rule in P0/C0 or Fa/C0), f2 (user value or digitised chart) and the load M1
+uses ('M1 load': Fr, Fa or the P1 rule of the bearing type). They hold at
+the computed operating point; a large change of load needs calc again.
+
+Formulas (seed 002, pp. 64-69; catalogue units N, mm, 1/min, mm²/s)::
+
+    dM = (d + D)/2
+    M0 = f0 · IF(ν·n >= 2000, (ν·n)^(2/3), 160) · dM³ · 1e-7
+    P1 = MAX(rule(Fr, Fa, Y, e), Fr)
+    M1 = f1 · (Fr | Fa | P1) · dM
+    M2 = f2 · Fa · dM
+    MR = M0 + M1 + M2
+    NR = MR · n / 9550
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pandas as pd
+from openpyxl.utils import get_column_letter
+
+from bearingheat.calc.contract import output_header
+from bearingheat.calc.models import RESULT_UNITS
+from bearingheat.catalogue.friction import resolve
+from bearingheat.errors import DesignationError
+from bearingheat.kernels import friction
+from bearingheat.units import parse_unit, speed_rpm, ureg
+
+__all__ = ["live_formulas", "unit_factor", "P1_EXCEL", "excel_number"]
+
+#: P1 rule of seed 002 p. 68 -> Excel expression before the "P1 >= Fr" rule (names as in friction.P1_RULES)
+P1_EXCEL = {
+    "radial_ball": "3.3*{Fa}-0.1*{Fr}",
+    "angular_single": "{Fa}-0.1*{Fr}",
+    "angular_paired": "1.4*{Fa}-0.1*{Fr}",
+    "angular_double_row": "1.4*{Fa}-0.1*{Fr}",
+    "four_point": "1.5*{Fa}+3.6*{Fr}",
+    "tapered_single": "IF({Fa}>0,2*{Y}*{Fa},{Fr})",
+    "tapered_paired": "IF({Fa}>0,1.21*{Y}*{Fa},{Fr})",
+    "spherical": "IF({Fa}<=0,{Fr},IF(OR({Fr}<=0,{Fa}>{e}*{Fr}),1.6*{Fa}/{e},{Fr}*(1+0.6*({Fa}/({e}*{Fr}))^3)))",
+}
+
+_CATALOGUE = {"d": "mm", "D": "mm", "n": "1/min", "nu": "mm^2/s", "Fr": "N", "Fa": "N", "Y": "1", "e": "1"}
+
+
+def excel_number(value: float) -> str:
+    """A float as Excel formula text that reads back to the same double.
+
+    >>> excel_number(1000.0), excel_number(4.4482216152605), excel_number(1e-07)
+    ('1000', '4.4482216152605', '1E-07')
+    """
+    text = repr(float(value))
+    if text.endswith(".0"):
+        text = text[:-2]
+    return text.replace("e", "E")
+
+
+def unit_factor(unit_text: str | None, target: str, name: str) -> float:
+    """Catalogue units per user unit, e.g. ('kN', 'N') -> 1000, ('Hz', '1/min') -> 60, ('rad/s', '1/min') -> 60/2π.
+
+    >>> unit_factor('kN', 'N', 'Fr'), unit_factor('U/min', '1/min', 'n'), unit_factor(None, '1', 'Y')
+    (1000.0, 1.0, 1.0)
+    """
+    if unit_text is None or unit_text.strip() in ("", "-", "1"):
+        return 1.0
+    unit = parse_unit(unit_text, name=name)
+    quantity = ureg().Quantity(1.0, unit)
+    if target == "1/min":
+        return float(speed_rpm(quantity, name))
+    if target == "1":
+        return float(quantity.to("dimensionless").magnitude)
+    return float(quantity.to(target).magnitude)
+
+
+def _resolved(designation, bearing_type, series):
+    try:
+        return resolve(designation, bearing_type, series)
+    except DesignationError:
+        return None
+
+
+def _text_column(table: pd.DataFrame, info, name: str) -> list:
+    header = info.headers.get(name)
+    if header is None:
+        return [None] * len(table)
+    return [None if v is None or (isinstance(v, float) and math.isnan(v)) or not str(v).strip() else str(v).strip()
+            for v in table[header]]
+
+
+def _number_column(table: pd.DataFrame, info, name: str) -> np.ndarray:
+    header = info.headers.get(name)
+    if header is None:
+        return np.full(len(table), np.nan)
+    return pd.to_numeric(table[header], errors="coerce").to_numpy(dtype=float)
+
+
+def live_formulas(out_table: pd.DataFrame, table: pd.DataFrame, info, result: pd.DataFrame):
+    """Helper columns and formula texts for the results sheet.
+
+    ``out_table`` is the results sheet as values (its row i is sheet row
+    i + 3); ``table``/``info`` the input sheet of :func:`bearingheat.io.excel.reader.read_supports`;
+    ``result`` the output of calc. Returns (results sheet table with the
+    helper columns 'f2' and 'M1 load', {(column, row position): formula}).
+    Rows in error keep their (empty) values.
+    """
+    headers = {name: output_header(name, unit) for name, unit in RESULT_UNITS.items()}
+    out = out_table.copy()
+    designation = _text_column(table, info, "designation")
+    types = _text_column(table, info, "type")
+    series = _text_column(table, info, "series")
+    arrangement = [v or "single" for v in _text_column(table, info, "arrangement")]
+    factors = {name: unit_factor(info.unit_of(name), target, name) for name, target in _CATALOGUE.items()}
+    d_user = _number_column(table, info, "d")
+    D_user = _number_column(table, info, "D")
+    Fa_user = np.nan_to_num(_number_column(table, info, "Fa"), nan=0.0)
+    f2_user = _number_column(table, info, "f2")
+    status = result["status"].to_numpy()
+    M2 = result[headers["M2"]].to_numpy(dtype=float)
+
+    n_rows = len(out)
+    f2_helper = np.full(n_rows, np.nan)
+    load_text: list[str | None] = [None] * n_rows
+    plans: dict[int, tuple] = {}
+    for i in range(n_rows):
+        if status[i] == "error":
+            continue
+        resolved = _resolved(designation[i], types[i], series[i])
+        entry = resolved.entry
+        rule = (entry.p1_single if arrangement[i] == "single" else entry.p1_paired) if entry.m1_load == "P1" else None
+        bore = resolved.designation.bore if resolved.designation is not None else None
+        d_cat = d_user[i] * factors["d"] if not np.isnan(d_user[i]) else float(bore)
+        dM = (d_cat + D_user[i] * factors["D"]) / 2.0
+        Fa_cat = Fa_user[i] * factors["Fa"]
+        if resolved.takes_axial_m2 and Fa_cat > 0:
+            f2_helper[i] = f2_user[i] if not np.isnan(f2_user[i]) else M2[i] / (Fa_cat * dM)
+        else:
+            f2_helper[i] = 0.0
+        if rule:
+            load_text[i] = f"P1: {friction.P1_RULES[rule][1]} (P1 >= Fr)"
+        else:
+            load_text[i] = entry.m1_load
+        plans[i] = (entry.m1_load if not rule else "P1", rule, not np.isnan(d_user[i]), d_cat)
+
+    position = list(out.columns).index(headers["f1"]) + 1
+    out.insert(position, "f2", f2_helper)
+    out.insert(position + 1, "M1 load", pd.Series(load_text, dtype=object, index=out.index))
+    letter = {header: get_column_letter(k) for k, header in enumerate(out.columns, start=1)}
+
+    def ref(name: str, row: int, literal: str = "0") -> str:
+        header = info.headers.get(name)
+        if header is None:
+            return literal
+        cell = f"{info.sheet_ref}!{info.letters[header]}{row}"
+        factor = factors[name]
+        return cell if factor == 1.0 else f"({cell}*{excel_number(factor)})"
+
+    limit = excel_number(friction.REGIME_LIMIT)
+    low = excel_number(friction.LOW_REGIME_FACTOR)
+    formulas: dict[tuple[str, int], str] = {}
+    for i, (load_kind, rule, d_in_sheet, d_cat) in plans.items():
+        source_row = info.rows[i]
+        row = i + 3
+        n, nu = ref("n", source_row), ref("nu", source_row)
+        Fr, Fa = ref("Fr", source_row), ref("Fa", source_row)
+        d = ref("d", source_row) if d_in_sheet else excel_number(d_cat)
+        dM = f"(({d}+{ref('D', source_row)})/2)"
+        here = {name: f"{letter[headers[name]]}{row}" for name in ("f0", "f1", "P1", "M0", "M1", "M2", "MR")}
+        f2 = f"{letter['f2']}{row}"
+        formulas[(headers["M0"], i)] = (f"={here['f0']}*IF({nu}*{n}>={limit},({nu}*{n})^(2/3),{low})"
+                                        f"*{dM}^3*1E-07")
+        if rule:
+            expression = P1_EXCEL[rule].format(Fr=Fr, Fa=Fa, Y=ref("Y", source_row, "NA()"),
+                                               e=ref("e", source_row, "NA()"))
+            formulas[(headers["P1"], i)] = f"=MAX({expression},{Fr})"
+            load = here["P1"]
+        else:
+            load = Fa if load_kind == "Fa" else Fr
+        formulas[(headers["M1"], i)] = f"={here['f1']}*{load}*{dM}"
+        formulas[(headers["M2"], i)] = f"={f2}*{Fa}*{dM}"
+        formulas[(headers["MR"], i)] = f"={here['M0']}+{here['M1']}+{here['M2']}"
+        formulas[(headers["NR"], i)] = f"={letter[headers['MR']]}{row}*{n}/9550"
+    return out, formulas

@@ -1,0 +1,448 @@
+"""Read supports from a workbook: the header row, the units row, the cells each value came from.
+
+A designer's sheet has a header row (``designation``, ``d``, ``Fr`` ...) and,
+under it, an optional units row (``mm``, ``kN``, ``lbf``, ``1/min``, ``U/min``
+...). A unit may also sit in the header itself (``Fr [kN]``). Everything else
+is the column contract of ``bearingheat calc`` (:mod:`bearingheat.calc.contract`).
+
+- :func:`read_supports` -> (DataFrame, :class:`SheetInfo`): the rows of the
+  input sheet (empty rows skipped) and where each value came from.
+- :func:`with_units`: plain columns + units -> pint-pandas columns.
+
+Formula cells are read as the values a spreadsheet program saved for them
+(:func:`_cached_values`). Messages cite cells, e.g.
+``Supports!F2: unit 'kN' contradicts the header 'Fr [N]'; keep one of them``.
+
+>>> supports, info = read_supports("spreadsheets/gearbox_shaft_example.xlsx")
+>>> info.sheet, info.units["Fr"], info.cell("Fr", 0)
+('Supports', 'kN', 'Supports!F3')
+>>> len(supports)
+6
+"""
+from __future__ import annotations
+
+import re
+import warnings
+import zipfile
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+from openpyxl import load_workbook
+from openpyxl.utils import column_index_from_string, get_column_letter
+from openpyxl.utils.exceptions import InvalidFileException
+
+from bearingheat.calc.contract import input_units, parse_header
+from bearingheat.errors import ExcelError, InputError, UnitError
+from bearingheat.units import parse_unit, quantity
+
+__all__ = [
+    "SheetInfo",
+    "read_supports",
+    "read_sheet",
+    "open_workbook",
+    "with_units",
+    "contract_name",
+    "DEFAULT_SHEET",
+    "RESULTS_SHEET",
+    "EXCEL_SUFFIXES",
+]
+
+#: the input sheet of the template; its results go to RESULTS_SHEET
+DEFAULT_SHEET = "Supports"
+RESULTS_SHEET = "Results"
+#: the header row is searched for in the first rows of a sheet (title rows may sit above it)
+HEADER_SEARCH_ROWS = 20
+EXCEL_SUFFIXES = (".xlsx", ".xlsm")
+_TEXT_UNITS = ("", "-")
+
+
+@dataclass
+class SheetInfo:
+    """Where the rows of :func:`read_supports` came from.
+
+    ``units`` maps a header to the unit of its units row; ``letters`` a
+    header and its contract name to the column letter; ``rows`` gives the
+    worksheet row of each DataFrame row; ``formula_cells`` lists the input
+    cells that hold formulas (with the cached value that was read).
+    """
+
+    path: Path
+    sheet: str
+    header_row: int
+    units_row: int | None
+    units: dict[str, str]
+    letters: dict[str, str]
+    rows: list[int]
+    headers: dict[str, str] = field(default_factory=dict)
+    formula_cells: dict[tuple[str, int], str] = field(default_factory=dict)
+    uncached: list[tuple[int, str, str]] = field(default_factory=list)
+
+    @property
+    def sheet_ref(self) -> str:
+        return _ref(self.sheet)
+
+    def cell(self, column: str, position: int) -> str:
+        """``cell('Fr', 4)`` -> ``'Supports!F7'``: the cell of a column (header or contract name) in row ``position``."""
+        row = self.rows[position]
+        letter = self.letters.get(column)
+        if letter is None:
+            return f"{self.sheet_ref} row {row}"
+        return f"{self.sheet_ref}!{letter}{row}"
+
+    def unit_of(self, name: str) -> str | None:
+        """The unit the sheet gives a contract column (header or units row), None without one."""
+        header = self.headers.get(name)
+        if header is None:
+            return None
+        unit = parse_header(header)[1]
+        return unit if unit is not None else self.units.get(header)
+
+
+def _text(value) -> str:
+    return "" if value is None else str(value).strip()
+
+
+def _is_number(value) -> bool:
+    return isinstance(value, (int, float)) and not isinstance(value, bool)
+
+
+def _as_text_value(value):
+    """A text-column cell as the user sees it: 6208 typed as a number is the designation '6208'."""
+    if _is_number(value):
+        if isinstance(value, float) and value.is_integer():
+            return str(int(value))
+        return str(value)
+    if isinstance(value, str):
+        return value.strip() or None
+    return value
+
+
+def open_workbook(path: Path, *, keep_vba: bool = False, read_only: bool = False, data_only: bool = False):
+    """The workbook at ``path`` (external links kept); :class:`ExcelError` when it is not a readable workbook.
+
+    The warnings openpyxl gives while loading (they name what it will drop)
+    are kept on the workbook for :func:`bearingheat.io.excel.safety.unsupported_content`.
+    """
+    try:
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            workbook = load_workbook(path, keep_vba=keep_vba, read_only=read_only, data_only=data_only,
+                                     keep_links=True)
+    except (zipfile.BadZipFile, InvalidFileException, KeyError, OSError) as exc:
+        raise ExcelError(f"{path}: not a readable Excel workbook ({exc})") from exc
+    workbook._bearingheat_load_warnings = [str(w.message) for w in caught]
+    return workbook
+
+
+def _known_names() -> set[str]:
+    return set(input_units())
+
+
+def _merged_header_values(ws, header_search: int) -> dict[tuple[int, int], object]:
+    """Cells covered by a vertical merge near the top of the sheet -> the merge's value."""
+    covered: dict[tuple[int, int], object] = {}
+    for merged in ws.merged_cells.ranges:
+        if merged.min_row > header_search + 1:
+            continue
+        value = ws.cell(merged.min_row, merged.min_col).value
+        for row in range(merged.min_row, merged.max_row + 1):
+            for col in range(merged.min_col, merged.max_col + 1):
+                covered[(row, col)] = (value, merged.min_row, merged.min_col)
+    return covered
+
+
+def _header_texts(ws, row: int, max_col: int, merged) -> list[str]:
+    texts = []
+    for col in range(1, max_col + 1):
+        value = ws.cell(row, col).value
+        if (row, col) in merged:
+            value, top, left = merged[(row, col)]
+            if left != col:  # a horizontal merge names its first column only
+                value = None
+        texts.append(_text(value))
+    return texts
+
+
+def _find_header_row(ws, max_col: int, merged) -> int:
+    known = _known_names()
+    best_row, best_count = 0, 0
+    for row in range(1, min(ws.max_row, HEADER_SEARCH_ROWS) + 1):
+        count = 0
+        for text in _header_texts(ws, row, max_col, merged):
+            if not text:
+                continue
+            try:
+                name, _ = parse_header(text)
+            except InputError:
+                continue
+            count += name in known
+        if count > best_count:
+            best_row, best_count = row, count
+    if best_count < 2:
+        raise ExcelError(
+            f"sheet {ws.title!r}: no header row in rows 1-{HEADER_SEARCH_ROWS}; a header row names the columns, "
+            "e.g. designation, d, D, n, Fr, nu (docs/excel.md lists them)")
+    return best_row
+
+
+def _looks_like_units_row(values: list, names: list[str | None]) -> bool:
+    """The row under the header holds units when its dimensional columns hold unit texts and no numbers."""
+    known = input_units()
+    saw_unit = False
+    for value, name in zip(values, names):
+        if name is None or known.get(name, "") in ("", "1"):
+            continue
+        if _is_number(value):
+            return False
+        text = _text(value)
+        if not text or text == "-":
+            continue
+        try:
+            float(text)
+            return False
+        except ValueError:
+            pass
+        try:
+            parse_unit(text, name=name)
+        except UnitError:
+            return False
+        saw_unit = True
+    return saw_unit
+
+
+def _choose_sheet(workbook, sheet: str | None, path: Path) -> str:
+    names = workbook.sheetnames
+    if sheet is not None:
+        if sheet not in names:
+            raise ExcelError(f"{path.name} has no sheet {sheet!r}; its sheets are {', '.join(names)}")
+        return sheet
+    if DEFAULT_SHEET in names:
+        return DEFAULT_SHEET
+    for name in names:
+        ws = workbook[name]
+        if name.endswith(RESULTS_SHEET) or name.endswith("results") or ws.sheet_state != "visible":
+            continue
+        try:
+            _find_header_row(ws, min(ws.max_column, 200), _merged_header_values(ws, HEADER_SEARCH_ROWS))
+        except ExcelError:
+            continue
+        return name
+    raise ExcelError(f"{path.name}: no sheet has a header row of supports (designation, d, D, n, Fr, nu ...); "
+                     "name the sheet with --sheet")
+
+
+def read_supports(path, sheet: str | None = None, *, progress=None) -> tuple[pd.DataFrame, SheetInfo]:
+    """Supports of one sheet: a DataFrame (one row per non-empty sheet row) and its :class:`SheetInfo`.
+
+    ``sheet`` defaults to 'Supports', else the first visible sheet with a
+    header row. Headers keep the user's text (trailing spaces removed);
+    units come from the units row (``info.units``) or the header
+    (``Fr [kN]``). Text columns of the contract hold strings, numeric
+    columns floats where every value is a number (else the raw values, so
+    that calc can name the cell that is not a number). A formula cell with
+    no value saved by a spreadsheet program is listed in ``info.uncached``.
+    """
+    path = Path(path)
+    if not path.is_file():
+        raise ExcelError(f"{path}: no such file")
+    workbook = open_workbook(path)
+    return read_sheet(workbook, path, sheet, progress=progress)
+
+
+def read_sheet(workbook, path: Path, sheet: str | None, *, progress=None) -> tuple[pd.DataFrame, SheetInfo]:
+    """:func:`read_supports` on a workbook already open (``progress``: an object with start, update, finish)."""
+    name = _choose_sheet(workbook, sheet, path)
+    ws = workbook[name]
+    max_col = ws.max_column
+    merged = _merged_header_values(ws, HEADER_SEARCH_ROWS)
+    try:
+        header_row = _find_header_row(ws, max_col, merged)
+    except ExcelError:
+        if sheet is None or ws.max_row < 1:
+            raise
+        header_row = 1  # a sheet named on purpose: its first row is the header
+    texts = _header_texts(ws, header_row, max_col, merged)
+    columns: list[tuple[int, str]] = []  # (column index, header)
+    seen: dict[str, str] = {}
+    for col, text in enumerate(texts, start=1):
+        if not text:
+            continue
+        if text in seen:
+            raise ExcelError(f"{_ref(ws.title)}!{get_column_letter(col)}{header_row}: column {text!r} appears twice "
+                             f"(also in column {seen[text]})")
+        seen[text] = get_column_letter(col)
+        columns.append((col, text))
+    names = [contract_name(text) for _, text in columns]
+
+    # units row: under the header, unless its cells belong to the header's merged cells
+    units: dict[str, str] = {}
+    units_row = None
+    candidate = header_row + 1
+    raw_units = []
+    for col, _ in columns:
+        if (candidate, col) in merged and merged[(candidate, col)][1] <= header_row:
+            raw_units.append(None)
+        else:
+            raw_units.append(ws.cell(candidate, col).value)
+    if _looks_like_units_row(raw_units, names):
+        units_row = candidate
+        for (col, header), value in zip(columns, raw_units):
+            text = _text(value)
+            if text:
+                units[header] = text
+        _check_units(ws.title, header_row, units_row, columns, units)
+    first_data = (units_row or header_row) + 1
+
+    letters: dict[str, str] = {}
+    contract_headers: dict[str, str] = {}
+    for (col, header), contract in zip(columns, names):
+        letters[header] = get_column_letter(col)
+        if contract is not None:
+            letters.setdefault(contract, get_column_letter(col))
+            contract_headers.setdefault(contract, header)
+
+    wanted = [col for col, _ in columns]
+    data: list[list] = [[] for _ in columns]
+    rows: list[int] = []
+    formula_cells: dict[tuple[str, int], str] = {}
+    total = max(ws.max_row - first_data + 1, 0)
+    if progress is not None:
+        progress.start(total, f"reading {ws.title}")
+    positions = {col: i for i, col in enumerate(wanted)}
+    max_wanted = max(wanted) if wanted else 1
+    for count, row_cells in enumerate(ws.iter_rows(min_row=first_data, max_col=max_wanted), start=1):
+        values = [None] * len(wanted)
+        blank = True
+        for cell in row_cells:
+            i = positions.get(cell.column)
+            if i is None:
+                continue
+            value = cell.value
+            if cell.data_type == "f":
+                formula_cells[(columns[i][1], cell.row)] = str(value)
+            elif isinstance(value, str) and not value.strip():
+                value = None
+            values[i] = value
+            blank = blank and value is None
+        if not blank:
+            rows.append(row_cells[0].row)
+            for i, value in enumerate(values):
+                data[i].append(value)
+        if progress is not None and count % 500 == 0:
+            progress.update(count)
+    if progress is not None:
+        progress.finish()
+
+    uncached: list[tuple[int, str, str]] = []
+    if formula_cells:
+        cached = _cached_values(path, ws.title, formula_cells, letters)
+        position_of_row = {row: i for i, row in enumerate(rows)}
+        col_index = {header: i for i, (_, header) in enumerate(columns)}
+        for (header, row), formula in formula_cells.items():
+            value = cached.get((header, row))
+            data[col_index[header]][position_of_row[row]] = value
+            if value is None:
+                uncached.append((position_of_row[row], header, formula))
+
+    known = input_units()
+    frame_columns = {}
+    for (col, header), contract, values in zip(columns, names, data):
+        if contract is not None and known[contract] in _TEXT_UNITS:
+            texts = [_as_text_value(v) for v in values]
+            every = bool(texts) and all(isinstance(t, str) for t in texts)
+            frame_columns[header] = pd.Series(texts) if every else pd.Series(texts, dtype=object)
+        else:
+            frame_columns[header] = _numeric_if_possible(values)
+    table = pd.DataFrame(frame_columns, index=pd.RangeIndex(len(rows)))
+    info = SheetInfo(path=path, sheet=ws.title, header_row=header_row, units_row=units_row, units=units,
+                     letters=letters, rows=rows, headers=contract_headers, formula_cells=formula_cells,
+                     uncached=uncached)
+    return table, info
+
+
+def _ref(sheet: str) -> str:
+    """A sheet name as Excel writes it in a reference: Supports, 'Shaft 1', 'Q1''s loads'."""
+    if re.fullmatch(r"[A-Za-z_][A-Za-z0-9_.]*", sheet) and not re.fullmatch(r"[A-Za-z]{1,3}[0-9]+", sheet):
+        return sheet
+    return "'" + sheet.replace("'", "''") + "'"
+
+
+def contract_name(header: str) -> str | None:
+    """The contract column a header names ('Fr [kN]' -> 'Fr'), None for a column outside the contract."""
+    try:
+        name, _ = parse_header(header)
+    except InputError:
+        return None
+    return name if name in _known_names() else None
+
+
+def _check_units(sheet: str, header_row: int, units_row: int, columns, units: dict[str, str]) -> None:
+    """A unit in the header and a different one in the units row: refuse rather than guess."""
+    for col, header in columns:
+        if header not in units:
+            continue
+        try:
+            _, header_unit = parse_header(header)
+        except InputError:
+            continue
+        if header_unit is None or units[header] == "-":
+            continue
+        try:
+            same = parse_unit(header_unit, name=header) == parse_unit(units[header], name=header)
+        except UnitError:
+            same = False
+        if not same:
+            raise ExcelError(f"{_ref(sheet)}!{get_column_letter(col)}{units_row}: unit {units[header]!r} contradicts "
+                             f"the header {header!r}; keep one of them")
+
+
+def _numeric_if_possible(values: list) -> pd.Series:
+    present = [v for v in values if v is not None]
+    if present and all(_is_number(v) for v in present):
+        if len(present) == len(values) and all(isinstance(v, int) for v in present):
+            return pd.Series(values, dtype="int64")
+        return pd.Series([np.nan if v is None else float(v) for v in values], dtype=float)
+    if present and all(isinstance(v, str) for v in present) and len(present) == len(values):
+        return pd.Series(values)
+    return pd.Series(values, dtype=object)
+
+
+def _cached_values(path: Path, sheet: str, cells: dict[tuple[str, int], str], letters: dict[str, str]) -> dict:
+    """The values a spreadsheet program saved for formula cells (None where it saved none)."""
+    workbook = open_workbook(path, read_only=True, data_only=True)
+    try:
+        wanted: dict[int, list[tuple[str, int]]] = {}
+        for header, row in cells:
+            wanted.setdefault(row, []).append((header, column_index_from_string(letters[header]) - 1))
+        first, last = min(wanted), max(wanted)
+        width = max(col for entries in wanted.values() for _, col in entries) + 1
+        out = {}
+        rows = workbook[sheet].iter_rows(min_row=first, max_row=last, max_col=width, values_only=True)
+        for row, values in enumerate(rows, start=first):
+            for header, col in wanted.get(row, ()):
+                out[(header, row)] = values[col] if col < len(values) else None
+        return out
+    finally:
+        workbook.close()
+
+
+def with_units(table: pd.DataFrame, units: dict[str, str]) -> pd.DataFrame:
+    """Columns with a unit in ``units`` (not '-' or '1') become pint-pandas columns of that unit.
+
+    The inverse of :func:`write_results` for a DataFrame with pint columns::
+
+        write_results(frame, "supports.xlsx", sheet="Supports")
+        table, info = read_supports("supports.xlsx", sheet="Supports")
+        with_units(table, info.units)      # equals frame
+
+    Without pint-pandas the columns stay floats with the unit in
+    ``attrs['unit']`` (:func:`bearingheat.units.quantity`).
+    """
+    out = table.copy()
+    for header, unit in units.items():
+        if header not in out.columns or unit in ("-", "1", ""):
+            continue
+        out[header] = quantity(out[header].astype(float), parse_unit(unit, name=header))
+    return out

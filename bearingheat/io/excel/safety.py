@@ -1,0 +1,152 @@
+"""No data loss: what openpyxl cannot rewrite, and a fingerprint to prove what it kept.
+
+openpyxl rewrites a workbook from its own object model. Cell values,
+formulas, styles, defined names, data validations, conditional formats,
+comments (as notes), merged cells, column widths and hyperlinks survive;
+charts, images, drawing shapes, pivot tables, slicers, form controls,
+ActiveX controls, embedded objects, threaded comments and the Excel 2010+
+extensions of a sheet (``x14`` validations and formats, sparklines) do not,
+and VBA survives only with ``keep_vba``. :func:`unsupported_content` names
+what a rewrite would drop, so ``--in-place`` can refuse before touching
+the file.
+
+:func:`workbook_fingerprint` reduces a workbook to comparable data (every
+cell with its value and style, names, validations, comments, widths ...);
+two workbooks with equal fingerprints show the same content in Excel.
+"""
+from __future__ import annotations
+
+import re
+import zipfile
+from pathlib import Path
+
+from openpyxl import load_workbook
+
+from bearingheat.errors import ExcelError, WorkbookContentError
+
+__all__ = ["unsupported_content", "refuse_lossy_rewrite", "workbook_fingerprint", "LOSSY_PARTS"]
+
+#: package part (regular expression on the zip member name) -> what a designer calls it
+LOSSY_PARTS = {
+    r"^xl/charts/chart\d*\.xml$": "charts",
+    r"^xl/chartsheets/": "chart sheets",
+    r"^xl/media/": "images",
+    r"^xl/pivotTables/": "pivot tables",
+    r"^xl/pivotCache/": "pivot caches",
+    r"^xl/slicers/": "slicers",
+    r"^xl/timelines/": "timelines",
+    r"^xl/ctrlProps/": "form controls",
+    r"^xl/activeX/": "ActiveX controls",
+    r"^xl/embeddings/": "embedded objects",
+    r"^xl/threadedComments/": "threaded comments",
+}
+_VBA_PART = "xl/vbaProject.bin"
+# openpyxl warns when it reads something it will drop; the warning names it
+_WARNING_WORDS = {
+    "Data Validation extension": "data validations of the Excel 2010 format (lists from other sheets)",
+    "Conditional Formatting extension": "conditional formats of the Excel 2010 format",
+    "Sparkline Group extension": "sparklines",
+    "Slicer List extension": "slicers",
+    "Unknown extension": "Excel extensions that openpyxl does not know",
+}
+
+
+def _drawing_shapes(archive: zipfile.ZipFile) -> bool:
+    """Drawings that hold shapes or text boxes (not only charts or pictures)."""
+    for name in archive.namelist():
+        if re.match(r"^xl/drawings/drawing\d*\.xml$", name):
+            text = archive.read(name).decode("utf-8", "replace")
+            if "<xdr:sp>" in text or "<xdr:sp " in text or "<xdr:cxnSp" in text or "<xdr:grpSp" in text:
+                return True
+    return False
+
+
+def unsupported_content(path, workbook=None, *, keep_vba: bool = True) -> list[str]:
+    """What rewriting ``path`` with openpyxl would drop, in words ('charts', 'images', ...); [] when nothing.
+
+    ``workbook`` is the loaded workbook (its load warnings are checked too).
+    """
+    found: list[str] = []
+    with zipfile.ZipFile(path) as archive:
+        names = archive.namelist()
+        for pattern, what in LOSSY_PARTS.items():
+            if any(re.match(pattern, n) for n in names) and what not in found:
+                found.append(what)
+        if _drawing_shapes(archive):
+            found.append("drawing shapes and text boxes")
+        if _VBA_PART in names and not keep_vba:
+            found.append("VBA macros")
+    for message in getattr(workbook, "_bearingheat_load_warnings", ()):
+        for words, what in _WARNING_WORDS.items():
+            if words in message and what not in found:
+                found.append(what)
+    return found
+
+
+def refuse_lossy_rewrite(path, workbook=None, *, option: str = "--in-place", keep_vba: bool = True) -> None:
+    """Refuse a rewrite of ``path``: :class:`WorkbookContentError` naming what it would lose, :class:`ExcelError`
+    when Excel has the file open (its lock file is there)."""
+    path = Path(path)
+    lock = path.with_name("~$" + path.name)
+    if lock.exists():
+        raise ExcelError(f"{path} is open in Excel (lock file {lock.name}); close it and run again")
+    lost = unsupported_content(path, workbook, keep_vba=keep_vba)
+    if lost:
+        raise WorkbookContentError(
+            f"{path}: {option} refused, rewriting the workbook would lose its {', '.join(lost)} "
+            "(openpyxl cannot keep them); the file is unchanged. Write the results to a new workbook "
+            "with -o OUTPUT.xlsx instead")
+
+
+def _style_key(cell) -> tuple:
+    if not cell.has_style:
+        return ()
+    return (repr(cell.font), repr(cell.fill), repr(cell.border), repr(cell.alignment), cell.number_format,
+            repr(cell.protection), cell.style)
+
+
+def workbook_fingerprint(workbook_or_path, *, skip_sheets=()) -> dict:
+    """Everything a designer sees in a workbook, as plain comparable data (sheets in ``skip_sheets`` left out)."""
+    workbook = workbook_or_path
+    if not hasattr(workbook_or_path, "worksheets"):
+        workbook = load_workbook(workbook_or_path, keep_vba=str(workbook_or_path).endswith(".xlsm"))
+    out: dict = {
+        "sheets": [(ws.title, ws.sheet_state) for ws in workbook.worksheets if ws.title not in skip_sheets],
+        "defined_names": sorted((name, str(dn.attr_text), dn.localSheetId)
+                                for name, dn in workbook.defined_names.items()),
+        "named_styles": sorted(str(s) for s in workbook.named_styles),
+    }
+    for ws in workbook.worksheets:
+        if ws.title in skip_sheets:
+            continue
+        cells = {}
+        for row in ws.iter_rows():
+            for cell in row:
+                if cell.value is None and not cell.has_style:
+                    continue
+                cells[cell.coordinate] = (cell.value, cell.data_type, _style_key(cell),
+                                          cell.hyperlink.target if cell.hyperlink else None)
+        comments = {c.coordinate: (c.comment.text, c.comment.author)
+                    for row in ws.iter_rows() for c in row if c.comment is not None}
+        out[ws.title] = {
+            "cells": cells,
+            "comments": comments,
+            "merged": sorted(str(r) for r in ws.merged_cells.ranges),
+            "validations": sorted((str(dv.sqref), dv.type, dv.formula1, dv.formula2, dv.allow_blank,
+                                   dv.showErrorMessage, dv.error, dv.errorTitle, dv.prompt, dv.promptTitle)
+                                  for dv in ws.data_validations.dataValidation),
+            "conditional_formats": sorted((str(cf.sqref), repr([(r.type, r.operator, r.formula, repr(r.dxf))
+                                                                for r in cf.rules]))
+                                          for cf in ws.conditional_formatting),
+            "columns": sorted((key, dim.width, dim.hidden, dim.style) for key, dim in ws.column_dimensions.items()
+                              if dim.customWidth or dim.hidden or dim.style != "Normal"),
+            "rows": sorted((key, dim.height, dim.hidden) for key, dim in ws.row_dimensions.items()
+                           if dim.height is not None or dim.hidden),
+            "freeze_panes": ws.freeze_panes,
+            "sheet_names": sorted((name, str(dn.attr_text)) for name, dn in ws.defined_names.items()),
+            "print_area": ws.print_area,
+            "tables": sorted((name, str(t.ref)) for name, t in ws.tables.items()),
+            "protection": ws.protection.sheet,
+            "tab_color": repr(ws.sheet_properties.tabColor),
+        }
+    return out

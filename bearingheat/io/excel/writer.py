@@ -1,0 +1,270 @@
+"""Write results to a workbook: a header row, a units row, one styled row per support.
+
+- :func:`write_results`: a DataFrame as a sheet of a new or existing
+  workbook (refused when a rewrite would lose content, see
+  :mod:`bearingheat.io.excel.safety`).
+- :func:`write_results_workbook`: the results of a CSV calc as a new workbook.
+- :func:`atomic_save`: save through a temporary file, so a failure leaves
+  the target as it was.
+
+Units come from pint-pandas dtypes, a units mapping, or ``name [unit]``
+headers (:func:`split_header`); cells take the named styles of
+:mod:`bearingheat.io.excel.style`.
+"""
+from __future__ import annotations
+
+import math
+import os
+import tempfile
+from copy import copy
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+from openpyxl import Workbook
+from openpyxl.cell.cell import Cell
+from openpyxl.utils import get_column_letter
+
+from bearingheat.calc.contract import input_units, parse_header
+from bearingheat.errors import ExcelError, InputError
+from bearingheat.io.excel import style as st
+from bearingheat.io.excel.reader import (DEFAULT_SHEET, EXCEL_SUFFIXES, RESULTS_SHEET, SheetInfo, contract_name,
+                                         open_workbook)
+from bearingheat.io.excel.safety import refuse_lossy_rewrite
+
+__all__ = [
+    "write_results",
+    "write_results_workbook",
+    "atomic_save",
+    "split_header",
+    "results_sheet_name",
+    "result_table",
+    "install_sheet",
+    "fill_sheet",
+]
+
+
+def results_sheet_name(input_sheet: str) -> str:
+    """'Results' for the template's 'Supports' sheet, else '<sheet> results' (at most 31 characters)."""
+    if input_sheet == DEFAULT_SHEET:
+        return RESULTS_SHEET
+    return f"{input_sheet[:23]} results"
+
+
+def _column_style(unit: str) -> str:
+    """Numbers with a unit get two decimals; coefficients (unit 1) and text stay as they are."""
+    return st.RESULT if unit in ("-", "", "1") else st.RESULT_NUMBER
+
+
+def _cell_value(value):
+    if value is None:
+        return None
+    if isinstance(value, (float, np.floating)):
+        return None if math.isnan(value) else float(value)
+    if isinstance(value, (np.integer,)):
+        return int(value)
+    if isinstance(value, (np.bool_,)):
+        return bool(value)
+    if value is pd.NA or value is pd.NaT:
+        return None
+    return value
+
+
+def fill_sheet(ws, table: pd.DataFrame, *, units: dict[str, str] | None = None,
+                input_columns: set[str] = frozenset(), formulas: dict[tuple[str, int], str] | None = None,
+                progress=None) -> None:
+    """Header row, units row, one row per table row; named styles; frozen panes and widths.
+
+    ``progress`` is an object with start, update and finish
+    (:class:`bearingheat.io.console.Progress`), or None.
+    """
+    register = st.register_styles
+    register(ws.parent)
+    formulas = formulas or {}
+    headers, unit_row, styles, magnitudes = [], [], [], []
+    for header in table.columns:
+        column = table[header]
+        name, unit = split_header(header, column, units)
+        headers.append(name)
+        unit_row.append(unit)
+        if str(column.dtype).startswith("pint["):
+            column = pd.Series(column.pint.magnitude, index=column.index)
+        if header in input_columns:
+            styles.append(st.INPUT)
+        else:
+            styles.append(_column_style(unit))
+        magnitudes.append(column.to_numpy(dtype=object))
+    ws.append(headers)
+    ws.append(unit_row)
+    for col, header in enumerate(table.columns, start=1):
+        is_input = header in input_columns
+        ws.cell(1, col).style = st.HEADER_INPUT if is_input else st.HEADER_RESULT
+        ws.cell(2, col).style = st.UNITS if is_input else st.UNITS_RESULT
+        sample = [len(str(v)) for v in magnitudes[col - 1][:200] if isinstance(v, str)]
+        width = min(max([len(str(headers[col - 1])), len(str(unit_row[col - 1])), 8] + sample) + 2, 40)
+        if headers[col - 1] == "message":
+            width = 80
+        ws.column_dimensions[get_column_letter(col)].width = width
+    status_col = list(table.columns).index("status") if "status" in table.columns else None
+    formula_cols = {}
+    for (header, position) in formulas:
+        formula_cols.setdefault(header, list(table.columns).index(header))
+    if progress is not None:
+        progress.start(len(table), f"writing {ws.title}")
+    n_cols = len(headers)
+    style_arrays = _style_arrays(ws, set(styles) | set(st.STATUS.values()) | {st.FORMULA, st.RESULT})
+    column_styles = [style_arrays[name] for name in styles]
+    status_styles = {status: style_arrays[name] for status, name in st.STATUS.items()}
+    formula_style = style_arrays[st.FORMULA]
+    for position in range(len(table)):
+        row = []
+        for c in range(n_cols):
+            cell = Cell(ws, value=_cell_value(magnitudes[c][position]))
+            if c == status_col:
+                cell._style = copy(status_styles.get(str(cell.value), style_arrays[st.RESULT]))
+            else:
+                cell._style = copy(column_styles[c])
+            row.append(cell)
+        for header, c in formula_cols.items():
+            text = formulas.get((header, position))
+            if text is not None:
+                row[c].value = text
+                row[c]._style = copy(formula_style)
+        ws.append(row)
+        if progress is not None and position % 500 == 0:
+            progress.update(position)
+    if progress is not None:
+        progress.finish()
+    ws.freeze_panes = "A3"
+
+
+def _style_arrays(ws, names) -> dict:
+    """Named style -> the style array of a cell that has it (copied onto many cells at once)."""
+    arrays = {}
+    for name in names:
+        probe = Cell(ws)
+        probe.style = name
+        arrays[name] = probe._style
+    return arrays
+
+
+def _unit_text(unit) -> str:
+    """A pint unit as typed in a units row: 'kN', 'rpm', 'mm^2/s'."""
+    return format(unit, "~C").replace("**", "^")
+
+
+def split_header(header: str, values: pd.Series | None = None, units: dict[str, str] | None = None) -> tuple[str, str]:
+    """(name, unit text) of a DataFrame column for a header row and a units row.
+
+    The unit comes from a pint-pandas dtype, from ``units``, from a
+    ``name [unit]`` header; '-' marks text, '1' a plain number.
+    """
+    if values is not None and str(values.dtype).startswith("pint["):
+        return str(header), _unit_text(values.pint.units)
+    if units is not None and header in units:
+        return str(header), units[header]
+    try:
+        name, unit = parse_header(header)
+    except InputError:
+        name, unit = str(header), None
+    if unit is not None:
+        return name, unit
+    if values is not None and (pd.api.types.is_numeric_dtype(values.dtype) and not pd.api.types.is_bool_dtype(values.dtype)):
+        return name, "1"
+    return name, "-"
+
+
+def result_table(result: pd.DataFrame, table: pd.DataFrame, info: SheetInfo) -> pd.DataFrame:
+    """The columns of the results sheet: the input row, id/designation, then every result column."""
+    out = pd.DataFrame({"row": pd.Series(info.rows, dtype="int64", index=result.index)})
+    for header in table.columns:
+        name = contract_name(header)
+        if name in ("id", "designation") or (name in ("type", "series") and table[header].notna().any()):
+            out[header] = result[header]
+    for header in result.columns:
+        if header not in table.columns or contract_name(header) in ("f0", "f1"):
+            if header in out.columns:
+                continue
+            out[header] = result[header]
+    return out
+
+
+def install_sheet(workbook, name: str, after: str | None = None):
+    """A fresh sheet ``name``: an existing one of that name is replaced at its place."""
+    if name in workbook.sheetnames:
+        index = workbook.sheetnames.index(name)
+        workbook.remove(workbook[name])
+        return workbook.create_sheet(name, index)
+    index = workbook.sheetnames.index(after) + 1 if after in workbook.sheetnames else None
+    return workbook.create_sheet(name, index)
+
+
+def atomic_save(workbook, path: Path) -> None:
+    """Save to a temporary file in the target's folder, then rename it over the target.
+
+    A failure while saving leaves the target as it was (and no temporary
+    file behind); the target keeps its permission bits.
+    """
+    path = Path(path)
+    handle, temp_name = tempfile.mkstemp(prefix=f".{path.stem}.", suffix=path.suffix, dir=path.parent)
+    os.close(handle)
+    try:
+        workbook.save(temp_name)
+        if path.exists():
+            os.chmod(temp_name, path.stat().st_mode & 0o7777)
+        os.replace(temp_name, path)
+    except BaseException:
+        if os.path.exists(temp_name):
+            os.unlink(temp_name)
+        raise
+
+
+def write_results(results: pd.DataFrame, path, *, sheet: str = RESULTS_SHEET, units: dict[str, str] | None = None,
+                  input_columns=(), formulas: dict[tuple[str, int], str] | None = None) -> Path:
+    """Write ``results`` as sheet ``sheet`` of the workbook ``path`` (header row, units row, one row each).
+
+    A new workbook is created when ``path`` does not exist; in an existing
+    workbook the sheet is added (or replaced) and every other sheet kept,
+    refused when the workbook holds content openpyxl would drop
+    (:func:`bearingheat.io.excel.safety.unsupported_content`). The write is
+    atomic. Units come from pint-pandas dtypes, ``units``, or ``name
+    [unit]`` headers; ``formulas`` maps (column, row position) to formula
+    text written instead of the value.
+    """
+    path = Path(path)
+    if path.suffix.lower() not in EXCEL_SUFFIXES:
+        raise ExcelError(f"{path}: an Excel workbook ends in .xlsx or .xlsm")
+    if path.exists():
+        workbook = open_workbook(path, keep_vba=path.suffix.lower() == ".xlsm")
+        refuse_lossy_rewrite(path, workbook, option="write_results")
+        ws = install_sheet(workbook, sheet)
+    else:
+        if path.suffix.lower() == ".xlsm":
+            raise ExcelError(f"{path}: a new workbook is written as .xlsx (a .xlsm needs its macros)")
+        workbook = Workbook()
+        ws = workbook.active
+        ws.title = sheet
+    fill_sheet(ws, results, units=units, input_columns=set(input_columns), formulas=formulas)
+    atomic_save(workbook, path)
+    return path
+
+
+def write_results_workbook(result: pd.DataFrame, path) -> Path:
+    """Results of a CSV calc as a new workbook: one 'Results' sheet, input columns styled as inputs.
+
+    Raises :class:`ExcelError` unless ``path`` ends in .xlsx.
+    """
+    path = Path(path)
+    if path.suffix.lower() != ".xlsx":
+        raise ExcelError(f"{path}: results of a CSV are written to a new .xlsx workbook")
+    known = input_units()
+    inputs = [h for h in result.columns
+              if contract_name(h) in known and contract_name(h) not in ("f0", "f1")
+              and h not in ("status", "message")]
+    workbook = Workbook()
+    ws = workbook.active
+    ws.title = RESULTS_SHEET
+    fill_sheet(ws, result, input_columns=set(inputs))
+    atomic_save(workbook, path)
+    return path
+

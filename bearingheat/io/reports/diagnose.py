@@ -1,0 +1,150 @@
+"""The report of ``bearingheat diagnose``: summary.json, report.md and two PNG plots.
+
+:func:`write_outputs` writes a :class:`~bearingheat.analysis.diagnose.Diagnosis`
+into a folder: ``summary.json`` (:meth:`Diagnosis.summary` with the key
+regressor of the residual plot), ``report.md`` (:func:`report_markdown`),
+``residuals.png`` (:func:`plot_residuals`) and ``measured_vs_predicted.png``
+(:func:`plot_measured_vs_predicted`). The plots use matplotlib's Figure API
+(no pyplot, no global backend); matplotlib is imported when a plot is drawn.
+"""
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+
+from bearingheat.analysis.diagnose import REGRESSOR_UNITS, Diagnosis, format_value, key_regressor, regressors
+
+__all__ = ["plot_residuals", "plot_measured_vs_predicted", "report_markdown", "write_outputs", "summary_lines"]
+
+#: at most this many points are drawn (a seeded random subset of larger data sets)
+_PLOT_POINTS = 4000
+
+
+def _plot_rows(n: int) -> np.ndarray:
+    if n <= _PLOT_POINTS:
+        return np.arange(n)
+    return np.sort(np.random.default_rng(0).choice(n, _PLOT_POINTS, replace=False))
+
+
+def plot_residuals(diagnosis: Diagnosis, path: Path) -> str:
+    """Relative residual against the key regressor, before and after; returns the regressor's name."""
+    from matplotlib.figure import Figure
+
+    data = diagnosis.data
+    key = key_regressor(diagnosis)
+    x = regressors(data)[key]
+    rows = _plot_rows(len(data))
+    before = (data.M - diagnosis.scores["none"].predicted) / data.M * 100.0
+    after = (data.M - diagnosis.chosen.predicted) / data.M * 100.0
+    fig = Figure(figsize=(9, 3.6))
+    axes = fig.subplots(1, 2, sharey=True)
+    for ax, residual, title in ((axes[0], before, "catalogue model"),
+                                (axes[1], after, f"with {diagnosis.effect}")):
+        for code, name in enumerate(data.bearing_names[:10]):
+            mine = rows[data.bearing[rows] == code]
+            ax.scatter(x[mine], residual[mine], s=6, alpha=0.6, label=name)
+        ax.axhline(0.0, color="k", lw=0.8)
+        ax.set_xlabel(f"{key} [{REGRESSOR_UNITS[key]}]")
+        ax.set_title(title, fontsize=10)
+    axes[0].set_ylabel("(M measured − M model)/M measured [%]")
+    axes[1].legend(fontsize=7, loc="best")
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+    return key
+
+
+def plot_measured_vs_predicted(diagnosis: Diagnosis, path: Path) -> None:
+    """Measured against predicted torque on log axes, the catalogue model and the model with the effect."""
+    from matplotlib.figure import Figure
+
+    data = diagnosis.data
+    rows = _plot_rows(len(data))
+    fig = Figure(figsize=(4.6, 4.4))
+    ax = fig.subplots()
+    ax.scatter(diagnosis.scores["none"].predicted[rows], data.M[rows], s=6, alpha=0.5, label="catalogue model")
+    if diagnosis.effect != "none":
+        ax.scatter(diagnosis.chosen.predicted[rows], data.M[rows], s=6, alpha=0.5, label=f"with {diagnosis.effect}")
+    top = float(max(np.max(data.M), np.max(diagnosis.scores["none"].predicted), np.max(diagnosis.chosen.predicted)))
+    low = float(min(np.min(data.M), np.min(diagnosis.scores["none"].predicted)))
+    ax.plot([low, top], [low, top], "k-", lw=0.8)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("M predicted [N·mm]")
+    ax.set_ylabel("M measured [N·mm]")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+
+
+def report_markdown(diagnosis: Diagnosis, summary: dict, key: str) -> str:
+    """report.md: the effect, the error before and after, the residual structure, the candidates, the plots."""
+    lines = [
+        "# bearingheat diagnose: report", "",
+        f"{summary['n_rows']} measured rows of {len(summary['bearings'])} bearing(s) "
+        f"({', '.join(summary['bearings'][:12])}{' ...' if len(summary['bearings']) > 12 else ''}); "
+        f"{summary['n_excluded']} row(s) excluded.", "",
+        f"**Effect found: `{summary['effect']}`**: {summary['description']}.", "",
+        f"Parameters: {format_value(summary['parameters']) or '(none)'}", "",
+        "## Error before and after", "",
+        "| | RMSE [N·mm] | MAPE [%] | bias [N·mm] |", "|---|---|---|---|",
+        f"| catalogue model, fitting data | {format_value(summary['rmse_before'])} | {format_value(summary['mape_before'])} "
+        f"| {format_value(summary['bias_before'])} |",
+        f"| with the effect, fitting data | {format_value(summary['rmse_after'])} | {format_value(summary['mape_after'])} "
+        f"| {format_value(summary['bias_after'])} |",
+        f"| catalogue model, held-out folds | {format_value(summary['cv_rmse_before'])} | {format_value(summary['cv_mape_before'])} | |",
+        f"| with the effect, held-out folds | {format_value(summary['cv_rmse_after'])} | {format_value(summary['cv_mape_after'])} | |",
+        "", "## Residual structure of the catalogue model", "",
+        "Relative residual (M measured − M model)/M measured against each regressor.", "",
+        "| regressor | statistic | value | p | note |", "|---|---|---|---|---|",
+    ]
+    for entry in summary["residual_structure"]:
+        lines.append(f"| {entry['regressor']} | {entry['statistic']} | {format_value(entry['value'], 3)} "
+                     f"| {format_value(entry['p_value'], 3)} | {entry['note']} |")
+    lines += ["", "## Candidates", "",
+              f"Grouped {summary['folds']}-fold cross-validation over {summary['groups']} groups "
+              "(operating points).", "",
+              "| candidate | parameters | RMSE [N·mm] | CV RMSE [N·mm] | CV rel. RMSE | ΔBIC | CV gain | p | significant |",
+              "|---|---|---|---|---|---|---|---|---|"]
+    for name, c in summary["candidates"].items():
+        if not c["applicable"]:
+            lines.append(f"| {name} | not applicable: {c['reason']} | | | | | | | no |")
+            continue
+        params = format_value(c["parameters"]) if len(json.dumps(c["parameters"])) < 160 else "(per bearing, see summary.json)"
+        gain = f"{c['cv_improvement'] * 100:.1f} %" if c["cv_improvement"] is not None else "–"
+        lines.append(f"| {name} | {params} | {format_value(c['rmse'])} | {format_value(c['cv_rmse'])} | {format_value(c['cv_rel_rmse'], 3)} "
+                     f"| {format_value(c['delta_bic'], 4)} | {gain} | {format_value(c['p_value'], 2)} | "
+                     f"{'yes' if c['significant'] else 'no'} |")
+    lines += ["", "Selection rule: " + summary["selection_rule"], "",
+              "## Plots", "",
+              f"![residuals against {key}](residuals.png)", "",
+              "![measured against predicted](measured_vs_predicted.png)", ""]
+    if summary["n_excluded"]:
+        lines += ["## Excluded rows", ""] + [f"- {m}" for m in summary["excluded"]] + [""]
+    return "\n".join(lines)
+
+
+def write_outputs(diagnosis: Diagnosis, out_dir) -> dict:
+    """Write summary.json, report.md, residuals.png and measured_vs_predicted.png into ``out_dir``."""
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    summary = diagnosis.summary()
+    key = plot_residuals(diagnosis, out / "residuals.png")
+    plot_measured_vs_predicted(diagnosis, out / "measured_vs_predicted.png")
+    summary["key_regressor"] = key
+    (out / "summary.json").write_text(json.dumps(summary, indent=2, ensure_ascii=False), encoding="utf-8")
+    (out / "report.md").write_text(report_markdown(diagnosis, summary, key), encoding="utf-8")
+    return summary
+
+
+def summary_lines(summary: dict, out_dir) -> list[str]:
+    """The outcome in a few lines for the console: the effect, the error before and after, where the report is."""
+    lines = [f"effect: {summary['effect']}  parameters: {summary['parameters']}",
+             f"RMSE {summary['rmse_before']:.4g} -> {summary['rmse_after']:.4g} N*mm "
+             f"(held-out {summary['cv_rmse_before']:.4g} -> {summary['cv_rmse_after']:.4g}); "
+             f"MAPE {summary['mape_before']:.3g} -> {summary['mape_after']:.3g} %"]
+    if summary["n_excluded"]:
+        lines.append(f"{summary['n_excluded']} row(s) excluded; see {out_dir}/report.md")
+    lines.append(f"report: {out_dir}/report.md")
+    return lines

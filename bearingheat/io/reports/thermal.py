@@ -1,0 +1,93 @@
+"""The heat-balance figure of one support (``bearingheat plot``): friction heat and heat carried away.
+
+Two panels of the heat balance N_R + Q_E = Q_S + Q_L (issue 3, after
+Schaeffler HR 1): against speed at the bearing temperature (crossing: the
+permissible speed n_per) and against temperature at the operating speed
+(crossing: the operating temperature T_op). :func:`heat_balance_curves`
+runs the calc rows of one support of a table (``name [unit]`` headers);
+:func:`draw_heat_balance` writes the PNG with matplotlib's Figure API (no
+pyplot, no global backend). The curves themselves are
+:func:`bearingheat.calc.thermal.heat_flow_curves`.
+"""
+from __future__ import annotations
+
+import math
+
+import pandas as pd
+
+from bearingheat.calc.models import compute_supports
+from bearingheat.calc.table import require_columns, to_catalogue_units
+from bearingheat.calc.thermal import fill_viscosity, heat_balance_rows, heat_flow_curves
+
+__all__ = ["heat_balance_curves", "draw_heat_balance"]
+
+
+def heat_balance_curves(table: pd.DataFrame, points: int = 200) -> dict:
+    """Curves of the heat balance of the first row of ``table`` (calc columns with units) in catalogue units.
+
+    Returns a dict with ``status`` ('ok' | 'warning' | 'error'), ``message``
+    and ``label`` (the row's id or designation), and where the row can be
+    drawn the curves of :func:`bearingheat.calc.thermal.heat_flow_curves`.
+    A table that cannot be used at all raises
+    :class:`~bearingheat.errors.InputError`.
+    """
+    converted = to_catalogue_units(table.reset_index(drop=True))
+    frame, problems = fill_viscosity(converted.frame)
+    require_columns(frame)
+    results = compute_supports(frame, labels=converted.labels)
+    columns, more = heat_balance_rows(frame, results)
+    messages = [m for m in [results["message"].iloc[0]] if m] + [m for _, _, m in problems + more]
+    status = results["status"].iloc[0]
+    if any(level == "error" for _, level, _ in problems + more):
+        status = "error"
+    out = {"status": status, "message": "; ".join(messages), "label": _label(table)}
+    if status == "error":
+        return out
+    if "T_amb" not in frame.columns:
+        out.update(status="error", message="; ".join(messages + ["T_amb [degC]: missing; the plot needs the "
+                                                                  "ambient temperature"]))
+        return out
+    curves = heat_flow_curves(frame, results, columns, points=points)
+    if curves is None:
+        out.update(status="error", message=out["message"] or "the heat flow area A_r cannot be computed")
+        return out
+    out.update(curves)
+    return out
+
+
+def _label(table: pd.DataFrame) -> str:
+    for name in ("id", "designation"):
+        hits = [c for c in table.columns if str(c).split("[")[0].strip() == name]
+        if hits:
+            return str(table[hits[0]].iloc[0])
+    return "support"
+
+
+def draw_heat_balance(curves: dict, path) -> None:
+    """Write the two panels of :func:`heat_balance_curves` to a PNG file."""
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(9.0, 3.6), dpi=90)
+    left, right = fig.subplots(1, 2)
+    left.plot(curves["speeds"], curves["friction_vs_speed"], label="friction heat N_R")
+    left.plot(curves["speeds"], curves["carried_vs_speed"], "--", label="carried away Q_S + Q_L − Q_E")
+    if not math.isnan(curves["n_cross"]):
+        left.plot([curves["n_cross"]], [curves["carried_vs_speed"][0]], "o", color="black")
+        left.annotate(f"{curves['n_cross']:.0f} 1/min", (curves["n_cross"], curves["carried_vs_speed"][0]),
+                      textcoords="offset points", xytext=(6, -14))
+    left.set_xlabel("speed n [1/min]")
+    left.set_ylabel("heat flow [W]")
+    left.set_title(f"at {curves['theta']:.1f} °C", fontsize=10)
+    left.legend(fontsize=8, loc="upper left")
+    right.plot(curves["temperatures"], curves["friction_vs_temperature"], label="N_R(ν(T)) + Q_E")
+    right.plot(curves["temperatures"], curves["carried_vs_temperature"], "--", label="Q_S(T) + Q_L(T)")
+    if not math.isnan(curves["T_op"]):
+        right.plot([curves["T_op"]], [curves["heat_at_T_op"]], "o", color="black")
+        right.annotate(f"T_op = {curves['T_op']:.1f} °C", (curves["T_op"], curves["heat_at_T_op"]),
+                       textcoords="offset points", xytext=(6, -14))
+    right.set_xlabel("bearing temperature [°C]")
+    right.set_title(f"at n = {curves['n']:.0f} 1/min", fontsize=10)
+    right.legend(fontsize=8, loc="upper left")
+    fig.suptitle(f"Heat balance of {curves['label']}", fontsize=11)
+    fig.tight_layout()
+    fig.savefig(path)

@@ -1,0 +1,76 @@
+"""Vectorised bracketed roots: the heat balance of friction models without a closed speed law.
+
+The catalogue friction model has M0 ∝ (ν·n)^(2/3), so its heat balance
+N_R(n) = Q has a closed root (:mod:`bearingheat.kernels.thermal`). A model
+without such a law is solved here: every row at once, by bisection on a
+bracket [low, high] where the function changes sign, refined by the
+Illinois variant of regula falsi, which keeps the bracket and converges
+superlinearly for the smooth, monotone balances of friction power against
+heat carried away.
+
+References
+----------
+Dowell, M.; Jarratt, P. (1971): A modified regula falsi method for computing
+the root of an equation. BIT 11, 168-174 (the Illinois algorithm).
+"""
+from __future__ import annotations
+
+from typing import Callable
+
+import numpy as np
+
+__all__ = ["bracketed_root"]
+
+
+def bracketed_root(func: Callable[[np.ndarray], np.ndarray], low, high, *, rtol: float = 1e-12,
+                   iterations: int = 200) -> tuple[np.ndarray, np.ndarray]:
+    """Roots of ``func`` (one per row) inside [low, high], and a status per row.
+
+    ``func`` takes an array of x (one per row) and returns f(x) per row.
+    Returns (x, status): status 0 where a root was found, +1 where f > 0 at
+    both ends, -1 where f < 0 at both ends, 2 where f is NaN at an end (x
+    is NaN wherever status is not 0). A root at an end of the bracket is
+    returned as it is. Converged when the bracket is narrower than
+    ``rtol``·|x| or f is exactly 0.
+
+    >>> x, status = bracketed_root(lambda x: x ** 3 - 8.0, np.array([0.0, 3.0]), np.array([10.0, 10.0]))
+    >>> np.round(x, 12).tolist(), status.tolist()
+    ([2.0, nan], [0, 1])
+    """
+    a = np.array(low, dtype=float, copy=True)
+    b = np.array(high, dtype=float, copy=True)
+    a, b = np.broadcast_arrays(a, b)
+    a, b = a.copy(), b.copy()
+    fa = np.asarray(func(a), dtype=float).copy()
+    fb = np.asarray(func(b), dtype=float).copy()
+    status = np.where(np.isnan(fa) | np.isnan(fb), 2,
+                      np.where((fa > 0) & (fb > 0), 1, np.where((fa < 0) & (fb < 0), -1, 0)))
+    x = np.where(fa == 0, a, np.where(fb == 0, b, np.nan))
+    active = (status == 0) & np.isnan(x)
+    side = np.zeros(a.shape, dtype=int)  # which end stayed last time (Illinois halving)
+    for _ in range(iterations):
+        if not active.any():
+            break
+        with np.errstate(invalid="ignore", divide="ignore"):
+            c = np.where(fb != fa, b - fb * (b - a) / (fb - fa), 0.5 * (a + b))
+        c = np.where((c <= np.fmin(a, b)) | (c >= np.fmax(a, b)) | ~np.isfinite(c), 0.5 * (a + b), c)
+        fc = np.full(a.shape, np.nan)
+        fc[active] = np.asarray(func(np.where(active, c, a)), dtype=float)[active]
+        exact = active & (fc == 0)
+        x = np.where(exact, c, x)
+        same_as_a = np.sign(fc) == np.sign(fa)
+        # replace the end whose sign c shares; halve the value kept at the other end when it stays twice
+        move_a = active & ~exact & same_as_a
+        move_b = active & ~exact & ~same_as_a
+        fb = np.where(move_a & (side == -1), fb / 2.0, fb)
+        fa = np.where(move_b & (side == 1), fa / 2.0, fa)
+        a = np.where(move_a, c, a)
+        fa = np.where(move_a, fc, fa)
+        b = np.where(move_b, c, b)
+        fb = np.where(move_b, fc, fb)
+        side = np.where(move_a, -1, np.where(move_b, 1, side))
+        done = active & ~exact & (np.abs(b - a) <= rtol * np.fmax(np.abs(a), np.abs(b)))
+        x = np.where(done, np.where(np.abs(fa) <= np.abs(fb), a, b), x)
+        active &= ~(exact | done)
+    x = np.where(active, np.where(np.abs(fa) <= np.abs(fb), a, b), x)
+    return np.where(status == 0, x, np.nan), status

@@ -1,0 +1,135 @@
+"""Coast-down fits (seed 003 nested models) and the rolling-bearing spindle form (seed 002)."""
+from __future__ import annotations
+
+import math
+import re
+
+import numpy as np
+import pytest
+from coastdown_helpers import integrate_rundown, spindle_torque
+
+from bearingheat.analysis import coastdown as cd
+from bearingheat.errors import CoastdownError
+from bearingheat.kernels.coastdown import plain_torque
+
+
+def test_interval_table_reproduces_formula2_on_a_straight_line():
+    t = np.linspace(0.0, 90.0, 91)
+    n = 900.0 - 10.0 * t
+    table = cd.interval_friction_table(t, n, 2.6, 1100.0, 25.0, dn=100.0)
+    assert len(table) == 9
+    np.testing.assert_allclose(table["dt [s]"], 10.0)
+    np.testing.assert_allclose(table["f"], 0.0990078, rtol=1e-6)
+    table_dt = cd.interval_friction_table(t, n, 2.6, 1100.0, 25.0, dt=30.0)
+    np.testing.assert_allclose(table_dt["n_from [1/min]"] - table_dt["n_to [1/min]"], 300.0)
+
+
+# ----------------------------------------------------------------- nested models
+def test_constant_f_data_come_back_as_coulomb_only():
+    M_c = 0.02 * 1100 * 0.025  # f = 0.02 on the TMM-7M
+    for seed in range(3):
+        t, n, t_stop = integrate_rundown(plain_torque(M_c), 2.6, 930.0, 2.0, 2.0, seed)
+        result = cd.coastdown_analysis(t, n, 2.6, 1100.0, 25.0)
+        assert result.model == "coulomb"
+        assert result.f_constant == pytest.approx(0.02, rel=0.01)
+        low, high = result.chosen.interval("M_c")
+        assert low < M_c < high
+        assert result.rmse_after == result.rmse_before
+        assert result.rundown_time == pytest.approx(t_stop, rel=0.01)
+
+
+def test_viscous_components_recovered():
+    t, n, _ = integrate_rundown(plain_torque(0.3, 0.008), 2.6, 930.0, 2.0, 2.0, 11)
+    result = cd.coastdown_analysis(t, n, 2.6, 1100.0, 25.0)
+    assert result.model == "coulomb_viscous"
+    assert result.chosen.value("M_c") == pytest.approx(0.3, rel=0.03)
+    assert result.chosen.value("c_v") == pytest.approx(0.008, rel=0.03)
+    for name, true in (("M_c", 0.3), ("c_v", 0.008)):
+        low, high = result.chosen.interval(name)
+        assert low < true < high
+    assert result.rmse_after < 0.1 * result.rmse_before
+
+
+def test_aero_components_recovered_and_energy_balances():
+    t, n, _ = integrate_rundown(plain_torque(0.3, 0.004, 5e-5), 2.6, 930.0, 2.0, 2.0, 12)
+    result = cd.coastdown_analysis(t, n, 2.6, 1100.0, 25.0)
+    assert result.model == "coulomb_viscous_aero"
+    for name, true in (("M_c", 0.3), ("c_v", 0.004), ("c_a", 5e-5)):
+        assert result.chosen.value(name) == pytest.approx(true, rel=0.1)
+        low, high = result.chosen.interval(name)
+        assert low < true < high
+    e = result.energy
+    # first principles: the work of the three torques equals the kinetic energy lost
+    assert e["coulomb"] + e["viscous"] + e["aero"] == pytest.approx(e["total"], rel=1e-4)
+    assert e["to_standstill"] == pytest.approx(0.5 * 2.6 * (930 * math.pi / 30) ** 2, rel=0.005)
+
+
+def test_formula1_follows_the_model_torque():
+    t, n, _ = integrate_rundown(plain_torque(0.3, 0.008), 2.6, 930.0, 2.0, 0.5, 4)
+    result = cd.coastdown_analysis(t, n, 2.6, 1100.0, 25.0)
+    s = result.samples.dropna(subset=["f_formula1"])
+    true_f = plain_torque(0.3, 0.008)(s["n_smooth [1/min]"] * math.pi / 30) / (1100 * 0.025)
+    np.testing.assert_allclose(s["f_formula1"], true_f, rtol=0.05)
+
+
+def test_summary_keys():
+    t, n, _ = integrate_rundown(plain_torque(0.55), 2.6, 930.0, 4.0, 2.0, 1)
+    summary = cd.coastdown_analysis(t, n, 2.6, 1100.0, 25.0).summary()
+    for key in ("model", "M_c [N*m]", "c_v [N*m*s]", "c_a [N*m*s^2]", "f_constant", "rmse_before [1/min]",
+                "rmse_after [1/min]"):
+        assert key in summary
+    assert summary["c_v [N*m*s]"] == 0.0
+
+
+# ----------------------------------------------------------------- bad input
+def test_too_few_samples_message():
+    with pytest.raises(CoastdownError, match=re.escape(
+            "coast-down: 5 samples; at least 10 are needed to fit and cross-validate the nested models")):
+        cd.coastdown_analysis(np.arange(5.0), 100 - np.arange(5.0), 2.6, 1100.0, 25.0)
+
+
+def test_time_not_increasing_message():
+    t = np.arange(12.0)
+    t[4] = 3.0
+    with pytest.raises(CoastdownError, match=re.escape(
+            "coast-down: sample 5: t = 3 s does not follow t = 3 s; times must increase strictly")):
+        cd.coastdown_analysis(t, 100 - t, 2.6, 1100.0, 25.0)
+
+
+def test_negative_speed_message():
+    n = 100 - np.arange(12.0)
+    n[2] = -4.0
+    with pytest.raises(CoastdownError, match=re.escape(
+            "coast-down: sample 3: n = -4 1/min; expected a finite speed >= 0 1/min")):
+        cd.coastdown_analysis(np.arange(12.0), n, 2.6, 1100.0, 25.0)
+
+
+def test_speed_not_falling_message():
+    with pytest.raises(CoastdownError, match=re.escape(
+            "coast-down: the speed does not fall (n = 100 1/min at the start, 111 1/min at the end); "
+            "a run-down diagram is needed")):
+        cd.coastdown_analysis(np.arange(12.0), 100 + np.arange(12.0), 2.6, 1100.0, 25.0)
+
+
+def test_bad_rig_value_message():
+    with pytest.raises(CoastdownError, match=re.escape("coast-down: G = -1100 N; expected a value > 0")):
+        cd.coastdown_analysis(np.arange(12.0), 100 - np.arange(12.0), 2.6, -1100.0, 25.0)
+
+
+# ----------------------------------------------------------------- rolling-bearing spindle (seed 002)
+def test_spindle_f0_and_f1_recovered():
+    torque = spindle_torque(2.0, 25.0, 20.0, 50.0, 2)
+    t, n, _ = integrate_rundown(torque, 0.05, 6000.0, 2.0, 3.0, 1, fraction=0.98)
+    fit = cd.spindle_coastdown_fit(t, n, 0.05, 20.0, 50.0, bearings=2, P=1000.0, f0_catalogue=2.0)
+    assert fit.f0 == pytest.approx(2.0, rel=0.02)
+    assert fit.f1 == pytest.approx(0.0005, rel=0.02)
+    low, high = fit.fit.interval("f0")
+    assert low < 2.0 < high
+    assert fit.summary()["f0_ratio_fitted_to_catalogue"] == pytest.approx(1.0, abs=0.02)
+
+
+def test_spindle_below_nu_n_2000_is_refused():
+    with pytest.raises(CoastdownError, match=re.escape(
+            "spindle coast-down: ν·n reaches only 1000 mm²/s·1/min (< 2000): M0 of seed 002 is constant over "
+            "the whole run-down and cannot be told apart from M1")):
+        cd.spindle_coastdown_fit(np.arange(12.0), 100 - np.arange(12.0), 0.05, 10.0, 50.0)

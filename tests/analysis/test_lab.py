@@ -1,0 +1,78 @@
+"""The DP11A lab rig of seed 000: processing readings (tasks 1-3, tables 4 and 5), the shipped example."""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from bearingheat.analysis.lab import EXAMPLE_TRUTH, generate_example, process_lab
+from bearingheat.errors import LabError
+
+EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "lab_dp11a_example.csv"
+
+
+def test_p0_uses_table_1():
+    r = process_lab(pd.DataFrame({"bearing": ["101"] * 2, "Q [kg]": [2.0, 2.0], "beta [deg]": [0.0, 60.0],
+                                  "n [1/min]": [3000.0, 3000.0], "T [N*mm]": [0.1, 0.1]})).readings
+    # beta = 0: P0 = max(0.6*0 + 0.5*19.62, 0) = 9.81; beta = 60: max(0.6*16.99 + 0.5*9.81, 16.99) = 16.99
+    np.testing.assert_allclose(r["P0"], [9.81, 19.62 * np.sin(np.radians(60))], rtol=1e-12)
+
+
+def _rel(a, b):
+    return np.max(np.abs(np.asarray(a) - np.asarray(b)) / np.max(np.abs(np.asarray(b))))
+
+
+def test_closed_forms_agree_with_general_least_squares_on_the_example():
+    result = process_lab(pd.read_csv(EXAMPLE))
+    assert _rel(result.task1["mu"], result.task1["mu_lstsq"]) < 1e-12
+    assert _rel(result.task2["f0"], result.task2["f0_lstsq"]) < 1e-12
+    assert _rel(result.task2["T_F"], result.task2["T_F_lstsq"]) < 1e-12
+    assert _rel(result.task3["f"], result.task3["f_lstsq"]) < 1e-12
+    assert _rel(result.task3["T0"], result.task3["T0_lstsq"]) < 1e-12
+
+
+def test_shipped_example_is_the_generator_output():
+    shipped = pd.read_csv(EXAMPLE, dtype={"bearing": str})
+    pd.testing.assert_frame_equal(shipped, generate_example(), check_dtype=False)
+
+
+def test_example_recovers_the_generating_coefficients():
+    result = process_lab(pd.read_csv(EXAMPLE))
+    # f of task 3, averaged over beta and n, within 5 % of the f the example was generated with
+    assert result.task3.groupby("bearing")["f"].mean().to_numpy() == pytest.approx(
+        [EXAMPLE_TRUTH["f"]] * 3, rel=0.05)
+    assert len(result.table4) == 9 and len(result.table5) == 9
+    assert result.table4[("101", 30.0)].shape == (3, 4)        # rows Q, columns n
+    assert result.table5[("101", 2.0)].shape == (4, 3)         # rows n, columns beta
+
+
+def test_catalogue_comparison():
+    result = process_lab(pd.read_csv(EXAMPLE))
+    assert "seed002_MR / measured" in result.comparison.columns
+    assert result.notes == []
+    no_nu = process_lab(pd.read_csv(EXAMPLE).drop(columns="nu [mm^2/s]"))
+    assert no_nu.notes == ["no viscosity given (column 'nu [mm^2/s]' or --nu): the seed 002 comparison is skipped"]
+
+
+def test_unknown_bearing():
+    with pytest.raises(LabError, match=re.escape("bearing '6205' is not in seed 000 table 3; expected one of "
+                                                 "1000095, 18, 101")):
+        process_lab(pd.DataFrame({"bearing": ["6205"], "Q [kg]": [1.0], "beta [deg]": [0.0],
+                                  "n [1/min]": [3000.0], "T [N*mm]": [0.1]}))
+
+
+def test_missing_column_and_bad_angle():
+    with pytest.raises(LabError, match=re.escape("missing column: 'beta [deg]'")):
+        process_lab(pd.DataFrame({"bearing": ["101"], "Q [kg]": [1.0], "n [1/min]": [3000.0], "T [N*mm]": [0.1]}))
+    with pytest.raises(LabError, match=re.escape("row 1: beta [deg] = 120 must be in 0..90 deg")):
+        process_lab(pd.DataFrame({"bearing": ["101"], "Q [kg]": [1.0], "beta [deg]": [120.0],
+                                  "n [1/min]": [3000.0], "T [N*mm]": [0.1]}))
+
+
+def test_weight_as_force_is_refused():
+    with pytest.raises(LabError, match=re.escape("column 'Q [N]': unit N cannot be converted to kg")):
+        process_lab(pd.DataFrame({"bearing": ["101"], "Q [N]": [1.0], "beta [deg]": [0.0],
+                                  "n [1/min]": [3000.0], "T [N*mm]": [0.1]}))

@@ -1,0 +1,57 @@
+"""Ball bearing contact with units (seed 001): unit invariance, the clearance route, unit errors."""
+import math
+
+import pytest
+
+from bearingheat.api import contact as ct
+from bearingheat.errors import ContactInputError, UnitError
+from bearingheat.kernels.contact import KGF
+from bearingheat.units import ureg
+
+# Seed 001, example: bearing 4-1006095 (5 x 13 x 4 mm; the seed's table swaps D and d).
+Z, DW, DM, ALPHA0, RI, RO = 7, 2.0, 8.7355, 12.0, 1.05, 1.16
+FA_SEED = 2.0 * KGF
+
+
+def test_ball_bearing_contact_unit_invariance():
+    u = ureg()
+    mm = ct.ball_bearing_contact(z=Z, d_w=DW * u.mm, d_m=DM * u.mm, r_i=RI * u.mm, r_o=RO * u.mm,
+                                 alpha0=ALPHA0 * u.deg, Fa=2 * u.kgf, n=3000 * u.rpm)
+    si = ct.ball_bearing_contact(z=Z, d_w=(DW / 25.4) * u.inch, d_m=(DM * 1e-3) * u.m, r_i=(RI * 1e3) * u.um,
+                                 r_o=(RO / 10) * u.cm, alpha0=math.radians(ALPHA0) * u.rad,
+                                 Fa=(FA_SEED / 1000) * u.kN, n=50 * u.Hz)
+    a, b = mm.to_dict(), si.to_dict()
+    assert a.keys() == b.keys()
+    for key in a:
+        assert b[key] == pytest.approx(a[key], rel=1e-9), key
+    assert mm.C_star.to("kgf").magnitude == pytest.approx(7.79e3, rel=0.003)
+
+
+def test_ball_bearing_contact_from_clearance():
+    u = ureg()
+    e = 2 * (RI + RO - DW) * (1 - math.cos(math.radians(ALPHA0)))
+    r = ct.ball_bearing_contact(z=Z, d_w=DW * u.mm, d_m=DM * u.mm, r_i=RI * u.mm, r_o=RO * u.mm,
+                                clearance=e * 1000 * u.um, Fa=2 * u.kgf)
+    assert r.alpha0.to("deg").magnitude == pytest.approx(ALPHA0, abs=1e-9)
+    assert r.delta_a.to("mm").magnitude == pytest.approx(r.xi_a.magnitude * 0.21, rel=1e-12)
+    assert r.Fa_min is None and "Fa_min [N]" not in r.to_dict()
+    assert ct.contact_angle_from_clearance(e * u.mm, RI * u.mm, RO * u.mm, DW * u.mm).to("deg").magnitude == (
+        pytest.approx(ALPHA0))
+
+
+def test_unit_errors_exact_messages():
+    u = ureg()
+    geometry = dict(z=Z, d_w=DW * u.mm, d_m=DM * u.mm, r_i=RI * u.mm, r_o=RO * u.mm)
+    with pytest.raises(UnitError) as info:
+        ct.ball_bearing_contact(**geometry, alpha0=u.Quantity(12.0))
+    assert str(info.value) == "alpha0: 12.0 has no unit; write it as an angle, e.g. 12.0 deg"
+    with pytest.raises(UnitError) as info:
+        ct.ball_bearing_contact(**{**geometry, "d_w": 2.0}, alpha0=12 * u.deg)
+    assert str(info.value) == ("d_w: expected a pint Quantity in mm (for example 2.5 * ureg('mm')); "
+                               "got a plain float 2.0")
+    with pytest.raises(UnitError) as info:
+        ct.ball_bearing_contact(**geometry, alpha0=12 * u.deg, Fa=2 * u.kg)
+    assert str(info.value) == "Fa: 2 kilogram is a mass, not a force; for kilogram-force write 2 kgf"
+    with pytest.raises(ContactInputError) as info:
+        ct.ball_bearing_contact(**geometry, alpha0=12 * u.deg, clearance=0.01 * u.mm)
+    assert str(info.value) == "give exactly one of alpha0 (an angle) or clearance (the mean radial clearance)"

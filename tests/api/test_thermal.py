@@ -1,0 +1,148 @@
+"""The unit-aware heat balance (issue 3): n_thr, n_per, operating temperature, sign convention, refusals."""
+from __future__ import annotations
+
+import math
+import re
+
+import numpy as np
+import pandas as pd
+import pint
+import pytest
+
+from bearingheat.api.thermal import heat_balance, thermal_reference_speed
+from bearingheat.calc.models import compute_supports
+from bearingheat.errors import HeatBalanceError
+from bearingheat.kernels.viscosity import viscosity_from_two_points
+
+u = pint.get_application_registry()
+
+
+def test_thermal_reference_speed_quantity_api_and_unit_invariance():
+    a = thermal_reference_speed("6205", d=25 * u.mm, D=52 * u.mm, B=15 * u.mm, C0=7.8 * u.kN)
+    b = thermal_reference_speed("6205", d=2.5 * u.cm, D=0.052 * u.m, B=15 * u.mm, C0=7800 * u.N)
+    assert a.units == u("1/min").units
+    assert a.magnitude == pytest.approx(b.magnitude, rel=1e-12)
+    arr = thermal_reference_speed("6205", d=25 * u.mm, D=52 * u.mm, B=np.array([15.0, 16.0]) * u.mm,
+                                  C0=7.8 * u.kN)
+    assert arr.magnitude[0] == pytest.approx(a.magnitude, rel=1e-12)
+    assert arr.magnitude[1] > arr.magnitude[0]  # wider seat carries away more heat
+
+
+def test_thermal_reference_speed_error_message():
+    with pytest.raises(HeatBalanceError) as exc:
+        thermal_reference_speed("51105", d=25 * u.mm, D=42 * u.mm, C0=28.5 * u.kN)
+    assert str(exc.value) == ("51105: n_thr: the thermal method (ISO 15312, DIN 732) does not apply to thrust "
+                              "ball bearings")
+
+
+def base_case(**overrides):
+    args = dict(d=25 * u.mm, D=52 * u.mm, B=15 * u.mm, C0=7.8 * u.kN, n=3000 * u.rpm, Fr=2 * u.kN,
+                nu40=68 * u("mm^2/s"), nu100=8.6 * u("mm^2/s"), T_ambient=u.Quantity(20, "degC"),
+                T_bearing=u.Quantity(70, "degC"))
+    args.update(overrides)
+    return heat_balance("6205", **args)
+
+
+def test_heat_balance_holds_at_the_operating_temperature():
+    r = base_case()
+    assert r.status == ["ok"]
+    T_op = r.T_op.to("degC").magnitude
+    A_r = math.pi * 15 * 77
+    Q_S = 0.016 / 50 * A_r * (T_op - 20.0)
+    nu = viscosity_from_two_points(68, 40, 8.6, 100, T_op)
+    assert r.nu_op.to("mm^2/s").magnitude == pytest.approx(nu, rel=1e-10)
+    frame = pd.DataFrame({"designation": ["6205"], "d": [25.0], "D": [52.0], "C0": [7800.0], "n": [3000.0],
+                          "Fr": [2000.0], "nu": [nu], "lubrication": ["oil_bath"]})
+    MR = compute_supports(frame)["MR"].iloc[0]
+    assert math.pi * 3000 / 30 * 1e-3 * MR == pytest.approx(Q_S, rel=1e-9)
+
+
+def test_sign_convention_external_heat_flows_into_the_bearing():
+    cold = base_case()
+    hot = base_case(Q_E=10 * u.W)      # Q_E > 0: heat INTO the bearing
+    cooled = base_case(Q_E=-10 * u.W)  # Q_E < 0: extra cooling
+    assert hot.T_op.magnitude > cold.T_op.magnitude > cooled.T_op.magnitude
+    assert hot.n_per.magnitude < cold.n_per.magnitude < cooled.n_per.magnitude
+
+
+def test_sign_convention_at_the_permissible_speed():
+    # n_per is the speed at which N_R = Q_S + Q_L - Q_E at T_bearing
+    r = base_case(Q_E=10 * u.W, V_oil=0.2 * u("l/min"), dT_oil=5 * u.K)
+    n_per = r.n_per.to("1/min").magnitude
+    nu70 = viscosity_from_two_points(68, 40, 8.6, 100, 70.0)
+    carried = 0.016 / 50 * math.pi * 15 * 77 * 50.0 + 28.6 * 0.2 * 5.0 - 10.0
+    frame = pd.DataFrame({"designation": ["6205"], "d": [25.0], "D": [52.0], "C0": [7800.0], "n": [n_per],
+                          "Fr": [2000.0], "nu": [nu70], "lubrication": ["oil_bath"]})
+    MR = compute_supports(frame)["MR"].iloc[0]
+    assert math.pi * n_per / 30 * 1e-3 * MR == pytest.approx(carried, rel=1e-10)
+    assert r.Q_L.to("W").magnitude == pytest.approx(28.6 * 0.2 * 5.0)
+
+
+def test_external_heat_above_what_is_carried_away():
+    r = base_case(Q_E=100 * u.W)
+    assert math.isnan(r.n_per.magnitude)
+    assert r.status == ["warning"]
+    assert ("n_per: the external heat Q_E = 100 W is not less than the heat carried away 58.06 W at T_bearing; "
+            "no speed is permissible") in r.messages[0]
+
+
+def test_runaway_is_reported():
+    r = base_case(n=20000 * u.rpm, k_q=2e-5 * u("W/(mm^2*K)"))
+    assert math.isnan(r.T_op.magnitude)
+    assert r.messages[0].endswith("T_op: no equilibrium below 150 degC: the friction heat exceeds the heat carried "
+                                  "away (the temperature runs away)")
+
+
+def test_temperature_units_are_invariant():
+    a = base_case()
+    b = base_case(T_ambient=u.Quantity(293.15, "K"), T_bearing=u.Quantity(158, "degF"), n=50 * u.Hz)
+    assert a.T_op.to("degC").magnitude == pytest.approx(b.T_op.to("degC").magnitude, rel=1e-9)
+    assert a.n_per.magnitude == pytest.approx(b.n_per.magnitude, rel=1e-9)
+
+
+def test_array_of_speeds_matches_scalar_calls():
+    speeds = np.array([1000.0, 3000.0, 6000.0])
+    arr = base_case(n=speeds * u.rpm)
+    for i, n in enumerate(speeds):
+        one = base_case(n=n * u.rpm)
+        assert arr.T_op.magnitude[i] == pytest.approx(one.T_op.magnitude, rel=1e-12)
+    assert np.all(np.diff(arr.T_op.magnitude) > 0)  # faster runs hotter
+
+
+def test_viscosity_at_operating_temperature_option():
+    at_bearing = base_case()
+    at_operating = base_case(viscosity_at="operating")
+    # the bearing settles at about 40 degC < 70 degC: thicker oil, more friction, lower n_per
+    assert at_operating.n_per.magnitude < at_bearing.n_per.magnitude
+    with pytest.raises(ValueError, match=re.escape("viscosity_at: 'oil' is not one of auto, bearing, operating")):
+        base_case(viscosity_at="oil")
+
+
+def test_limiting_speed_caps_n_per_with_a_warning():
+    r = base_case(n_G=5000 * u("1/min"))
+    assert r.n_per.to("1/min").magnitude == 5000.0
+    assert r.status == ["warning"]
+    assert "n_per: the thermal value 8053.4 1/min is above the limiting speed n_G = 5000 1/min; n_per = n_G" \
+        in r.messages[0]
+
+
+def test_method_does_not_apply_to_contact_seals_and_thrust_ball_bearings():
+    sealed = heat_balance("6205-2RSR", d=25 * u.mm, D=52 * u.mm, B=15 * u.mm, C0=7.8 * u.kN, n=3000 * u.rpm,
+                          Fr=2 * u.kN, nu=20 * u("mm^2/s"), T_ambient=u.Quantity(20, "degC"),
+                          T_bearing=u.Quantity(70, "degC"))
+    assert math.isnan(sealed.n_per.magnitude) and math.isnan(sealed.T_op.magnitude)
+    assert ("n_thr: the thermal method (ISO 15312, DIN 732) does not apply to bearings with contact seals"
+            in sealed.messages[0])
+    thrust = heat_balance("51105", d=25 * u.mm, D=42 * u.mm, B=11 * u.mm, C0=28.5 * u.kN, n=1000 * u.rpm,
+                          Fa=1 * u.kN, nu=20 * u("mm^2/s"), T_ambient=u.Quantity(20, "degC"),
+                          T_bearing=u.Quantity(70, "degC"))
+    assert math.isnan(thrust.n_per.magnitude)
+    assert "does not apply to thrust ball bearings" in thrust.messages[0]
+
+
+def test_approximation_method_close_to_exact():
+    exact = base_case()
+    approx = base_case(method="approximation")
+    assert approx.n_per.magnitude == pytest.approx(exact.n_per.magnitude, rel=0.03)
+    with pytest.raises(ValueError, match=re.escape("method: 'closed' is not one of exact, approximation")):
+        base_case(method="closed")

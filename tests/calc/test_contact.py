@@ -1,0 +1,29 @@
+"""The calc extension of ball bearings: the minimum axial load Fa_min against ball skidding (seed 001)."""
+import pandas as pd
+import pytest
+
+from bearingheat.calc.table import calc
+from bearingheat.kernels.contact import minimum_axial_load
+
+
+def test_minimum_axial_load_warning():
+    base = {"designation": "7205", "d [mm]": 25, "D [mm]": 52, "C0 [N]": 9300, "alpha [deg]": 30, "z": 12,
+            "Dw [mm]": 7.9, "dm_pitch [mm]": 38.5, "lubrication": "grease", "n [rpm]": 12000, "Fr [N]": 100,
+            "nu [mm^2/s]": 20}
+    table = pd.DataFrame([{**base, "Fa [N]": 10}, {**base, "Fa [N]": 500}, {**base, "alpha [deg]": None, "Fa [N]": 0,
+                                                                           "designation": "6205"}])
+    out = calc(table)
+    fa_min = minimum_axial_load(12, 7.9, 38.5, 12000, 30.0)
+    assert out.loc[0, "Fa_min [N]"] == pytest.approx(fa_min, rel=1e-12)
+    assert out.loc[0, "status"] == "warning"
+    assert out.loc[0, "message"] == (f"Fa = 10 N is below the minimum axial load {fa_min:.4g} N at 12000 1/min: "
+                                     "the balls may skid (seed 001)")
+    assert out.loc[1, "status"] == "ok"
+    assert out.loc[2, "message"] == ("Fa_min: give alpha [deg] (the contact angle) to check the minimum axial load "
+                                     "against ball skidding (seed 001)")
+
+
+def test_no_geometry_no_column():
+    table = pd.DataFrame({"designation": ["6205"], "d [mm]": [25], "D [mm]": [52], "C0 [N]": [7800],
+                          "lubrication": ["grease"], "n [rpm]": [3000], "Fr [N]": [100], "nu [mm^2/s]": [20]})
+    assert "Fa_min [N]" not in calc(table).columns

@@ -1,0 +1,89 @@
+"""The column contract: one entry per column, and everything generated from it agrees with it."""
+import re
+
+import pandas as pd
+import pytest
+
+from bearingheat.calc import contract
+from bearingheat.calc.table import calc
+from bearingheat.errors import InputError
+
+
+def test_units_of_the_friction_model_inputs():
+    units = contract.input_units(owner="friction")
+    assert units["d"] == units["D"] == units["B"] == "mm"
+    assert units["Fr"] == units["Fa"] == units["C0"] == "N"
+    assert units["n"] == "1/min" and units["nu"] == "mm^2/s" and units["alpha"] == "deg"
+    assert units["designation"] == units["lubrication"] == ""
+
+
+def test_thermal_columns_are_temperatures_and_differences():
+    units = contract.input_units(owner="thermal")
+    assert units["T_amb"] == units["T_bearing"] == "degC"
+    assert units["dT_oil"] == "delta_degC"      # a header in degC is refused for a difference
+    assert set(contract.output_units(owner="thermal")) == {"n_thr", "n_per", "T_op", "nu_op", "Q_S", "Q_L"}
+
+
+def test_output_headers():
+    assert contract.output_header("MR") == "MR [N*mm]"
+    assert contract.output_header("f0") == "f0"
+    assert contract.output_header("Fa_over_A") == "Fa/A"
+    assert contract.output_header("p_plain") == "p [N/mm^2]"
+    assert contract.output_header("T_op") == "T_op [degC]"
+
+
+def test_unknown_column_lists_the_known_ones():
+    with pytest.raises(InputError) as exc:
+        contract.column("speed")
+    assert str(exc.value).startswith("'speed' is not an input column of calc; known: id, designation, d, D, n, Fr,")
+
+
+def test_choices_feed_the_drop_down_lists():
+    assert contract.choices("lubrication") == ("grease", "oil_mist", "oil_bath", "circulating_oil")
+    assert contract.choices("arrangement") == ("single", "paired")
+    assert "deep_groove_ball" in contract.choices("type")
+    assert contract.choices("model") == ("schaeffler",)
+    assert contract.choices("d") == ()
+
+
+def test_template_columns_keep_the_sheet_order():
+    names = [c.name for c in contract.template_columns()]
+    assert names[:6] == ["id", "designation", "d", "D", "n", "Fr"]     # Fr lands in column F
+    assert [c.name for c in contract.template_columns() if c.required] == [
+        "designation", "D", "n", "Fr", "nu", "lubrication"]
+
+
+def test_help_names_every_input_column_with_its_unit():
+    text = contract.help_text()
+    for column in contract.CONTRACT:
+        if column.kind == "input":
+            unit = {"": "text"}.get(column.unit, column.unit)
+            assert re.search(rf"^  {re.escape(column.name)} \[{re.escape(unit)}\]", text, re.M), column.name
+
+
+def test_markdown_table_has_a_row_per_column():
+    for kind in ("input", "output"):
+        rows = contract.markdown_table(kind).splitlines()[2:]
+        assert len(rows) == len(contract.columns(kind=kind))
+
+
+def test_calc_writes_the_contract_headers():
+    rows = pd.DataFrame({"designation": ["6205"], "d [mm]": [25], "D [mm]": [52], "C0 [kN]": [7.8],
+                         "lubrication": ["oil_bath"], "n [rpm]": [3000], "Fr [kN]": [2], "nu [mm^2/s]": [12]})
+    out = calc(rows)
+    assert list(out.columns[len(rows.columns):]) == [contract.output_header(n) for n in
+                                                      ("f0", "f1", "P0", "P1", "M0", "M1", "M2", "MR", "NR")] + [
+        "status", "message"]
+
+
+@pytest.mark.parametrize("header, expected", [
+    ("Fr [kN]", ("Fr", "kN")), (" n [U/min] ", ("n", "U/min")), ("id", ("id", None)), ("nu []", ("nu", "")),
+])
+def test_parse_header(header, expected):
+    assert contract.parse_header(header) == expected
+
+
+def test_unreadable_header():
+    with pytest.raises(InputError) as exc:
+        contract.parse_header("a] b")
+    assert str(exc.value) == "column 'a] b': cannot read the header; write it as 'name [unit]'"

@@ -1,0 +1,68 @@
+"""The heat balance of a model without a closed speed law: the generic bracketed root.
+
+A model registered without a speed law is solved by bracketing. Declaring the
+catalogue model itself that way must give the same n_per and T_op as its
+exact 5/3 root (a first-principles check of both), and a model with another
+speed law must give the speed that its own power formula balances.
+"""
+import dataclasses
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from bearingheat.calc import models
+from bearingheat.calc.table import calc
+from bearingheat.kernels.roots import bracketed_root
+
+ROWS = pd.DataFrame({
+    "id": ["ball", "tapered", "roller"], "designation": ["6208", "30208-A", "NU208-E"],
+    "d [mm]": [40, 40, 40], "D [mm]": [80, 80, 80], "B [mm]": [18, 18, 18], "T [mm]": [None, 19.75, None],
+    "C0 [kN]": [18, 66, 53], "Y": [None, 1.6, None], "lubrication": ["oil_bath"] * 3,
+    "n [1/min]": [1480, 310, 2900], "Fr [kN]": [3.2, 6.0, 4.0], "Fa [kN]": [0.9, 2.4, 0],
+    "nu40 [mm^2/s]": [68] * 3, "nu100 [mm^2/s]": [8.6] * 3,
+    "T_amb [degC]": [20] * 3, "T_bearing [degC]": [70] * 3,
+})
+
+
+@pytest.fixture
+def generic_catalogue(monkeypatch):
+    """The catalogue model once more, registered without its speed law."""
+    twin = dataclasses.replace(models.MODELS["schaeffler"], name="catalogue_bracketed", speed_exponent=None)
+    monkeypatch.setitem(models.MODELS, twin.name, twin)
+    return twin.name
+
+
+def test_bracketed_root_reproduces_the_exact_root(generic_catalogue):
+    exact = calc(ROWS)
+    bracketed = calc(ROWS.assign(model=generic_catalogue))
+    assert exact["status"].tolist() == ["ok"] * 3
+    assert bracketed["status"].tolist() == ["ok"] * 3
+    for column in ("n_per [1/min]", "T_op [degC]", "nu_op [mm^2/s]", "MR [N*mm]", "Q_S [W]"):
+        assert bracketed[column].to_numpy() == pytest.approx(exact[column].to_numpy(), rel=1e-9), column
+
+
+def test_a_model_with_another_speed_law(monkeypatch):
+    """M = c·n^0.6 (a SKF-like rolling term): n_per where N_R = π·n/30e3·c·n^0.6 equals the heat carried away."""
+    base = models.MODELS["schaeffler"]
+    c = 0.5
+
+    def evaluate(supports, labels, f2_chart):
+        results, problems = base.evaluate(supports, labels, f2_chart)
+        MR = c * np.power(supports.n, 0.6)
+        return {**results, "MR": MR, "NR": MR * supports.n / 9550.0}, problems
+
+    monkeypatch.setitem(models.MODELS, "power_law", dataclasses.replace(base, name="power_law", evaluate=evaluate,
+                                                                      speed_exponent=None))
+    out = calc(ROWS.iloc[:1].assign(model="power_law"))
+    Q = out["Q_S [W]"].iat[0] + out["Q_L [W]"].iat[0]    # at T_bearing, where n_per is defined
+    n_per = out["n_per [1/min]"].iat[0]
+    assert np.pi * n_per / 30.0 * 1e-3 * c * n_per ** 0.6 == pytest.approx(Q, rel=1e-9)
+    assert n_per == pytest.approx((Q / (np.pi / 30.0 * 1e-3 * c)) ** (1 / 1.6), rel=1e-9)
+
+
+def test_bracketed_root_kernel():
+    x, status = bracketed_root(lambda x: x ** 3 - 8.0, np.array([0.0, 3.0, 2.0, -1.0]),
+                               np.array([10.0, 10.0, 5.0, np.nan]))
+    assert x[0] == pytest.approx(2.0, rel=1e-12) and x[2] == 2.0
+    assert status.tolist() == [0, 1, 0, 2] and np.isnan(x[1]) and np.isnan(x[3])

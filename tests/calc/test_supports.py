@@ -1,0 +1,90 @@
+"""The support arrays: one builder for tables, for one bearing at many points, and for subsets."""
+import math
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from bearingheat.calc import supports as sp
+from bearingheat.catalogue import friction as catalogue
+
+
+def _table():
+    keys = pd.DataFrame({"designation": ["6208", "NU208-E", "6208", "nonsense", "30208-A"],
+                         "lubrication": ["oil_bath"] * 5})
+    numbers = {"D": np.array([80.0, 80.0, 80.0, 80.0, 80.0]), "n": np.full(5, 1500.0),
+               "Fr": np.array([1000.0, np.nan, 2000.0, 0.0, 500.0])}
+    return sp.build_support_arrays(keys, numbers)
+
+
+def test_table_rows_get_their_catalogue_constants():
+    s = _table()
+    assert s.size == 5
+    assert list(s.bearing_type) == ["deep_groove_ball", "cylindrical_roller", "deep_groove_ball", "",
+                                    "tapered_roller"]
+    assert s.d[:3].tolist() == [40.0, 40.0, 40.0]           # the bore printed in the designation
+    assert s.Fr.tolist() == [1000.0, 0.0, 2000.0, 0.0, 500.0]   # a blank load is 0
+    assert s.f0_table[0] == s.f0_table[2] == 2.0
+    assert list(s.resolved) == [True, True, True, False, True]
+    assert s.error[3] == ("designation: 'nonsense' matches no row of the seed 002 tables; give type and series "
+                          "explicitly instead") and s.error[0] == ""
+    assert s.p1_rule[0] == "radial_ball" and s.p1_rule[1] == ""
+
+
+def test_each_distinct_bearing_is_resolved_once(monkeypatch):
+    calls = []
+    real = catalogue.resolve
+
+    def counting(*args, **kwargs):
+        calls.append(args)
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(sp, "resolve", counting)
+    keys = pd.DataFrame({"designation": ["6208", "6210"] * 500, "lubrication": ["grease"] * 1000})
+    sp.build_support_arrays(keys, {"n": np.full(1000, 100.0)})
+    assert sorted(calls) == [("6208", None, None), ("6210", None, None)]
+
+
+def test_one_bearing_keeps_its_constants_scalar():
+    keys = pd.DataFrame({"designation": ["6205"], "lubrication": ["grease"]})
+    s = sp.build_support_arrays(keys, {"n": np.linspace(10, 5000, 1000), "D": 52.0})
+    assert s.size == 1000 and s.n.shape == (1000,)
+    assert np.ndim(s.f0_table) == 0 and float(s.f0_table) == 1.3
+    assert np.ndim(s.D) == 0 and np.ndim(s.d) == 0 and float(s.d) == 25.0
+    assert len(s.notes) == 1
+
+
+def test_take_keeps_rows_and_scalars():
+    s = _table()
+    sub = s.take(np.array([4, 0]))
+    assert sub.size == 2 and list(sub.bearing_type) == ["tapered_roller", "deep_groove_ball"]
+    assert sub.Fr.tolist() == [500.0, 1000.0] and len(sub.notes) == 2
+    one = sp.build_support_arrays(pd.DataFrame({"designation": ["6205"], "lubrication": ["grease"]}),
+                                  {"n": np.array([1.0, 2.0, 3.0])})
+    assert one.take(np.array([2])).n.tolist() == [3.0] and np.ndim(one.take(np.array([2])).f0_table) == 0
+
+
+@pytest.mark.parametrize("keys, error", [
+    ({"designation": ["6205"]}, "lubrication: missing; expected one of grease, oil_mist, oil_bath, circulating_oil"),
+    ({"designation": ["6205"], "lubrication": ["water"]},
+     "lubrication: 'water' is not one of grease, oil_mist, oil_bath, circulating_oil"),
+    ({"designation": ["6205"], "lubrication": ["grease"], "arrangement": ["stacked"]},
+     "arrangement: 'stacked' is not one of single, paired"),
+    ({"type": ["deep_groove_ball"], "lubrication": ["grease"]}, "series: missing; give type and series together"),
+])
+def test_key_errors(keys, error):
+    s = sp.build_support_arrays(pd.DataFrame(keys), {"n": np.array([100.0])})
+    assert str(s.error[0] if np.ndim(s.error) else s.error) == error
+
+
+def test_f0_given_needs_no_lubrication():
+    s = sp.build_support_arrays(pd.DataFrame({"designation": ["6205"]}), {"n": np.array([100.0]), "f0": 2.0})
+    assert (s.error[0] if np.ndim(s.error) else s.error) == "" and math.isnan(float(s.f0_table))
+
+
+def test_plain_bushings_are_marked_and_not_resolved():
+    keys = pd.DataFrame({"type": ["plain_bushing", None], "designation": [None, "6205"],
+                         "lubrication": [None, "grease"]})
+    s = sp.build_support_arrays(keys, {"n": np.array([100.0, 100.0])})
+    assert s.plain.tolist() == [True, False]
+    assert s.error[0] == "" and not s.resolved[0]

@@ -1,0 +1,26 @@
+"""Viscosity-temperature lines of the rows of a table: Walther constants and the row problems."""
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from bearingheat.calc.viscosity import viscosity_model_rows
+
+
+def test_viscosity_model_rows_problems():
+    frame = pd.DataFrame({"nu40": [68.0, 68.0, np.nan, 8.0, np.nan, 68.0, np.nan],
+                          "nu100": [8.6, np.nan, np.nan, 9.0, np.nan, 8.6, np.nan],
+                          "iso_vg": [np.nan, np.nan, 47.0, np.nan, 68.0, 68.0, np.nan],
+                          "VI": [np.nan, np.nan, np.nan, np.nan, -5000.0, np.nan, 95.0]})
+    A, B, problems = viscosity_model_rows(frame)
+    assert not np.isnan(A[0])
+    assert np.isnan(A[1:]).all()
+    assert problems == [
+        (1, "error", "nu100 [mm^2/s]: missing; nu40 alone does not fix the viscosity-temperature line (ASTM D341)"),
+        (2, "error", "iso_vg: 47 is not an ISO VG grade; expected one of 2, 3, 5, 7, 10, 15, 22, 32, 46, 68, 100, "
+                     "150, 220, 320, 460, 680, 1000, 1500, 2200, 3200"),
+        (3, "error", "nu40 [mm^2/s]: 8 must be larger than nu100 = 9"),
+        (4, "error", "VI: -5000 cannot be reached by ISO VG 68 with nu100 >= 2 mm^2/s (ASTM D2270)"),
+        (5, "error", "iso_vg: give either iso_vg or nu40 and nu100, not both"),
+        (6, "error", "VI: given without iso_vg; the viscosity index only serves an ISO VG grade"),
+    ]

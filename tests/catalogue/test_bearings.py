@@ -1,0 +1,250 @@
+"""The bearing table (Schaeffler HR 1, 2006): in sync with its source, looked up by designation.
+
+The expected values are typed from ../shared/data/hr1_2006_reference_speeds.csv (the catalogue values),
+not read through the package.
+"""
+import csv
+import math
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from bearingheat.catalogue.bearings import (NUMERIC, BearingData, bearing, bearing_table, designations, disagrees,
+                                            half_step)
+from bearingheat.catalogue.designation import BEARING_TYPES
+from bearingheat.catalogue.tables import table_units
+from bearingheat.errors import DesignationError
+
+ROOT = Path(__file__).resolve().parents[2]
+SCRIPT = ROOT / "scripts" / "make_bearing_table.py"
+SOURCE = ROOT.parent / "shared" / "data" / "hr1_2006_reference_speeds.csv"
+TABLE = ROOT / "tables" / "bearings_hr1_2006.csv"
+needs_source = pytest.mark.skipif(not SOURCE.is_file(),
+                                  reason=f"the source of the bearing table, {SOURCE}, is not on this machine")
+NAN = math.nan
+
+# designation -> (d, D, B, T, C, C0, e, Y, Y0, n_G, n_thr), from the source CSV
+EXPECTED = {
+    # deep groove ball
+    "6205": (25, 52, 15, NAN, 14000, 7800, NAN, NAN, NAN, 17000, 14400),
+    "6208": (40, 80, 18, NAN, 29000, 18000, NAN, NAN, NAN, 20000, 9300),
+    "6208-2Z": (40, 80, 18, NAN, 29000, 18000, NAN, NAN, NAN, 8500, 9300),
+    "608": (8, 22, 7, NAN, 3250, 1370, NAN, NAN, NAN, 36000, 31500),
+    "608-2Z": (8, 22, 7, NAN, 3250, 1370, NAN, NAN, NAN, 30000, 32500),
+    "16008": (40, 68, 9, NAN, 13200, 10200, NAN, NAN, NAN, 13000, 7800),
+    "6410": (50, 130, 31, NAN, 81500, 52000, NAN, NAN, NAN, 12000, 7200),
+    # cylindrical roller N, NU, NJ, NUP
+    "NU206-E-TVP2": (30, 62, 16, NAN, 45000, 36000, NAN, NAN, NAN, 12000, 9800),
+    "N208-E-TVP2": (40, 80, 18, NAN, 63000, 53000, NAN, NAN, NAN, 9000, 7600),
+    "NU2308-E-TVP2": (40, 90, 33, NAN, 132000, 119000, NAN, NAN, NAN, 7500, 6000),
+    "NU2328-E-M1": (140, 300, 102, NAN, 1210000, 1390000, NAN, NAN, NAN, 3600, 1640),
+    "NJ208-E-TVP2": (40, 80, 18, NAN, 63000, 53000, NAN, NAN, NAN, 9000, 7600),
+    "NJ2310-E-TVP2": (50, 110, 40, NAN, 192000, 187000, NAN, NAN, NAN, 6300, 5000),
+    "NUP2208-E-TVP2": (40, 80, 23, NAN, 83000, 75000, NAN, NAN, NAN, 9000, 6400),
+    "NUP313-E-TVP2": (65, 140, 33, NAN, 214000, 191000, NAN, NAN, NAN, 4800, 4900),
+    # tapered roller 302, 303, 313, 320, 322, 323, 330, 331, 332
+    "30205-A": (25, 52, 15, 16.25, 32000, 34500, 0.37, 1.6, 0.88, 14000, 9100),
+    "30208-A": (40, 80, 18, 19.75, 61000, 66000, 0.37, 1.6, 0.88, 9000, 5900),
+    "30310-A": (50, 110, 27, 29.25, 130000, 148000, 0.35, 1.74, 0.96, 6300, 4800),
+    "31308-A": (40, 90, 23, 25.25, 76000, 83000, 0.83, 0.73, 0.4, 7500, 6200),
+    "32010-X": (50, 80, 20, 20, 62000, 91000, 0.42, 1.42, 0.78, 8000, 4300),
+    "32208-A": (40, 80, 23, 24.75, 79000, 93000, 0.37, 1.6, 0.88, 9000, 5300),
+    "32307-B": (35, 80, 31, 32.75, 96000, 117000, 0.55, 1.1, 0.6, 9000, 6300),
+    "33010": (50, 80, 24, 24, 74000, 111000, 0.32, 1.9, 1.04, 8000, 4100),
+    "33110": (50, 85, 26, 26, 85000, 120000, 0.41, 1.46, 0.8, 7500, 4100),
+    "33210": (50, 90, 32, 32, 114000, 162000, 0.41, 1.45, 0.8, 7000, 4200),
+    # angular contact ball 72..-B, 73..-B
+    "7205-B-JP": (25, 52, 15, NAN, 14600, 9300, NAN, NAN, NAN, 16000, 13600),
+    "7208-B-JP": (40, 80, 18, NAN, 32000, 23500, NAN, NAN, NAN, 9500, 8600),
+    "7220-B-JP": (100, 180, 34, NAN, 137000, 132000, NAN, NAN, NAN, 3800, 4250),
+    "7220-B-TVP": (100, 180, 34, NAN, 132000, 124000, NAN, NAN, NAN, 3800, 4250),
+    "7305-B-TVP": (25, 62, 17, NAN, 26000, 15800, NAN, NAN, NAN, 14000, 9900),
+}
+
+
+def _same(actual, expected):
+    return (math.isnan(actual) and math.isnan(expected)) or actual == expected
+
+
+@needs_source
+def test_table_is_what_the_script_makes_of_the_source(tmp_path):
+    out = tmp_path / "bearings.csv"
+    proc = subprocess.run([sys.executable, str(SCRIPT), "--source", str(SOURCE), "--output", str(out)],
+                          capture_output=True, text=True, check=False, cwd=tmp_path)
+    assert proc.returncode == 0, proc.stderr
+    assert out.read_bytes() == TABLE.read_bytes(), (
+        "tables/bearings_hr1_2006.csv is out of date: run .venv/bin/python scripts/make_bearing_table.py")
+
+
+@needs_source
+def test_every_row_carries_the_source_values():
+    with SOURCE.open(encoding="utf-8") as f:
+        rows = list(csv.DictReader(f))
+    assert designations() == tuple(r["designation"] for r in rows)
+    columns = {"d": "d [mm]", "D": "D [mm]", "B": "B [mm]", "T": "T [mm]", "C": "C [N]", "C0": "C0 [N]",
+               "e": "e [-]", "Y": "Y [-]", "Y0": "Y0 [-]", "n_G": "n_G [1/min]", "n_thr": "n_B [1/min]"}
+    for row in rows:
+        data = bearing(row["designation"])
+        assert data.match == "exact" and data.designation == row["designation"]
+        assert (data.family, data.series, data.shield) == (row["family"], row["series"], row["shield"])
+        for name, column in columns.items():
+            assert _same(getattr(data, name), float(row[column]) if row[column] else NAN), (data.designation, name)
+        assert f"p. {row['page']} (dimensions) and p. {row['page_ratings']} (ratings)" in data.source
+        assert f"row {row['row_on_page']};" in data.source
+
+
+def test_table_shape_units_and_sources():
+    table = bearing_table()
+    assert len(table) == 1034 == len(designations()) == len(set(designations()))
+    units = table_units("bearings_hr1_2006")
+    assert units == {"designation": "-", "family": "-", "bearing_type": "-", "series": "-", "prefix": "-",
+                     "shield": "-", "d": "mm", "D": "mm", "B": "mm", "T": "mm", "C": "N", "C0": "N", "e": "1",
+                     "Y": "1", "Y0": "1", "n_G": "1/min", "n_thr": "1/min", "source": "-"}
+    assert set(table["bearing_type"]) == {"deep_groove_ball", "angular_contact_ball", "cylindrical_roller",
+                                          "tapered_roller"} < set(BEARING_TYPES)
+    assert table["source"].str.startswith("Schaeffler HR 1 (June 2006), p. ").all()
+    counts = table.groupby("family").size().to_dict()
+    assert counts == {"deep groove ball": 307, "angular contact ball": 100, "cylindrical roller": 408,
+                      "tapered roller": 219}
+    assert table.loc[table["family"] == "cylindrical roller", "prefix"].value_counts().to_dict() == {
+        "NU": 135, "NJ": 117, "NUP": 103, "N": 53}
+    # T, e, Y, Y0 for tapered roller bearings only, every other value everywhere
+    tapered = table["family"] == "tapered roller"
+    for name in ("T", "e", "Y", "Y0"):
+        assert table.loc[tapered, name].notna().all() and table.loc[~tapered, name].isna().all()
+    for name in ("d", "D", "B", "C", "C0", "n_G", "n_thr"):
+        assert (table[name] > 0).all()
+
+
+@pytest.mark.parametrize("designation", sorted(EXPECTED))
+def test_catalogue_values(designation):
+    data = bearing(designation)
+    assert isinstance(data, BearingData)
+    assert data.designation == designation and data.match == "exact" and data.note == ""
+    for name, expected in zip(NUMERIC, EXPECTED[designation]):
+        assert _same(getattr(data, name), float(expected)), name
+
+
+def test_types_series_prefix_and_shield():
+    assert [(b.bearing_type, b.series, b.prefix, b.shield) for b in map(bearing, (
+        "6208-2Z", "16008", "7305-B-TVP", "NUP2208-E-TVP2", "NU2328-E-M1", "31308-A", "320/28-X"))] == [
+        ("deep_groove_ball", "62", "", "2Z"), ("deep_groove_ball", "160", "", "open"),
+        ("angular_contact_ball", "73", "", "open"), ("cylindrical_roller", "22", "NUP", "open"),
+        ("cylindrical_roller", "23", "NU", "open"), ("tapered_roller", "313", "", "open"),
+        ("tapered_roller", "320", "", "open")]
+    assert bearing("623").series == "62" and bearing("623").d == 3.0
+    assert bearing("NU206-E-TVP2").source == ("Schaeffler HR 1 (June 2006), p. 366 (dimensions) and p. 367 "
+                                              "(ratings), table 'cylindrical roller bearings with cage, N, NU', "
+                                              "row 21; text copy ArtemFilin1990/Mar@68b9707")
+
+
+@pytest.mark.parametrize("query, designation, match", [
+    ("6208", "6208", "exact"),
+    ("6208-2Z", "6208-2Z", "exact"),
+    ("NU208-E-TVP2", "NU208-E-TVP2", "exact"),
+    ("nu 208 e tvp2", "NU208-E-TVP2", "exact"),
+    ("NU208-E", "NU208-E-TVP2", "cage"),
+    ("NU208-E-M1", "NU208-E-TVP2", "cage"),
+    ("6208-C3", "6208", "cage"),
+    ("6232", "6232-M", "cage"),
+    ("6220-2Z-Y", "6220-2Z", "cage"),
+    ("61810-2Z", "61810-2Z-Y", "cage"),
+    ("7208-B", "7208-B-JP", "cage"),
+    ("NU208", "NU208-E-TVP2", "design"),
+    ("NJ2310", "NJ2310-E-TVP2", "design"),
+    ("30208", "30208-A", "design"),
+    ("32010", "32010-X", "design"),
+    ("320/28", "320/28-X", "design"),
+    ("7208", "7208-B-JP", "design"),
+])
+def test_suffix_matching(query, designation, match):
+    data = bearing(query)
+    assert (data.designation, data.match, data.query) == (designation, match, query)
+
+
+def test_match_notes():
+    assert bearing("NU208-E").note == ("'NU208-E' is NU208-E-TVP2 of the bearing table (Schaeffler HR 1, 2006) "
+                                       "without cage, material, clearance and tolerance suffixes")
+    assert bearing("30208").note == ("'30208' is 30208-A of the bearing table (Schaeffler HR 1, 2006) "
+                                     "without cage and design suffixes")
+    assert bearing("7208-B").note == ("'7208-B' is 7208-B-JP of the bearing table (Schaeffler HR 1, 2006) "
+                                      "without cage, material, clearance and tolerance suffixes; "
+                                      "7208-B-TVP has the same values")
+    assert bearing("6208") is bearing("6208")  # cached
+
+
+def test_close_matches_are_full_designations():
+    with pytest.raises(DesignationError) as info:
+        bearing("6208-2ZZ")
+    assert str(info.value) == ("designation: '6208-2ZZ' is not in the bearing table (Schaeffler HR 1, 2006); "
+                               "close matches: 6208-2Z, 6208, 608-2Z, 6320-2Z, 6308-2Z")
+    # a design suffix that is given must match; the same number comes first
+    with pytest.raises(DesignationError) as info:
+        bearing("NU208-EX")
+    assert str(info.value) == ("designation: 'NU208-EX' is not in the bearing table (Schaeffler HR 1, 2006); "
+                               "close matches: NU208-E-TVP2, NU2348-EX-M1, NU2340-EX-M1, NU2338-EX-M1, "
+                               "NU2260-EX-M1")
+    # seals are never dropped
+    with pytest.raises(DesignationError, match=r"^designation: '6208-2RSR' is not in the bearing table "
+                                               r"\(Schaeffler HR 1, 2006\); close matches: 6208-2Z, 6208, "):
+        bearing("6208-2RSR")
+    with pytest.raises(DesignationError) as info:
+        bearing("XYZ")
+    assert str(info.value) == "designation: 'XYZ' is not in the bearing table (Schaeffler HR 1, 2006); no close match"
+
+
+@pytest.mark.parametrize("query, scope", [
+    ("22208-E1", "which holds no spherical roller bearing"),   # spherical roller: not in the source
+    ("51208", "which holds no thrust ball bearing"),           # thrust ball: not in the source
+    ("81208", "which holds no thrust roller bearing"),
+    ("61908", "which holds no deep groove ball bearing of series 619"),
+    ("NU412", "which holds no cylindrical roller bearing with cage of series 4"),
+])
+def test_families_and_series_the_table_does_not_hold(query, scope):
+    with pytest.raises(DesignationError,
+                       match=rf"^designation: '{query}' is not in the bearing table \(Schaeffler HR 1, 2006\), "
+                             rf"{scope}; "):
+        bearing(query)
+
+
+def test_ambiguous_designations_with_different_values():
+    with pytest.raises(DesignationError) as info:
+        bearing("7220-B")
+    assert str(info.value) == ("designation: '7220-B' matches 2 bearings of the bearing table (Schaeffler HR 1, "
+                               "2006) that differ in C, C0: 7220-B-JP, 7220-B-TVP; give the full designation")
+    with pytest.raises(DesignationError) as info:
+        bearing("32307")
+    assert str(info.value) == ("designation: '32307' matches 2 bearings of the bearing table (Schaeffler HR 1, "
+                               "2006) that differ in C, C0, e, Y, Y0, n_G, n_thr: 32307-B, 32307-A; "
+                               "give the full designation")
+
+
+@pytest.mark.parametrize("bad", ["", "   ", None])
+def test_empty_designation(bad):
+    with pytest.raises(DesignationError, match="is empty; give a designation such as 6208"):
+        bearing(bad)
+
+
+def test_values_and_quantities(ureg):
+    data = bearing("30208-A")
+    assert data.values() == {"d": 40.0, "D": 80.0, "B": 18.0, "T": 19.75, "C": 61000.0, "C0": 66000.0,
+                             "e": 0.37, "Y": 1.6, "Y0": 0.88, "n_G": 9000.0, "n_thr": 5900.0}
+    q = data.quantities()
+    assert q["T"] == ureg.Quantity(19.75, "mm") and q["C0"].to("kN").magnitude == pytest.approx(66.0)
+    assert q["n_thr"].to("1/s").magnitude == pytest.approx(5900 / 60)
+    assert q["Y"].dimensionless and q["Y"].magnitude == 1.6
+    assert set(bearing("6208").quantities()) == {"d", "D", "B", "C", "C0", "n_G", "n_thr"}
+
+
+def test_catalogue_rounding():
+    # C, C0, n_thr: 3 significant figures; n_G: 2; e, Y, Y0 and the dimensions: 0.01
+    assert half_step("C", 29000.0) == 50.0 and half_step("C0", 1390000.0) == 5000.0
+    assert half_step("C", 640.0) == pytest.approx(0.5) and half_step("n_thr", 455.0) == pytest.approx(0.5)
+    assert half_step("n_G", 9500.0) == 50.0 and half_step("n_G", 56000.0) == 500.0
+    assert half_step("e", 0.37) == half_step("Y", 1.6) == half_step("T", 16.25) == 0.005
+    assert not disagrees("C", 29.05e3, 29000.0) and disagrees("C", 29.06e3, 29000.0)
+    assert not disagrees("Y", 1.604, 1.6) and disagrees("Y", 1.61, 1.6)
+    assert not disagrees("d", 40.0, 40.0) and disagrees("D", 80.5, 80.0)
+    assert not disagrees("T", 19.75, NAN)

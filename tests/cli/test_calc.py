@@ -1,0 +1,123 @@
+"""bearingheat calc: column contract, exit codes 0/1/2, help."""
+import subprocess
+import sys
+from pathlib import Path
+
+import pandas as pd
+import pytest
+
+from bearingheat.cli import main
+
+ROOT = Path(__file__).parents[2]
+EXAMPLE = ROOT / "examples" / "gearbox_shaft.csv"
+RESULT_COLUMNS = ["f0", "f1", "P0 [N]", "P1 [N]", "M0 [N*mm]", "M1 [N*mm]", "M2 [N*mm]", "MR [N*mm]", "NR [W]",
+                  "status", "message"]
+
+
+def test_example_runs_and_keeps_input_columns(tmp_path, capsys):
+    out = tmp_path / "out.csv"
+    assert main(["calc", str(EXAMPLE), "-o", str(out)]) == 0
+    table = pd.read_csv(EXAMPLE)
+    result = pd.read_csv(out)
+    assert list(result.columns[: len(table.columns)]) == list(table.columns)
+    added = list(result.columns[len(table.columns):])
+    assert [c for c in added if c in RESULT_COLUMNS] == RESULT_COLUMNS
+    assert added[:9] == RESULT_COLUMNS[:9] and added[-2:] == ["status", "message"]
+    assert (result["status"] == "ok").all()
+    # row 1: 6208 in an oil bath, hand calculation after seed 002
+    dM, n, nu = 60.0, 1480.0, 40.0
+    P0 = max(0.6 * 3200 + 0.5 * 900, 3200)
+    M = 2 * (nu * n) ** (2 / 3) * dM ** 3 * 1e-7 + 0.0009 * (P0 / 18000) ** 0.5 * max(3.3 * 900 - 320, 3200) * dM
+    assert result.loc[0, "MR [N*mm]"] == pytest.approx(M, rel=1e-12)
+    printed = capsys.readouterr().out
+    assert "6 supports: 6 ok, 0 warning, 0 error; results written to" in printed
+
+
+def test_bad_row_exit_1_other_rows_computed(tmp_path, capsys):
+    src = tmp_path / "in.csv"
+    src.write_text("id,designation,d [mm],D [mm],C0 [kN],lubrication,n [rpm],Fr [kN],nu [mm^2/s]\n"
+                   "a,6205,25,52,7.8,oil_bath,3000,2,12\n"
+                   "b,6205,25,52,7.8,oil_bath,3000,abc,12\n"
+                   "c,6205,25,52,7.8,oil_bath,-10,2,12\n")
+    out = tmp_path / "out.csv"
+    assert main(["calc", str(src), "-o", str(out)]) == 1
+    result = pd.read_csv(out, keep_default_na=False)
+    assert list(result["status"]) == ["ok", "error", "error"]
+    assert result.loc[1, "message"] == "'abc' is not a number for Fr [kN]"
+    assert result.loc[2, "message"] == "n [rpm]: -10 must be >= 0 (speed magnitude)"
+    assert float(result.loc[0, "MR [N*mm]"]) > 0
+    assert "error: b: 'abc' is not a number for Fr [kN]" in capsys.readouterr().out
+
+
+def test_units_in_headers_are_honoured(tmp_path):
+    src = tmp_path / "in.csv"
+    src.write_text("designation,d [mm],D [cm],C0 [N],lubrication,n [Hz],Fr [lbf],nu [cSt]\n"
+                   "6205,25,5.2,7800,oil_bath,50,449.6178861,12\n")
+    out = tmp_path / "out.csv"
+    assert main(["calc", str(src), "-o", str(out), "-q"]) == 0
+    mr = pd.read_csv(out).loc[0, "MR [N*mm]"]
+    hand = 2 * 36000 ** (2 / 3) * 38.5 ** 3 * 1e-7 + 0.0009 * (2000 / 7800) ** 0.5 * 2000 * 38.5
+    assert mr == pytest.approx(hand, rel=1e-9)
+
+
+@pytest.mark.parametrize("content,message", [
+    ("designation,d [mm],lubrication,n [rpm],nu [mm^2/s]\n6205,25,grease,100,10\n",
+     "bearingheat calc: error: missing column: 'D [mm]' (any D unit of the right dimension)\n"),
+    ("d [mm],D [mm],lubrication,n [rpm],nu [mm^2/s]\n25,52,grease,100,10\n",
+     "bearingheat calc: error: missing column: 'designation' (or 'type' and 'series')\n"),
+    ("designation,d [mm],D [mm],lubrication,n [rpm],Fr [kg],nu [mm^2/s]\n6205,25,52,grease,100,1,10\n",
+     "bearingheat calc: error: column 'Fr [kg]': kilogram is a mass, not a force; for kilogram-force write kgf\n"),
+    ("designation,d,D [mm],lubrication,n [rpm],nu [mm^2/s]\n6205,25,52,grease,100,10\n",
+     "bearingheat calc: error: column 'd': needs a unit, e.g. 'd [mm]'\n"),
+    ("designation,d [mm],D [mm],lubrication,n [m/s],nu [mm^2/s]\n6205,25,52,grease,100,10\n",
+     "bearingheat calc: error: column 'n [m/s]': m/s is not a shaft speed; "
+     "expected revolutions per time (1/min, rpm, Hz) or an angular speed (rad/s)\n"),
+])
+def test_unusable_input_exit_2(tmp_path, capsys, content, message):
+    src = tmp_path / "in.csv"
+    src.write_text(content)
+    assert main(["calc", str(src)]) == 2
+    assert capsys.readouterr().err == message
+
+
+def test_missing_file_exit_2(tmp_path, capsys):
+    assert main(["calc", str(tmp_path / "none.csv")]) == 2
+    assert capsys.readouterr().err == f"bearingheat calc: error: {tmp_path / 'none.csv'}: no such file\n"
+
+
+def test_excel_only_flags_refused_for_csv(capsys):
+    assert main(["calc", str(EXAMPLE), "--formulas"]) == 2
+    assert capsys.readouterr().err == ("bearingheat calc: error: --in-place, --formulas and --sheet apply to Excel "
+                                       "workbooks only\n")
+
+
+def test_f2_chart_option(tmp_path):
+    src = tmp_path / "in.csv"
+    src.write_text("designation,d [mm],D [mm],lubrication,n [rpm],Fr [N],Fa [N],nu [mm^2/s]\n"
+                   "NJ206-E,30,62,circulating_oil,300,5000,50,20\n")
+    out = tmp_path / "out.csv"
+    assert main(["calc", str(src), "-o", str(out), "-q", "--f2-chart", str(ROOT / "docs" / "f2_chart_example.csv")]) == 0
+    result = pd.read_csv(out)
+    assert result.loc[0, "M2 [N*mm]"] > 0
+    assert result.loc[0, "Fa/A"] == pytest.approx(50 / (15e-3 * 46 ** 2.1), rel=1e-9)
+    assert result.loc[0, "nu*n*dM [mm^3/(s*min)]"] == pytest.approx(20 * 300 * 46, rel=1e-12)
+
+
+def test_help_lists_columns(capsys):
+    with pytest.raises(SystemExit) as exc:
+        main(["calc", "--help"])
+    assert exc.value.code == 0
+    text = capsys.readouterr().out
+    for piece in ("designation", "C0 [N]", "lubrication", "grease | oil_mist | oil_bath | circulating_oil",
+                  "MR [N*mm]", "NR [W]", "Exit codes"):
+        assert piece in text
+
+
+def test_module_entry_point_subprocess(tmp_path):
+    out = tmp_path / "o.csv"
+    proc = subprocess.run([sys.executable, "-m", "bearingheat", "calc", str(EXAMPLE), "-o", str(out)],
+                          capture_output=True, text=True, check=False)
+    assert proc.returncode == 0, proc.stderr
+    assert out.exists()
+    top = subprocess.run([sys.executable, "-m", "bearingheat", "--help"], capture_output=True, text=True, check=False)
+    assert top.returncode == 0 and "calc" in top.stdout

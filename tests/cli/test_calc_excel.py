@@ -1,0 +1,138 @@
+"""bearingheat calc on Excel workbooks: outputs, exit codes 0/1/2, messages, --in-place, --formulas."""
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+
+import numpy as np
+import openpyxl
+import pandas as pd
+import pytest
+from excel_helpers import EXAMPLE_CSV, EXAMPLE_XLSX, chart_workbook, control_workbook, csv_result, digest, \
+    gearbox_rows, image_workbook, make_workbook, pivot_workbook, rich_workbook
+
+from bearingheat.cli import main
+from bearingheat.io.excel.safety import workbook_fingerprint
+
+
+def test_cli_writes_output_and_leaves_input(tmp_path, capsys):
+    path = make_workbook(tmp_path / "in.xlsx")
+    before = digest(path)
+    out = tmp_path / "out.xlsx"
+    assert main(["calc", str(path), "-o", str(out)]) == 0
+    assert digest(path) == before
+    printed = capsys.readouterr().out
+    assert printed.splitlines()[-1] == f"6 supports: 6 ok, 0 warning, 0 error; results written to {out}, " \
+                                       "sheet 'Results'" or "results written to" in printed
+    assert openpyxl.load_workbook(out)["Results"].max_row == 8
+
+
+def test_cli_exit_1_on_row_errors(tmp_path, capsys):
+    rows = gearbox_rows()
+    rows[0][5] = "abc"
+    path = make_workbook(tmp_path / "in.xlsx", rows=rows)
+    assert main(["calc", str(path), "-o", str(tmp_path / "out.xlsx")]) == 1
+    assert "error: input shaft A (locating): Supports!F3: 'abc' is not a number for Fr [kN]" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("extra, message", [
+    (["--in-place", "-o", "OUT"], "give either --in-place or -o OUTPUT, not both"),
+    (["--formulas"], "--formulas writes a workbook: give -o OUTPUT.xlsx or --in-place"),
+    (["--sheet", "Nope"], "in.xlsx has no sheet 'Nope'; its sheets are Supports"),
+])
+def test_cli_usage_errors(tmp_path, capsys, extra, message):
+    path = make_workbook(tmp_path / "in.xlsx")
+    extra = [str(tmp_path / "out.xlsx") if e == "OUT" else e for e in extra]
+    assert main(["calc", str(path), *extra]) == 2
+    assert capsys.readouterr().err == f"bearingheat calc: error: {message}\n"
+
+
+def test_cli_output_is_the_input(tmp_path, capsys):
+    path = make_workbook(tmp_path / "in.xlsx")
+    assert main(["calc", str(path), "-o", str(path)]) == 2
+    assert capsys.readouterr().err == (f"bearingheat calc: error: -o {path} is the input workbook; "
+                                       "use --in-place to write into it\n")
+
+
+def test_cli_csv_to_xlsx(tmp_path, capsys):
+    out = tmp_path / "from_csv.xlsx"
+    assert main(["calc", str(EXAMPLE_CSV), "-o", str(out), "-q"]) == 0
+    assert capsys.readouterr() == ("", "")
+    ws = openpyxl.load_workbook(out)["Results"]
+    header = [c.value for c in ws[1]]
+    assert header[:3] == ["id", "designation", "d"] and [c.value for c in ws[2]][2] == "mm"
+    assert ws.max_row == 8
+    np.testing.assert_allclose([ws.cell(r, header.index("MR") + 1).value for r in range(3, 9)],
+                               csv_result()["MR [N*mm]"], rtol=1e-15)
+
+
+def test_cli_workbook_to_csv(tmp_path):
+    out = tmp_path / "r.csv"
+    assert main(["calc", str(EXAMPLE_XLSX), "-o", str(out), "-q"]) == 0
+    np.testing.assert_allclose(pd.read_csv(out)["MR [N*mm]"], csv_result()["MR [N*mm]"], rtol=1e-12)
+
+
+def test_cli_quiet_prints_nothing(tmp_path, capsys):
+    assert main(["calc", str(EXAMPLE_XLSX), "-o", str(tmp_path / "o.xlsx"), "--quiet"]) == 0
+    assert capsys.readouterr() == ("", "")
+
+
+def test_subprocess_calc(tmp_path):
+    out = tmp_path / "sub.xlsx"
+    done = subprocess.run([sys.executable, "-m", "bearingheat", "calc", str(EXAMPLE_XLSX), "-o", str(out)],
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert f"results written to {out}, sheet 'Results'" in done.stdout
+    assert "Results" in openpyxl.load_workbook(out).sheetnames
+
+
+def test_in_place_keeps_everything_else(tmp_path, capsys):
+    path = rich_workbook(tmp_path / "rich.xlsx")
+    before = workbook_fingerprint(path)
+    assert main(["calc", str(path), "--in-place"]) == 0
+    assert f"results written to {path}, sheet 'Results'" in capsys.readouterr().out
+    after = workbook_fingerprint(path, skip_sheets=("Results",))
+    styles_before, styles_after = before.pop("named_styles"), after.pop("named_styles")
+    assert set(styles_before) <= set(styles_after)
+    assert after == before
+    workbook = openpyxl.load_workbook(path)
+    assert workbook.sheetnames == ["Supports", "Results", "Notes", "Calc (hidden)"]
+    assert workbook["Results"].max_row == 8
+    assert not [p for p in os.listdir(tmp_path) if p.startswith(".rich")]
+
+
+@pytest.mark.parametrize("build, lost", [
+    (chart_workbook, "charts"),
+    (image_workbook, "images"),
+    (pivot_workbook, "pivot tables, pivot caches"),
+    (control_workbook, "form controls"),
+])
+def test_in_place_refuses_what_openpyxl_would_drop(tmp_path, capsys, build, lost):
+    path = build(tmp_path / "lossy.xlsx")
+    before = digest(path)
+    assert main(["calc", str(path), "--in-place"]) == 2
+    assert capsys.readouterr().err == (
+        f"bearingheat calc: error: {path}: --in-place refused, rewriting the workbook would lose its {lost} "
+        "(openpyxl cannot keep them); the file is unchanged. Write the results to a new workbook with "
+        "-o OUTPUT.xlsx instead\n")
+    assert digest(path) == before
+
+
+def test_output_of_a_lossy_workbook_says_what_the_copy_lacks(tmp_path, capsys):
+    path = chart_workbook(tmp_path / "chart.xlsx")
+    before = digest(path)
+    out = tmp_path / "out.xlsx"
+    assert main(["calc", str(path), "-o", str(out)]) == 0
+    assert capsys.readouterr().err == (f"note: {out} lacks the charts of {path} (openpyxl cannot copy them); "
+                                       f"{path} is unchanged\n")
+    assert digest(path) == before
+
+
+@pytest.mark.parametrize("extra, message", [
+    (["-o", "OUT.csv", "--formulas"], "--formulas needs an Excel output (.xlsx), not a CSV"),
+])
+def test_formulas_usage_errors(tmp_path, capsys, extra, message):
+    extra = [str(tmp_path / e) if e.startswith("OUT") else e for e in extra]
+    assert main(["calc", str(EXAMPLE_XLSX), *extra]) == 2
+    assert capsys.readouterr().err == f"bearingheat calc: error: {message}\n"

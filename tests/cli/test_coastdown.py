@@ -1,0 +1,62 @@
+"""CLI of ``bearingheat coastdown``: run-down report, PNG and summary; usage errors (exit 2)."""
+from __future__ import annotations
+
+import json
+import pathlib
+
+import pytest
+
+from bearingheat.cli import main
+
+REPO = pathlib.Path(__file__).resolve().parents[2]
+EXAMPLE = REPO / "examples" / "coastdown_example.csv"
+
+
+def test_coastdown_example_writes_report_png_and_summary(tmp_path, capsys):
+    out = tmp_path / "run"
+    assert main(["coastdown", str(EXAMPLE), "--out", str(out), "--dn", "100rpm"]) == 0
+    stdout = capsys.readouterr().out
+    assert "Chosen model: **coulomb_viscous_aero**" in stdout
+    summary = json.loads((out / "summary.json").read_text())
+    # generated with M_c = 0.3 N*m, c_v = 0.004 N*m*s, c_a = 5e-5 N*m*s^2 (docs/coastdown.md)
+    assert summary["model"] == "coulomb_viscous_aero"
+    assert summary["M_c [N*m]"] == pytest.approx(0.3, rel=0.05)
+    assert summary["c_v [N*m*s]"] == pytest.approx(0.004, rel=0.1)
+    assert summary["c_a [N*m*s^2]"] == pytest.approx(5e-5, rel=0.1)
+    assert summary["rmse_after [1/min]"] < summary["rmse_before [1/min]"] / 10
+    assert 0.015 < summary["f_constant"] < 0.03
+    assert (out / "coastdown.png").stat().st_size > 1000
+    assert "![run-down data" in (out / "report.md").read_text()
+
+
+def test_coastdown_rig_units_are_converted(capsys):
+    assert main(["coastdown", str(EXAMPLE), "--I", "2600000kg*mm^2", "--G", "1.1kN", "--r", "2.5cm"]) == 0
+    assert "G = 1100 N, r = 25 mm" in capsys.readouterr().out
+
+
+def test_coastdown_spindle_needs_viscosity(capsys):
+    assert main(["coastdown", str(EXAMPLE), "--spindle", "--dM", "50mm"]) == 2
+    assert capsys.readouterr().err == "bearingheat coastdown: error: --spindle needs --nu\n"
+
+
+def test_coastdown_missing_column(tmp_path, capsys):
+    data = tmp_path / "d.csv"
+    data.write_text("time,n [1/min]\n0,100\n")
+    assert main(["coastdown", str(data)]) == 2
+    assert capsys.readouterr().err == (
+        f"bearingheat coastdown: error: {data}: no column 't [s]' (a 't [unit]' column); "
+        "columns are: 'time', 'n [1/min]'\n")
+
+
+def test_coastdown_bad_cell(tmp_path, capsys):
+    data = tmp_path / "d.csv"
+    data.write_text("t [s],n [1/min]\n0,100\n1,abc\n")
+    assert main(["coastdown", str(data)]) == 2
+    assert capsys.readouterr().err == (
+        f"bearingheat coastdown: error: {data} line 3, column 'n [1/min]': 'abc' is not a number\n")
+
+
+def test_coastdown_rig_value_without_unit(capsys):
+    assert main(["coastdown", str(EXAMPLE), "--G", "1100"]) == 2
+    assert capsys.readouterr().err == (
+        "bearingheat coastdown: error: --G: '1100' has no unit; write it with one, e.g. 1100mm\n")

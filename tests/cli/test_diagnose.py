@@ -1,0 +1,84 @@
+"""bearingheat diagnose on the command line: the files it writes, exit codes, calc --effects."""
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import pandas as pd
+import pytest
+from diagnose_cases import CASES, CONTROLS, run_case, small_table
+from synthetic_torque import EFFECTS
+
+from bearingheat.analysis.diagnose import error_metrics
+from bearingheat.cli import main
+
+
+def test_summary_and_report_files(tmp_path):
+    table, noise, _ = run_case(*CASES[0])
+    source = tmp_path / "measured.csv"
+    table.to_csv(source, index=False)
+    out = tmp_path / "diag"
+    assert main(["diagnose", str(source), "--out", str(out), "-q"]) == 0
+    summary = json.loads((out / "summary.json").read_text())
+    for key in ("effect", "parameters", "rmse_before", "rmse_after", "cv_rmse_after", "mape_before", "mape_after",
+                "candidates"):
+        assert key in summary
+    assert summary["effect"] == "seal_drag"
+    assert set(summary["candidates"]) == set(EFFECTS)
+    report = (out / "report.md").read_text()
+    assert "residuals.png" in report and "measured_vs_predicted.png" in report
+    for png in ("residuals.png", "measured_vs_predicted.png"):
+        assert (out / png).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_calc_cli_takes_the_effects(tmp_path, capsys):
+    table, noise, diagnosis = run_case(*CASES[0])
+    source = tmp_path / "m.csv"
+    table.to_csv(source, index=False)
+    assert main(["diagnose", str(source), "--out", str(tmp_path / "d"), "-q"]) == 0
+    result = tmp_path / "r.csv"
+    assert main(["calc", str(source), "--effects", str(tmp_path / "d" / "summary.json"), "-o", str(result), "-q"]) == 0
+    rmse = error_metrics(table["M [N*mm]"], pd.read_csv(result)["MR [N*mm]"])["rmse"]
+    assert rmse == pytest.approx(diagnosis.summary()["rmse_after"], rel=1e-9)
+
+
+def test_summary_missing_parameter(tmp_path, capsys):
+    path = tmp_path / "s.json"
+    path.write_text(json.dumps({"effect": "drag_losses", "parameters": {"c": 1.0}}))
+    source = tmp_path / "in.csv"
+    small_table().to_csv(source, index=False)
+    assert main(["calc", str(source), "--effects", str(path)]) == 2
+    assert capsys.readouterr().err.strip() == (
+        f"bearingheat calc: error: --effects {path}: effect 'drag_losses' needs the parameter 'p'")
+
+
+def test_cli_too_few_rows_exit_2(tmp_path, capsys):
+    source = tmp_path / "in.csv"
+    small_table().to_csv(source, index=False)
+    assert main(["diagnose", str(source), "--out", str(tmp_path / "o")]) == 2
+    assert capsys.readouterr().err.strip() == (
+        "bearingheat diagnose: error: diagnose needs at least 20 usable rows of measured torque; got 3")
+
+
+def test_cli_excluded_rows_exit_1(tmp_path, capsys):
+    table, noise, _ = run_case(*CONTROLS[0])
+    table = table.copy()
+    table["M [N*mm]"] = table["M [N*mm]"].astype(object)
+    table.loc[0, "M [N*mm]"] = "broken"
+    source = tmp_path / "in.csv"
+    table.to_csv(source, index=False)
+    assert main(["diagnose", str(source), "--out", str(tmp_path / "o")]) == 1
+    summary = json.loads((tmp_path / "o" / "summary.json").read_text())
+    assert summary["excluded"] == ["row 1: 'broken' is not a number for M [N*mm]"]
+    assert summary["effect"] == "none"
+
+
+def test_subprocess_diagnose(tmp_path):
+    table, noise, _ = run_case(*CASES[2])
+    source = tmp_path / "m.csv"
+    table.to_csv(source, index=False)
+    done = subprocess.run([sys.executable, "-m", "bearingheat", "diagnose", str(source), "--out", str(tmp_path / "o")],
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.startswith("effect: f0_scale")

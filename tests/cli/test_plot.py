@@ -1,0 +1,42 @@
+"""``bearingheat plot``: the heat-balance figure of one support, exit codes and messages."""
+from __future__ import annotations
+
+import subprocess
+import sys
+
+from thermal_helpers import plot_table
+
+from bearingheat.cli import main
+
+
+def test_plot_writes_a_png(tmp_path, capsys):
+    path = plot_table(tmp_path)
+    png = tmp_path / "heat.png"
+    assert main(["plot", str(path), "--id", "b", "-o", str(png)]) == 0
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert capsys.readouterr().out.strip() == f"wrote {png}"
+
+
+def test_plot_usage_errors(tmp_path, capsys):
+    path = plot_table(tmp_path)
+    assert main(["plot", str(path), "--row", "5", "-o", str(tmp_path / "x.png")]) == 2
+    assert capsys.readouterr().err.strip() == "bearingheat plot: error: --row 5: the table has rows 0 to 1"
+    assert main(["plot", str(path), "--id", "zz", "-o", str(tmp_path / "x.png")]) == 2
+    assert capsys.readouterr().err.strip() == f"bearingheat plot: error: {path}: no row with id 'zz'"
+    assert main(["plot", str(tmp_path / "none.csv"), "-o", str(tmp_path / "x.png")]) == 2
+    assert capsys.readouterr().err.strip() == f"bearingheat plot: error: {tmp_path / 'none.csv'}: no such file"
+
+
+def test_plot_row_in_error_exits_1(tmp_path, capsys):
+    path = plot_table(tmp_path, **{"Fr [kN]": [-2, 5]})
+    assert main(["plot", str(path), "--row", "0", "-o", str(tmp_path / "x.png")]) == 1
+    assert capsys.readouterr().err.startswith("bearingheat plot: row in error: Fr [kN]: -2 must be >= 0")
+
+
+def test_plot_subprocess(tmp_path):
+    path = plot_table(tmp_path)
+    png = tmp_path / "sub.png"
+    done = subprocess.run([sys.executable, "-m", "bearingheat", "plot", str(path), "-o", str(png)],
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert png.is_file()

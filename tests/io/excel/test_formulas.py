@@ -1,0 +1,174 @@
+"""Live formulas (calc --formulas): their text, and their values recalculated by LibreOffice.
+
+The LibreOffice test runs wherever ``soffice`` is installed; under CI=true it
+must run (.ci/run installs libreoffice-calc-nogui), elsewhere it skips with
+the reason.
+"""
+from __future__ import annotations
+
+import math
+import os
+
+import numpy as np
+import openpyxl
+import pytest
+from excel_helpers import EXAMPLE_XLSX, make_workbook
+
+from bearingheat.errors import ExcelError
+from bearingheat.io.excel.formulas import excel_number, unit_factor
+from bearingheat.io.excel.libreoffice import convert, soffice
+from bearingheat.io.excel.workbook import calc_workbook
+
+LIVE = ["P1 [N]", "M0 [N*mm]", "M1 [N*mm]", "M2 [N*mm]", "MR [N*mm]", "NR [W]"]
+INCH = 25.4
+LBF = 4.4482216152605
+
+# a sheet in mixed units: D in inches, n in Hz, Fr in lbf, nu in cSt; every M1 load rule of seed 002
+HEADER = ["id", "designation", "d", "D", "B", "n", "Fr", "Fa", "nu", "lubrication", "arrangement", "C0", "Y", "e",
+          "X0", "Y0", "f2"]
+UNITS = ["-", "-", "mm", "in", "mm", "Hz", "lbf", "kN", "cSt", "-", "-", "kN", "1", "1", "1", "1", "1"]
+
+
+def row(id_, designation, d, D_mm, n_rpm, Fr_N, Fa_kN, nu, lubrication, arrangement="single", C0=None, Y=None,
+        e=None, X0=None, Y0=None, f2=None, B=None):
+    return [id_, designation, d, D_mm / INCH, B, n_rpm / 60.0, Fr_N / LBF, Fa_kN, nu, lubrication, arrangement,
+            C0, Y, e, X0, Y0, f2]
+
+
+ROWS = [
+    row("radial ball", "6208", 40, 80, 1480, 3200, 0.9, 40, "oil_bath", C0=18),
+    row("cylindrical, Fr", "NU208-E", 40, 80, 1480, 4100, 0, 40, "oil_bath", C0=53),
+    row("tapered", "30208-A", 40, 80, 310, 6000, 2.4, 40, "oil_bath", C0=66, Y=1.6),
+    row("angular pair", "7210-B", 50, 90, 6000, 1500, 2.0, 22, "grease", "paired", C0=28.5, Y0=0.26),
+    row("spherical, high Fa", "22210-E", 50, 90, 1000, 5000, 3.0, 60, "oil_bath", C0=98, e=0.24, X0=1, Y0=2.8),
+    row("spherical, low Fa", "22210-E", 50, 90, 1000, 9000, 0.5, 60, "oil_bath", C0=98, e=0.24, X0=1, Y0=2.8),
+    row("four point", "QJ210", 50, 90, 3000, 2000, 3.0, 30, "oil_mist", C0=44, X0=1, Y0=0.66),
+    row("NJ with f2", "NJ210-E", 50, 90, 2000, 8000, 1.5, 30, "circulating_oil", f2=0.006),
+    row("thrust ball", "51210", 50, 78, 1200, 0, 4.0, 50, "oil_bath", C0=110),
+    row("low regime", "6210", 50, 90, 100, 1000, 0, 5, "grease", C0=24),
+    row("bore from designation", "6208", None, 80, 1480, 3200, 0, 40, "oil_bath", C0=18),
+    row("needle", "HK2016", 20, 26, 3000, 1500, 0, 20, "grease", B=16),
+    row("bad load", "6208", 40, 80, 1480, 1, 0, 40, "oil_bath", C0=18),
+]
+ROWS[-1][6] = "abc"
+
+
+def require_soffice():
+    if soffice() is not None:
+        return
+    if os.environ.get("CI") == "true":
+        pytest.fail("CI=true but LibreOffice (soffice) is not installed; .ci/run installs libreoffice-calc-nogui")
+    pytest.skip("LibreOffice (soffice) is not installed: the live formulas cannot be recalculated "
+                "(apt-get install libreoffice-calc-nogui)")
+
+
+def results_by_header(path) -> tuple[list, list[list]]:
+    ws = openpyxl.load_workbook(path, data_only=True)["Results"]
+    header = [c.value for c in ws[1]]
+    units = [c.value for c in ws[2]]
+    names = [f"{h} [{u}]" if u not in ("-", "1") else h for h, u in zip(header, units)]
+    return names, [list(r) for r in ws.iter_rows(min_row=3, values_only=True)]
+
+
+def assert_formulas_equal_python(recalculated, result):
+    names, rows = results_by_header(recalculated)
+    assert len(rows) == len(result)
+    checked = 0
+    for i, values in enumerate(rows):
+        got = dict(zip(names, values))
+        for column in LIVE:
+            expected = result[column].iloc[i]
+            if result["status"].iloc[i] == "error" or (isinstance(expected, float) and math.isnan(expected)):
+                assert got[column] is None, (i, column, got[column])
+                continue
+            assert isinstance(got[column], (int, float)), (i, column, got[column])
+            assert got[column] == pytest.approx(expected, rel=1e-9, abs=1e-12), (i, column)
+            checked += 1
+    return checked
+
+
+@pytest.fixture(scope="module")
+def recalculated(tmp_path_factory):
+    """The formula workbook, a copy with new n, ν and loads typed into 'Supports', both recalculated."""
+    require_soffice()
+    folder = tmp_path_factory.mktemp("formulas")
+    source = make_workbook(folder / "mixed.xlsx", HEADER, UNITS, ROWS)
+    live = folder / "live.xlsx"
+    run = calc_workbook(source, live, formulas=True)
+    edited = folder / "edited.xlsx"
+    workbook = openpyxl.load_workbook(live)
+    ws = workbook["Supports"]
+    letters = {name: openpyxl.utils.get_column_letter(i) for i, name in enumerate(HEADER, start=1)}
+    for excel_row in range(3, 3 + len(ROWS)):
+        label = ws[f"A{excel_row}"].value
+        ws[f"{letters['n']}{excel_row}"] = ws[f"{letters['n']}{excel_row}"].value * 1.7
+        # M0 changes formula at ν·n = 2000: the radial ball row drops below it, the low regime row rises above
+        nu = {"radial ball": 0.5, "low regime": 20}.get(label, 2 * ws[f"{letters['nu']}{excel_row}"].value)
+        ws[f"{letters['nu']}{excel_row}"] = nu
+        if label in ("cylindrical, Fr", "tapered", "NJ with f2", "needle"):  # f1 does not depend on the load
+            ws[f"{letters['Fr']}{excel_row}"] = ws[f"{letters['Fr']}{excel_row}"].value * 1.3
+        if label in ("tapered", "NJ with f2"):
+            ws[f"{letters['Fa']}{excel_row}"] = ws[f"{letters['Fa']}{excel_row}"].value * 0.6
+    workbook.save(edited)
+    edited_result = calc_workbook(edited).result
+    out = convert([live, edited], "xlsx", folder / "recalculated")
+    return run.result, out[0], edited_result, out[1]
+
+
+@pytest.mark.integration
+def test_libreoffice_recalculation_equals_python(recalculated):
+    result, path, _, _ = recalculated
+    assert (result["status"] == "error").sum() == 1
+    assert assert_formulas_equal_python(path, result) >= 5 * 12
+
+
+@pytest.mark.integration
+def test_changed_inputs_update_the_formulas(recalculated):
+    original, _, edited_result, path = recalculated
+    assert assert_formulas_equal_python(path, edited_result) >= 5 * 12
+    assert not np.allclose(edited_result["MR [N*mm]"].dropna(), original["MR [N*mm]"].dropna())
+    nu_n = edited_result["nu"] * edited_result["n"] * 60
+    regime_before = original["nu"] * original["n"] * 60 >= 2000
+    assert list((nu_n >= 2000) != regime_before).count(True) == 2  # both regimes of M0 were crossed
+
+
+def test_formula_text_of_a_radial_ball_bearing(tmp_path):
+    out = tmp_path / "live.xlsx"
+    calc_workbook(EXAMPLE_XLSX, out, formulas=True)
+    ws = openpyxl.load_workbook(out)["Results"]
+    header = [c.value for c in ws[1]]
+    cell = {name: ws.cell(3, header.index(name) + 1).value for name in header}
+    assert header[:7] == ["row", "id", "designation", "f0", "f1", "f2", "M1 load"]
+    assert cell["M1 load"] == "P1: 3.3·Fa − 0.1·Fr (P1 >= Fr)"
+    assert cell["P1"] == "=MAX(3.3*(Supports!G3*1000)-0.1*(Supports!F3*1000),(Supports!F3*1000))"
+    assert cell["M0"] == ("=D3*IF(Supports!H3*Supports!E3>=2000,(Supports!H3*Supports!E3)^(2/3),160)"
+                          "*((Supports!C3+Supports!D3)/2)^3*1E-07")
+    assert cell["M1"] == "=E3*I3*((Supports!C3+Supports!D3)/2)"
+    assert cell["M2"] == "=F3*(Supports!G3*1000)*((Supports!C3+Supports!D3)/2)"
+    assert cell["MR"] == "=J3+K3+L3"
+    assert cell["NR"] == "=M3*Supports!E3/9550"
+    second = {name: ws.cell(4, header.index(name) + 1).value for name in header}  # NU208-E: M1 = f1*Fr*dM
+    assert second["M1 load"] == "Fr" and second["P1"] is None
+    assert second["M1"] == "=E4*(Supports!F4*1000)*((Supports!C4+Supports!D4)/2)"
+    assert ws.cell(3, header.index("M0") + 1).style == "bearingheat formula"
+
+
+def test_formulas_cannot_express_effects(tmp_path):
+    with pytest.raises(ExcelError, match="--formulas cannot express the fitted effect of --effects; "
+                                         "use one of them"):
+        calc_workbook(EXAMPLE_XLSX, str(tmp_path / "OUT.xlsx"), formulas=True, effects=object())
+    assert not (tmp_path / "OUT.xlsx").exists()
+
+
+def test_unit_factors_from_pint():
+    assert unit_factor("lbf", "N", "Fr") == pytest.approx(LBF, rel=1e-15)
+    assert unit_factor("Hz", "1/min", "n") == 60.0
+    assert unit_factor("rad/s", "1/min", "n") == pytest.approx(60 / (2 * math.pi), rel=1e-15)
+    assert unit_factor("cSt", "mm^2/s", "nu") == pytest.approx(1.0, rel=1e-15)
+    assert unit_factor("in", "mm", "D") == pytest.approx(INCH, rel=1e-15)
+    assert unit_factor("%", "1", "Y") == pytest.approx(0.01, rel=1e-15)
+
+
+@pytest.mark.parametrize("value", [1000.0, 4.4482216152605, 1e-07, 2.0 / 3.0, 25.4, 123456789.0, 1e22])
+def test_excel_number_reads_back_exactly(value):
+    assert float(excel_number(value).replace("E", "e")) == value

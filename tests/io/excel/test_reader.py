@@ -1,0 +1,159 @@
+"""Reading supports from a sheet: header and units rows, merged cells, cached formula values, messages citing cells."""
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import openpyxl
+import pandas as pd
+import pytest
+from excel_helpers import EXAMPLE_CSV, EXAMPLE_XLSX, HEADER, UNITS, csv_result, gearbox_rows, make_workbook, \
+    set_cached_value
+
+from bearingheat.errors import ExcelError
+from bearingheat.io.excel.reader import read_supports
+from bearingheat.io.excel.workbook import calc_workbook
+
+
+def test_read_example_gives_rows_units_and_cells():
+    table, info = read_supports(EXAMPLE_XLSX)
+    assert info.sheet == "Supports" and info.header_row == 1 and info.units_row == 2
+    assert info.rows == [3, 4, 5, 6, 7, 8]
+    assert info.units["Fr"] == "kN" and info.units["n"] == "rpm" and info.units["nu"] == "mm^2/s"
+    assert info.cell("Fr", 4) == "Supports!F7"
+    assert info.cell("designation", 0) == "Supports!B3"
+    csv = pd.read_csv(EXAMPLE_CSV)
+    assert table["designation"].tolist() == csv["designation"].tolist()
+    np.testing.assert_array_equal(table["Fr"].to_numpy(), csv["Fr [kN]"].to_numpy())
+
+
+def test_empty_rows_are_skipped(tmp_path):
+    rows = gearbox_rows()
+    blank = [None] * len(HEADER)
+    spaces = ["  "] + [None] * (len(HEADER) - 1)
+    path = make_workbook(tmp_path / "gaps.xlsx", rows=[rows[0], blank, rows[1], spaces, blank, rows[2]])
+    table, info = read_supports(path)
+    assert info.rows == [3, 5, 8]
+    assert table["designation"].tolist() == ["6208", "NU208-E", "30208-A"]
+    assert (calc_workbook(path).result["status"] == "ok").all()
+
+
+@pytest.mark.parametrize("spelling", ["1/min", "min^-1", "rpm", "U/min", " rpm ", "r/min"])
+def test_speed_unit_spellings(tmp_path, spelling):
+    units = list(UNITS)
+    units[HEADER.index("n")] = spelling
+    path = make_workbook(tmp_path / "n.xlsx", units=units)
+    result = calc_workbook(path).result
+    np.testing.assert_allclose(result["MR [N*mm]"], csv_result()["MR [N*mm]"], rtol=1e-12)
+
+
+def test_hz_and_lbf_are_honoured(tmp_path):
+    rows = gearbox_rows()
+    units = list(UNITS)
+    units[HEADER.index("n")] = "Hz"
+    units[HEADER.index("Fr")] = "lbf"
+    units[HEADER.index("Fa")] = "N"
+    lbf = 4.4482216152605
+    converted = []
+    for row in rows:
+        row = list(row)
+        row[4] = row[4] / 60.0
+        row[5] = row[5] * 1000.0 / lbf
+        row[6] = row[6] * 1000.0
+        converted.append(row)
+    path = make_workbook(tmp_path / "lbf.xlsx", units=units, rows=converted)
+    result = calc_workbook(path).result
+    np.testing.assert_allclose(result["MR [N*mm]"], csv_result()["MR [N*mm]"], rtol=1e-9)
+
+
+def test_units_in_headers_without_units_row_and_trailing_spaces(tmp_path):
+    header = ["id ", "designation", "d [mm]", "D [mm] ", "n [U/min]", "Fr [kN]", "Fa [kN]", "nu [cSt]",
+              " lubrication", "arrangement", "C0 [kN]", "Y", "Y0"]
+    path = make_workbook(tmp_path / "headers.xlsx", header=header, units=None)
+    table, info = read_supports(path)
+    assert info.units_row is None and info.rows[0] == 2
+    assert "D [mm]" in table.columns and "lubrication" in table.columns
+    result = calc_workbook(path).result
+    np.testing.assert_allclose(result["MR [N*mm]"], csv_result()["MR [N*mm]"], rtol=1e-12)
+
+
+def test_merged_header_cells_and_title_rows(tmp_path):
+    path = tmp_path / "merged.xlsx"
+    workbook = openpyxl.Workbook()
+    ws = workbook.active
+    ws.title = "Shaft 1"
+    ws["A1"] = "Gearbox G-17, intermediate shaft"
+    ws.merge_cells("A1:F1")
+    ws.append([])  # row 2 blank
+    # row 3: the header; text columns merged down over the units row (row 4); 'Loads' above Fr, Fa
+    header = ["id", "designation", "d", "D", "n", "Fr", "Fa", "nu", "lubrication", "arrangement", "C0", "Y", "Y0"]
+    for col, name in enumerate(header, start=1):
+        ws.cell(3, col, name)
+    for col, unit in enumerate(UNITS, start=1):
+        if unit != "-":
+            ws.cell(4, col, unit)
+    for letter in "ABIJ":
+        ws.merge_cells(f"{letter}3:{letter}4")
+    for i, row in enumerate(gearbox_rows(), start=5):
+        for col, value in enumerate(row, start=1):
+            ws.cell(i, col, value)
+    workbook.save(path)
+    table, info = read_supports(path)
+    assert (info.header_row, info.units_row, info.rows[0]) == (3, 4, 5)
+    assert "designation" not in info.units and info.units["Fr"] == "kN"
+    assert info.cell("Fr", 0) == "'Shaft 1'!F5"
+    run = calc_workbook(path, tmp_path / "out.xlsx")
+    assert run.results_sheet == "Shaft 1 results"
+    np.testing.assert_allclose(run.result["MR [N*mm]"], csv_result()["MR [N*mm]"], rtol=1e-12)
+
+
+def test_formula_with_saved_value_is_read(tmp_path):
+    rows = gearbox_rows()
+    rows[1][4] = "=E3"
+    path = make_workbook(tmp_path / "cached.xlsx", rows=rows)
+    set_cached_value(path, 1, "E4", "1480")
+    result = calc_workbook(path).result
+    np.testing.assert_allclose(result["MR [N*mm]"], csv_result()["MR [N*mm]"], rtol=1e-12)
+
+
+def test_header_unit_contradicting_units_row(tmp_path):
+    header = list(HEADER)
+    header[HEADER.index("Fr")] = "Fr [N]"
+    path = make_workbook(tmp_path / "twice.xlsx", header=header)
+    with pytest.raises(ExcelError, match=re.escape(
+            "Supports!F2: unit 'kN' contradicts the header 'Fr [N]'; keep one of them")):
+        read_supports(path)
+
+
+def test_sheet_without_header_row(tmp_path):
+    path = make_workbook(tmp_path / "none.xlsx", header=["a", "b"], units=None, rows=[[1, 2]])
+    with pytest.raises(ExcelError, match=re.escape(
+            "sheet 'Supports': no header row in rows 1-20; a header row names the columns, e.g. designation, "
+            "d, D, n, Fr, nu (docs/excel.md lists them)")):
+        read_supports(path)
+    path = make_workbook(tmp_path / "none.xlsx", header=["a", "b"], units=None, rows=[[1, 2]], sheet="Sheet1")
+    with pytest.raises(ExcelError, match=re.escape(
+            "none.xlsx: no sheet has a header row of supports (designation, d, D, n, Fr, nu ...); "
+            "name the sheet with --sheet")):
+        read_supports(path)
+
+
+def test_unknown_sheet(tmp_path):
+    path = make_workbook(tmp_path / "s.xlsx")
+    with pytest.raises(ExcelError, match=re.escape("s.xlsx has no sheet 'Loads'; its sheets are Supports")):
+        read_supports(path, sheet="Loads")
+
+
+def test_duplicate_header(tmp_path):
+    header = HEADER + ["Fr"]
+    path = make_workbook(tmp_path / "dup.xlsx", header=header, units=UNITS + ["kN"],
+                         rows=[r + [1] for r in gearbox_rows()])
+    with pytest.raises(ExcelError, match=re.escape("Supports!N1: column 'Fr' appears twice (also in column F)")):
+        read_supports(path)
+
+
+def test_not_a_workbook(tmp_path):
+    path = tmp_path / "fake.xlsx"
+    path.write_text("id,designation\n")
+    with pytest.raises(ExcelError, match=re.escape(f"{path}: not a readable Excel workbook")):
+        read_supports(path)

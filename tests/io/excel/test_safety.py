@@ -1,0 +1,91 @@
+"""No data loss: in_place keeps everything else, writes atomically, and refuses what openpyxl would drop."""
+from __future__ import annotations
+
+import os
+import zipfile
+
+import openpyxl
+import pytest
+from excel_helpers import digest, make_workbook, rich_workbook, vba_workbook
+
+from bearingheat.errors import ExcelError, WorkbookContentError
+from bearingheat.io.excel.safety import unsupported_content, workbook_fingerprint
+from bearingheat.io.excel.workbook import calc_workbook
+
+
+def test_in_place_replaces_the_results_sheet_where_it_was(tmp_path):
+    path = make_workbook(tmp_path / "again.xlsx")
+    workbook = openpyxl.load_workbook(path)
+    workbook.create_sheet("Notes")["A1"] = "keep me"
+    workbook.move_sheet("Notes", offset=-1)
+    workbook.save(path)
+    calc_workbook(path, in_place=True)
+    calc_workbook(path, in_place=True)
+    workbook = openpyxl.load_workbook(path)
+    assert workbook.sheetnames == ["Notes", "Supports", "Results"]
+    assert workbook["Notes"]["A1"].value == "keep me"
+    assert workbook["Results"].max_row == 8
+
+
+def test_output_leaves_the_input_untouched(tmp_path):
+    path = rich_workbook(tmp_path / "rich.xlsx")
+    before, stamp = digest(path), os.stat(path).st_mtime_ns
+    run = calc_workbook(path, tmp_path / "copy.xlsx")
+    assert (digest(path), os.stat(path).st_mtime_ns) == (before, stamp)
+    copy = workbook_fingerprint(tmp_path / "copy.xlsx", skip_sheets=("Results",))
+    original = workbook_fingerprint(path)
+    copy.pop("named_styles"), original.pop("named_styles")
+    assert copy == original
+    assert run.dropped == []
+
+
+def test_failed_save_leaves_the_workbook_and_no_temp_file(tmp_path, monkeypatch):
+    path = rich_workbook(tmp_path / "rich.xlsx")
+    before = digest(path)
+
+    def broken_save(self, filename):
+        with open(filename, "wb") as handle:
+            handle.write(b"PK half a workbook")
+        raise OSError("disk full")
+
+    monkeypatch.setattr(openpyxl.Workbook, "save", broken_save)
+    with pytest.raises(OSError, match="disk full"):
+        calc_workbook(path, in_place=True)
+    assert digest(path) == before
+    assert sorted(os.listdir(tmp_path)) == ["rich.xlsx"]
+
+
+def test_in_place_keeps_file_permissions(tmp_path):
+    path = make_workbook(tmp_path / "perm.xlsx")
+    os.chmod(path, 0o640)
+    calc_workbook(path, in_place=True)
+    assert os.stat(path).st_mode & 0o777 == 0o640
+
+
+def test_in_place_keeps_vba_of_xlsm(tmp_path):
+    path = vba_workbook(tmp_path / "macro.xlsm")
+    calc_workbook(path, in_place=True)
+    with zipfile.ZipFile(path) as archive:
+        assert archive.read("xl/vbaProject.bin") == b"\xd0\xcf\x11\xe0 macro bytes"
+    assert "Results" in openpyxl.load_workbook(path, keep_vba=True).sheetnames
+
+
+def test_in_place_without_keep_vba_refuses(tmp_path):
+    path = vba_workbook(tmp_path / "macro.xlsm")
+    with pytest.raises(WorkbookContentError) as exc:
+        calc_workbook(path, in_place=True, keep_vba=False)
+    assert str(exc.value) == (f"{path}: --in-place refused, rewriting the workbook would lose its VBA macros "
+                              "(openpyxl cannot keep them); the file is unchanged. Write the results to a new "
+                              "workbook with -o OUTPUT.xlsx instead")
+
+
+def test_in_place_refuses_a_workbook_open_in_excel(tmp_path):
+    path = make_workbook(tmp_path / "open.xlsx")
+    (tmp_path / "~$open.xlsx").write_bytes(b"owner")
+    with pytest.raises(ExcelError) as exc:
+        calc_workbook(path, in_place=True)
+    assert str(exc.value) == f"{path} is open in Excel (lock file ~$open.xlsx); close it and run again"
+
+
+def test_unsupported_content_of_a_plain_workbook_is_empty(tmp_path):
+    assert unsupported_content(rich_workbook(tmp_path / "rich.xlsx")) == []

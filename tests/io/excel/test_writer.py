@@ -1,0 +1,60 @@
+"""Writing results sheets: header and units rows, extra columns, the pint-pandas round trip, other sheets kept."""
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import openpyxl
+import pandas as pd
+import pytest
+from excel_helpers import csv_result, make_workbook
+
+from bearingheat.errors import ExcelError
+from bearingheat.io.excel.reader import read_supports, with_units
+from bearingheat.io.excel.writer import write_results, write_results_workbook
+
+
+def test_extra_result_columns_are_written_generically(tmp_path):
+    frame = pd.DataFrame({"id": ["a", "b"], "MR [N*mm]": [1.5, 2.5], "T_op [degC]": [61.0, np.nan],
+                          "Q_oil [W]": [3.0, 4.0], "regime": ["dry", "wet"], "status": ["ok", "error"],
+                          "message": ["", "x"]})
+    path = write_results(frame, tmp_path / "extra.xlsx")
+    ws = openpyxl.load_workbook(path)["Results"]
+    assert [c.value for c in ws[1]] == ["id", "MR", "T_op", "Q_oil", "regime", "status", "message"]
+    assert [c.value for c in ws[2]] == ["-", "N*mm", "degC", "W", "-", "-", "-"]
+    assert [c.value for c in ws[4]] == ["b", 2.5, None, 4.0, "wet", "error", "x"]
+
+
+def test_pint_dataframe_round_trip(tmp_path):
+    pytest.importorskip("pint_pandas")
+    frame = pd.DataFrame({
+        "id": ["input A", "input B"],
+        "designation": ["6208", "NU208-E"],
+        "d": pd.Series([40.0, 40.0], dtype="pint[mm]"),
+        "Fr": pd.Series([3.2, 4.1], dtype="pint[kN]"),
+        "n": pd.Series([1480.0, 1480.0], dtype="pint[rpm]"),
+        "nu": pd.Series([40.0, 22.5], dtype="pint[mm^2/s]"),
+        "Y": [np.nan, 1.6],
+        "count": [1, 2],
+    })
+    path = write_results(frame, tmp_path / "pint.xlsx", sheet="Supports")
+    table, info = read_supports(path, sheet="Supports")
+    assert info.units == {"id": "-", "designation": "-", "d": "mm", "Fr": "kN", "n": "rpm", "nu": "mm^2/s",
+                          "Y": "1", "count": "1"}
+    back = with_units(table, info.units)
+    pd.testing.assert_frame_equal(back, frame)
+
+
+def test_write_results_keeps_other_sheets(tmp_path):
+    path = make_workbook(tmp_path / "keep.xlsx")
+    write_results(pd.DataFrame({"x [mm]": [1.0]}), path, sheet="Notes")
+    workbook = openpyxl.load_workbook(path)
+    assert workbook.sheetnames == ["Supports", "Notes"]
+    assert workbook["Supports"]["B3"].value == "6208"
+
+
+def test_results_of_a_csv_go_to_a_new_xlsx_only(tmp_path):
+    with pytest.raises(ExcelError, match=re.escape(f"{tmp_path / 'r.xlsm'}: results of a CSV are written to a "
+                                                   "new .xlsx workbook")):
+        write_results_workbook(csv_result(), tmp_path / "r.xlsm")
+    assert not (tmp_path / "r.xlsm").exists()

@@ -1,0 +1,77 @@
+"""The docs build without warnings, the README example runs, and the wheel ships the tables."""
+import doctest
+import os
+import subprocess
+import sys
+import zipfile
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def test_docs_build_without_warnings(tmp_path):
+    proc = subprocess.run([sys.executable, "-m", "sphinx", "-W", "-q", "-b", "html", str(ROOT / "docs"),
+                           str(tmp_path / "html")], capture_output=True, text=True, check=False)
+    assert proc.returncode == 0, proc.stderr
+    assert (tmp_path / "html" / "friction.html").exists()
+
+
+def test_readme_examples_run():
+    result = doctest.testfile(str(ROOT / "README.md"), module_relative=False,
+                              optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
+    assert result.attempted > 0 and result.failed == 0
+
+
+def test_readme_starts_with_the_two_commands():
+    lines = [line for line in (ROOT / "README.md").read_text().splitlines() if line.strip()]
+    fence = lines.index("```sh")
+    assert lines[fence + 1:fence + 3] == ["make demo", "make test"]
+
+
+@pytest.mark.integration
+def test_wheel_ships_every_table(tmp_path):
+    proc = subprocess.run([sys.executable, "-m", "pip", "wheel", "--no-deps", "-q", "-w", str(tmp_path), str(ROOT)],
+                          capture_output=True, text=True, check=False, env={**os.environ, "PIP_NO_INPUT": "1"})
+    assert proc.returncode == 0, proc.stderr
+    wheel = next(tmp_path.glob("bearingheat-*.whl"))
+    names = set(zipfile.ZipFile(wheel).namelist())
+    for table in (ROOT / "tables").glob("*.csv"):
+        assert f"bearingheat/tables/{table.name}" in names
+
+
+@pytest.mark.integration
+def test_wheel_installs_into_a_fresh_venv_and_runs_the_demo(tmp_path):
+    """The built wheel (not the editable checkout) holds every subpackage and table the demo needs."""
+    import sysconfig
+    import venv
+
+    proc = subprocess.run([sys.executable, "-m", "pip", "wheel", "--no-deps", "-q", "-w", str(tmp_path / "dist"),
+                           str(ROOT)], capture_output=True, text=True, check=False,
+                          env={**os.environ, "PIP_NO_INPUT": "1"})
+    assert proc.returncode == 0, proc.stderr
+    wheel = next((tmp_path / "dist").glob("bearingheat-*.whl"))
+    names = set(zipfile.ZipFile(wheel).namelist())
+    for package in sorted(p.parent for p in (ROOT / "bearingheat").rglob("__init__.py")):
+        relative = package.relative_to(ROOT).as_posix()
+        assert f"{relative}/__init__.py" in names, relative
+    env_dir = tmp_path / "venv"
+    venv.EnvBuilder(with_pip=False).create(env_dir)
+    python = env_dir / "bin" / "python"
+    site = subprocess.run([str(python), "-c", "import sysconfig; print(sysconfig.get_paths()['purelib'])"],
+                          capture_output=True, text=True, check=True).stdout.strip()
+    # the dependencies come from this interpreter's site-packages (a path entry, so its editable finder
+    # of bearingheat is not activated); bearingheat itself only from the wheel
+    (Path(site) / "dependencies.pth").write_text(sysconfig.get_paths()["purelib"] + "\n")
+    install = subprocess.run([sys.executable, "-m", "pip", "install", "--no-deps", "--no-index", "-q", "--target",
+                              site, str(wheel)], capture_output=True, text=True, check=False)
+    assert install.returncode == 0, install.stderr
+    out = tmp_path / "results.csv"
+    run = subprocess.run([str(python), "-m", "bearingheat", "calc", str(ROOT / "examples" / "gearbox_shaft.csv"),
+                          "-o", str(out)], capture_output=True, text=True, cwd=tmp_path, check=False)
+    assert run.returncode == 0, run.stderr
+    assert "6 supports: 6 ok, 0 warning, 0 error" in run.stdout
+    where = subprocess.run([str(python), "-c", "import bearingheat; print(bearingheat.__file__)"],
+                           capture_output=True, text=True, cwd=tmp_path, check=True).stdout
+    assert where.startswith(site)
