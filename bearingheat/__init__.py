@@ -1,23 +1,20 @@
 """bearingheat: friction torque, power loss and thermal speed limits of shaft supports.
 
-Python entry points:
+The public face: the unit-aware functions of :mod:`bearingheat.api`, :func:`calc`
+over a table of supports, and the errors of :mod:`bearingheat.errors`.
 
-- :func:`friction_torque` — one bearing, unit-aware (pint), scalar or vectorised.
+- :func:`friction_torque`, :func:`heat_balance`, ... — one bearing, unit-aware (pint), scalar or vectorised.
 - :func:`calc` — a DataFrame of supports with ``name [unit]`` headers, as ``bearingheat calc``.
-- :mod:`bearingheat.kernels.friction` — the kernels in catalogue units (mm, N, 1/min, mm²/s, N·mm, W).
+- The layers below (``catalogue``, ``kernels``, ``calc``, ``analysis``, ``io``) are documented in
+  ``docs/architecture.md``.
 """
-from bearingheat.api.friction import FrictionResult, friction_torque
+from bearingheat import errors
+from bearingheat.api import *  # noqa: F401,F403  (the public API is api.__all__)
+from bearingheat.api import __all__ as _api_all
 from bearingheat.calc.table import calc
-from bearingheat.catalogue.designation import decode_gost, parse_designation
-from bearingheat.catalogue.f2chart import F2Chart
-from bearingheat.errors import (BearingheatError, BearingheatWarning, DesignationError, F2ChartError,
-                                FrictionInputError, InputError, UnitError)
+from bearingheat.errors import *  # noqa: F401,F403  (every error and warning class)
+from bearingheat.errors import __all__ as _errors_all
 
 __version__ = "0.1.0"
 
-__all__ = [
-    "friction_torque", "FrictionResult", "FrictionInputError",
-    "calc", "InputError",
-    "parse_designation", "decode_gost", "DesignationError",
-    "F2Chart", "F2ChartError", "UnitError", "BearingheatError", "BearingheatWarning",
-]
+__all__ = [*_api_all, "calc", "errors", *_errors_all]

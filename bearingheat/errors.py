@@ -37,6 +37,7 @@ __all__ = [
     "DiagnoseError",
     "ExcelError",
     "WorkbookContentError",
+    "UsageError",
     "ViscosityRangeWarning",
 ]
 
@@ -133,6 +134,10 @@ class ExcelError(InputError):
 
 class WorkbookContentError(ExcelError):
     """A workbook whose content a rewrite would lose; it is refused and left unchanged."""
+
+
+class UsageError(BearingheatError):
+    """A command-line argument that cannot be used (the command line reports it and exits with code 2)."""
 
 
 class ViscosityRangeWarning(BearingheatWarning):

@@ -118,7 +118,7 @@ def audit_coefficients(table: pd.DataFrame, *, confidence: float = CONFIDENCE) -
         raise AuditError(str(exc)) from exc
     frame = measured.frame
     arrays, _ = catalogue_arrays(frame)
-    m2_rows = arrays["m2"] & (arrays["Fa"] > 0)
+    m2_rows = arrays.m2 & (arrays.Fa > 0)
     f2_given = "f2" in frame.columns
     if m2_rows.any():
         f2 = pd.to_numeric(frame["f2"], errors="coerce") if f2_given else pd.Series(np.nan, index=frame.index)
@@ -134,13 +134,13 @@ def audit_coefficients(table: pd.DataFrame, *, confidence: float = CONFIDENCE) -
         X0 = data.M0 / data.f0
         user_f1 = pd.to_numeric(frame["f1"], errors="coerce").to_numpy(dtype=float)[rows] \
             if "f1" in frame.columns else np.full(len(data), np.nan)
-        a1 = np.where(np.isnan(user_f1), a["f1_a"], user_f1)
+        a1 = np.where(np.isnan(user_f1), a.f1_a, user_f1)
         X1 = data.M1 / a1
     table_f2 = pd.to_numeric(frame["f2"], errors="coerce").to_numpy(dtype=float)[rows] if f2_given \
         else np.full(len(data), np.nan)
-    carries_m2 = a["m2"] & (data.Fa > 0)
+    carries_m2 = a.m2 & (data.Fa > 0)
     X2 = np.where(carries_m2, data.Fa * data.dM, 0.0)
-    basis_ratio = (a["f1_basis"] > 0) & np.isnan(user_f1)
+    basis_ratio = (a.f1_basis > 0) & np.isnan(user_f1)
     out = []
     for code, name in enumerate(data.bearing_names):
         mine = data.bearing == code

@@ -39,6 +39,7 @@ from scipy import stats
 from bearingheat.analysis.effects import CANDIDATES, EFFECT_NAMES, ModelData, bearing_keys, catalogue_arrays
 from bearingheat.calc.contract import parse_header
 from bearingheat.calc.models import compute_supports
+from bearingheat.calc.supports import SupportArrays
 from bearingheat.calc.table import to_catalogue_units
 from bearingheat.errors import DiagnoseError, InputError, UnitError
 from bearingheat.kernels import friction
@@ -190,25 +191,25 @@ def model_data(measured: MeasuredData) -> tuple[ModelData, np.ndarray, list[str]
     arrays, unresolved = catalogue_arrays(frame)
     usable &= ~unresolved
     rows = np.flatnonzero(usable)
-    a = {k: (v[rows] if isinstance(v, np.ndarray) else [v[i] for i in rows]) for k, v in arrays.items()}
+    a = arrays.take(rows)
     names_all = bearing_keys(frame)
     codes, names = pd.factorize(pd.Series(names_all[rows], dtype=object), sort=True)
     load = _load_column(results, a, rows)
     data = ModelData(
         M=measured.M[rows], M0=results["M0"].to_numpy(dtype=float)[rows],
         M1=results["M1"].to_numpy(dtype=float)[rows], M2=results["M2"].to_numpy(dtype=float)[rows],
-        f0=results["f0"].to_numpy(dtype=float)[rows], n=a["n"], nu=a["nu"],
-        dM=friction.mean_diameter(a["d"], a["D"]), Fr=a["Fr"], Fa=a["Fa"], load=load,
+        f0=results["f0"].to_numpy(dtype=float)[rows], n=a.n, nu=a.nu,
+        dM=friction.mean_diameter(a.d, a.D), Fr=a.Fr, Fa=a.Fa, load=load,
         t=measured.t[rows], T_oil=measured.T_oil[rows], bearing=codes.astype(int),
         bearing_names=[str(n) for n in names], arrays=a,
     )
     return data, rows, excluded
 
 
-def _load_column(results: pd.DataFrame, a: dict, rows: np.ndarray) -> np.ndarray:
+def _load_column(results: pd.DataFrame, a: SupportArrays, rows: np.ndarray) -> np.ndarray:
     """The load M1 works with: P1, or F (Fr of radial, Fa of thrust bearings)."""
     P1 = results["P1"].to_numpy(dtype=float)[rows]
-    return np.where(~np.isnan(P1), P1, np.where(a["m1_load"] == "Fa", a["Fa"], a["Fr"]))
+    return np.where(~np.isnan(P1), P1, np.where(a.m1_load == "Fa", a.Fa, a.Fr))
 
 
 # ---------------------------------------------------------------------------------------------

@@ -31,7 +31,6 @@ model instead of bending it; the significance rule lives in
 """
 from __future__ import annotations
 
-import dataclasses
 import math
 from dataclasses import dataclass, field
 
@@ -41,10 +40,7 @@ from scipy import optimize
 
 from bearingheat.calc.friction import evaluate_catalogue_model
 from bearingheat.calc.messages import Labels
-from bearingheat.calc.supports import SupportArrays, bearing_constants
-from bearingheat.catalogue.contact import y0_for_contact_angle
-from bearingheat.catalogue.friction import resolve
-from bearingheat.errors import ContactInputError, DesignationError
+from bearingheat.calc.supports import KEY_INPUTS, NUMBER_INPUTS, SupportArrays, build_support_arrays, number_column
 from bearingheat.kernels import friction
 from bearingheat.kernels.effects import (VISCOSITY_TEMPERATURE_COEFFICIENT, drag_loss_torque, heated_total_torque,
                                          seal_drag_torque)
@@ -65,119 +61,26 @@ __all__ = [
 # The catalogue model arrays (to re-evaluate M1 under a changed axial load)
 # ---------------------------------------------------------------------------------------------
 
-_TEXT_CONSTANTS = ("bearing_type", "f0_basis", "m1_load", "label", "seal", "prefix")
-_FLOAT_CONSTANTS = ("f0_table", "f1_a", "f1_x", "X0_table", "Y0_table", "kB")
+def catalogue_arrays(frame: pd.DataFrame) -> tuple[SupportArrays, np.ndarray]:
+    """The support arrays of a catalogue-unit frame, and the rows whose bearing did not resolve.
 
-
-def _text(frame: pd.DataFrame, name: str) -> list:
-    if name not in frame.columns:
-        return [None] * len(frame)
-    out = []
-    for v in frame[name]:
-        blank = v is None or (isinstance(v, float) and math.isnan(v)) or str(v).strip() == ""
-        out.append(None if blank else str(v).strip())
-    return out
-
-
-def _numbers(frame: pd.DataFrame, name: str) -> np.ndarray:
-    if name in frame.columns:
-        return pd.to_numeric(frame[name], errors="coerce").to_numpy(dtype=float)
-    return np.full(len(frame), np.nan)
-
-
-def catalogue_arrays(frame: pd.DataFrame) -> tuple[dict, np.ndarray]:
-    """The input arrays of the catalogue model (:func:`bearingheat.calc.friction.evaluate_catalogue_model`) for a
-    catalogue-unit frame.
-
-    Bearings are resolved once per distinct (designation, type, series,
-    lubrication, arrangement); rows that do not resolve are flagged in the
-    returned boolean mask. Designation notes are dropped (they are messages,
-    reported by :func:`compute_supports`), and Y0 of angular contact ball
-    bearings is filled from the contact angle once per bearing.
-
-    This is the one builder of the candidates' arrays (``diagnose``,
-    ``audit`` and :meth:`Candidate.apply` call it, :func:`evaluate_with_axial_load`
-    evaluates them); it gives way to
-    :func:`bearingheat.calc.supports.build_support_arrays`.
+    Built by the one builder, :func:`bearingheat.calc.supports.build_support_arrays`
+    (bearings resolved once per distinct key); a row whose designation,
+    lubrication or arrangement cannot be used is flagged in the mask.
     """
-    n_rows = len(frame)
-    keys = list(zip(_text(frame, "designation"), _text(frame, "type"), _text(frame, "series"),
-                    _text(frame, "lubrication"), [v or "single" for v in _text(frame, "arrangement")]))
-    codes, uniques = pd.factorize(pd.Series([repr(k) for k in keys]), sort=False)
-    first_row = {code: i for i, code in reversed(list(enumerate(codes)))}
-    rows = []
-    for code in range(len(uniques)):
-        designation, btype, series, lub, arrangement = keys[first_row[code]]
-        try:
-            resolved = resolve(designation, btype, series)
-        except DesignationError:
-            rows.append(None)
-            continue
-        const = bearing_constants(resolved, lub, arrangement)
-        const["bore"] = resolved.designation.bore if resolved.designation else None
-        const["width"] = resolved.designation.width if resolved.designation else None
-        rows.append(None if const["error"] else const)
-    unresolved = np.array([rows[c] is None for c in codes], dtype=bool)
-    blank = {"bearing_type": "", "f0_basis": "", "m1_load": "Fr", "label": "", "seal": "open", "prefix": "",
-             "f0_table": np.nan, "f1_a": np.nan, "f1_x": np.nan, "X0_table": np.nan, "Y0_table": np.nan,
-             "kB": np.nan, "f1_basis": 0, "p1_rule": None, "m2": False, "no_axial": False,
-             "contact_angle": None, "bore": None, "width": None}
-    per_code = [r if r is not None else blank for r in rows]
-    a: dict = {col: _numbers(frame, col) for col in
-               ("d", "D", "B", "C0", "Y", "e", "X0", "Y0", "alpha", "f0", "f1", "f2", "n", "nu")}
-    a["Fr"] = np.nan_to_num(_numbers(frame, "Fr"), nan=0.0)
-    a["Fa"] = np.nan_to_num(_numbers(frame, "Fa"), nan=0.0)
-
-    def spread(name, dtype=float):
-        values = np.array([r[name] if r[name] is not None else np.nan for r in per_code], dtype=dtype)
-        return values[codes]
-
-    a["d"] = np.where(np.isnan(a["d"]), spread("bore"), a["d"])
-    a["B"] = np.where(np.isnan(a["B"]), spread("width"), a["B"])
-    for col in _TEXT_CONSTANTS:
-        a[col] = np.array([str(r[col]) for r in per_code], dtype=object)[codes]
-    for col in _FLOAT_CONSTANTS:
-        a[col] = spread(col)
-    a["f1_basis"] = np.array([int(r["f1_basis"]) for r in per_code], dtype=int)[codes]
-    a["p1_rule"] = np.array([r["p1_rule"] if isinstance(r["p1_rule"], str) else "" for r in per_code],
-                            dtype=object)[codes]
-    a["m2"] = np.array([bool(r["m2"]) for r in per_code], dtype=bool)[codes]
-    a["no_axial"] = np.array([bool(r["no_axial"]) for r in per_code], dtype=bool)[codes]
-    a["contact_angle"] = spread("contact_angle")
-    a["notes"] = [()] * n_rows
-    _fill_angular_y0(a)
-    return a, unresolved
+    keys = frame[[c for c in KEY_INPUTS if c in frame.columns]]
+    supports = build_support_arrays(keys if len(keys.columns) else pd.DataFrame(index=frame.index),
+                                    {c: number_column(frame, c) for c in NUMBER_INPUTS})
+    unresolved = ~np.broadcast_to(supports.resolved, (supports.size,)) | \
+        (np.broadcast_to(supports.error, (supports.size,)) != "")
+    return supports, unresolved
 
 
-def _fill_angular_y0(a: dict) -> None:
-    rows = (a["bearing_type"] == "angular_contact_ball") & np.isnan(a["Y0"])
-    if not rows.any():
-        return
-    angle = np.where(np.isnan(a["alpha"]), a["contact_angle"], a["alpha"])
-    for value in np.unique(angle[rows & ~np.isnan(angle)]):
-        try:
-            y0 = float(y0_for_contact_angle(float(value)))
-        except ContactInputError:
-            continue  # outside seed 000 table 1: P0 under axial load stays unknown
-        a["Y0"] = np.where(rows & (angle == value), y0, a["Y0"])
-
-
-def _support_arrays(a: dict) -> SupportArrays:
-    """The catalogue arrays of :func:`catalogue_arrays` as the :class:`SupportArrays` the model evaluates."""
-    size = len(a["n"])
-    values = {f.name: a[f.name] for f in dataclasses.fields(SupportArrays) if f.name in a}
-    for name, default in (("size", size), ("series", ""), ("error", ""), ("resolved", True),
-                          ("plain", np.zeros(size, dtype=bool)), ("notes", [])):
-        values.setdefault(name, default)
-    return SupportArrays(**values)
-
-
-def evaluate_with_axial_load(a: dict, rows: np.ndarray, Fa: np.ndarray) -> np.ndarray:
-    """M1 + M2 [N·mm] of ``rows`` of the catalogue arrays with the axial load replaced by ``Fa``."""
-    sub = {k: (v[rows] if isinstance(v, np.ndarray) else [v[i] for i in rows]) for k, v in a.items()}
-    sub["Fa"] = np.asarray(Fa, dtype=float)
+def evaluate_with_axial_load(supports: SupportArrays, rows: np.ndarray, Fa: np.ndarray) -> np.ndarray:
+    """M1 + M2 [N·mm] of ``rows`` of the support arrays with the axial load replaced by ``Fa``."""
+    sub = supports.take(np.asarray(rows)).replace(Fa=np.asarray(Fa, dtype=float))
     with np.errstate(all="ignore"):
-        results, _ = evaluate_catalogue_model(_support_arrays(sub), Labels())
+        results, _ = evaluate_catalogue_model(sub, Labels())
     return results["M1"] + results["M2"]
 
 
@@ -218,7 +121,7 @@ class ModelData:
     """Measured torque with the catalogue model's kernel outputs, one entry per usable row.
 
     All arrays share one length; ``bearing`` holds integer codes into
-    ``bearing_names``. ``arrays`` are the catalogue arrays of the same rows
+    ``bearing_names``. ``arrays`` are the support arrays of the same rows
     (for the preload candidate), ``t`` and ``T_oil`` are NaN when not measured.
     """
 
@@ -237,7 +140,7 @@ class ModelData:
     T_oil: np.ndarray
     bearing: np.ndarray
     bearing_names: list[str]
-    arrays: dict = field(repr=False, default_factory=dict)
+    arrays: SupportArrays | None = field(repr=False, default=None)
 
     @property
     def MR(self) -> np.ndarray:
@@ -259,7 +162,7 @@ class CalcRows:
     ``MR`` starts as the catalogue model's torque and is changed in place;
     ``notes`` maps a row position to the note its message gets (every ``ok``
     row starts with the effect's description). ``keys`` are the rows'
-    :func:`bearing_keys`, ``arrays`` their :func:`catalogue_arrays`,
+    :func:`bearing_keys`, ``arrays`` their support arrays (:func:`catalogue_arrays`),
     ``results`` the calc results (read only).
     """
 
@@ -272,7 +175,7 @@ class CalcRows:
     nu: np.ndarray
     dM: np.ndarray
     keys: np.ndarray
-    arrays: dict = field(repr=False)
+    arrays: SupportArrays = field(repr=False)
     notes: dict[int, str] = field(default_factory=dict)
 
     @property
@@ -353,8 +256,8 @@ class Candidate:
         frame = frame.reset_index(drop=True)
         arrays, _ = catalogue_arrays(frame)
         rows = CalcRows(frame, results, ok, results["MR"].to_numpy(dtype=float).copy(),
-                        results["M0"].to_numpy(dtype=float), arrays["n"], arrays["nu"],
-                        friction.mean_diameter(arrays["d"], arrays["D"]), bearing_keys(frame), arrays,
+                        results["M0"].to_numpy(dtype=float), arrays.n, arrays.nu,
+                        friction.mean_diameter(arrays.d, arrays.D), bearing_keys(frame), arrays,
                         {int(i): note for i in np.flatnonzero(ok)})
         self.change(rows, parameters)
         index = results.index
@@ -579,11 +482,11 @@ class Preload(Candidate):
     def _axial_bearings(self, data):
         """Bearing codes whose M1 depends on the axial load (ball, tapered, spherical, thrust)."""
         a = data.arrays
-        depends = (a["m1_load"] != "Fr") & ~a["no_axial"]
+        depends = (a.m1_load != "Fr") & ~a.no_axial
         return np.unique(data.bearing[depends])
 
     def applicable(self, data):
-        if not data.arrays:
+        if data.arrays is None or data.arrays.size == 0:
             return "no catalogue arrays"
         if len(self._axial_bearings(data)) == 0:
             return "no bearing in the data has an M1 that depends on the axial load"
@@ -599,7 +502,7 @@ class Preload(Candidate):
             if len(mine) == 0:
                 continue
             M, M0 = data.M[mine], data.M0[mine]
-            C0 = np.nanmax(data.arrays["C0"][mine]) if np.any(~np.isnan(data.arrays["C0"][mine])) else np.nan
+            C0 = np.nanmax(data.arrays.C0[mine]) if np.any(~np.isnan(data.arrays.C0[mine])) else np.nan
             top = C0 if C0 > 0 else 10.0 * max(float(np.max(data.Fr[mine] + data.Fa[mine])), 1.0)
 
             def sse(force):
@@ -633,7 +536,7 @@ class Preload(Candidate):
         force = np.array([float(table.get(keys[i], 0.0)) for i in range(len(rows.frame))])
         active = np.flatnonzero(rows.ok & (force > 0))
         if len(active):
-            rows.MR[active] = rows.M0[active] + evaluate_with_axial_load(a, active, a["Fa"][active] + force[active])
+            rows.MR[active] = rows.M0[active] + evaluate_with_axial_load(a, active, a.Fa[active] + force[active])
         for i in rows.positions:
             if keys[i] not in table:
                 rows.notes[int(i)] = f"diagnose effect {self.name}: no preload fitted for {keys[i]}; catalogue MR kept"

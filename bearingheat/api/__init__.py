@@ -1,4 +1,26 @@
-"""The unit boundary for Python callers: pint Quantities in, results of Quantities out."""
-from bearingheat.api.friction import FrictionResult, friction_torque
+"""The unit boundary for Python callers: pint Quantities in, results of Quantities out.
 
-__all__ = ["FrictionResult", "friction_torque"]
+Error policy (the same for every function here): input that cannot be used
+at all (an unknown designation or model, a plain number where a Quantity is
+needed, a unit of the wrong dimension) raises a
+:class:`~bearingheat.errors.BearingheatError` subclass naming the argument.
+"""
+from bearingheat.api.bearings import BearingData, bearing, bearing_table, designations
+from bearingheat.api.bushing import size_bushing, size_thrust_washer
+from bearingheat.api.coastdown import analyse_coastdown, analyse_spindle_coastdown
+from bearingheat.api.contact import BallContact, ball_bearing_contact, contact_angle_from_clearance
+from bearingheat.api.friction import FrictionResult, friction_torque
+from bearingheat.api.thermal import HeatBalanceResult, heat_balance, thermal_reference_speed
+from bearingheat.api.viscosity import oil_viscosity
+from bearingheat.catalogue.designation import decode_gost, parse_designation
+from bearingheat.catalogue.f2chart import F2Chart
+
+__all__ = [
+    "friction_torque", "FrictionResult",
+    "heat_balance", "HeatBalanceResult", "thermal_reference_speed", "oil_viscosity",
+    "ball_bearing_contact", "BallContact", "contact_angle_from_clearance",
+    "size_bushing", "size_thrust_washer",
+    "analyse_coastdown", "analyse_spindle_coastdown",
+    "bearing", "BearingData", "bearing_table", "designations",
+    "parse_designation", "decode_gost", "F2Chart",
+]

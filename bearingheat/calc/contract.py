@@ -280,6 +280,8 @@ def help_text() -> str:
         for c in ins:
             flag = " (required)" if c.required else ""
             lines.append(f"  {c.name + ' [' + _unit_text(c.unit) + ']':<26} {c.meaning}{flag}")
+            if choices(c.name) and c.name != "type":  # the bearing types are many: the template lists them
+                lines.append(f"  {'':<26} one of: {' | '.join(choices(c.name))}")
         if outs:
             lines.append("  -> " + ", ".join(c.header for c in outs))
     return "\n".join(lines)

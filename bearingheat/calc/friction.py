@@ -16,10 +16,34 @@ from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.catalogue.contact import y0_for_contact_angle
 from bearingheat.kernels import friction
 
-__all__ = ["RESULTS", "evaluate_catalogue_model"]
+__all__ = ["RESULTS", "EXCEL_FORMULAS", "P1_EXCEL", "evaluate_catalogue_model"]
 
 #: the results of the catalogue model, in the order calc writes them
 RESULTS = ("f0", "f1", "P0", "P1", "M0", "M1", "M2", "MR", "NR")
+
+#: live Excel formulas of the model's results (seed 002, pp. 64-69) in catalogue units. The placeholders are
+#: cell references or numbers: {f0}, {f1}, {f2}, {M0}, {M1}, {M2}, {MR} on the results sheet, {n}, {nu}, {Fa}
+#: and {load} (Fr, Fa or the P1 cell) scaled from the user's units, {dM} = ((d + D)/2).
+EXCEL_FORMULAS = {
+    "M0": f"={{f0}}*IF({{nu}}*{{n}}>={friction.REGIME_LIMIT:g},({{nu}}*{{n}})^(2/3),{friction.LOW_REGIME_FACTOR:g})"
+          "*{dM}^3*1E-07",
+    "P1": "=MAX({p1_rule},{Fr})",
+    "M1": "={f1}*{load}*{dM}",
+    "M2": "={f2}*{Fa}*{dM}",
+    "MR": "={M0}+{M1}+{M2}",
+    "NR": "={MR}*{n}/9550",
+}
+#: P1 rule of seed 002 p. 68 -> Excel expression before the "P1 >= Fr" rule (names as in friction.P1_RULES)
+P1_EXCEL = {
+    "radial_ball": "3.3*{Fa}-0.1*{Fr}",
+    "angular_single": "{Fa}-0.1*{Fr}",
+    "angular_paired": "1.4*{Fa}-0.1*{Fr}",
+    "angular_double_row": "1.4*{Fa}-0.1*{Fr}",
+    "four_point": "1.5*{Fa}+3.6*{Fr}",
+    "tapered_single": "IF({Fa}>0,2*{Y}*{Fa},{Fr})",
+    "tapered_paired": "IF({Fa}>0,1.21*{Y}*{Fa},{Fr})",
+    "spherical": "IF({Fa}<=0,{Fr},IF(OR({Fr}<=0,{Fa}>{e}*{Fr}),1.6*{Fa}/{e},{Fr}*(1+0.6*({Fa}/({e}*{Fr}))^3)))",
+}
 
 
 def evaluate_catalogue_model(s: SupportArrays, labels: Labels, f2_chart: F2Chart | None = None):

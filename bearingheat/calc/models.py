@@ -25,7 +25,7 @@ import pandas as pd
 
 from bearingheat.calc import contract
 from bearingheat.calc.bushing import plain_rows
-from bearingheat.calc.friction import RESULTS, evaluate_catalogue_model
+from bearingheat.calc.friction import EXCEL_FORMULAS, RESULTS, evaluate_catalogue_model
 from bearingheat.calc.messages import Labels, Problem
 from bearingheat.calc.supports import KEY_INPUTS, NUMBER_INPUTS, SupportArrays, build_support_arrays, number_column, \
     text_column
@@ -51,7 +51,9 @@ class FrictionModel:
     for the catalogue model, whose other terms do not depend on the speed),
     which gives the heat balance its exact 5/3 root (:class:`FrictionPower`);
     None means the heat balance uses the generic bracketed root of
-    :mod:`bearingheat.kernels.roots`.
+    :mod:`bearingheat.kernels.roots`. ``excel_formulas`` maps result
+    columns to live Excel formula templates (``calc --formulas``), or is
+    None where the model has none.
     """
 
     name: str
@@ -60,6 +62,7 @@ class FrictionModel:
     outputs: tuple[str, ...]
     evaluate: Evaluation
     speed_exponent: float | None = None
+    excel_formulas: dict[str, str] | None = None
 
 
 SCHAEFFLER = FrictionModel(
@@ -70,6 +73,7 @@ SCHAEFFLER = FrictionModel(
     outputs=RESULTS,
     evaluate=evaluate_catalogue_model,
     speed_exponent=2.0 / 3.0,
+    excel_formulas=EXCEL_FORMULAS,
 )
 
 #: name -> model; the keys come from the models themselves

@@ -15,6 +15,8 @@ import argparse
 import importlib
 import sys
 
+from bearingheat.errors import BearingheatError, UsageError
+
 __all__ = ["main", "COMMANDS", "UsageError"]
 
 # name -> module implementing it
@@ -30,10 +32,6 @@ COMMANDS: dict[str, str] = {
     "diagnose": "bearingheat.cli.diagnose",
     "lookup": "bearingheat.cli.lookup",
 }
-
-
-class UsageError(Exception):
-    """Unusable input: reported on stderr, exit code 2."""
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -59,7 +57,7 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     try:
         return int(args._module.run(args))
-    except UsageError as exc:
+    except BearingheatError as exc:  # unusable input or argument (UsageError included): exit 2
         print(f"bearingheat {args.command}: error: {exc}", file=sys.stderr)
         return 2
 

@@ -9,7 +9,7 @@ from bearingheat.analysis.audit import (REFERENCE_SPEED_COLUMNS, audit_coefficie
                                         series_deviation_summary)
 from bearingheat.calc.contract import parse_header
 from bearingheat.cli import UsageError
-from bearingheat.cli.diagnose import read_table
+from bearingheat.io.tables import read_table
 from bearingheat.errors import AuditError
 from bearingheat.io.reports.audit import (coefficient_lines, reference_speed_lines, write_coefficients,
                                           write_reference_speeds)

@@ -6,6 +6,8 @@ import sys
 from pathlib import Path
 
 from bearingheat.analysis.diagnose import FittedEffect
+from bearingheat.calc.contract import help_text
+from bearingheat.calc.models import DEFAULT_MODEL, MODELS
 from bearingheat.calc.table import calc
 from bearingheat.cli import UsageError
 from bearingheat.errors import ExcelError, F2ChartError, InputError
@@ -17,35 +19,17 @@ from bearingheat.io.tables import read_csv, write_csv
 
 HELP = "friction torque, power loss (and thermal speeds) of supports in a CSV or Excel table"
 
-DESCRIPTION = """\
-Compute the catalogue friction model (seed 002) for one support per row.
+DESCRIPTION = f"""\
+Compute a friction model for one support per row: the catalogue model of the
+Schaeffler rolling bearing catalogue (default, 'schaeffler'), or the model a
+'model' column or --model names ({', '.join(MODELS)}).
 
-Input columns, headed 'name [unit]' (any pint unit of the right dimension):
-  id, designation            label and designation (6205-2Z, NU206-E, 30205-A ...)
-  type, series               optional explicit table row instead of a designation
-  d [mm], D [mm], B [mm]     bore, outside diameter, width (B for needle f0 formulas)
-  C0 [N]                     static load rating (f1 formulas in P0/C0 or Fa/C0)
-  Y, e, X0, Y0               catalogue factors (tapered: Y; spherical: e; P0: X0, Y0)
-  alpha [deg]                working contact angle (angular contact ball bearings)
-  arrangement                single (default) or paired
-  f0, f1, f2                 coefficient overrides (f2: axially loaded NJ/NUP/SL)
-  lubrication                grease | oil_mist | oil_bath | circulating_oil
-  n [1/min]                  shaft speed (rpm, Hz = rev/s, rad/s is divided by 2 pi)
-  Fr [N], Fa [N]             radial and axial load (blank = 0)
-  nu [mm^2/s]                operating viscosity (base oil viscosity for grease)
+Input columns, headed 'name [unit]' (any pint unit of the right dimension; the
+unit in brackets is the catalogue unit the numbers are converted to):
 
-Heat balance (optional; docs/thermal.md):
-  B [mm] or T [mm] (tapered), k_q [W/(mm^2*K)], T_amb [degC], T_bearing [degC],
-  V_oil [l/min], dT_oil [K], Q_E [W] (heat flowing into the bearing),
-  nu40 [mm^2/s] and nu100 [mm^2/s] or iso_vg (then nu may be left out),
-  n_G [1/min] (caps n_per), n_thr_catalogue [1/min]
-  -> n_thr [1/min], n_per [1/min], T_op [degC], nu_op [mm^2/s], Q_S [W], Q_L [W]
-Ball geometry (optional; seed 001): z, Dw [mm], dm_pitch [mm] -> Fa_min [N]
-Plain bushings (type plain_bushing; seed 004): d, B (length), Fr, n, f_plain
-  -> MR, NR, p [N/mm^2], V [m/s]
+{help_text()}
 
-Output: the input columns, then f0, f1, P0 [N], P1 [N], M0 [N*mm], M1 [N*mm],
-M2 [N*mm], MR [N*mm], NR [W], the columns above where their inputs are
+Output: the input columns, then the results above where their inputs are
 present, status (ok|warning|error) and message. Rows with M2 also get Fa/A
 and nu*n*dM [mm^3/(s*min)] to read f2 off the chart.
 
@@ -67,6 +51,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="Excel: write the results sheet into the input workbook (atomic)")
     parser.add_argument("--formulas", action="store_true",
                         help="Excel: write live formulas for M0, M1, M2, MR and NR")
+    parser.add_argument("--model", choices=sorted(MODELS), default=DEFAULT_MODEL,
+                        help=f"friction model of rows whose 'model' cell is blank (default {DEFAULT_MODEL})")
     parser.add_argument("-q", "--quiet", action="store_true", help="print nothing")
 
 
@@ -89,7 +75,7 @@ def run(args: argparse.Namespace) -> int:
         raise UsageError("--in-place, --formulas and --sheet apply to Excel workbooks only")
     try:
         table = read_csv(source)
-        result = calc(table, f2_chart=args.f2_chart, effects=_load_effects(args.effects))
+        result = calc(table, model=args.model, f2_chart=args.f2_chart, effects=_load_effects(args.effects))
         if args.output:
             target = Path(args.output)
             if target.suffix.lower() in EXCEL_SUFFIXES:
@@ -108,7 +94,8 @@ def run_calc_workbook(args: argparse.Namespace) -> int:
     progress = Progress(enabled=not args.quiet)
     try:
         run = calc_workbook(args.input, args.output, sheet=args.sheet, in_place=args.in_place,
-                            formulas=args.formulas, f2_chart=args.f2_chart, effects=_load_effects(args.effects),
+                            formulas=args.formulas, model=args.model, f2_chart=args.f2_chart,
+                            effects=_load_effects(args.effects),
                             progress=progress)
     except ExcelError as exc:
         raise UsageError(str(exc)) from exc

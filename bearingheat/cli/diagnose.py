@@ -2,14 +2,12 @@
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
-
-import pandas as pd
 
 from bearingheat.analysis.diagnose import diagnose_table
 from bearingheat.cli import UsageError
 from bearingheat.errors import DiagnoseError
 from bearingheat.io.reports.diagnose import summary_lines, write_outputs
+from bearingheat.io.tables import read_table
 
 HELP = "trace the residuals of measured torque to a missing effect; model error before and after"
 
@@ -44,23 +42,6 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--seed", type=int, default=0, help="seed of the fold assignment (default 0)")
     parser.add_argument("--sheet", metavar="NAME", help="sheet of an Excel workbook")
     parser.add_argument("-q", "--quiet", action="store_true", help="print nothing")
-
-
-def read_table(path_text: str, sheet: str | None = None):
-    """A CSV or xlsx file as a DataFrame; unusable files raise UsageError."""
-    path = Path(path_text)
-    if not path.is_file():
-        raise UsageError(f"{path}: no such file")
-    try:
-        if path.suffix.lower() in (".xlsx", ".xlsm"):
-            return pd.read_excel(path, sheet_name=sheet or 0)
-        if sheet:
-            raise UsageError("--sheet applies to Excel workbooks only")
-        return pd.read_csv(path, skipinitialspace=True)
-    except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError, ValueError) as exc:
-        if isinstance(exc, UsageError):
-            raise
-        raise UsageError(f"{path}: not a readable table ({exc})") from exc
 
 
 def run(args: argparse.Namespace) -> int:

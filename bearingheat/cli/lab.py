@@ -5,7 +5,7 @@ import argparse
 
 from bearingheat.analysis.lab import process_lab
 from bearingheat.cli import UsageError
-from bearingheat.cli.diagnose import read_table
+from bearingheat.io.tables import read_table
 from bearingheat.errors import BearingheatError, UnitError
 from bearingheat.io.reports.lab import write_lab_outputs
 from bearingheat.units import magnitude, parse_quantity

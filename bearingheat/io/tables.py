@@ -12,7 +12,7 @@ import pandas as pd
 
 from bearingheat.errors import InputError
 
-__all__ = ["read_csv", "write_csv"]
+__all__ = ["read_csv", "read_table", "write_csv"]
 
 
 def read_csv(path) -> pd.DataFrame:
@@ -22,6 +22,24 @@ def read_csv(path) -> pd.DataFrame:
         return pd.read_csv(path, skipinitialspace=True)
     except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError) as exc:
         raise InputError(f"{path}: not a readable CSV ({exc})") from exc
+
+
+def read_table(path, sheet: str | None = None) -> pd.DataFrame:
+    """A CSV or xlsx file of measurements or readings as a DataFrame (first sheet unless ``sheet``).
+
+    A missing or unreadable file raises :class:`InputError` naming it.
+    """
+    path = Path(path)
+    if not path.is_file():
+        raise InputError(f"{path}: no such file")
+    if sheet and path.suffix.lower() not in (".xlsx", ".xlsm"):
+        raise InputError("--sheet applies to Excel workbooks only")
+    try:
+        if path.suffix.lower() in (".xlsx", ".xlsm"):
+            return pd.read_excel(path, sheet_name=sheet or 0)
+        return pd.read_csv(path, skipinitialspace=True)
+    except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError, ValueError) as exc:
+        raise InputError(f"{path}: not a readable table ({exc})") from exc
 
 
 def write_csv(result: pd.DataFrame, path) -> Path:

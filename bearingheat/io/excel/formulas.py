@@ -32,25 +32,14 @@ import pandas as pd
 from openpyxl.utils import get_column_letter
 
 from bearingheat.calc.contract import output_header
-from bearingheat.calc.models import RESULT_UNITS
+from bearingheat.calc.friction import P1_EXCEL
+from bearingheat.calc.models import DEFAULT_MODEL, RESULT_UNITS, get_model
 from bearingheat.catalogue.friction import resolve
-from bearingheat.errors import DesignationError
+from bearingheat.errors import DesignationError, ExcelError
 from bearingheat.kernels import friction
 from bearingheat.units import parse_unit, speed_rpm, ureg
 
-__all__ = ["live_formulas", "unit_factor", "P1_EXCEL", "excel_number"]
-
-#: P1 rule of seed 002 p. 68 -> Excel expression before the "P1 >= Fr" rule (names as in friction.P1_RULES)
-P1_EXCEL = {
-    "radial_ball": "3.3*{Fa}-0.1*{Fr}",
-    "angular_single": "{Fa}-0.1*{Fr}",
-    "angular_paired": "1.4*{Fa}-0.1*{Fr}",
-    "angular_double_row": "1.4*{Fa}-0.1*{Fr}",
-    "four_point": "1.5*{Fa}+3.6*{Fr}",
-    "tapered_single": "IF({Fa}>0,2*{Y}*{Fa},{Fr})",
-    "tapered_paired": "IF({Fa}>0,1.21*{Y}*{Fa},{Fr})",
-    "spherical": "IF({Fa}<=0,{Fr},IF(OR({Fr}<=0,{Fa}>{e}*{Fr}),1.6*{Fa}/{e},{Fr}*(1+0.6*({Fa}/({e}*{Fr}))^3)))",
-}
+__all__ = ["live_formulas", "unit_factor", "excel_number"]
 
 _CATALOGUE = {"d": "mm", "D": "mm", "n": "1/min", "nu": "mm^2/s", "Fr": "N", "Fa": "N", "Y": "1", "e": "1"}
 
@@ -121,6 +110,7 @@ def live_formulas(out_table: pd.DataFrame, table: pd.DataFrame, info, result: pd
     types = _text_column(table, info, "type")
     series = _text_column(table, info, "series")
     arrangement = [v or "single" for v in _text_column(table, info, "arrangement")]
+    models = _text_column(table, info, "model")
     factors = {name: unit_factor(info.unit_of(name), target, name) for name, target in _CATALOGUE.items()}
     d_user = _number_column(table, info, "d")
     D_user = _number_column(table, info, "D")
@@ -166,29 +156,28 @@ def live_formulas(out_table: pd.DataFrame, table: pd.DataFrame, info, result: pd
         factor = factors[name]
         return cell if factor == 1.0 else f"({cell}*{excel_number(factor)})"
 
-    limit = excel_number(friction.REGIME_LIMIT)
-    low = excel_number(friction.LOW_REGIME_FACTOR)
     formulas: dict[tuple[str, int], str] = {}
     for i, (load_kind, rule, d_in_sheet, d_cat) in plans.items():
+        model_name = models[i] or DEFAULT_MODEL
+        templates = get_model(model_name).excel_formulas
+        if templates is None:
+            raise ExcelError(f"--formulas: the friction model {model_name!r} of row {info.rows[i]} has no Excel "
+                             "formulas; run calc without --formulas")
         source_row = info.rows[i]
         row = i + 3
-        n, nu = ref("n", source_row), ref("nu", source_row)
+        n = ref("n", source_row)
         Fr, Fa = ref("Fr", source_row), ref("Fa", source_row)
         d = ref("d", source_row) if d_in_sheet else excel_number(d_cat)
-        dM = f"(({d}+{ref('D', source_row)})/2)"
-        here = {name: f"{letter[headers[name]]}{row}" for name in ("f0", "f1", "P1", "M0", "M1", "M2", "MR")}
-        f2 = f"{letter['f2']}{row}"
-        formulas[(headers["M0"], i)] = (f"={here['f0']}*IF({nu}*{n}>={limit},({nu}*{n})^(2/3),{low})"
-                                        f"*{dM}^3*1E-07")
+        cells = {name: f"{letter[headers[name]]}{row}" for name in ("f0", "f1", "P1", "M0", "M1", "M2", "MR")}
+        values = dict(cells, f2=f"{letter['f2']}{row}", n=n, nu=ref("nu", source_row), Fr=Fr, Fa=Fa,
+                      dM=f"(({d}+{ref('D', source_row)})/2)")
         if rule:
-            expression = P1_EXCEL[rule].format(Fr=Fr, Fa=Fa, Y=ref("Y", source_row, "NA()"),
-                                               e=ref("e", source_row, "NA()"))
-            formulas[(headers["P1"], i)] = f"=MAX({expression},{Fr})"
-            load = here["P1"]
+            values["p1_rule"] = P1_EXCEL[rule].format(Fr=Fr, Fa=Fa, Y=ref("Y", source_row, "NA()"),
+                                                      e=ref("e", source_row, "NA()"))
+            formulas[(headers["P1"], i)] = templates["P1"].format(**values)
+            values["load"] = cells["P1"]
         else:
-            load = Fa if load_kind == "Fa" else Fr
-        formulas[(headers["M1"], i)] = f"={here['f1']}*{load}*{dM}"
-        formulas[(headers["M2"], i)] = f"={f2}*{Fa}*{dM}"
-        formulas[(headers["MR"], i)] = f"={here['M0']}+{here['M1']}+{here['M2']}"
-        formulas[(headers["NR"], i)] = f"={letter[headers['MR']]}{row}*{n}/9550"
+            values["load"] = Fa if load_kind == "Fa" else Fr
+        for name in ("M0", "M1", "M2", "MR", "NR"):
+            formulas[(headers[name], i)] = templates[name].format(**values)
     return out, formulas

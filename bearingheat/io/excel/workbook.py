@@ -23,6 +23,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from bearingheat.calc.models import DEFAULT_MODEL
 from bearingheat.calc.table import calc
 from bearingheat.errors import ExcelError, F2ChartError, InputError
 from bearingheat.io.excel.formulas import live_formulas
@@ -73,7 +74,8 @@ class WorkbookRun:
 
 
 def calc_workbook(path, output=None, *, sheet: str | None = None, in_place: bool = False, formulas: bool = False,
-                  f2_chart=None, effects=None, keep_vba: bool = True, progress=None) -> WorkbookRun:
+                  model: str = DEFAULT_MODEL, f2_chart=None, effects=None, keep_vba: bool = True,
+                  progress=None) -> WorkbookRun:
     """Run calc on a sheet of supports and write a results sheet.
 
     ``output`` (a new .xlsx/.xlsm) gets a copy of the workbook plus the
@@ -113,7 +115,7 @@ def calc_workbook(path, output=None, *, sheet: str | None = None, in_place: bool
     if not len(table):
         raise ExcelError(f"sheet {info.sheet!r}: no supports under the header (row {info.header_row})")
     try:
-        result = calc(table, units=info.units, cell=info.cell, f2_chart=f2_chart, effects=effects)
+        result = calc(table, model=model, units=info.units, cell=info.cell, f2_chart=f2_chart, effects=effects)
     except F2ChartError as exc:
         raise ExcelError(str(exc)) from exc
     except InputError as exc:
