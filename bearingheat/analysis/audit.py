@@ -37,7 +37,7 @@ from bearingheat.calc.contract import parse_header
 from bearingheat.calc.thermal import thermal_reference_speed_rows
 from bearingheat.catalogue.friction import resolve
 from bearingheat.errors import AuditError, DesignationError, DiagnoseError, UnitError
-from bearingheat.units import convert_column, parse_unit, speed_rpm, ureg
+from bearingheat.units import convert_column
 
 __all__ = [
     "AuditError",
@@ -197,27 +197,12 @@ _GEOMETRY_UNITS = {"d": "mm", "D": "mm", "B": "mm", "T": "mm", "C0": "N", "Y": "
 
 
 def _convert(values: pd.Series, header: str, unit_text: str | None, target: str) -> np.ndarray:
+    """A catalogue-list column in the catalogue unit (units.convert_column); AuditError naming the column."""
     numbers = pd.to_numeric(values, errors="coerce").to_numpy(dtype=float)
-    if target in ("1",):
-        return numbers
-    if target == "1/min":
-        if unit_text is None:
-            raise AuditError(f"column {header!r}: needs a unit, e.g. '{header} [1/min]'")
-        try:
-            return numbers * speed_rpm(ureg().Quantity(1.0, parse_unit(unit_text, name=header)), header)
-        except UnitError as exc:
-            raise AuditError(f"column {header!r}: {exc}") from exc
-    if unit_text is None or unit_text.strip() in ("", "-"):
-        raise AuditError(f"column {header!r}: needs a unit, e.g. '{header} [{target}]'")
     try:
-        parse_unit(unit_text, name=header)
+        return convert_column(numbers, unit_text, target, name=header, header=header)[0]
     except UnitError as exc:
         raise AuditError(f"column {header!r}: {exc}") from exc
-    try:  # the unit reads (above): a refusal here is its dimension
-        values, _ = convert_column(numbers, unit_text, target, name=header, header=header)
-    except UnitError as exc:
-        raise AuditError(f"column {header!r}: unit {unit_text} cannot be converted to {target}") from exc
-    return np.asarray(values, dtype=float)
 
 
 def _group_keys(table: pd.DataFrame, columns: dict[str, str], frame: pd.DataFrame) -> list[str]:

@@ -37,7 +37,7 @@ from bearingheat.kernels.lab import (
     reduced_friction_coefficient,
     speed_fit,
 )
-from bearingheat.units import convert_column, parse_unit, speed_rpm, ureg
+from bearingheat.units import convert_column
 
 __all__ = [
     "LAB_UNITS",
@@ -83,11 +83,7 @@ def read_lab_table(table: pd.DataFrame) -> pd.DataFrame:
         if unit_text is None or unit_text.strip() in ("", "-"):
             raise LabError(f"column {header!r}: needs a unit, e.g. '{name} [{target}]'")
         try:
-            if target == "1/min":
-                # a speed: revolutions per time, or rad/s divided by 2π (the message names the column)
-                out[name] = numbers * speed_rpm(ureg().Quantity(1.0, parse_unit(unit_text, name=header)), header)
-            else:
-                out[name] = convert_column(numbers, unit_text, target, name=name, header=header)[0]
+            out[name] = convert_column(numbers, unit_text, target, name=name, header=header)[0]
         except UnitError as exc:
             raise LabError(f"column {header!r}: {exc}") from exc
     for name, low, high, text in (("Q", 0.0, None, "must be > 0"), ("n", 0.0, None, "must be > 0"),

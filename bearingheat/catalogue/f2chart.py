@@ -36,8 +36,8 @@ from pathlib import Path
 
 import numpy as np
 
-from bearingheat.units import UnitError, parse_unit, ureg
-from bearingheat.errors import F2ChartError
+from bearingheat.units import convert_column
+from bearingheat.errors import F2ChartError, UnitError
 
 __all__ = ["F2Chart", "F2ChartError"]
 
@@ -97,8 +97,8 @@ class F2Chart:
         header, units = rows[0], rows[1]
         col = {name: header.index(name) for name in required}
         try:
-            scale = ureg().Quantity(1.0, parse_unit(units[col["nu_n_dM"]], name="nu_n_dM")).to(_X_UNIT).magnitude
-        except (UnitError, Exception) as exc:  # pint DimensionalityError or an unknown unit
+            scale = convert_column(np.ones(1), units[col["nu_n_dM"]], _X_UNIT, name="nu_n_dM")[1]
+        except UnitError as exc:  # an unknown unit, or one of another dimension
             raise F2ChartError(f"{path}: units row: nu_n_dM unit {units[col['nu_n_dM']]!r} "
                                f"is not convertible to {_X_UNIT}") from exc
         points: dict[str, tuple[float, list[float], list[float]]] = {}

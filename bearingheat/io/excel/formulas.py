@@ -37,7 +37,7 @@ from bearingheat.calc.models import DEFAULT_MODEL, RESULT_UNITS, get_model
 from bearingheat.catalogue.friction import resolve
 from bearingheat.errors import DesignationError, ExcelError
 from bearingheat.kernels import friction
-from bearingheat.units import parse_unit, speed_rpm, ureg
+from bearingheat.units import convert_column
 
 __all__ = ["live_formulas", "unit_factor", "excel_number"]
 
@@ -64,13 +64,7 @@ def unit_factor(unit_text: str | None, target: str, name: str) -> float:
     """
     if unit_text is None or unit_text.strip() in ("", "-", "1"):
         return 1.0
-    unit = parse_unit(unit_text, name=name)
-    quantity = ureg().Quantity(1.0, unit)
-    if target == "1/min":
-        return float(speed_rpm(quantity, name))
-    if target == "1":
-        return float(quantity.to("dimensionless").magnitude)
-    return float(quantity.to(target).magnitude)
+    return convert_column(np.ones(1), unit_text, target, name=name)[1]
 
 
 def _resolved(designation, bearing_type, series):
