@@ -31,7 +31,7 @@ def bracketed_root(func: Callable[[np.ndarray], np.ndarray], low, high, *, rtol:
     both ends, -1 where f < 0 at both ends, 2 where f is NaN at an end (x
     is NaN wherever status is not 0). A root at an end of the bracket is
     returned as it is. Converged when the bracket is narrower than
-    ``rtol``·|x| or f is exactly 0.
+    ``rtol`` times the magnitude of x, or f is exactly 0.
 
     >>> x, status = bracketed_root(lambda x: x ** 3 - 8.0, np.array([0.0, 3.0]), np.array([10.0, 10.0]))
     >>> np.round(x, 12).tolist(), status.tolist()
