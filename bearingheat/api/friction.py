@@ -21,6 +21,7 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
+from bearingheat.api._checks import check_ranges, where
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.models import DEFAULT_MODEL, get_model
 from bearingheat.calc.supports import build_support_arrays
@@ -129,6 +130,9 @@ def friction_torque(bearing: str | None = None, *, n, nu, lubrication: str | Non
     arrays = {k: (v.to_numpy(dtype=float) if isinstance(v, pd.Series) else np.asarray(v, dtype=float))
               for k, v in inputs.items()}
     shape = np.broadcast_shapes(*(v.shape for v in arrays.values()))
+    given = {"n": n, "nu": nu, "Fr": Fr, "Fa": Fa, "C0": C0, "alpha": alpha, "d": d, "D": D, "B": B, "Y": Y,
+             "e": e, "X0": X0, "Y0": Y0, "f0": f0, "f1": f1, "f2": f2}
+    range_warnings = check_ranges({k: arrays[k] for k, v in given.items() if v is not None}, shape, FrictionInputError)
     # arrays become one row axis; scalars stay scalars (no copies of constants)
     flat = {k: (v if v.ndim == 0 else np.broadcast_to(v, shape).ravel()) for k, v in arrays.items()}
     keys = pd.DataFrame({"designation": [bearing], "type": [bearing_type], "series": [series],
@@ -142,10 +146,15 @@ def friction_torque(bearing: str | None = None, *, n, nu, lubrication: str | Non
     if errors:
         first = errors[0]
         i = int(np.flatnonzero(first.mask)[0])
-        where = f" (at index {np.unravel_index(i, shape) if len(shape) > 1 else i})" if shape else ""
-        raise FrictionInputError(first.message(i) + where)
-    messages = [p.message(int(np.flatnonzero(p.mask)[0])) for p in problems]
+        raise FrictionInputError(first.message(i) + where(i, shape))
+    messages = range_warnings + [p.message(int(np.flatnonzero(p.mask)[0])) for p in problems]
     messages += list(supports.notes[0])
+    for name in ("MR", "NR"):
+        bad = ~np.isfinite(results[name])
+        if bad.any():
+            i = int(np.flatnonzero(bad)[0])
+            raise FrictionInputError(f"{name}: the result is not a finite number for these inputs; check their "
+                                     f"magnitudes and units{where(i, shape)}")
 
     def out(name, unit):
         values = results[name].reshape(shape)

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
+from bearingheat.api._checks import check_ranges
 from bearingheat.calc.models import compute_supports
 from bearingheat.calc.thermal import (OPERATING_TEMPERATURE_LIMIT, SPEED_FACTOR_METHODS, VISCOSITY_AT,
                                       fill_viscosity, heat_balance_rows, thermal_reference_speed_rows)
@@ -119,9 +120,10 @@ def heat_balance(designation: str | None = None, *, d, D, n=None, C0=None, B=Non
             index = mag.index if index is None else index
             mag = mag.to_numpy(dtype=float)
         columns[column] = mag
+    shape = np.broadcast_shapes(*(np.shape(v) for v in columns.values()))
+    range_warnings = check_ranges(columns, shape, HeatBalanceError)
     if "n" not in columns:
         columns["n"] = np.nan
-    shape = np.broadcast_shapes(*(np.shape(v) for v in columns.values()))
     size = int(np.prod(shape)) if shape else 1
     frame = pd.DataFrame({k: np.broadcast_to(np.asarray(v, dtype=float), shape).ravel() for k, v in columns.items()},
                          index=range(size))
@@ -141,6 +143,9 @@ def heat_balance(designation: str | None = None, *, d, D, n=None, C0=None, B=Non
     problems = problems + more
     status = results["status"].tolist()
     messages = [[m] if m else [] for m in results["message"]]
+    for position in range(size) if range_warnings else ():
+        messages[position] = range_warnings + messages[position]
+        status[position] = "warning" if status[position] == "ok" else status[position]
     for position, level, message in problems:
         messages[position].append(message)
         if level == "error":

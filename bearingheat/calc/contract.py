@@ -24,9 +24,12 @@ header in ``degC`` is refused for them).
 """
 from __future__ import annotations
 
+import dataclasses
 import re
 from dataclasses import dataclass
 from typing import Callable
+
+import numpy as np
 
 from bearingheat.catalogue.designation import BEARING_TYPES
 from bearingheat.catalogue.friction import LUBRICATION_F0_COLUMN
@@ -45,6 +48,8 @@ __all__ = [
     "output_header",
     "parse_header",
     "register_choices",
+    "range_problems",
+    "RANGES",
     "choices",
     "template_columns",
     "help_text",
@@ -74,6 +79,10 @@ class Column:
     column; ``required`` marks the columns a designer must fill for a
     rolling bearing (bold headers in the template). ``shown`` is the
     header name where it differs from ``name`` (``Fa/A`` for ``Fa_over_A``).
+    ``valid`` and ``plausible`` are (low, high) in the catalogue unit: a
+    number outside ``valid`` makes its row an error, one outside
+    ``plausible`` gives a warning (usually a unit mix-up); None: no bound
+    beyond the model's own checks.
     """
 
     name: str
@@ -84,6 +93,8 @@ class Column:
     required: bool = False
     template: tuple[str, int] | None = None
     shown: str = ""
+    valid: tuple[float, float] | None = None
+    plausible: tuple[float, float] | None = None
 
     @property
     def header(self) -> str:
@@ -173,6 +184,39 @@ CONTRACT: tuple[Column, ...] = (
     _out("status", "", "ok | warning | error", "table"),
     _out("message", "", "what is wrong or uncertain, naming the column (and the cell in a workbook)", "table"),
 )
+
+_INF = float("inf")
+#: input -> (valid, plausible) ranges in the catalogue unit. The lower bounds the friction model checks itself
+#: (d > 0, n >= 0, ν > 0, loads >= 0, C0 > 0) are left to it; these catch what no formula check sees: a
+#: number far outside any bearing (often a unit mix-up) and absurd magnitudes that overflow the formulas.
+RANGES: dict[str, tuple[tuple[float, float] | None, tuple[float, float] | None]] = {
+    "d": ((-_INF, 1e5), (0.5, 5000.0)),           # mm: bores of catalogue bearings 0.6 mm to about 5 m
+    "D": ((-_INF, 1e5), (1.0, 6000.0)),
+    "B": ((-_INF, 1e5), (0.5, 2000.0)),
+    "T": ((-_INF, 1e5), (0.5, 2000.0)),
+    "C0": ((-_INF, 1e10), (10.0, 1e8)),           # N
+    "Fr": ((-_INF, 1e10), (-_INF, 1e8)),
+    "Fa": ((-_INF, 1e10), (-_INF, 1e8)),
+    "n": ((-_INF, 1e7), (-_INF, 2e5)),            # 1/min
+    "nu": ((-_INF, 1e7), (1.0, 1e5)),             # mm²/s
+    "alpha": ((0.0, 90.0), None),                 # deg
+    "T_amb": ((-60.0, 200.0), None),              # degC
+    "T_bearing": ((-60.0, 300.0), (-60.0, 200.0)),
+    "dT_oil": ((0.0, 200.0), None),               # K
+    "V_oil": ((-_INF, 1e4), None),                # l/min
+    "nu40": ((-_INF, 1e7), (1.0, 1e5)),
+    "nu100": ((-_INF, 1e7), (1.0, 1e5)),
+    "iso_vg": ((1.0, 10000.0), None),
+    "VI": ((-100.0, 400.0), None),
+    "n_G": ((-_INF, 1e7), None),
+    "n_thr_catalogue": ((-_INF, 1e7), None),
+    "z": ((1.0, 1000.0), None),
+    "Dw": ((-_INF, 1e4), None),
+    "dm_pitch": ((-_INF, 1e5), None),
+    "f_plain": ((0.0, 1.0), None),
+}
+CONTRACT = tuple(dataclasses.replace(c, valid=RANGES[c.name][0], plausible=RANGES[c.name][1])
+                 if c.kind == "input" and c.name in RANGES else c for c in CONTRACT)
 
 _BY_KIND = {kind: {c.name: c for c in CONTRACT if c.kind == kind} for kind in ("input", "output")}
 
@@ -296,5 +340,48 @@ def markdown_table(kind: str = "input") -> str:
     rows = ["| column | unit | owner | meaning |", "|---|---|---|---|"]
     for c in CONTRACT:
         if c.kind == kind:
-            rows.append(f"| {c.shown or c.name} | {_unit_text(c.unit)} | {OWNERS[c.owner]} | {c.meaning} |")
+            rows.append(f"| {c.shown or c.name} | {_unit_text(c.unit)} | {OWNERS[c.owner]} | {c.meaning}"
+                        f"{_range_text(c)} |")
     return "\n".join(rows)
+
+
+def range_problems(name: str, values: np.ndarray, describe: Callable[[int], str]
+                   ) -> tuple[list[tuple[int, str]], list[tuple[int, str]]]:
+    """(errors, warnings) of the numbers of an input column against its contract ranges (catalogue units).
+
+    An infinite number, or one outside ``valid``, is an error; one outside
+    ``plausible`` a warning. NaN means 'not given' and is not checked.
+    ``describe(i)`` words the value of entry i, e.g. ``'T_amb [K]: 20 (-253.15 degC)'``.
+
+    >>> range_problems("T_amb", np.array([20.0, 250.0]), lambda i: f"T_amb: {[20, 250][i]}")
+    ([(1, 'T_amb: 250 is outside the valid range -60 to 200 degC')], [])
+    """
+    entry = column(name)
+    values = np.asarray(values, dtype=float)
+    unit = {"1": "", "delta_degC": "K"}.get(entry.unit, entry.unit)
+    errors = [(int(i), f"{describe(int(i))} is not a finite number") for i in np.flatnonzero(np.isinf(values))]
+    warnings = []
+    reported = np.isinf(values)
+    for bounds, level, found in ((entry.valid, "valid", errors), (entry.plausible, "plausible", warnings)):
+        if bounds is None:
+            continue
+        low, high = bounds
+        with np.errstate(invalid="ignore"):
+            outside = np.isfinite(values) & ((values < low) | (values > high)) & ~reported
+        reported |= outside
+        span = f"{low:g} to {high:g}" if low > -_INF else f"up to {high:g}"
+        hint = "; check the number and its unit" if level == "plausible" else ""
+        for i in np.flatnonzero(outside):
+            found.append((int(i), f"{describe(int(i))} is outside the {level} range {span} {unit}".rstrip() + hint))
+    return errors, warnings
+
+
+def _range_text(c: Column) -> str:
+    """'; valid -60 to 200, plausible ...' in the catalogue unit (empty where the contract sets no range)."""
+    parts = []
+    for word, bounds in (("valid", c.valid), ("plausible", c.plausible)):
+        if bounds is not None:
+            low, high = bounds
+            text = f"{low:g} to {high:g}" if low > -_INF else f"up to {high:g}"
+            parts.append(f"{word} {text}")
+    return f" ({', '.join(parts)} {_unit_text(c.unit)})" if parts else ""

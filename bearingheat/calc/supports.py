@@ -210,7 +210,7 @@ def build_support_arrays(keys: pd.DataFrame, numbers: dict[str, object]) -> Supp
     for name in NUMBER_INPUTS:
         value = numbers.get(name, math.nan)
         value = np.asarray(value, dtype=float)  # 0-d for a scalar: numpy division rules (x/0 = inf) everywhere
-        num[name] = np.nan_to_num(value, nan=0.0) if name in ("Fr", "Fa") else value
+        num[name] = np.where(np.isnan(value), 0.0, value) if name in ("Fr", "Fa") else value  # blank load = 0
     if len(keys) == size:
         f0_given = ~np.isnan(np.broadcast_to(num["f0"], (size,)))
     else:  # one bearing: f0 is given for all its points or for none

@@ -21,22 +21,25 @@ value; the other rows are still computed. Input that cannot be used at all
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Callable
 
 import numpy as np
 import pandas as pd
 
 from bearingheat.calc import contact, thermal
-from bearingheat.calc.contract import PLAIN_TYPES, input_units, output_header, output_units, parse_header
+from bearingheat.calc.contract import (PLAIN_TYPES, input_units, output_header, output_units, parse_header,
+                                       range_problems)
 from bearingheat.calc.messages import Labels
+from bearingheat.calc.supports import number_column, text_column
+from bearingheat.catalogue.bearings import bearing
 from bearingheat.calc.models import DEFAULT_MODEL, M2_REPORT_UNITS, PLAIN_REPORT_UNITS, RESULT_UNITS, \
     compute_supports
 from bearingheat.catalogue.f2chart import F2Chart
-from bearingheat.errors import InputError, UnitError
+from bearingheat.errors import DesignationError, InputError, UnitError
 from bearingheat.units import convert_column
 
-__all__ = ["calc", "to_catalogue_units", "require_columns", "Extension", "EXTENSIONS"]
+__all__ = ["calc", "to_catalogue_units", "ConvertedTable", "require_columns", "Extension", "EXTENSIONS"]
 
 
 @dataclass(frozen=True)
@@ -61,27 +64,52 @@ EXTENSIONS: dict[str, Extension] = {e.owner: e for e in (
 
 
 @dataclass
-class _Converted:
+class ConvertedTable:
+    """A table's contract columns in catalogue units, how messages name them, and the cells' own problems."""
+
     frame: pd.DataFrame            # contract names, catalogue units
     labels: Labels
     row_errors: list[list[str]]
+    row_warnings: list[list[str]] = field(default_factory=list)
 
 
 def _convert_column(values: pd.Series, header: str, unit_text: str | None, target: str,
                     cell: Callable[[str, int], str] | None, name: str,
-                    errors: list[list[str]]) -> tuple[np.ndarray, float]:
+                    errors: list[list[str]], warnings: list[list[str]]) -> tuple[np.ndarray, float]:
     """Numbers of one column in the catalogue unit, and the catalogue units per user unit (NaN for an
-    absolute temperature, which has no single factor); cells that are no numbers become row errors."""
-    numeric = pd.to_numeric(values, errors="coerce").to_numpy(dtype=float)
+    absolute temperature, which has no single factor). Cells that are no numbers, logical values,
+    non-finite numbers and numbers outside the contract's valid range become row errors; numbers outside
+    its plausible range become row warnings."""
     raw = values.to_numpy(dtype=object)
-    for i, (num, cell_value) in enumerate(zip(numeric, raw)):
-        if np.isnan(num) and not _blank(cell_value):
-            where = f"{cell(name, i)}: " if cell else ""
-            errors[i].append(f"{where}{cell_value!r} is not a number for {header}")
+    logical = np.array([isinstance(v, (bool, np.bool_)) for v in raw], dtype=bool)
+    numeric = pd.to_numeric(values.where(~logical, np.nan) if logical.any() else values,
+                            errors="coerce").to_numpy(dtype=float)
+
+    def where(i):
+        return f"{cell(name, i)}: " if cell else ""
+
+    for i in np.flatnonzero(np.isnan(numeric)):
+        if logical[i]:
+            errors[i].append(f"{where(i)}{raw[i]!r} is a logical value, not a number for {header}")
+        elif not _blank(raw[i]):
+            errors[i].append(f"{where(i)}{raw[i]!r} is not a number for {header}")
     try:
-        return convert_column(numeric, unit_text, target, name=name, header=header)
+        converted, factor = convert_column(numeric, unit_text, target, name=name, header=header)
     except UnitError as exc:
         raise InputError(f"column {header!r}: {exc}") from exc
+    shown_unit = {"1": "", "delta_degC": "K"}.get(target, target)
+
+    def describe(i):
+        value = f"{numeric[i]:g}" if factor == 1.0 or np.isinf(numeric[i]) else \
+            f"{numeric[i]:g} ({converted[i]:g} {shown_unit})".replace(" )", ")")
+        return f"{where(i)}{header}: {value}"
+
+    found_errors, found_warnings = range_problems(name, converted, describe)
+    for i, message in found_errors:
+        errors[i].append(message)
+    for i, message in found_warnings:
+        warnings[i].append(message)
+    return converted, factor
 
 
 def _blank(value) -> bool:
@@ -89,7 +117,7 @@ def _blank(value) -> bool:
 
 
 def to_catalogue_units(table: pd.DataFrame, *, units: dict[str, str] | None = None,
-                       cell: Callable[[str, int], str] | None = None) -> _Converted:
+                       cell: Callable[[str, int], str] | None = None) -> ConvertedTable:
     """Contract columns of ``table`` in catalogue units (unknown columns are passed through untouched).
 
     ``units`` maps a header to a unit typed in a separate units row (Excel);
@@ -97,6 +125,7 @@ def to_catalogue_units(table: pd.DataFrame, *, units: dict[str, str] | None = No
     """
     known = input_units()
     errors: list[list[str]] = [[] for _ in range(len(table))]
+    warnings: list[list[str]] = [[] for _ in range(len(table))]
     columns: dict[str, np.ndarray | list] = {}
     headers: dict[str, tuple[str, float]] = {}
     for header in table.columns:
@@ -112,10 +141,11 @@ def to_catalogue_units(table: pd.DataFrame, *, units: dict[str, str] | None = No
         if target == "":
             columns[name] = [None if _blank(v) else str(v).strip() for v in table[header]]
             continue
-        columns[name], factor = _convert_column(table[header], display, unit_text, target, cell, name, errors)
+        columns[name], factor = _convert_column(table[header], display, unit_text, target, cell, name, errors,
+                                                warnings)
         headers[name] = (display, factor)
     frame = pd.DataFrame(columns, index=table.index)
-    return _Converted(frame, Labels(headers, cell), errors)
+    return ConvertedTable(frame, Labels(headers, cell), errors, warnings)
 
 
 def require_columns(frame: pd.DataFrame) -> None:
@@ -165,36 +195,90 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
     frame = converted.frame
     extra_problems: list[tuple[int, str, str]] = []
     for ext in EXTENSIONS.values():
-        frame, problems = ext.prepare(frame)
+        with np.errstate(all="ignore"):  # rows in error are computed too, and masked afterwards
+            frame, problems = ext.prepare(frame)
         extra_problems.extend(problems)
     require_columns(frame)
     results = compute_supports(frame.reset_index(drop=True), f2_chart=f2_chart, labels=converted.labels,
                                model=model)
     results.index = table.index
-    _merge_row_messages(results, converted.row_errors, "error")
-    for position, level, message in extra_problems:
+    _merge_row_messages(results, converted.row_errors, "error", first=True)  # the cell's own fault leads
+    _merge_row_messages(results, converted.row_warnings, "warning")
+    for position, level, message in extra_problems + _implausible_relations(frame, converted.labels):
         _add_message(results, position, level, message)
     if effects is not None:
         effects.apply(frame, results)
     extension_columns = []
     for ext in EXTENSIONS.values():
-        columns, problems = ext.extend(frame, results)
+        with np.errstate(all="ignore"):  # rows in error are computed too, and masked afterwards
+            columns, problems = ext.extend(frame, results)
         for position, level, message in problems:
             _add_message(results, position, level, message)
         extension_columns.append((columns, output_units(owner=ext.owner)))
     return _assemble(table, results, extension_columns)
 
 
-def _merge_row_messages(results: pd.DataFrame, row_messages: list[list[str]], level: str) -> None:
+def _catalogue_limiting_speed(designation) -> tuple[float, str]:
+    """n_G [1/min] of a designation in the bearing table, and where it is from (NaN, '' where it is not there)."""
+    try:
+        entry = bearing(designation)
+    except DesignationError:
+        return math.nan, ""
+    return entry.n_G, f"{entry.designation} (Schaeffler HR 1, 2006)"
+
+
+def _implausible_relations(frame: pd.DataFrame, labels: Labels) -> list[tuple[int, str, str]]:
+    """Warnings where inputs are each possible but not together: a load above C0, a speed above n_G.
+
+    Both are usual signs of a unit mix-up (rpm typed under a header in Hz, N under kN); the limiting
+    speed is the row's ``n_G`` or, where blank, the bearing table's for the designation.
+    """
+    problems = []
+    n_rows = len(frame)
+
+    def user(name, i, value):
+        shown = labels.value(name, value)
+        return shown if shown == f"{value:g}" else f"{shown} ({value:g} {input_units()[name]})"
+
+    C0 = number_column(frame, "C0")
+    for name in ("Fr", "Fa"):
+        load = number_column(frame, name)
+        with np.errstate(invalid="ignore"):
+            above = np.isfinite(load) & np.isfinite(C0) & (load > C0)
+        for i in np.flatnonzero(above):
+            problems.append((int(i), "warning", f"{labels.name(name, i)}: {user(name, i, load[i])} is above the "
+                                                f"static load rating C0 = {C0[i]:g} N; check the load and its unit"))
+    n = number_column(frame, "n")
+    n_G = number_column(frame, "n_G").copy()
+    source = [""] * n_rows
+    designations = text_column(frame, "designation")
+    blank = np.isnan(n_G)
+    if blank.any():
+        looked_up = {d: _catalogue_limiting_speed(d) for d in set(designations[i] for i in np.flatnonzero(blank)) if d}
+        for i in np.flatnonzero(blank):
+            if designations[i] in looked_up:
+                n_G[i], source[i] = looked_up[designations[i]]
+    with np.errstate(invalid="ignore"):
+        fast = np.isfinite(n) & (n > n_G)
+    for i in np.flatnonzero(fast):
+        of = f" of {source[i]}" if source[i] else ""
+        problems.append((int(i), "warning", f"{labels.name('n', i)}: {user('n', i, n[i])} is above the limiting "
+                                            f"speed n_G = {n_G[i]:g} 1/min{of}; check the speed and its unit"))
+    return problems
+
+
+def _merge_row_messages(results: pd.DataFrame, row_messages: list[list[str]], level: str, *,
+                        first: bool = False) -> None:
     for position, messages in enumerate(row_messages):
-        for message in messages:
-            _add_message(results, position, level, message)
+        for message in (reversed(messages) if first else messages):
+            _add_message(results, position, level, message, first=first)
 
 
-def _add_message(results: pd.DataFrame, position: int, level: str, message: str) -> None:
+def _add_message(results: pd.DataFrame, position: int, level: str, message: str, *, first: bool = False) -> None:
     row = results.index[position]
     current = results.at[row, "message"]
-    results.at[row, "message"] = f"{current}; {message}" if current else message
+    joined = (f"{message}; {current}" if first else f"{current}; {message}") if current else message
+    results.at[row, "message"] = joined
     if level == "error":
         results.at[row, "status"] = "error"
         results.loc[row, [c for c in RESULT_UNITS]] = np.nan
@@ -204,18 +288,40 @@ def _add_message(results: pd.DataFrame, position: int, level: str, message: str)
 
 def _assemble(table: pd.DataFrame, results: pd.DataFrame, extension_columns) -> pd.DataFrame:
     out = table.copy()
+    written: list[str] = []
     for name, unit in RESULT_UNITS.items():
-        out[output_header(name, unit)] = results[name].to_numpy()
+        written.append(output_header(name, unit))
+        out[written[-1]] = results[name].to_numpy()
     for name, unit in {**M2_REPORT_UNITS, **PLAIN_REPORT_UNITS}.items():
         if name in results.columns:
-            out[output_header(name, unit)] = results[name].to_numpy()
+            written.append(output_header(name, unit))
+            out[written[-1]] = results[name].to_numpy()
     failed = (results["status"] == "error").to_numpy()
     for columns, units in extension_columns:
         for name in columns.columns:
             values = columns[name].to_numpy()
             if values.dtype.kind == "f":
                 values = np.where(failed, np.nan, values)
-            out[output_header(name, units.get(name, ""))] = values
+            written.append(output_header(name, units.get(name, "")))
+            out[written[-1]] = values
+    _refuse_non_finite(out, results, written)
     out["status"] = results["status"].to_numpy()
     out["message"] = results["message"].to_numpy()
     return out
+
+
+def _refuse_non_finite(out: pd.DataFrame, results: pd.DataFrame, written: list[str]) -> None:
+    """No result leaves calc as inf, nor MR/NR as NaN, on a row not in error: such a row becomes one."""
+    failed = (results["status"] == "error").to_numpy()
+    numeric = [h for h in written if pd.api.types.is_float_dtype(out[h].dtype)]
+    bad: dict[int, str] = {}
+    for header in numeric:
+        for i in np.flatnonzero(np.isinf(out[header].to_numpy(dtype=float)) & ~failed):
+            bad.setdefault(int(i), header)
+    for header in (output_header("MR"), output_header("NR")):
+        for i in np.flatnonzero(np.isnan(out[header].to_numpy(dtype=float)) & ~failed):
+            bad.setdefault(int(i), header)
+    for i, header in sorted(bad.items()):
+        _add_message(results, i, "error", f"{header}: the result is not a finite number for these inputs; "
+                                          "check their magnitudes and units")
+        out.loc[out.index[i], numeric] = np.nan

@@ -1,0 +1,462 @@
+"""The SKF four-component friction model over support arrays: checks, then the kernels.
+
+The model's evaluation for the friction-model registry (:mod:`bearingheat.calc.models`):
+constants come from :mod:`bearingheat.catalogue.skf`, the formulas from
+:mod:`bearingheat.kernels.skf`; this module holds the checks, the choice of
+constants per row (lubrication, oil level, seals, edition) and the order in
+which the kernels are applied, and no formula of its own.
+
+The inputs the catalogue model does not have are read from ``extra``, a
+mapping of column name to a per-row array or one value for all rows
+(:data:`EXTRA_INPUTS` lists them with unit, meaning and default). The
+designation, type, series and lubrication are read from ``extra`` too:
+:class:`~bearingheat.calc.supports.SupportArrays` keeps only what the
+catalogue model resolved from them.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pandas as pd
+
+from bearingheat.calc.messages import Labels, Problem, at
+from bearingheat.calc.supports import SupportArrays
+from bearingheat.catalogue import skf as catalogue
+from bearingheat.catalogue.f2chart import F2Chart
+from bearingheat.errors import BearingheatError
+from bearingheat.kernels import skf
+
+__all__ = ["RESULTS", "EXTRA_INPUTS", "evaluate_skf_model"]
+
+#: the results of the SKF model, in the order calc writes them (catalogue units)
+RESULTS = ("G_rr", "G_sl", "M_rr", "M_sl", "M_seal", "M_drag", "phi_ish", "phi_rs", "phi_bl", "mu_sl", "M_start",
+           "MR", "NR")
+
+#: inputs read from ``extra``: name -> (unit, meaning, default); '' unit is text
+EXTRA_INPUTS = {
+    "designation": ("", "bearing designation (also CARB: C2208, C 2208 TN9)", "none"),
+    "type": ("", "SKF bearing type instead of a designation, with series", "none"),
+    "series": ("", "series with type, as in the SKF tables: 62, 222 E, C 22, 302", "none"),
+    "lubrication": ("", "grease, oil_mist (oil-air), oil_bath or circulating_oil (oil jet)", "required"),
+    "oil": ("", "mineral, synthetic or transmission_fluid: μEHL 0.05, 0.04, 0.1", "mineral"),
+    "mu_sl": ("1", "fixed sliding friction coefficient μsl (the worked example: 0.05 at full film)",
+              "φbl·μbl + (1 − φbl)·μEHL"),
+    "mu_bl": ("1", "boundary friction coefficient μbl", "0.15"),
+    "oil_level": ("mm", "oil level H above the lowest contact point of the outer ring raceway", "required in an oil bath"),
+    "VM": ("1", "drag loss factor read off the diagram of the edition (6000 diagram 2, 10000/3 diagram 4)",
+           "required in an oil bath"),
+    "skf_edition": ("", "6000 or 10000: the catalogue edition of the drag formula", "10000"),
+    "seal": ("", "seal type of SKF table 4: RSL, RZ, RSH, RS1, LS, CS, CS2, CS5", "from the designation suffix"),
+    "seals": ("1", "number of seals, 0, 1 or 2", "from the designation (2RSH: 2), else 2 where seal is given"),
+    "d_s": ("mm", "seal counterface diameter (d1, d2 or E of the bearing tables, table 4 says which)",
+            "required for contact seals"),
+    "Dw": ("mm", "rolling element diameter: an oil bath below Dw/2 is a low level (φrs)",
+           "none: H < (D − d)/4 counts as low"),
+    "T": ("mm", "total width of tapered roller bearings (the 10000/3 drag formula)", "required there"),
+}
+
+_DRAG_SOURCE = {
+    "6000": "SKF 6000 diagram 2 (p. 99; red curve ball bearings, blue roller bearings)",
+    "10000": "SKF 10000/3 diagram 4 (p. 112)",
+}
+_OIL = ("oil_bath", "circulating_oil")
+_CONSTANTS = ("R1", "R2", "R3", "R4", "S1", "S2", "S3", "S4", "S5", "Kz", "KL", "irw", "mu_EHL_type", "bore",
+              "start_factor")
+_TEXTS = ("bearing_type", "family", "label", "seal", "unknown_contact_seal")
+
+
+class _Extra:
+    """The extra inputs: per-row arrays or one value for all rows."""
+
+    def __init__(self, extra: dict | None, size: int):
+        self.values = dict(extra or {})
+        self.size = size
+
+    def given(self, name: str) -> bool:
+        return name in self.values and self.values[name] is not None
+
+    def text(self, name: str, upper: bool = False):
+        """One stripped string (or None) for all rows, or an object array of them."""
+        value = self.values.get(name)
+        if value is None or np.ndim(value) == 0:
+            return _clean(value, upper)
+        return np.array([_clean(v, upper) for v in value], dtype=object)
+
+    def number(self, name: str) -> np.ndarray:
+        value = self.values.get(name, math.nan)
+        if value is None:
+            value = math.nan
+        if np.ndim(value) == 0:
+            return np.full(self.size, _to_float(value))
+        return pd.to_numeric(pd.Series(list(value)), errors="coerce").to_numpy(dtype=float)
+
+
+def _clean(value, upper):
+    if value is None or (isinstance(value, float) and math.isnan(value)):
+        return None
+    if isinstance(value, (float, np.floating)) and float(value).is_integer():
+        value = int(value)  # 6000.0 from a numeric column -> '6000'
+    text = str(value).strip()
+    if not text:
+        return None
+    return text.upper() if upper else text
+
+
+def _to_float(value) -> float:
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        return math.nan
+
+
+def _per_row(value, size):
+    return np.broadcast_to(np.asarray(value, dtype=object), (size,))
+
+
+def _choice(x: _Extra, name: str, default: str, upper: bool = False):
+    """A text input with its default where blank: one string for all rows, or an object array."""
+    value = x.text(name, upper)
+    if np.ndim(value) == 0:
+        return default if value is None else value
+    return np.where(np.equal(value, None), default, value)
+
+
+def _mapped(values, table: dict) -> np.ndarray | float:
+    """table[value] per row (NaN for values not in the table)."""
+    if np.ndim(values) == 0:
+        return table.get(values, math.nan)
+    return pd.Series(values, dtype=object).map(table).to_numpy(dtype=float)
+
+
+def _each(values, mask) -> list:
+    """The distinct values of the rows in ``mask`` (one value shared by all rows, or an array)."""
+    if np.ndim(values) == 0:
+        return [values] if np.any(mask) else []
+    return sorted(set(np.asarray(values)[mask].tolist()))
+
+
+def _resolve(x: _Extra, supports: SupportArrays, size: int):
+    """SKF constants per row (arrays, or scalars for one bearing) and the resolution errors per row."""
+    designation, bearing_type, series = x.text("designation"), x.text("type"), x.text("series")
+    plain = np.broadcast_to(supports.plain, (size,))
+    if all(np.ndim(v) == 0 for v in (designation, bearing_type, series)) and not plain.any():
+        one = _constants_of(designation, bearing_type, series)
+        return {k: one[k] for k in (*_CONSTANTS, *_TEXTS, "seals", "error")}, False
+    keys = pd.Series(list(zip(*(_per_row(v, size) for v in (designation, bearing_type, series)), plain)),
+                     dtype=object)
+    codes, uniques = pd.factorize(keys, sort=False)
+    per_key = [_constants_of(*key[:3]) if not key[3] else _blank("") for key in uniques]
+    out = {}
+    for name in (*_CONSTANTS, "seals"):
+        out[name] = np.array([c[name] for c in per_key], dtype=float)[codes]
+    for name in (*_TEXTS, "error"):
+        out[name] = np.array([c[name] for c in per_key], dtype=object)[codes]
+    return out, True
+
+
+def _blank(error: str) -> dict:
+    return {**{k: math.nan for k in (*_CONSTANTS, "seals")}, **{k: "" for k in _TEXTS}, "error": error}
+
+
+def _constants_of(designation, bearing_type, series) -> dict:
+    try:
+        b = catalogue.skf_bearing(designation, bearing_type, series)
+    except BearingheatError as exc:
+        return _blank(str(exc))
+    out = {k: getattr(b, k) for k in _CONSTANTS if k != "family"}
+    out.update(bearing_type=b.bearing_type, family=b.family, label=b.label, seal=b.seal or "",
+               unknown_contact_seal=b.unknown_contact_seal,
+               seals=math.nan if b.seals is None else float(b.seals), error="")
+    return out
+
+
+def evaluate_skf_model(supports: SupportArrays, labels: Labels, f2_chart: F2Chart | None = None,
+                       extra: dict | None = None):
+    """The SKF model (SKF 6000 pp. 87-105; 10000/3 pp. 97-114) on support arrays: checks, then the kernels.
+
+    ``supports`` gives d, D, B, C0, Y, n, nu, Fr, Fa; ``extra`` the inputs of
+    :data:`EXTRA_INPUTS`. ``f2_chart`` is not used (the catalogue model's
+    chart). Returns (results, problems): every result of :data:`RESULTS`
+    is an array of the rows' length in catalogue units (N·mm, W); problems
+    name the rows that fail a check, the column and the expected value.
+    """
+    s = supports
+    size = len(s.n)
+    shape = (size,)
+    x = _Extra(extra, size)
+    problems: list[Problem] = []
+
+    def add(mask, level, message):
+        mask = np.broadcast_to(np.asarray(mask, dtype=bool), shape)
+        if mask.any():
+            problems.append(Problem(mask, level, message))
+
+    def row(values):
+        return np.broadcast_to(np.asarray(values, dtype=float), shape)
+
+    c, many = _resolve(x, s, size)
+    text = {k: c[k] for k in (*_TEXTS, "error")}
+    unresolved = np.broadcast_to(np.not_equal(text["error"], ""), shape)
+    add(unresolved, "error", lambda i: at(text["error"], i))
+    ok = ~unresolved & ~np.broadcast_to(s.plain, shape)
+
+    def label(i):
+        return at(text["label"], i)
+
+    def value_of(col, values, i):
+        return labels.value(col, at(values, i))
+
+    def missing(col, why, mask):
+        add(mask & ok, "error", lambda i, col=col: f"{labels.name(col, i)}: missing; {why(i)}")
+
+    def bad(col, values, condition, mask):
+        add(mask & ok, "error",
+            lambda i, col=col: f"{labels.name(col, i)}: {value_of(col, values, i)} {condition}")
+
+    # --- geometry and operating point (6000 p. 90; 10000/3 p. 100)
+    d = np.where(np.isnan(row(s.d)), row(c["bore"]), row(s.d))
+    D, n, nu, Fr, Fa = row(s.D), row(s.n), row(s.nu), row(s.Fr), row(s.Fa)
+    missing("d", lambda i: "the bore d gives dm = 0.5 (d + D) (SKF 6000 p. 90)", np.isnan(d))
+    bad("d", d, "must be > 0", d <= 0)
+    missing("D", lambda i: "the outside diameter D gives dm = 0.5 (d + D) (SKF 6000 p. 90)", np.isnan(D))
+    add(ok & (D <= d), "error", lambda i: f"{labels.name('D', i)}: {labels.value('D', D[i])} must be larger than "
+                                          f"{labels.name('d', i)} = {labels.value('d', d[i])}")
+    missing("n", lambda i: "the operating speed is needed", np.isnan(n))
+    bad("n", n, "must be >= 0 (speed magnitude)", n < 0)
+    missing("nu", lambda i: "the operating viscosity (base oil viscosity for grease) is needed", np.isnan(nu))
+    bad("nu", nu, "must be > 0", nu <= 0)
+    bad("Fr", Fr, "must be >= 0", Fr < 0)
+    bad("Fa", Fa, "must be >= 0", Fa < 0)
+    family = text["family"]
+    bearing_type = text["bearing_type"]
+    C0, Y = row(s.C0), row(s.Y)
+    missing("C0", lambda i: "the axial load of a deep groove ball bearing needs C0 for αF = 24.6·(Fa/C0)^0.24 "
+                            "(SKF 6000 p. 91, table 2a)", np.equal(family, "deep_groove_ball") & (Fa > 0) & np.isnan(C0))
+    bad("C0", C0, "must be > 0", C0 <= 0)
+    missing("Y", lambda i: "the axial load of a tapered roller bearing needs its catalogue factor Y "
+                           "(SKF 6000 p. 91, table 2a)", np.equal(family, "tapered_roller") & (Fa > 0) & np.isnan(Y))
+    bad("Y", Y, "must be > 0", Y <= 0)
+    thrust_only_fa = np.isin(family, ("thrust_ball", "thrust_cylindrical_roller"))
+    carb = np.equal(family, "carb")
+    add(ok & thrust_only_fa & (Fr > 0), "warning",
+        lambda i: f"{labels.name('Fr', i)}: {labels.value('Fr', Fr[i])} on a {label(i)}: its formulas "
+                  "(SKF 6000 p. 92, table 2b) use Fa only")
+    add(ok & carb & (Fa > 0), "warning",
+        lambda i: f"{labels.name('Fa', i)}: {labels.value('Fa', Fa[i])} on a {label(i)}: CARB bearings take no "
+                  "axial load; their formulas (SKF 6000 p. 91, table 2a) use Fr only")
+
+    # --- lubrication, oil, sliding coefficients (6000 pp. 98-101; 10000/3 pp. 102-103)
+    lubrication = x.text("lubrication")
+    known_lub = np.isin(lubrication, catalogue.LUBRICATIONS)
+    add(ok & np.equal(lubrication, None), "error",
+        lambda i: f"{labels.name('lubrication', i)}: missing; expected one of {', '.join(catalogue.LUBRICATIONS)}")
+    add(ok & ~known_lub & np.not_equal(lubrication, None), "error",
+        lambda i: f"{labels.name('lubrication', i)}: {at(lubrication, i)!r} is not one of "
+                  f"{', '.join(catalogue.LUBRICATIONS)}")
+    oil = _choice(x, "oil", catalogue.DEFAULT_OIL)
+    add(ok & ~np.isin(oil, catalogue.OILS), "error",
+        lambda i: f"{labels.name('oil', i)}: {at(oil, i)!r} is not one of {', '.join(catalogue.OILS)}")
+    mu_sl_given, mu_bl = x.number("mu_sl"), x.number("mu_bl")
+    bad("mu_sl", mu_sl_given, "must be >= 0", mu_sl_given < 0)
+    bad("mu_bl", mu_bl, "must be >= 0", mu_bl < 0)
+    mu_bl = np.where(np.isnan(mu_bl), catalogue.mu_bl_default(), mu_bl)
+    mu_ehl_type = row(c["mu_EHL_type"])
+    mu_ehl = np.where(np.isnan(mu_ehl_type), _mapped(oil, {o: catalogue.mu_ehl(o) for o in catalogue.OILS}),
+                      mu_ehl_type)
+    oil_lubricated = np.isin(lubrication, _OIL)
+    add(ok & oil_lubricated & ((nu < 2) | (nu > 500)), "warning",
+        lambda i: f"{labels.name('nu', i)}: {labels.value('nu', nu[i])} is outside 2 to 500 mm²/s, the range of "
+                  "the SKF model for oil lubrication (SKF 10000/3 p. 100)")
+
+    # --- oil level, low or high (φrs), drag inputs
+    H, VM, Dw = x.number("oil_level"), x.number("VM"), x.number("Dw")
+    bath = np.equal(lubrication, "oil_bath")
+    jet_drag = np.equal(lubrication, "circulating_oil") & ~np.isnan(VM)
+    drag_rows = ok & (bath | jet_drag)
+    missing("oil_level", lambda i: "an oil bath needs the oil level H [mm] above the lowest contact point of the "
+                                   "outer ring raceway (SKF 10000/3 p. 110, fig. 2)", bath & np.isnan(H))
+    missing("oil_level", lambda i: "the drag of oil jet lubrication is the oil-bath drag at H = half the diameter "
+                                   "of the lowest rolling element, doubled (SKF 6000 p. 100; 10000/3 p. 112): give "
+                                   "that H", jet_drag & np.isnan(H))
+    bad("oil_level", H, "must be >= 0", H < 0)
+    bad("Dw", Dw, "must be > 0", Dw <= 0)
+    bad("VM", VM, "must be >= 0", VM < 0)
+    edition = _choice(x, "skf_edition", catalogue.DEFAULT_EDITION)
+    known_edition = np.isin(edition, catalogue.EDITIONS)
+    add(ok & ~known_edition, "error",
+        lambda i: f"{labels.name('skf_edition', i)}: {at(edition, i)!r} is not one of "
+                  f"{', '.join(catalogue.EDITIONS)}")
+    dm = 0.5 * (d + D)
+    missing("VM", lambda i: f"an oil bath needs the drag loss factor VM: read it off "
+                            f"{_DRAG_SOURCE.get(at(edition, i), _DRAG_SOURCE['10000'])} for "
+                            f"{'ball' if at(bearing_type, i) in catalogue.BALL_TYPES else 'roller'} bearings at "
+                            f"H/dm = {H[i] / dm[i]:.3g}", bath & np.isnan(VM) & known_edition)
+    add(ok & ~oil_lubricated & ~np.isnan(VM), "warning",
+        lambda i: f"{labels.name('VM', i)}: ignored; there is drag only in an oil bath or with oil jet")
+    low_level = np.where(np.isnan(Dw), H < 0.25 * (D - d), H < 0.5 * Dw)
+    K_rs = _mapped(lubrication, {v: catalogue.k_rs(v) for v in catalogue.LUBRICATIONS})
+    K_rs = np.where(bath & ~low_level, 0.0, K_rs)   # above the centre of the lowest rolling element: φrs = 1
+
+    # --- G variables per row of table 2 (one call per formula family)
+    G_rr, G_sl, G_sl_start = (np.full(shape, np.nan) for _ in range(3))
+    consts = {k: c[k] for k in ("R1", "R2", "R3", "R4", "S1", "S2", "S3", "S4", "S5")}
+    for fam in _each(family, ok):
+        rows = np.flatnonzero(ok & np.equal(family, fam))
+        sub = {k: (v[rows] if many else v) for k, v in consts.items()}
+        with np.errstate(all="ignore"):
+            Grr, Gsl = skf.rolling_sliding_variables(fam, sub, dm[rows], Fr[rows], Fa[rows], n[rows], nu[rows],
+                                                     C0[rows], Y[rows])
+            G_rr[rows], G_sl[rows] = Grr, Gsl
+            G_sl_start[rows] = (skf.rolling_sliding_variables(fam, sub, dm[rows], Fr[rows], Fa[rows], 0.0 * n[rows],
+                                                              nu[rows], C0[rows], Y[rows])[1]
+                                if fam in skf.SPEED_DEPENDENT_GSL else Gsl)
+
+    # --- seals (6000 p. 90, table 4 p. 96; 10000/3 p. 109)
+    M_seal = _seal_torques(x, text, ok, D, row(c["seals"]), labels, add, shape)
+
+    # --- drag (6000 p. 99; 10000/3 pp. 110-112)
+    M_drag = np.zeros(shape)
+    if drag_rows.any():
+        M_drag = _drag_torques(s, x, c, text, drag_rows, edition, d, D, dm, n, nu, H, VM, jet_drag, labels, add,
+                               shape)
+
+    # --- the four components
+    Kz = row(c["Kz"])
+    with np.errstate(all="ignore"):
+        phi_ish = skf.inlet_shear_heating_factor(n, nu, dm)
+        phi_rs = skf.kinematic_replenishment_factor(K_rs, Kz, nu, n, d, D)
+        phi_bl = skf.boundary_weighting_factor(n, nu, dm)
+        mu_sl = np.where(np.isnan(mu_sl_given), skf.sliding_coefficient(phi_bl, mu_bl, mu_ehl), mu_sl_given)
+        M_rr = skf.rolling_torque(G_rr, nu, n)
+        M_sl = skf.sliding_torque(G_sl, mu_sl)
+        MR = skf.total_torque(phi_ish, phi_rs, M_rr, M_sl, M_seal, M_drag)
+        M_start = skf.starting_torque(skf.sliding_torque(G_sl_start, mu_bl), M_seal)
+        NR = skf.power_loss(MR, n)
+    start_factor = row(c["start_factor"])
+    add(ok & (start_factor > 1), "warning",
+        lambda i: f"M_start of a {label(i)} may be up to {start_factor[i]:g} times Msl + Mseal "
+                  "(SKF 6000 p. 103; 10000/3 p. 114)")
+    results = {"G_rr": G_rr, "G_sl": G_sl, "M_rr": M_rr, "M_sl": M_sl, "M_seal": M_seal, "M_drag": M_drag,
+               "phi_ish": phi_ish, "phi_rs": phi_rs, "phi_bl": phi_bl, "mu_sl": mu_sl, "M_start": M_start,
+               "MR": MR, "NR": NR}
+    return {k: np.broadcast_to(np.asarray(v, dtype=float), shape) for k, v in results.items()}, problems
+
+
+def _seal_torques(x, text, ok, D, seals_designation, labels, add, shape):
+    """Mseal per row from the seal type, the count and d_s; rows without a seal get 0."""
+    size = shape[0]
+    seal_given = x.text("seal", upper=True)
+    seals = x.number("seals")
+    given_count = ~np.isnan(seals)
+    M_seal = np.zeros(shape)
+    unknown = text["unknown_contact_seal"]
+    if (np.ndim(seal_given) == 0 and seal_given is None and np.ndim(text["seal"]) == 0 and not text["seal"]
+            and not given_count.any() and np.ndim(unknown) == 0 and not unknown):
+        return M_seal  # no seal anywhere: the common case of a table of open bearings
+    seal_given = _per_row(seal_given, size)
+    seal = np.where(np.equal(seal_given, None), _per_row(text["seal"], size), seal_given)
+    seal = np.where(seal == "", None, seal)
+    seals = np.where(given_count, seals, np.where(~np.isnan(seals_designation), seals_designation,
+                                                  np.where(np.equal(seal, None), 0.0, 2.0)))
+    d_s = x.number("d_s")
+    add(ok & given_count & ~np.isin(seals, (0.0, 1.0, 2.0)), "error",
+        lambda i: f"{labels.name('seals', i)}: {labels.value('seals', seals[i])} must be 0, 1 or 2")
+    add(ok & (d_s <= 0), "error", lambda i: f"{labels.name('d_s', i)}: {labels.value('d_s', d_s[i])} must be > 0")
+    add(ok & np.not_equal(unknown, "") & np.equal(seal_given, None) & ~given_count, "error",
+        lambda i: f"{labels.name('seal', i)}: missing; the designation's contact seal {at(unknown, i)!r} is not a "
+                  f"seal type of SKF table 4 (6000 p. 96); give seal as one of {', '.join(catalogue.SEAL_TYPES)}, "
+                  "or seals = 0 to leave the seal friction out")
+    add(ok & np.equal(seal, None) & given_count & (seals > 0), "error",
+        lambda i: f"{labels.name('seal', i)}: missing; {labels.name('seals', i)} = {seals[i]:g} needs the seal type, "
+                  f"one of {', '.join(catalogue.SEAL_TYPES)} (SKF 6000 table 4, p. 96)")
+    sealed = ok & np.not_equal(seal, None) & (seals > 0)
+    if not sealed.any():
+        return M_seal
+    types = _per_row(text["bearing_type"], size)
+
+    def label(i):
+        return at(text["label"], i)
+
+    for seal_type, bearing_type in sorted(set(zip(seal[sealed].tolist(), types[sealed].tolist()))):
+        rows = np.flatnonzero(sealed & (seal == seal_type) & (types == bearing_type))
+        mask = np.zeros(shape, dtype=bool)
+        mask[rows] = True
+        if seal_type not in catalogue.SEAL_TYPES:
+            add(mask, "error", lambda i, v=seal_type: f"{labels.name('seal', i)}: {v!r} is not a seal type of SKF "
+                                                      f"table 4; expected one of {', '.join(catalogue.SEAL_TYPES)}")
+            continue
+        table_rows = catalogue.seal_rows(seal_type, bearing_type)
+        if not table_rows:
+            offered = sorted(_types_with(seal_type))
+            add(mask, "error", lambda i, v=seal_type, o=offered: (
+                f"{labels.name('seal', i)}: {v} on a {label(i)}: SKF table 4 (6000 p. 96) has {v} seals only for "
+                f"{', '.join(o)}"))
+            continue
+        found = catalogue.seal_lookup(seal_type, bearing_type, D[rows])
+        outside = np.zeros(shape, dtype=bool)
+        outside[rows[~found["found"]]] = True
+        ranges = "; ".join(r.range_text for r in table_rows)
+        add(outside, "error", lambda i, v=seal_type: (
+            f"{labels.name('D', i)}: {labels.value('D', D[i])} is outside SKF table 4 (6000 p. 96) for {v} seals "
+            f"on a {label(i)} ({ranges})"))
+        needs_ds = np.zeros(shape, dtype=bool)
+        needs_ds[rows] = (found["KS1"] > 0) & np.isnan(d_s[rows])
+        dimension = table_rows[0].d_s_dimension
+        add(needs_ds, "error", lambda i, v=seal_type, dim=dimension: (
+            f"{labels.name('d_s', i)}: missing; {v} seals need the seal counterface diameter d_s ({dim} in the "
+            f"bearing tables; SKF 6000 table 4, p. 96)"))
+        with np.errstate(all="ignore"):
+            torque = skf.seal_torque(found["KS1"], d_s[rows], found["beta"], found["KS2"])
+            M_seal[rows] = skf.seal_count_factor(seals[rows], found["one_seal_factor"]) * torque
+    return M_seal
+
+
+def _types_with(seal_type: str) -> set[str]:
+    return {catalogue.SKF_TYPES[t] for t in catalogue.SKF_TYPES if catalogue.seal_rows(seal_type, t)}
+
+
+def _drag_torques(s, x, c, text, rows_mask, edition, d, D, dm, n, nu, H, VM, jet, labels, add, shape):
+    """Mdrag per row of an oil bath (or oil jet with VM) by the edition's formula; checks of its inputs."""
+    bearing_type = text["bearing_type"]
+    ball = np.isin(bearing_type, tuple(catalogue.BALL_TYPES))
+    tapered = np.equal(bearing_type, "tapered_roller")
+
+    def label(i):
+        return at(text["label"], i)
+
+    B = np.broadcast_to(np.asarray(s.B, dtype=float), shape)
+    T = x.number("T")
+    e6000 = np.equal(edition, "6000")
+    e10000 = np.equal(edition, "10000")
+    roller = rows_mask & ~ball
+    add(roller & e6000 & np.isnan(B), "error",
+        lambda i: f"{labels.name('B', i)}: missing; the drag 10·VM·Kroll·B·dm⁴·n² of a {label(i)} needs the inner "
+                  "ring width B (SKF 6000 p. 99)")
+    add(roller & e10000 & ~tapered & np.isnan(B), "error",
+        lambda i: f"{labels.name('B', i)}: missing; the drag of a {label(i)} needs the bearing width B (the height "
+                  "of a thrust bearing; SKF 10000/3 p. 111)")
+    add(roller & e10000 & tapered & np.isnan(T), "error",
+        lambda i: f"{labels.name('T', i)}: missing; the drag of a tapered roller bearing needs the total width T "
+                  "(SKF 10000/3 p. 111)")
+    for col, values in (("B", B), ("T", T)):
+        add(rows_mask & (values <= 0), "error",
+            lambda i, col=col, values=values: f"{labels.name(col, i)}: {labels.value(col, values[i])} must be > 0")
+    limit = skf.drag_viscosity_limit(H, D)
+    add(rows_mask & e10000 & (nu > limit), "error",
+        lambda i: f"{labels.name('nu', i)}: {labels.value('nu', nu[i])} is above {limit[i]:g} mm²/s, the limit of "
+                  f"the SKF 10000/3 drag formula for an oil level H {'<=' if H[i] <= 0.5 * D[i] else '>'} D/2 "
+                  "(p. 110); use skf_edition 6000 or a thinner oil")
+    Kz = np.broadcast_to(np.asarray(c["Kz"], dtype=float), shape)
+    KL = np.broadcast_to(np.asarray(c["KL"], dtype=float), shape)
+    irw = np.broadcast_to(np.asarray(c["irw"], dtype=float), shape)
+    width = np.where(tapered & e10000, T, B)
+    with np.errstate(all="ignore"):
+        K_ball = skf.ball_drag_constant(irw, Kz, d, D)
+        K_roll = skf.roller_drag_constant(KL, Kz, d, D)
+        old = np.where(ball, skf.drag_torque_ball_6000(VM, K_ball, dm, n),
+                       skf.drag_torque_roller_6000(VM, K_roll, width, dm, n))
+        new = np.where(ball, skf.drag_torque_ball_10000(VM, K_ball, dm, n, nu, H, Kz, d, D),
+                       skf.drag_torque_roller_10000(VM, K_roll, width, dm, n, nu, H, Kz, KL, d, D))
+    drag = np.where(e6000, old, new) * np.where(jet, 2.0, 1.0)
+    return np.where(rows_mask, drag, 0.0)

@@ -1,0 +1,136 @@
+"""Numbers a designer could not have meant: non-finite, logical, outside the valid or plausible range.
+
+No result leaves calc or the API as NaN or inf with status ok: such a row is
+an error, and a number that is only implausible (a unit mix-up, usually) is
+a warning naming the column, the value and the range.
+"""
+import math
+
+import numpy as np
+import pandas as pd
+import pint
+import pytest
+
+import bearingheat as bh
+from bearingheat.calc.table import calc
+
+u = pint.get_application_registry()
+
+
+def row(**changes):
+    """The demo's 6208 in an oil bath, with columns replaced (a header with another unit replaces its column)."""
+    base = {"id": "A", "designation": "6208", "D [mm]": 80.0, "C0 [kN]": 18.0, "lubrication": "oil_bath",
+            "n [1/min]": 1480.0, "Fr [kN]": 3.2, "Fa [kN]": 0.5, "nu [mm^2/s]": 40.0}
+    for header in changes:
+        for old in [h for h in base if h.split(" [")[0] == header.split(" [")[0]]:
+            del base[old]
+    base.update(changes)
+    return base
+
+
+def results_of(out):
+    """The result columns of calc (the inputs come back as they were given)."""
+    first = list(out.columns).index("f0")
+    return out.iloc[:, first:].select_dtypes(float).to_numpy()
+
+
+def run(*rows):
+    return calc(pd.DataFrame(list(rows)))
+
+
+def test_a_good_row_stays_ok():
+    out = run(row())
+    assert out["status"].tolist() == ["ok"] and out["message"].tolist() == [""]
+
+
+@pytest.mark.parametrize("column, value, message", [
+    ("n [1/min]", math.inf, "n [1/min]: inf is not a finite number"),
+    ("Fr [kN]", -math.inf, "Fr [kN]: -inf is not a finite number"),
+    ("nu [mm^2/s]", math.inf, "nu [mm^2/s]: inf is not a finite number"),
+    ("D [mm]", 1e300, "D [mm]: 1e+300 is outside the valid range up to 100000 mm"),
+    ("Fr [kN]", 1e300, "Fr [kN]: 1e+300 (1e+303 N) is outside the valid range up to 1e+10 N"),
+])
+def test_non_finite_and_absurd_numbers_are_row_errors(column, value, message):
+    out = run(row(), row(**{column: value}))
+    assert out["status"].tolist() == ["ok", "error"]
+    assert out["message"].iat[1].split("; ")[0] == message
+    assert math.isnan(out["MR [N*mm]"].iat[1]) and not np.isinf(results_of(out)).any()
+
+
+def test_a_logical_value_is_not_a_load():
+    out = run(row(**{"Fr [kN]": True}))
+    assert out["status"].tolist() == ["error"]
+    assert out["message"].iat[0] == "True is a logical value, not a number for Fr [kN]"
+
+
+def test_ambient_temperature_in_kelvin_holding_celsius_is_refused():
+    out = run(row(**{"T_amb [K]": 20.0, "B [mm]": 18.0}))
+    assert out["status"].tolist() == ["error"]
+    assert out["message"].iat[0] == "T_amb [K]: 20 (-253.15 degC) is outside the valid range -60 to 200 degC"
+    assert math.isnan(out["T_op [degC]"].iat[0])
+
+
+def test_rpm_typed_under_hz_warns_against_the_limiting_speed():
+    out = run(row(**{"n [Hz]": 1480.0}))
+    assert out["status"].tolist() == ["warning"]
+    assert out["message"].iat[0] == ("n [Hz]: 1480 (88800 1/min) is above the limiting speed n_G = 20000 1/min of "
+                                     "6208 (Schaeffler HR 1, 2006); check the speed and its unit")
+
+
+def test_a_given_limiting_speed_wins_over_the_table():
+    out = run(row(**{"n [1/min]": 3000.0, "n_G [1/min]": 2500.0, "B [mm]": 18.0}))
+    assert "n [1/min]: 3000 is above the limiting speed n_G = 2500 1/min; check the speed and its unit" in \
+        out["message"].iat[0]
+
+
+def test_a_load_above_the_static_rating_warns():
+    out = run(row(**{"Fr [kN]": 30.0}))
+    assert out["status"].tolist() == ["warning"]
+    assert out["message"].iat[0] == ("Fr [kN]: 30 (30000 N) is above the static load rating C0 = 18000 N; check "
+                                     "the load and its unit")
+
+
+def test_an_implausible_but_valid_diameter_warns():
+    out = run(row(**{"D [mm]": 8000.0, "d [mm]": 7000.0}))
+    assert out["status"].tolist() == ["warning"]
+    assert out["message"].iat[0] == ("D [mm]: 8000 is outside the plausible range 1 to 6000 mm; check the number "
+                                     "and its unit; d [mm]: 7000 is outside the plausible range 0.5 to 5000 mm; "
+                                     "check the number and its unit")
+
+
+def test_a_subnormal_static_rating_cannot_give_an_ok_infinite_torque():
+    out = run(row(**{"C0 [N]": 5e-324}))
+    assert out["status"].tolist() == ["error"]
+    assert out["message"].iat[0].endswith("f1: the result is not a finite number for these inputs; check their "
+                                          "magnitudes and units")
+    assert not np.isinf(results_of(out)).any()
+
+
+API = dict(d=25 * u.mm, D=52 * u.mm, C0=7.8 * u.kN, lubrication="oil_bath", n=3000 * u.rpm, nu=12 * u("mm^2/s"))
+
+
+@pytest.mark.parametrize("changes, message", [
+    (dict(Fr=np.array([1.0, np.nan]) * u.kN),
+     "Fr: nan is not a number; leave the argument out where it is not known (at index 1)"),
+    (dict(Fa=np.inf * u.kN), "Fa: inf is not a finite number"),
+    (dict(D=1e300 * u.mm), "D: 1e+300 is outside the valid range up to 100000 mm"),
+    (dict(C0=5e-324 * u.N, Fa=1 * u.kN),
+     "MR: the result is not a finite number for these inputs; check their magnitudes and units"),
+])
+def test_the_api_raises_for_numbers_it_cannot_use(changes, message):
+    with pytest.raises(bh.FrictionInputError) as exc:
+        bh.friction_torque("6205", **{**API, **changes})
+    assert str(exc.value) == message
+
+
+def test_the_api_warns_for_an_implausible_number():
+    r = bh.friction_torque("6205", **{**API, "nu": 0.5 * u("mm^2/s")})
+    assert r.status == "warning"
+    assert r.messages[0] == "nu: 0.5 is outside the plausible range 1 to 100000 mm^2/s; check the number and its unit"
+
+
+def test_the_heat_balance_api_raises_for_an_ambient_temperature_out_of_range():
+    with pytest.raises(bh.HeatBalanceError) as exc:
+        bh.heat_balance("6205", d=25 * u.mm, D=52 * u.mm, B=15 * u.mm, C0=7.8 * u.kN, n=3000 * u.rpm,
+                        nu=12 * u("mm^2/s"), T_ambient=u.Quantity(20, "K"))
+    assert str(exc.value) == "T_amb: -253.15 is outside the valid range -60 to 200 degC"
