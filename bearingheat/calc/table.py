@@ -28,6 +28,7 @@ import numpy as np
 import pandas as pd
 
 from bearingheat.calc import contact, thermal
+from bearingheat.calc.thermal import DEFAULT_SPEED_FACTOR_METHOD, SPEED_FACTOR_METHODS
 from bearingheat.calc.contract import (PLAIN_TYPES, input_units, output_header, output_units, parse_header,
                                        range_problems)
 from bearingheat.calc.messages import Labels
@@ -169,7 +170,7 @@ def require_columns(frame: pd.DataFrame) -> None:
 
 def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart | str | None = None,
          units: dict[str, str] | None = None, cell: Callable[[str, int], str] | None = None,
-         effects=None) -> pd.DataFrame:
+         effects=None, n_per_method: str = DEFAULT_SPEED_FACTOR_METHOD) -> pd.DataFrame:
     """Run the friction model (and its extensions) on a table of supports.
 
     Returns the input columns followed by the result columns. ``model`` is
@@ -191,8 +192,13 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
     """
     if isinstance(f2_chart, str):
         f2_chart = F2Chart.from_csv(f2_chart)
+    if n_per_method not in SPEED_FACTOR_METHODS:
+        raise InputError(f"n_per_method: {n_per_method!r} is not one of {', '.join(SPEED_FACTOR_METHODS)}")
     converted = to_catalogue_units(table, units=units, cell=cell)
     frame = converted.frame
+    if n_per_method != DEFAULT_SPEED_FACTOR_METHOD:  # the table's default for blank n_per_method cells
+        cells = frame["n_per_method"] if "n_per_method" in frame.columns else pd.Series(None, index=frame.index)
+        frame = frame.assign(n_per_method=cells.where(cells.notna(), n_per_method))
     extra_problems: list[tuple[int, str, str]] = []
     for ext in EXTENSIONS.values():
         with np.errstate(all="ignore"):  # rows in error are computed too, and masked afterwards

@@ -44,6 +44,7 @@ from typing import Callable
 import numpy as np
 import pandas as pd
 
+from bearingheat.calc.contract import columns, register_choices
 from bearingheat.calc.models import FrictionPower, compute_supports
 from bearingheat.calc.supports import number_column, text_column
 from bearingheat.calc.viscosity import viscosity_model_rows
@@ -51,7 +52,8 @@ from bearingheat.catalogue.friction import resolve
 from bearingheat.catalogue.thermal import THERMAL_KIND, THERMAL_KINDS, method_refusal, reference_conditions
 from bearingheat.errors import DesignationError, HeatBalanceError
 from bearingheat.kernels import friction
-from bearingheat.kernels.thermal import (APPROXIMATION_RANGE, HEAT_FLOW_AREA, balance_root, balance_speed,
+from bearingheat.kernels.thermal import (APPROXIMATION_RANGE, HEAT_FLOW_AREA, OIL_HEAT_CAPACITY_FLOW, balance_root,
+                                         balance_speed,
                                          default_heat_transfer_coefficient, heat_flow_area,
                                          oil_heat_flow, operating_temperature, permissible_speed_factor,
                                          reference_heat_flux_density, seat_heat_flow,
@@ -64,6 +66,7 @@ __all__ = [
     "OPERATING_TEMPERATURE_LIMIT",
     "BELOW_AMBIENT_SEARCH",
     "SPEED_FACTOR_METHODS",
+    "DEFAULT_SPEED_FACTOR_METHOD",
     "SpeedFactorMethod",
     "VISCOSITY_AT",
     "THERMAL_INPUTS",
@@ -89,8 +92,7 @@ VISCOSITY_AT = {
 
 
 #: input columns that only the heat balance reads (B and C0 belong to the friction model as well)
-THERMAL_INPUTS = frozenset({"T", "k_q", "T_amb", "T_bearing", "V_oil", "dT_oil", "Q_E", "nu40", "nu100", "iso_vg",
-                            "VI", "n_G", "n_thr_catalogue"})
+THERMAL_INPUTS = frozenset(columns(owner="thermal", kind="input"))
 
 
 # ---- rows: thermal reference speed of catalogue bearings -------------------------------------
@@ -131,6 +133,8 @@ def thermal_reference_speed_details(frame: pd.DataFrame) -> pd.DataFrame:
     D = number_column(frame, "D")
     B = number_column(frame, "B").copy()
     T = number_column(frame, "T")
+    d1 = number_column(frame, "d1")
+    D1 = number_column(frame, "D1")
     C0 = number_column(frame, "C0")
     reason = [r for _, r in resolved]
     kind = np.array([""] * n_rows, dtype=object)
@@ -156,11 +160,19 @@ def thermal_reference_speed_details(frame: pd.DataFrame) -> pd.DataFrame:
             ("D", D[i], "the outside diameter D gives dM = (d + D)/2 and A_r", lambda v: v > d[i],
              f"must be larger than d = {d[i]:g} mm"),
         )
-        width = HEAT_FLOW_AREA[kind[i]][2]
-        if width is not None:
-            formula = HEAT_FLOW_AREA[kind[i]][1]
-            value = B[i] if width == "B" else T[i]
-            what = "width" if width == "B" else "total width"
+        area_columns = {"B": (B[i], "width"), "T": (T[i], "total width"),
+                        "d1": (d1[i], "outside diameter d1 of the shaft washer"),
+                        "D1": (D1[i], "bore D1 of the housing washer")}
+        needed = HEAT_FLOW_AREA[kind[i]][2]
+        formula = HEAT_FLOW_AREA[kind[i]][1]
+        absent = [c for c in needed if np.isnan(area_columns[c][0])]
+        if len(absent) > 1:
+            reason[i] = (f"{' and '.join(c + ' [mm]' for c in absent)}: missing; the heat flow area A_r = {formula} "
+                         f"of {entry.label.split(' series')[0]}s needs them (HR 1, p. 64); the friction torque is "
+                         "computed without them")
+            continue
+        for width in needed:
+            value, what = area_columns[width]
             checks += ((width, value, f"the heat flow area A_r = {formula} needs the {what}",
                         lambda v: v > 0, "must be > 0"),)
         for column, value, why, ok, condition in checks:
@@ -193,7 +205,7 @@ def thermal_reference_speed_details(frame: pd.DataFrame) -> pd.DataFrame:
         if not rows.any():
             continue
         ref = reference_conditions(k)
-        A_r[rows] = heat_flow_area(k, d[rows], D[rows], B[rows], T[rows])
+        A_r[rows] = heat_flow_area(k, d[rows], D[rows], B[rows], T[rows], d1[rows], D1[rows])
         q_r[rows] = reference_heat_flux_density(k, A_r[rows])
         load_ratio[rows] = ref.load_ratio
         nu_ref[rows] = ref.nu
@@ -401,11 +413,12 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
         raise HeatBalanceError(f"method: {method!r} is not one of {', '.join(SPEED_FACTOR_METHODS)}")
     n_rows = len(frame)
     problems: list[tuple[int, str, str]] = []
+    methods = _row_methods(frame, method, problems)
     has = set(frame.columns)
     # rows whose friction failed, and plain bushings (no rolling bearing heat balance), are skipped
     failed = (results["status"].to_numpy() == "error") | _plain_rows(results)
     columns: dict[str, np.ndarray] = {}
-    wants_thr = bool({"B", "T"} & has) or "n_thr_catalogue" in has
+    wants_thr = bool({"B", "T", "d1", "D1"} & has) or "n_thr_catalogue" in has
     wants_balance = "T_amb" in has
     if not (wants_thr or wants_balance):
         return pd.DataFrame(index=frame.index), problems
@@ -476,9 +489,33 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
     # --- permissible speed at the bearing temperature T_bearing
     if "T_bearing" in has:
         columns["n_per"] = _permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue,
-                                                   T_bearing, T_amb, Q_S, Q_L, Q_E, usable, method, problems)
-    ordered = [c for c in ("n_thr", "n_per", "T_op", "nu_op", "Q_S", "Q_L") if c in columns]
+                                                   T_bearing, T_amb, Q_S, Q_L, Q_E, usable, methods, problems)
+        columns["n_per_method_used"] = np.where(np.isnan(columns["n_per"]), "",
+                                                [SPEED_FACTOR_METHODS[m].title for m in methods]).astype(object)
+    _assumed_oil_outlet(frame, usable, problems)
+    ordered = [c for c in ("n_thr", "n_per", "n_per_method_used", "T_op", "nu_op", "Q_S", "Q_L") if c in columns]
     return pd.DataFrame({c: columns[c] for c in ordered}, index=frame.index), problems
+
+
+def _row_methods(frame: pd.DataFrame, default: str, problems: list) -> np.ndarray:
+    """The n_per method of every row: its ``n_per_method`` cell, else ``default``; unknown names are row errors."""
+    names = np.array([v or default for v in text_column(frame, "n_per_method")], dtype=object)
+    for i in np.flatnonzero(~np.isin(names, list(SPEED_FACTOR_METHODS))):
+        problems.append((int(i), "error", f"n_per_method: {names[i]!r} is not one of "
+                                          f"{', '.join(SPEED_FACTOR_METHODS)}"))
+        names[i] = default
+    return names
+
+
+def _assumed_oil_outlet(frame: pd.DataFrame, usable: np.ndarray, problems: list) -> None:
+    """Warn on every oil-cooled row without dT_oil: the optimistic assumption is said, not hidden."""
+    V_oil = number_column(frame, "V_oil")
+    dT_oil = number_column(frame, "dT_oil")
+    for i in np.flatnonzero(usable & (V_oil > 0) & np.isnan(dT_oil)):
+        problems.append((int(i), "warning", "dT_oil [K]: not given; the oil is taken to enter at T_amb and to leave "
+                                            "at the bearing temperature, the most heat it can carry away "
+                                            f"({OIL_HEAT_CAPACITY_FLOW:g} W/(l/min*K) * V_oil * (T - T_amb)); give "
+                                            "dT_oil for a cautious value"))
 
 
 def _exact_speed_factor(sel, n_thr, f0, nu, dM, load_torque, Q, problems):
@@ -517,10 +554,13 @@ SPEED_FACTOR_METHODS: dict[str, SpeedFactorMethod] = {m.name: m for m in (
     SpeedFactorMethod("exact", "exact root", _exact_speed_factor),
     SpeedFactorMethod("approximation", "catalogue approximation", _approximate_speed_factor),
 )}
+#: the method of rows whose n_per_method cell is blank
+DEFAULT_SPEED_FACTOR_METHOD = "exact"
+register_choices("n_per_method", lambda: tuple(SPEED_FACTOR_METHODS))
 
 
 def _permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue, T_bearing, T_amb, Q_S, Q_L, Q_E,
-                            usable, method, problems):
+                            usable, methods, problems):
     n_rows = len(frame)
     rows = usable & ~np.isnan(T_bearing)
     for i in np.flatnonzero(usable & np.isnan(T_bearing)):
@@ -546,18 +586,17 @@ def _permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue, T_b
     f0 = results["f0"].to_numpy(dtype=float)
     load_torque = results["M1"].to_numpy(dtype=float) + np.nan_to_num(results["M2"].to_numpy(dtype=float))
     power = FrictionPower(frame, results)
-    sel = np.flatnonzero(rows & power.closed)
-    if len(sel):
-        f_n = SPEED_FACTOR_METHODS[method].solve(sel, n_used[sel], f0[sel], nu[sel], dM[sel], load_torque[sel],
-                                                 Q[sel], problems)
-        out[sel] = f_n * n_used[sel]
+    for name, method in SPEED_FACTOR_METHODS.items():
+        sel = np.flatnonzero(rows & power.closed & (methods == name))
+        if len(sel):
+            f_n = method.solve(sel, n_used[sel], f0[sel], nu[sel], dM[sel], load_torque[sel], Q[sel], problems)
+            out[sel] = f_n * n_used[sel]
     generic = rows & ~power.closed
     if generic.any():
         out[generic] = _generic_speed(power, nu, Q)[generic]
-        if method != "exact":
-            for i in np.flatnonzero(generic):
-                problems.append((int(i), "warning", f"n_per: the {SPEED_FACTOR_METHODS[method].title} holds for "
-                                                    "the catalogue model only; the exact root is used"))
+        for i in np.flatnonzero(generic & (methods != "exact")):
+            problems.append((int(i), "warning", f"n_per: the {SPEED_FACTOR_METHODS[methods[i]].title} holds for "
+                                                "the catalogue model only; the exact root is used"))
     n_G = number_column(frame, "n_G")
     capped = rows & (out > n_G)
     for i in np.flatnonzero(capped):
@@ -591,7 +630,8 @@ def prepare(frame: pd.DataFrame):
 
 def extend(frame: pd.DataFrame, results: pd.DataFrame):
     """The heat balance columns of every row whose friction succeeded; returns (columns, problems)."""
-    columns, problems = heat_balance_rows(frame, results, method="exact", t_limit=OPERATING_TEMPERATURE_LIMIT)
+    columns, problems = heat_balance_rows(frame, results, method=DEFAULT_SPEED_FACTOR_METHOD,
+                                          t_limit=OPERATING_TEMPERATURE_LIMIT)
     columns.index = frame.index
     return columns, problems
 

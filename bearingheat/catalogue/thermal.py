@@ -21,6 +21,7 @@ from bearingheat.errors import HeatBalanceError
 __all__ = [
     "THERMAL_KIND",
     "THERMAL_KINDS",
+    "REFERENCE_KIND",
     "REFUSED_TYPES",
     "CONTACT_SEAL_REASON",
     "ReferenceConditions",
@@ -41,12 +42,14 @@ THERMAL_KIND: dict[str, str | None] = {
     "self_aligning_ball": "radial",
     "four_point_contact_ball": "radial",
     "thrust_roller": "thrust",
-    "axial_spherical_roller": "thrust",
+    "axial_spherical_roller": "axial_spherical",  # A_r of HR 1 p. 64 with d1, D1; thrust reference conditions
     "thrust_ball": None,
     "combined": None,
 }
 #: the kinds of heat flow area, in the order rows are grouped by them
-THERMAL_KINDS = ("radial", "tapered", "thrust")
+THERMAL_KINDS = ("radial", "tapered", "thrust", "axial_spherical")
+#: kind of heat flow area -> the reference conditions it takes (tables/thermal_reference_conditions.csv)
+REFERENCE_KIND = {"radial": "radial", "tapered": "radial", "thrust": "thrust", "axial_spherical": "thrust"}
 #: why THERMAL_KIND is None for a type
 REFUSED_TYPES = {
     "thrust_ball": "the thermal method (ISO 15312, DIN 732) does not apply to thrust ball bearings",
@@ -85,11 +88,11 @@ def reference_conditions(kind: str) -> ReferenceConditions:
     >>> reference_conditions("thrust").q_r_exponent
     -0.16
     """
-    key = "radial" if kind == "tapered" else kind
+    if kind not in REFERENCE_KIND:
+        raise HeatBalanceError(f"kind: {kind!r} is not one of {', '.join(REFERENCE_KIND)}")
+    key = REFERENCE_KIND[kind]
     table = load_table("thermal_reference_conditions")
     hit = table[table["kind"] == key]
-    if hit.empty:
-        raise HeatBalanceError(f"kind: {kind!r} is not one of radial, tapered, thrust")
     row = hit.iloc[0]
     return ReferenceConditions(kind=key, load_ratio=float(row["load_ratio"]), nu=float(row["nu_ref"]),
                                q_r=float(row["q_r"]), A_r_limit=float(row["A_r_limit"]),

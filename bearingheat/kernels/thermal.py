@@ -78,32 +78,40 @@ OIL_HEAT_CAPACITY_FLOW = 28.6
 
 # ---- heat flow area and heat carried away ----------------------------------------------------
 
-def _area_radial(d, D, B, T):
+def _area_radial(d, D, B, T, d1, D1):
     return math.pi * np.asarray(B, dtype=float) * (np.asarray(D, dtype=float) + d)
 
 
-def _area_tapered(d, D, B, T):
+def _area_tapered(d, D, B, T, d1, D1):
     return math.pi * np.asarray(T, dtype=float) * (np.asarray(D, dtype=float) + d)
 
 
-def _area_thrust(d, D, B, T):
+def _area_thrust(d, D, B, T, d1, D1):
     return math.pi / 2.0 * (np.square(np.asarray(D, dtype=float)) - np.square(np.asarray(d, dtype=float)))
 
 
-#: kind -> (A_r function(d, D, B, T) [mm²], formula, width column it needs)
+def _area_axial_spherical(d, D, B, T, d1, D1):
+    D, d, d1, D1 = (np.asarray(v, dtype=float) for v in (D, d, d1, D1))
+    return math.pi / 4.0 * (np.square(D) + np.square(d1) - np.square(D1) - np.square(d))
+
+
+#: kind -> (A_r function(d, D, B, T, d1, D1) [mm²], formula, the columns it needs besides d and D)
 HEAT_FLOW_AREA = {
-    "radial": (_area_radial, "pi*B*(D+d)", "B"),
-    "tapered": (_area_tapered, "pi*T*(D+d)", "T"),
-    "thrust": (_area_thrust, "(pi/2)*(D^2-d^2)", None),
+    "radial": (_area_radial, "pi*B*(D+d)", ("B",)),
+    "tapered": (_area_tapered, "pi*T*(D+d)", ("T",)),
+    "thrust": (_area_thrust, "(pi/2)*(D^2-d^2)", ()),
+    "axial_spherical": (_area_axial_spherical, "(pi/4)*(D^2+d1^2-D1^2-d^2)", ("d1", "D1")),
 }
 
 
 @series_aware
-def heat_flow_area(kind, d, D, B=np.nan, T=np.nan):
-    """Reference heat flow area A_r [mm²] (issue 3, after HR 1 and ISO 15312).
+def heat_flow_area(kind, d, D, B=np.nan, T=np.nan, d1=np.nan, D1=np.nan):
+    """Reference heat flow area A_r [mm²] (Schaeffler HR 1 (2006), p. 64; ISO 15312).
 
-    radial bearings π·B·(D+d); tapered roller bearings π·T·(D+d) with the
-    total width T; thrust bearings (π/2)·(D²−d²). d, D, B, T [mm].
+    Radial bearings π·B·(D+d); tapered roller bearings π·T·(D+d) with the
+    total width T; thrust bearings (π/2)·(D²−d²); axial spherical roller
+    bearings (π/4)·(D² + d1² − D1² − d²) with the shaft washer's outside
+    diameter d1 and the housing washer's bore D1. d, D, B, T, d1, D1 [mm].
 
     >>> round(heat_flow_area("radial", 25, 52, B=15), 1)     # 6205
     3628.5
@@ -111,8 +119,10 @@ def heat_flow_area(kind, d, D, B=np.nan, T=np.nan):
     3930.9
     >>> round(heat_flow_area("thrust", 25, 42), 1)           # 51105 size
     1789.1
+    >>> round(heat_flow_area("axial_spherical", 60, 130, d1=112.2, D1=85.5), 1)  # 29412-E
+    14591.6
     """
-    return HEAT_FLOW_AREA[str(kind)][0](d, D, B, T)
+    return HEAT_FLOW_AREA[str(kind)][0](d, D, B, T, d1, D1)
 
 
 @series_aware

@@ -21,7 +21,8 @@ def test_thermal_columns_are_temperatures_and_differences():
     units = contract.input_units(owner="thermal")
     assert units["T_amb"] == units["T_bearing"] == "degC"
     assert units["dT_oil"] == "delta_degC"      # a header in degC is refused for a difference
-    assert set(contract.output_units(owner="thermal")) == {"n_thr", "n_per", "T_op", "nu_op", "Q_S", "Q_L"}
+    assert set(contract.output_units(owner="thermal")) == {"n_thr", "n_per", "n_per_method_used", "T_op", "nu_op",
+                                                            "Q_S", "Q_L"}
 
 
 def test_output_headers():

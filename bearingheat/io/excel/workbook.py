@@ -25,6 +25,7 @@ import pandas as pd
 
 from bearingheat.calc.models import DEFAULT_MODEL
 from bearingheat.calc.table import calc
+from bearingheat.calc.thermal import DEFAULT_SPEED_FACTOR_METHOD
 from bearingheat.errors import ExcelError, F2ChartError, InputError
 from bearingheat.io.excel.formulas import live_formulas
 from bearingheat.io.excel.reader import EXCEL_SUFFIXES, SheetInfo, contract_name, open_workbook, read_sheet
@@ -74,7 +75,8 @@ class WorkbookRun:
 
 
 def calc_workbook(path, output=None, *, sheet: str | None = None, in_place: bool = False, formulas: bool = False,
-                  model: str = DEFAULT_MODEL, f2_chart=None, effects=None, keep_vba: bool = True,
+                  model: str = DEFAULT_MODEL, n_per_method: str = DEFAULT_SPEED_FACTOR_METHOD, f2_chart=None,
+                  effects=None, keep_vba: bool = True,
                   progress=None) -> WorkbookRun:
     """Run calc on a sheet of supports and write a results sheet.
 
@@ -115,7 +117,8 @@ def calc_workbook(path, output=None, *, sheet: str | None = None, in_place: bool
     if not len(table):
         raise ExcelError(f"sheet {info.sheet!r}: no supports under the header (row {info.header_row})")
     try:
-        result = calc(table, model=model, units=info.units, cell=info.cell, f2_chart=f2_chart, effects=effects)
+        result = calc(table, model=model, n_per_method=n_per_method, units=info.units, cell=info.cell,
+                      f2_chart=f2_chart, effects=effects)
     except F2ChartError as exc:
         raise ExcelError(str(exc)) from exc
     except InputError as exc:
