@@ -23,9 +23,10 @@ RESULTS = ("f0", "f1", "P0", "P1", "M0", "M1", "M2", "MR", "NR")
 
 #: live Excel formulas of the model's results (seed 002, pp. 64-69) in catalogue units. The placeholders are
 #: cell references or numbers: {f0}, {f1}, {f2}, {M0}, {M1}, {M2}, {MR} on the results sheet, {n}, {nu}, {Fa}
-#: and {load} (Fr, Fa or the P1 cell) scaled from the user's units, {dM} = ((d + D)/2).
+#: and {load} (Fr, Fa or the P1 cell) scaled from the user's units, {dM} = ((d + D)/2), {bearings} '' or '2*'
+#: (a paired row: M0 of both bearings).
 EXCEL_FORMULAS = {
-    "M0": f"={{f0}}*IF({{nu}}*{{n}}>={friction.REGIME_LIMIT:g},({{nu}}*{{n}})^(2/3),{friction.LOW_REGIME_FACTOR:g})"
+    "M0": f"={{bearings}}{{f0}}*IF({{nu}}*{{n}}>={friction.REGIME_LIMIT:g},({{nu}}*{{n}})^(2/3),{friction.LOW_REGIME_FACTOR:g})"
           "*{dM}^3*1E-07",
     "P1": "=MAX({p1_rule},{Fr})",
     "M1": "={f1}*{load}*{dM}",
@@ -184,7 +185,7 @@ def evaluate_catalogue_model(s: SupportArrays, labels: Labels, f2_chart: F2Chart
     add(np.equal(s.seal, "contact"), "warning",
         lambda i: "contact seals: their friction comes on top of the catalogue model (seed 002, p. 64)")
 
-    M0 = friction.speed_dependent_torque(f0, nu, n, dM)
+    M0 = s.bearings * friction.speed_dependent_torque(f0, nu, n, dM)  # a pair: both bearings (see supports)
     M1 = friction.load_dependent_torque(f1, load, dM)
     M2 = friction.axial_load_torque(f2, Fa, dM)
     MR = friction.total_torque(M0, M1, M2)

@@ -38,9 +38,9 @@ _BLANK = {"bearing_type": "", "series": "", "f0_table": math.nan, "f0_basis": ""
           "f1_x": math.nan, "f1_basis": 0, "m1_load": "Fr", "p1_rule": "", "X0_table": math.nan,
           "Y0_table": math.nan, "kB": math.nan, "m2": False, "no_axial": False, "seal": "open",
           "contact_angle": math.nan, "label": "", "prefix": "", "notes": (), "bore": math.nan,
-          "width": math.nan, "error": "", "resolved": False}
+          "width": math.nan, "error": "", "resolved": False, "bearings": 1.0}
 _TEXT = ("bearing_type", "series", "f0_basis", "m1_load", "p1_rule", "seal", "label", "prefix", "error")
-_FLOAT = ("f0_table", "f1_a", "f1_x", "X0_table", "Y0_table", "kB", "contact_angle")
+_FLOAT = ("f0_table", "f1_a", "f1_x", "X0_table", "Y0_table", "kB", "contact_angle", "bearings")
 _BOOL = ("m2", "no_axial", "resolved")
 
 
@@ -88,6 +88,7 @@ class SupportArrays:
     Y0_table: object
     kB: object
     contact_angle: object
+    bearings: object
     f1_basis: object
     m2: object
     no_axial: object
@@ -148,6 +149,9 @@ def bearing_constants(resolved: ResolvedBearing, lubrication: str | None, arrang
         "contact_angle": math.nan if resolved.contact_angle is None else resolved.contact_angle,
         "label": entry.label, "prefix": resolved.prefix,
         "notes": parsed.notes if parsed else (), "error": "", "resolved": True,
+        # a paired row is one support of two bearings (X or O arrangement): its P1 is the pair's (seed 002,
+        # p. 68) and its M0 is that of both bearings, each of which churns its own lubricant
+        "bearings": 2.0 if arrangement == "paired" else 1.0,
         "bore": parsed.bore if parsed and parsed.bore else math.nan,
         "width": parsed.width if parsed and parsed.width else math.nan,
     }

@@ -79,6 +79,10 @@ __all__ = [
     "extend",
 ]
 
+#: why a paired row has no heat balance: the sources define it for single bearings only
+PAIR_REASON = ("n_thr: the heat balance of a bearing pair is not in the sources (ISO 15312 and the Schaeffler "
+               "catalogue define A_r, the reference conditions and n_thr for single bearings); MR and NR are the "
+               "pair's; give the two bearings as single rows for their heat balance")
 #: upper end of the search for the operating temperature [°C]; above it the heat is said to run away
 OPERATING_TEMPERATURE_LIMIT = 150.0
 #: the search for the operating temperature starts this far below the ambient temperature [K]
@@ -137,6 +141,7 @@ def thermal_reference_speed_details(frame: pd.DataFrame) -> pd.DataFrame:
     D1 = number_column(frame, "D1")
     C0 = number_column(frame, "C0")
     reason = [r for _, r in resolved]
+    arrangement = text_column(frame, "arrangement")
     kind = np.array([""] * n_rows, dtype=object)
     f0 = np.full(n_rows, np.nan)
     f1_a = np.full(n_rows, np.nan)
@@ -153,6 +158,9 @@ def thermal_reference_speed_details(frame: pd.DataFrame) -> pd.DataFrame:
         refusal = method_refusal(entry.bearing_type, res.seal)
         if refusal:
             reason[i] = f"n_thr: {refusal}"
+            continue
+        if arrangement[i] == "paired":
+            reason[i] = PAIR_REASON
             continue
         kind[i] = THERMAL_KIND[entry.bearing_type]
         checks = (

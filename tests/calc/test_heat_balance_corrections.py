@@ -70,3 +70,32 @@ def test_unknown_n_per_method():
     with pytest.raises(InputError) as exc:
         calc(pd.DataFrame([ROW]), n_per_method="guess")
     assert str(exc.value) == "n_per_method: 'guess' is not one of exact, approximation"
+
+
+PAIR = {"designation": "7210-B", "d [mm]": 50, "D [mm]": 90, "B [mm]": 20, "C0 [kN]": 28.5, "Y0": 0.26,
+        "lubrication": "grease", "n [1/min]": 6000, "Fr [kN]": 1.5, "Fa [kN]": 2.0, "nu [mm^2/s]": 22,
+        "T_amb [degC]": 20, "T_bearing [degC]": 70}
+
+
+def test_a_paired_row_is_the_pair():
+    out = calc(pd.DataFrame([PAIR, {**PAIR, "arrangement": "paired"}]))
+    single, pair = out.iloc[0], out.iloc[1]
+    dM = (50 + 90) / 2
+    # M0 of both bearings: 2 * f0 * (nu*n)^(2/3) * dM^3 * 1e-7 with f0 = 1.3 (grease, 72..-B)
+    assert pair["M0 [N*mm]"] == pytest.approx(2 * 1.3 * (22 * 6000) ** (2 / 3) * dM ** 3 * 1e-7, rel=1e-12)
+    assert pair["M0 [N*mm]"] == pytest.approx(2 * single["M0 [N*mm]"], rel=1e-15)
+    # the pair's P1 = 1.4*Fa - 0.1*Fr (p. 68) against the single bearing's Fa - 0.1*Fr, both at least Fr
+    assert pair["P1 [N]"] == pytest.approx(1.4 * 2000 - 0.1 * 1500, rel=1e-15)
+    assert single["P1 [N]"] == pytest.approx(max(2000 - 0.1 * 1500, 1500), rel=1e-15)
+    assert pair["MR [N*mm]"] == pytest.approx(pair["M0 [N*mm]"] + pair["M1 [N*mm]"], rel=1e-15)
+
+
+def test_a_paired_row_has_no_heat_balance():
+    out = calc(pd.DataFrame([PAIR, {**PAIR, "arrangement": "paired"}]))
+    assert out["status"].tolist() == ["ok", "warning"]
+    assert out["message"].iat[1] == (
+        "n_thr: the heat balance of a bearing pair is not in the sources (ISO 15312 and the Schaeffler catalogue "
+        "define A_r, the reference conditions and n_thr for single bearings); MR and NR are the pair's; give the "
+        "two bearings as single rows for their heat balance")
+    for column in ("n_thr [1/min]", "n_per [1/min]", "T_op [degC]"):
+        assert not math.isnan(out[column].iat[0]) and math.isnan(out[column].iat[1]), column

@@ -164,7 +164,7 @@ def live_formulas(out_table: pd.DataFrame, table: pd.DataFrame, info, result: pd
         d = ref("d", source_row) if d_in_sheet else excel_number(d_cat)
         cells = {name: f"{letter[headers[name]]}{row}" for name in ("f0", "f1", "P1", "M0", "M1", "M2", "MR")}
         values = dict(cells, f2=f"{letter['f2']}{row}", n=n, nu=ref("nu", source_row), Fr=Fr, Fa=Fa,
-                      dM=f"(({d}+{ref('D', source_row)})/2)")
+                      dM=f"(({d}+{ref('D', source_row)})/2)", bearings="2*" if arrangement[i] == "paired" else "")
         if rule:
             values["p1_rule"] = P1_EXCEL[rule].format(Fr=Fr, Fa=Fa, Y=ref("Y", source_row, "NA()"),
                                                       e=ref("e", source_row, "NA()"))
