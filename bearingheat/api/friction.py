@@ -23,7 +23,8 @@ import pandas as pd
 
 from bearingheat.api._checks import check_ranges, where
 from bearingheat.calc.messages import Labels
-from bearingheat.calc.models import DEFAULT_MODEL, get_model
+from bearingheat.calc.contract import column
+from bearingheat.calc.models import DEFAULT_MODEL, EXTRA_INPUTS, MODEL_REPORT_UNITS, get_model
 from bearingheat.calc.supports import build_support_arrays
 from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.errors import FrictionInputError
@@ -36,12 +37,70 @@ __all__ = ["FrictionResult", "friction_torque"]
 
 @dataclass
 class FrictionResult:
-    """Results of the catalogue friction model (seed 002) as Quantities.
+    """Results of the catalogue friction model as Quantities, as :func:`friction_torque` returns them.
 
-    f0, f1 are dimensionless floats or arrays; P0, P1 [N]; M0, M1, M2, MR
-    [N·mm]; NR [W]. Fa_over_A and nu_n_dM are set where M2 applies, so the
-    f2 chart can be read. ``status`` is 'ok' or 'warning'; ``messages``
-    lists the warnings.
+    The model is the one of the Schaeffler rolling bearing catalogue (Russian
+    edition), chapter «Трение и нагрев» (Friction and increases in
+    temperature), pp. 64–70: M_R = M_0 + M_1 (+ M_2), N_R = M_R·n/9550.
+    Every value has the shape of the broadcast arguments: a float or pint
+    Quantity for scalar arguments, a numpy array (in a Quantity) for array
+    arguments, a pandas Series (pint dtype) when a Series went in.
+
+    Parameters
+    ----------
+    f0 : float or numpy.ndarray or pandas.Series [1]
+        Coefficient of the speed-dependent torque M0 (from the catalogue
+        table for the bearing type, series and lubrication, or as given).
+    f1 : float or numpy.ndarray or pandas.Series [1]
+        Coefficient of the load-dependent torque M1.
+    P0 : pint.Quantity [N]
+        Static equivalent load, for f1 in P0/C0.
+    P1 : pint.Quantity [N]
+        Load of M1 = f1·P1·dM (by the P1 rule of the bearing type).
+    M0 : pint.Quantity [N·mm]
+        Speed-dependent friction torque.
+    M1 : pint.Quantity [N·mm]
+        Load-dependent friction torque.
+    M2 : pint.Quantity [N·mm]
+        Torque of an axial load on a cylindrical roller bearing, f2·Fa·dM
+        (0 where the bearing carries no axial load).
+    MR : pint.Quantity [N·mm]
+        Total friction torque M0 + M1 + M2.
+    NR : pint.Quantity [W]
+        Friction power loss MR·n/9550.
+    Fa_over_A : float or numpy.ndarray or pandas.Series [1]
+        The abscissa parameter Fa/A of the f2 chart where M2 applies, NaN
+        elsewhere.
+    nu_n_dM : pint.Quantity [mm³/(s·min)]
+        The viscosity-speed figure ν·n·dM of the f2 chart where M2 applies,
+        NaN elsewhere.
+    status : str
+        'ok', or 'warning' when ``messages`` is not empty.
+    messages : list of str
+        The warnings: implausible magnitudes (probably a unit mix-up), a
+        contact seal whose friction is not in the model, a cylindrical
+        roller bearing above Fa/Fr = 0.4, notes on the designation.
+    bearing_type : str
+        The bearing type of the coefficient tables, e.g. 'deep_groove_ball'.
+    series : str
+        The series row of the coefficient tables, e.g. '62'.
+    model_results : dict
+        The other results of a model besides the catalogue model's, by
+        contract name (the SKF model: M_rr, M_sl, M_seal, M_drag, M_start
+        [N·mm], G_rr, G_sl, phi_ish, phi_rs, phi_bl, mu_sl [1]).
+
+    See Also
+    --------
+    friction_torque : computes it.
+
+    Examples
+    --------
+    >>> import pint
+    >>> u = pint.get_application_registry()
+    >>> r = friction_torque("6205", d=25 * u.mm, D=52 * u.mm, C0=7.8 * u.kN, lubrication="oil_bath",
+    ...                     n=3000 * u.rpm, Fr=2 * u.kN, nu=12 * u("mm^2/s"))
+    >>> r.bearing_type, r.series, r.f0, r.P1
+    ('deep_groove_ball', '62', 2.0, <Quantity(2000.0, 'newton')>)
     """
 
     f0: Any
@@ -59,6 +118,7 @@ class FrictionResult:
     messages: list[str] = field(default_factory=list)
     bearing_type: str = ""
     series: str = ""
+    model_results: dict = field(default_factory=dict)
 
 
 _LENGTHS = ("d", "D", "B")
@@ -83,34 +143,133 @@ def friction_torque(bearing: str | None = None, *, n, nu, lubrication: str | Non
                     d=None, D=None, B=None, C0=None, bearing_type: str | None = None, series: str | None = None,
                     arrangement: str = "single", Y=None, e=None, X0=None, Y0=None, alpha=None,
                     f0=None, f1=None, f2=None, f2_chart: F2Chart | None = None,
-                    model: str = DEFAULT_MODEL) -> FrictionResult:
+                    model: str = DEFAULT_MODEL, model_inputs: dict | None = None) -> FrictionResult:
     """Friction torque and power loss of one bearing at one or many operating points.
+
+    The catalogue friction model of the Schaeffler rolling bearing catalogue
+    (Russian edition), chapter «Трение и нагрев» (Friction and increases in
+    temperature), pp. 64–70, whose f0 and f1 are the averaged values of
+    ISO 15312: M_R = M_0 + M_1 (+ M_2 for axially loaded cylindrical roller
+    bearings), N_R = M_R·n/9550. The static factors X0, Y0 of P0 are those of
+    Е.П. Жильников, В.П. Тукмаков, «Исследование момента сил трения в
+    шарикоподшипниках при комбинированном нагружении» (Samara University,
+    2016), table 1, unless given.
+
+    Every dimensional argument is a pint Quantity, converted once to the
+    catalogue units (mm, N, 1/min, mm²/s); numpy arrays and pint-pandas
+    Series broadcast against each other (one bearing, many operating points)
+    and a Series in gives a Series out. A number outside its valid range
+    raises; one outside its plausible range (usually a unit mix-up) is
+    returned as a warning in :attr:`FrictionResult.messages`.
 
     Parameters
     ----------
-    bearing : designation such as ``"6205-2Z"`` or ``"NU206-E"`` (or give
-        ``bearing_type`` and ``series`` for an explicit table row).
-    n : shaft speed, revolutions per time [1/min, rpm, Hz] or angular [rad/s].
-    nu : operating viscosity [mm²/s] (base oil viscosity of a grease).
-    lubrication : 'grease', 'oil_mist', 'oil_bath' or 'circulating_oil'
-        (not needed when f0 is given).
-    Fr, Fa : radial and axial load [force]; default 0.
-    d, D, B : bore, outside diameter, width [length]; d defaults to the
-        bore in the designation, B to the width of drawn cups (HK2016).
-    C0 : static load rating [force], for f1 in P0/C0 or Fa/C0.
-    Y, e, X0, Y0 : catalogue factors; alpha : working contact angle [angle].
-    f0, f1, f2 : coefficient overrides; f2_chart : a digitised
-        :class:`~bearingheat.catalogue.f2chart.F2Chart`.
-    model : the friction model, a name of :data:`bearingheat.calc.models.MODELS`.
+    bearing : str, optional
+        Designation such as ``"6205-2Z"`` or ``"NU206-E"``
+        (:func:`~bearingheat.catalogue.designation.parse_designation`); or
+        leave it out and give ``bearing_type`` and ``series`` for an explicit
+        row of the coefficient tables.
+    n : pint.Quantity [1/min]
+        Shaft speed, revolutions per time (1/min, rpm, Hz) or an angular
+        speed (rad/s, divided by 2π). Valid 0 to 1e7 1/min; above 2e5 1/min
+        a warning.
+    nu : pint.Quantity [mm²/s]
+        Operating viscosity (the base oil viscosity of a grease); mm²/s = cSt.
+        Valid > 0 and up to 1e7 mm²/s; outside 1 to 1e5 mm²/s a warning.
+    lubrication : str, optional
+        'grease', 'oil_mist', 'oil_bath' or 'circulating_oil'; selects f0.
+        Not needed when ``f0`` is given.
+    Fr : pint.Quantity [force], optional
+        Radial load; default 0. Valid 0 to 1e10 N; above 1e8 N a warning.
+    Fa : pint.Quantity [force], optional
+        Axial load; default 0. Valid 0 to 1e10 N; above 1e8 N a warning.
+        On cylindrical roller bearings it is refused where a ring has no
+        ribs (NU, N, NN) and where Fr is 0; above Fa/Fr = 0.4 a warning.
+    d : pint.Quantity [length], optional
+        Bore; defaults to the bore code of the designation. Valid > 0 and up
+        to 1e5 mm; outside 0.5 to 5000 mm a warning.
+    D : pint.Quantity [length]
+        Outside diameter (required: dM = (d + D)/2). Valid > d and up to
+        1e5 mm; outside 1 to 6000 mm a warning.
+    B : pint.Quantity [length], optional
+        Width, for the f0 formula of needle roller bearings; defaults to the
+        width of drawn cups (HK2016). Valid > 0 and up to 1e5 mm; outside
+        0.5 to 2000 mm a warning.
+    C0 : pint.Quantity [force], optional
+        Basic static load rating; required where f1 depends on P0/C0 or
+        Fa/C0. Valid > 0 and up to 1e10 N; outside 10 to 1e8 N a warning.
+    bearing_type : str, optional
+        Bearing type of the coefficient tables instead of a designation, a
+        key of :data:`~bearingheat.catalogue.designation.BEARING_TYPES`
+        (e.g. 'deep_groove_ball'); give it with ``series``.
+    series : str, optional
+        Dimension series with ``bearing_type``, e.g. '62', '302', '222'.
+    arrangement : str, optional
+        'single' (default) or 'paired': a pair in X or O arrangement is one
+        support, and the results are the pair's.
+    Y : float or pint.Quantity [1], optional
+        Catalogue axial load factor of tapered roller bearings (P1 under
+        axial load); valid > 0.
+    e : float or pint.Quantity [1], optional
+        Catalogue factor e of spherical roller bearings (P1 under axial
+        load); valid > 0.
+    X0 : float or pint.Quantity [1], optional
+        Static radial factor; default from table 1 of the Samara lab manual.
+    Y0 : float or pint.Quantity [1], optional
+        Static axial factor; default from the same table or the contact angle.
+    alpha : pint.Quantity [angle], optional
+        Working contact angle of angular contact ball bearings (e.g. from
+        :func:`~bearingheat.api.contact.ball_bearing_contact`). Valid 0 to 90°.
+    f0 : float or pint.Quantity [1], optional
+        Override of the tabulated coefficient f0; valid >= 0.
+    f1 : float or pint.Quantity [1], optional
+        Override of the tabulated coefficient f1; valid >= 0.
+    f2 : float or pint.Quantity [1], optional
+        Coefficient of M2 = f2·Fa·dM of an axially loaded cylindrical roller
+        bearing (read from the catalogue's charts, figs. 3 and 4 of p. 70);
+        valid >= 0.
+    f2_chart : F2Chart, optional
+        A user-digitised f2 chart (:class:`~bearingheat.catalogue.f2chart.F2Chart`)
+        to read f2 from where ``f2`` is not given; never extrapolated.
+    model : str, optional
+        The friction model, a name of :data:`bearingheat.calc.models.MODELS`
+        (default 'schaeffler').
+    model_inputs : dict, optional
+        The inputs a model reads beyond the catalogue model's, by contract
+        column name: for the SKF model ``oil_level`` and ``d_s`` [length],
+        ``VM``, ``mu_sl``, ``mu_bl``, ``seals`` (numbers), ``skf_edition``,
+        ``oil``, ``seal`` (text), ``Dw``, ``T`` [length].
+
+    Returns
+    -------
+    FrictionResult
+        f0, f1, P0, P1, M0, M1, M2, MR [N·mm], NR [W], the f2 chart
+        coordinates, ``status`` ('ok' or 'warning') and the warning
+        ``messages``, in the shape of the broadcast arguments.
 
     Raises
     ------
-    FrictionInputError
-        naming the argument and the value (and the index for arrays).
+    bearingheat.errors.FrictionInputError
+        For an argument the model cannot use, naming the argument and the
+        value (and the index for arrays): NaN or infinite, outside its valid
+        range, a required one missing (D; C0 or f2 where the model needs
+        them), an unknown designation, lubrication or arrangement, an axial
+        load on a bearing that takes none, a Fa/A or ν·n·dM outside the
+        ``f2_chart``, or a result that is not a finite number.
     bearingheat.errors.ModelError
-        for an unknown model name.
+        For an unknown model name.
     bearingheat.errors.UnitError
-        for a plain number where a Quantity is needed, or a wrong dimension.
+        For a plain number where a Quantity is needed, or a unit of the
+        wrong dimension.
+
+    Examples
+    --------
+    >>> import pint
+    >>> u = pint.get_application_registry()
+    >>> r = friction_torque("6205", d=25 * u.mm, D=52 * u.mm, C0=7.8 * u.kN, lubrication="oil_bath",
+    ...                     n=[1000, 3000] * u.rpm, Fr=2 * u.kN, nu=12 * u("mm^2/s"))
+    >>> r.MR.to("N*mm").magnitude.round(3), r.status
+    (array([41.074, 47.535]), 'ok')
     """
     friction_model = get_model(model)
     inputs = {
@@ -138,8 +297,10 @@ def friction_torque(bearing: str | None = None, *, n, nu, lubrication: str | Non
     keys = pd.DataFrame({"designation": [bearing], "type": [bearing_type], "series": [series],
                          "lubrication": [lubrication], "arrangement": [arrangement]})
     supports = build_support_arrays(keys, flat)
-    if supports.error:
+    if supports.error and friction_model.catalogue_keys:
         raise FrictionInputError(str(supports.error))
+    supports.extra = {"designation": bearing, "type": bearing_type, "series": series, "lubrication": lubrication,
+                      **_model_inputs(model_inputs or {}, friction_model.inputs)}
     with np.errstate(all="ignore"):
         results, problems = friction_model.evaluate(supports, Labels(), f2_chart)
     errors = [p for p in problems if p.level == "error"]
@@ -157,7 +318,7 @@ def friction_torque(bearing: str | None = None, *, n, nu, lubrication: str | Non
                                      f"magnitudes and units{where(i, shape)}")
 
     def out(name, unit):
-        values = results[name].reshape(shape)
+        values = np.broadcast_to(results.get(name, np.nan), (int(np.prod(shape)),)).reshape(shape)
         if index is not None:
             series = pd.Series(values, index=index)
             return series if unit is None else quantity(series, unit)
@@ -171,4 +332,23 @@ def friction_torque(bearing: str | None = None, *, n, nu, lubrication: str | Non
         NR=out("NR", "W"), Fa_over_A=out("Fa_over_A", None), nu_n_dM=out("nu_n_dM", "mm^3/(s*min)"),
         status="warning" if messages else "ok", messages=messages,
         bearing_type=str(supports.bearing_type), series=str(supports.series),
+        model_results={name: out(name, None if unit in ("", "1") else unit) for name, unit in MODEL_REPORT_UNITS.items()
+                       if name in results and name in friction_model.outputs},
     )
+
+
+def _model_inputs(values: dict, accepted: tuple[str, ...]) -> dict:
+    """Model-specific arguments in catalogue units: Quantities converted by their contract unit, text kept."""
+    out = {}
+    for name, value in values.items():
+        if name not in accepted:
+            raise FrictionInputError(f"model_inputs: {name!r} is not an input of this model; it reads "
+                                     f"{', '.join(n for n in accepted if n in EXTRA_INPUTS)}")
+        unit = column(name).unit
+        if unit == "" or value is None:
+            out[name] = value
+        elif unit == "1":
+            out[name] = _dimensionless(value, name)
+        else:
+            out[name] = magnitude(value, unit, name)
+    return out

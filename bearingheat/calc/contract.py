@@ -63,6 +63,7 @@ OWNERS = {
     "thermal": "the heat balance (ISO 15312 reference speed, permissible speed, operating temperature)",
     "contact": "ball contact (minimum axial load)",
     "plain": "plain bushings (type plain_bushing)",
+    "skf": "the SKF model (model skf: SKF General Catalogue 6000, SKF Rolling bearings 10000/3)",
 }
 #: support types that are not rolling bearings
 PLAIN_TYPES = ("plain_bushing",)
@@ -162,6 +163,19 @@ CONTRACT: tuple[Column, ...] = (
     _in("n_thr_catalogue", "1/min", "catalogue n_thr; n_per then uses it instead of the computed one", "thermal"),
     _in("n_per_method", "", "how n_per is found: exact (root of the heat balance) or approximation (the "
         "catalogue's formula for f_n); blank: the table's --n-per-method, default exact", "thermal"),
+    _in("oil", "", "SKF model: mineral (default), synthetic or transmission_fluid (sets mu_EHL)", "skf"),
+    _in("mu_sl", "1", "SKF model: fixed sliding friction coefficient (the catalogue example: 0.05 at full film)",
+        "skf"),
+    _in("mu_bl", "1", "SKF model: boundary friction coefficient (default 0.15)", "skf"),
+    _in("oil_level", "mm", "SKF model: oil level H above the lowest contact point of the outer ring raceway "
+        "(required in an oil bath)", "skf"),
+    _in("VM", "1", "SKF model: drag loss factor read off the edition's diagram (required in an oil bath)", "skf"),
+    _in("skf_edition", "", "SKF model: 6000 or 10000, the catalogue edition of the drag formula (default 10000)",
+        "skf"),
+    _in("seal", "", "SKF model: seal type of SKF table 4 (RSL, RZ, RSH, RS1, LS, CS, CS2, CS5); blank: "
+        "from the designation", "skf"),
+    _in("seals", "1", "SKF model: number of seals, 0, 1 or 2 (blank: from the designation)", "skf"),
+    _in("d_s", "mm", "SKF model: seal counterface diameter (required for contact seals)", "skf"),
     _in("z", "1", "number of balls", "contact"),
     _in("Dw", "mm", "ball diameter", "contact"),
     _in("dm_pitch", "mm", "ball pitch diameter", "contact"),
@@ -187,6 +201,17 @@ CONTRACT: tuple[Column, ...] = (
     _out("Q_S", "W", "heat carried away through the seat", "thermal"),
     _out("Q_L", "W", "heat carried away by the circulating oil", "thermal"),
     _out("Fa_min", "N", "minimum axial load against ball skidding", "contact"),
+    _out("G_rr", "1", "SKF model: rolling frictional variable", "skf"),
+    _out("G_sl", "1", "SKF model: sliding frictional variable", "skf"),
+    _out("M_rr", "N*mm", "SKF model: rolling frictional moment (before phi_ish, phi_rs)", "skf"),
+    _out("M_sl", "N*mm", "SKF model: sliding frictional moment", "skf"),
+    _out("M_seal", "N*mm", "SKF model: frictional moment of the seals", "skf"),
+    _out("M_drag", "N*mm", "SKF model: frictional moment of drag losses (oil bath, oil jet)", "skf"),
+    _out("phi_ish", "1", "SKF model: inlet shear heating reduction factor", "skf"),
+    _out("phi_rs", "1", "SKF model: kinematic replenishment/starvation reduction factor", "skf"),
+    _out("phi_bl", "1", "SKF model: weighting factor of the sliding friction coefficient", "skf"),
+    _out("mu_sl", "1", "SKF model: the sliding friction coefficient used", "skf", shown="mu_sl_used"),
+    _out("M_start", "N*mm", "SKF model: starting torque", "skf"),
     _out("status", "", "ok | warning | error", "table"),
     _out("message", "", "what is wrong or uncertain, naming the column (and the cell in a workbook)", "table"),
 )

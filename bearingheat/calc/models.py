@@ -9,11 +9,11 @@ all look models up here. Adding a model is: a kernel module, a catalogue
 module with its tables, an evaluation, and one entry below.
 
 >>> sorted(MODELS)
-['schaeffler']
->>> get_model("skf")
+['schaeffler', 'skf']
+>>> get_model("palmgren")
 Traceback (most recent call last):
 ...
-bearingheat.errors.ModelError: model: 'skf' is not one of schaeffler
+bearingheat.errors.ModelError: model: 'palmgren' is not one of schaeffler, skf
 """
 from __future__ import annotations
 
@@ -26,6 +26,8 @@ import pandas as pd
 from bearingheat.calc import contract
 from bearingheat.calc.bushing import plain_rows
 from bearingheat.calc.friction import EXCEL_FORMULAS, RESULTS, evaluate_catalogue_model
+from bearingheat.calc.skf import RESULTS as SKF_RESULTS
+from bearingheat.calc.skf import evaluate_skf_model
 from bearingheat.calc.messages import Labels, Problem
 from bearingheat.calc.supports import KEY_INPUTS, NUMBER_INPUTS, SupportArrays, build_support_arrays, number_column, \
     text_column
@@ -35,7 +37,8 @@ from bearingheat.kernels.friction import mean_diameter
 from bearingheat.kernels.thermal import friction_heat, friction_power
 
 __all__ = ["FrictionModel", "FrictionPower", "MODELS", "DEFAULT_MODEL", "get_model", "compute_supports",
-           "RESULT_UNITS", "M2_REPORT_UNITS", "PLAIN_REPORT_UNITS"]
+           "RESULT_UNITS", "M2_REPORT_UNITS", "PLAIN_REPORT_UNITS", "MODEL_REPORT_UNITS", "EXTRA_INPUTS",
+           "model_inputs"]
 
 Evaluation = Callable[[SupportArrays, Labels, "F2Chart | None"], "tuple[dict[str, np.ndarray], list[Problem]]"]
 
@@ -53,7 +56,9 @@ class FrictionModel:
     None means the heat balance uses the generic bracketed root of
     :mod:`bearingheat.kernels.roots`. ``excel_formulas`` maps result
     columns to live Excel formula templates (``calc --formulas``), or is
-    None where the model has none.
+    None where the model has none. ``catalogue_keys`` says whether the model
+    uses the catalogue model's resolution of designations (its errors are
+    then the row's); a model with its own tables reports its own.
     """
 
     name: str
@@ -63,6 +68,7 @@ class FrictionModel:
     evaluate: Evaluation
     speed_exponent: float | None = None
     excel_formulas: dict[str, str] | None = None
+    catalogue_keys: bool = True
 
 
 SCHAEFFLER = FrictionModel(
@@ -76,8 +82,27 @@ SCHAEFFLER = FrictionModel(
     excel_formulas=EXCEL_FORMULAS,
 )
 
+def _evaluate_skf(supports: SupportArrays, labels: Labels, f2_chart: F2Chart | None):
+    return evaluate_skf_model(supports, labels, f2_chart, extra=supports.extra)
+
+
+SKF = FrictionModel(
+    name="skf",
+    title=("SKF four-component model: M = phi_ish*phi_rs*M_rr + M_sl + M_seal + M_drag, SKF General Catalogue "
+           "6000 (Russian edition), chapter 'Friction', pp. 87-105, and SKF Rolling bearings 10000/3 (2017), "
+           "pp. 97-114"),
+    inputs=contract.columns(owner="skf") + ("designation", "type", "series", "lubrication", "d", "D", "B", "C0",
+                                             "Y", "Fr", "Fa", "n", "nu", "Dw", "T"),
+    outputs=SKF_RESULTS,
+    evaluate=_evaluate_skf,
+    catalogue_keys=False,
+)
+
 #: name -> model; the keys come from the models themselves
-MODELS: dict[str, FrictionModel] = {m.name: m for m in (SCHAEFFLER,)}
+MODELS: dict[str, FrictionModel] = {m.name: m for m in (SCHAEFFLER, SKF)}
+#: the inputs a model reads beyond the support arrays, carried in SupportArrays.extra
+EXTRA_INPUTS = tuple(dict.fromkeys(name for m in MODELS.values() if not m.catalogue_keys for name in m.inputs
+                                   if name not in NUMBER_INPUTS))
 DEFAULT_MODEL = SCHAEFFLER.name
 contract.register_choices("model", lambda: tuple(MODELS))
 
@@ -87,6 +112,18 @@ RESULT_UNITS = {name: contract.output_units()[name] for name in RESULTS}
 M2_REPORT_UNITS = {name: contract.output_units()[name] for name in ("Fa_over_A", "nu_n_dM")}
 #: extra result columns written when a row is a plain bushing
 PLAIN_REPORT_UNITS = contract.output_units(owner="plain")
+#: result columns of the other models, written when a row uses one
+MODEL_REPORT_UNITS = {name: contract.output_units()[name] for name in SKF_RESULTS if name not in RESULTS}
+
+
+def model_inputs(frame: pd.DataFrame) -> dict:
+    """The model-specific inputs a frame has (catalogue units; text as stripped strings or None)."""
+    out = {}
+    for name in EXTRA_INPUTS:
+        if name in frame.columns:
+            unit = contract.column(name).unit
+            out[name] = np.array(text_column(frame, name), dtype=object) if unit == "" else number_column(frame, name)
+    return out
 
 
 def get_model(name: str) -> FrictionModel:
@@ -118,7 +155,10 @@ def evaluate_models(supports: SupportArrays, names: np.ndarray, labels: Labels, 
     if len(present) == 1 and np.all(names == present[0]):
         with np.errstate(all="ignore"):
             results, problems = MODELS[present[0]].evaluate(supports, labels, f2_chart)
-        return {k: np.array(v, dtype=float) for k, v in results.items()}, problems
+        results = {k: np.array(np.broadcast_to(v, (size,)), dtype=float) for k, v in results.items()}
+        for name in RESULTS:
+            results.setdefault(name, np.full(size, np.nan))
+        return results, problems
     results: dict[str, np.ndarray] = {}
     problems: list[Problem] = []
     for name in present:
@@ -152,14 +192,19 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
     keys = frame[[c for c in KEY_INPUTS if c in frame.columns]]
     numbers = {c: number_column(frame, c) for c in NUMBER_INPUTS}
     supports = build_support_arrays(keys if len(keys.columns) else pd.DataFrame(index=frame.index), numbers)
+    supports.extra = model_inputs(frame)
     names, model_errors = _row_models(frame, model)
     plain = supports.plain
+    catalogue_rows = np.array([MODELS[m].catalogue_keys if m in MODELS else True for m in names], dtype=bool)
     row_errors: list[list[str]] = [[] for _ in range(n_rows)]
     for i in range(n_rows):
-        text = model_errors[i] or (supports.error[i] if np.ndim(supports.error) else supports.error)
+        own = supports.error[i] if np.ndim(supports.error) else supports.error
+        text = model_errors[i] or (own if catalogue_rows[i] else "")
         if text and not plain[i]:
             row_errors[i].append(text)
-    resolved = np.broadcast_to(supports.resolved, (n_rows,)) & np.array([not e for e in model_errors])
+    # a row whose bearing did not resolve has its error already; rows of a model with its own tables report theirs
+    resolved = (np.broadcast_to(supports.resolved, (n_rows,)) | ~catalogue_rows) & \
+        np.array([not e for e in model_errors])
 
     results, problems = evaluate_models(supports, names, labels, f2_chart)
     for i, notes in enumerate(supports.notes if len(supports.notes) == n_rows else supports.notes * n_rows):
@@ -198,6 +243,9 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
     if plain.any():
         for col in PLAIN_REPORT_UNITS:
             out[col] = np.where(failed, np.nan, results[col])
+    for col in MODEL_REPORT_UNITS:  # the results of other models, where a row uses one
+        if col in results:
+            out[col] = np.where(failed, np.nan, results[col])
     out["status"] = status
     out["message"] = message
     out["bearing_type"] = np.where(plain, "plain_bushing", np.broadcast_to(supports.bearing_type, (n_rows,)))
@@ -230,6 +278,7 @@ class FrictionPower:
             keys = frame[[c for c in KEY_INPUTS if c in frame.columns]]
             supports = build_support_arrays(keys if len(keys.columns) else pd.DataFrame(index=frame.index),
                                             {c: number_column(frame, c) for c in NUMBER_INPUTS})
+            supports.extra = model_inputs(frame)
             for name in sorted(set(names[~self.closed])):
                 rows = np.flatnonzero(names == name)
                 self.generic[name] = (rows, supports.take(rows))

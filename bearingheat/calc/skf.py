@@ -21,13 +21,13 @@ import numpy as np
 import pandas as pd
 
 from bearingheat.calc.messages import Labels, Problem, at
-from bearingheat.calc.supports import SupportArrays
+from bearingheat.calc.supports import SupportArrays, number_column
 from bearingheat.catalogue import skf as catalogue
 from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.errors import BearingheatError
 from bearingheat.kernels import skf
 
-__all__ = ["RESULTS", "EXTRA_INPUTS", "evaluate_skf_model"]
+__all__ = ["RESULTS", "EXTRA_INPUTS", "extra_inputs", "evaluate_skf_model"]
 
 #: the results of the SKF model, in the order calc writes them (catalogue units)
 RESULTS = ("G_rr", "G_sl", "M_rr", "M_sl", "M_seal", "M_drag", "phi_ish", "phi_rs", "phi_bl", "mu_sl", "M_start",
@@ -43,7 +43,8 @@ EXTRA_INPUTS = {
     "mu_sl": ("1", "fixed sliding friction coefficient μsl (the worked example: 0.05 at full film)",
               "φbl·μbl + (1 − φbl)·μEHL"),
     "mu_bl": ("1", "boundary friction coefficient μbl", "0.15"),
-    "oil_level": ("mm", "oil level H above the lowest contact point of the outer ring raceway", "required in an oil bath"),
+    "oil_level": ("mm", "oil level H above the lowest contact point of the outer ring raceway",
+                  "required in an oil bath"),
     "VM": ("1", "drag loss factor read off the diagram of the edition (6000 diagram 2, 10000/3 diagram 4)",
            "required in an oil bath"),
     "skf_edition": ("", "6000 or 10000: the catalogue edition of the drag formula", "10000"),
@@ -60,7 +61,7 @@ _DRAG_SOURCE = {
     "6000": "SKF 6000 diagram 2 (p. 99; red curve ball bearings, blue roller bearings)",
     "10000": "SKF 10000/3 diagram 4 (p. 112)",
 }
-_OIL = ("oil_bath", "circulating_oil")
+_OIL = ("oil_mist", "oil_bath", "circulating_oil")  # oil-air, oil bath, oil jet (10000/3 p. 100)
 _CONSTANTS = ("R1", "R2", "R3", "R4", "S1", "S2", "S3", "S4", "S5", "Kz", "KL", "irw", "mu_EHL_type", "bore",
               "start_factor")
 _TEXTS = ("bearing_type", "family", "label", "seal", "unknown_contact_seal")
@@ -72,9 +73,6 @@ class _Extra:
     def __init__(self, extra: dict | None, size: int):
         self.values = dict(extra or {})
         self.size = size
-
-    def given(self, name: str) -> bool:
-        return name in self.values and self.values[name] is not None
 
     def text(self, name: str, upper: bool = False):
         """One stripped string (or None) for all rows, or an object array of them."""
@@ -90,6 +88,21 @@ class _Extra:
         if np.ndim(value) == 0:
             return np.full(self.size, _to_float(value))
         return pd.to_numeric(pd.Series(list(value)), errors="coerce").to_numpy(dtype=float)
+
+
+def extra_inputs(frame: pd.DataFrame) -> dict[str, np.ndarray]:
+    """The columns of :data:`EXTRA_INPUTS` that a table (in catalogue units) has, as ``extra`` of the evaluation.
+
+    >>> frame = pd.DataFrame({"designation": ["22208 E"], "oil_level": ["2.5"], "skf_edition": [6000.0]})
+    >>> extra = extra_inputs(frame)
+    >>> sorted(extra), extra["oil_level"].tolist(), _Extra(extra, 1).text("skf_edition").tolist()
+    (['designation', 'oil_level', 'skf_edition'], [2.5], ['6000'])
+    """
+    out = {}
+    for name, (unit, _meaning, _default) in EXTRA_INPUTS.items():
+        if name in frame.columns:
+            out[name] = frame[name].to_numpy(dtype=object) if unit == "" else number_column(frame, name)
+    return out
 
 
 def _clean(value, upper):
@@ -114,9 +127,9 @@ def _per_row(value, size):
     return np.broadcast_to(np.asarray(value, dtype=object), (size,))
 
 
-def _choice(x: _Extra, name: str, default: str, upper: bool = False):
+def _choice(x: _Extra, name: str, default: str):
     """A text input with its default where blank: one string for all rows, or an object array."""
-    value = x.text(name, upper)
+    value = x.text(name)
     if np.ndim(value) == 0:
         return default if value is None else value
     return np.where(np.equal(value, None), default, value)
@@ -164,7 +177,7 @@ def _constants_of(designation, bearing_type, series) -> dict:
         b = catalogue.skf_bearing(designation, bearing_type, series)
     except BearingheatError as exc:
         return _blank(str(exc))
-    out = {k: getattr(b, k) for k in _CONSTANTS if k != "family"}
+    out = {k: getattr(b, k) for k in _CONSTANTS}
     out.update(bearing_type=b.bearing_type, family=b.family, label=b.label, seal=b.seal or "",
                unknown_contact_seal=b.unknown_contact_seal,
                seals=math.nan if b.seals is None else float(b.seals), error="")
@@ -232,7 +245,8 @@ def evaluate_skf_model(supports: SupportArrays, labels: Labels, f2_chart: F2Char
     bearing_type = text["bearing_type"]
     C0, Y = row(s.C0), row(s.Y)
     missing("C0", lambda i: "the axial load of a deep groove ball bearing needs C0 for αF = 24.6·(Fa/C0)^0.24 "
-                            "(SKF 6000 p. 91, table 2a)", np.equal(family, "deep_groove_ball") & (Fa > 0) & np.isnan(C0))
+                            "(SKF 6000 p. 91, table 2a)",
+            np.equal(family, "deep_groove_ball") & (Fa > 0) & np.isnan(C0))
     bad("C0", C0, "must be > 0", C0 <= 0)
     missing("Y", lambda i: "the axial load of a tapered roller bearing needs its catalogue factor Y "
                            "(SKF 6000 p. 91, table 2a)", np.equal(family, "tapered_roller") & (Fa > 0) & np.isnan(Y))
@@ -292,7 +306,7 @@ def evaluate_skf_model(supports: SupportArrays, labels: Labels, f2_chart: F2Char
                             f"{_DRAG_SOURCE.get(at(edition, i), _DRAG_SOURCE['10000'])} for "
                             f"{'ball' if at(bearing_type, i) in catalogue.BALL_TYPES else 'roller'} bearings at "
                             f"H/dm = {H[i] / dm[i]:.3g}", bath & np.isnan(VM) & known_edition)
-    add(ok & ~oil_lubricated & ~np.isnan(VM), "warning",
+    add(ok & ~np.isin(lubrication, ("oil_bath", "circulating_oil")) & ~np.isnan(VM), "warning",
         lambda i: f"{labels.name('VM', i)}: ignored; there is drag only in an oil bath or with oil jet")
     low_level = np.where(np.isnan(Dw), H < 0.25 * (D - d), H < 0.5 * Dw)
     K_rs = _mapped(lubrication, {v: catalogue.k_rs(v) for v in catalogue.LUBRICATIONS})

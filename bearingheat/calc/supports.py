@@ -96,6 +96,8 @@ class SupportArrays:
     resolved: object
     plain: np.ndarray
     notes: list = field(default_factory=list)
+    #: model-specific inputs by contract name (per-row arrays or one value), e.g. the SKF model's oil level
+    extra: dict = field(default_factory=dict)
 
     def take(self, rows: np.ndarray) -> SupportArrays:
         """The supports at positions ``rows`` (scalars stay scalars)."""
@@ -107,6 +109,9 @@ class SupportArrays:
                 changes["size"] = len(rows)
             elif f.name == "notes":
                 changes["notes"] = [value[i] for i in rows] if len(value) == self.size else value
+            elif f.name == "extra":
+                changes["extra"] = {k: (v[rows] if np.ndim(v) == 1 and len(v) == self.size else v)
+                                    for k, v in value.items()}
             elif isinstance(value, np.ndarray) and value.ndim == 1:
                 changes[f.name] = value[rows]
         return dataclasses.replace(self, **changes)

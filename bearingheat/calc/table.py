@@ -34,8 +34,8 @@ from bearingheat.calc.contract import (PLAIN_TYPES, input_units, output_header, 
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.supports import number_column, text_column
 from bearingheat.catalogue.bearings import bearing
-from bearingheat.calc.models import DEFAULT_MODEL, M2_REPORT_UNITS, PLAIN_REPORT_UNITS, RESULT_UNITS, \
-    compute_supports
+from bearingheat.calc.models import (DEFAULT_MODEL, M2_REPORT_UNITS, MODEL_REPORT_UNITS, PLAIN_REPORT_UNITS,
+                                    RESULT_UNITS, compute_supports)
 from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.errors import DesignationError, InputError, UnitError
 from bearingheat.units import convert_column
@@ -180,6 +180,73 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
     fitted extension of the model (``bearingheat diagnose``) applied to MR
     and NR.
 
+    The friction model is the one of the Schaeffler rolling bearing
+    catalogue (Russian edition), chapter «Трение и нагрев» (Friction and
+    increases in temperature), with f0, f1 after ISO 15312; the ``thermal``
+    extension adds the heat balance of the Schaeffler catalogue HR 1
+    "Rolling bearings" (edition June 2006, after ISO 15312 and the draft of
+    DIN 732) where its columns are present, the ``contact`` extension the
+    minimum axial load of ball bearings (В.А. Зайцев, В.А. Воронкин, ФГУП
+    «НПП ВНИИЭМ», 2009). A bad row gets ``status`` 'error' and a message
+    naming the column and the value; the other rows are still computed.
+    Numbers outside a column's valid range are row errors, outside its
+    plausible range row warnings (the ranges of
+    :mod:`bearingheat.calc.contract`, e.g. n up to 1e7 1/min, T_amb -60 to
+    200 °C, alpha 0 to 90°), as are a load above C0 and a speed above the
+    limiting speed n_G.
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        One row per support, columns headed ``name [unit]`` with any pint
+        unit of the right dimension (``Fr [kN]``, ``n [rpm]``, ``nu [cSt]``);
+        the columns of the column contract (:mod:`bearingheat.calc.contract`).
+        Required: ``n``, and for rolling bearings ``designation`` (or
+        ``type`` and ``series``), ``D``, ``nu`` and ``lubrication`` (or
+        ``f0``). Unknown columns are passed through untouched.
+    model : str, optional
+        Friction model of rows whose ``model`` cell is blank (default
+        'schaeffler').
+    f2_chart : F2Chart or str, optional
+        A digitised f2 chart (:class:`~bearingheat.catalogue.f2chart.F2Chart`),
+        or the path of its CSV, for M2 of axially loaded cylindrical roller
+        bearings.
+    units : dict of str to str, optional
+        Header -> unit typed in a separate units row (Excel); a unit in the
+        header itself wins.
+    cell : callable, optional
+        ``cell(name, row position) -> str`` naming a cell in messages (e.g.
+        the workbook cell of a value).
+    effects : bearingheat.analysis.diagnose.FittedEffect, optional
+        A fitted effect of ``bearingheat diagnose`` applied to MR and NR.
+    n_per_method : str, optional
+        How n_per finds its speed factor where the ``n_per_method`` cell is
+        blank: 'exact' (default) or 'approximation'.
+
+    Returns
+    -------
+    pandas.DataFrame
+        The input columns (same index) followed by the result columns:
+        ``f0``, ``f1``, ``P0 [N]``, ``P1 [N]``, ``M0 [N*mm]``,
+        ``M1 [N*mm]``, ``M2 [N*mm]``, ``MR [N*mm]``, ``NR [W]`` (catalogue
+        model), ``Fa/A`` and ``nu*n*dM [mm^3/(s*min)]`` when a row carries
+        M2, the extension columns whose inputs are present (``n_thr``,
+        ``n_per``, ``T_op`` ..., ``Fa_min``), ``status`` ('ok', 'warning'
+        or 'error') and ``message``. Results of rows in error are NaN.
+
+    Raises
+    ------
+    bearingheat.errors.InputError
+        For a table that cannot be used at all: a required column missing,
+        a column given twice, a header unit of the wrong dimension or an
+        unknown unit, an unknown ``n_per_method``.
+    bearingheat.errors.ModelError
+        For an unknown model name.
+    bearingheat.errors.F2ChartError
+        For an f2 chart file that cannot be read or used.
+
+    Examples
+    --------
     >>> import pandas as pd
     >>> rows = pd.DataFrame({"designation": ["6205", "NU206-E"], "d [mm]": [25, 30], "D [mm]": [52, 62],
     ...                      "C0 [kN]": [7.8, 36], "lubrication": ["oil_bath", "grease"],
@@ -298,7 +365,7 @@ def _assemble(table: pd.DataFrame, results: pd.DataFrame, extension_columns) -> 
     for name, unit in RESULT_UNITS.items():
         written.append(output_header(name, unit))
         out[written[-1]] = results[name].to_numpy()
-    for name, unit in {**M2_REPORT_UNITS, **PLAIN_REPORT_UNITS}.items():
+    for name, unit in {**M2_REPORT_UNITS, **PLAIN_REPORT_UNITS, **MODEL_REPORT_UNITS}.items():
         if name in results.columns:
             written.append(output_header(name, unit))
             out[written[-1]] = results[name].to_numpy()

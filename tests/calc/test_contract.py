@@ -43,7 +43,7 @@ def test_choices_feed_the_drop_down_lists():
     assert contract.choices("lubrication") == ("grease", "oil_mist", "oil_bath", "circulating_oil")
     assert contract.choices("arrangement") == ("single", "paired")
     assert "deep_groove_ball" in contract.choices("type")
-    assert contract.choices("model") == ("schaeffler",)
+    assert contract.choices("model") == ("schaeffler", "skf")
     assert contract.choices("d") == ()
 
 
