@@ -18,6 +18,44 @@ __all__ = ["bearing", "BearingData", "bearing_table", "designations"]
 def bearing(designation: str) -> BearingData:
     """The bearing ``designation`` (with or without cage and design suffixes) of the bearing table.
 
+    The table holds 1034 bearings of the Schaeffler catalogue HR 1 "Rolling
+    bearings" (edition June 2006): deep groove ball bearings 618, 160, 60,
+    62, 63, 64 (open and -2Z), angular contact ball bearings 72..-B and
+    73..-B, cylindrical roller bearings N, NU, NJ, NUP of series 2, 3, 22, 23
+    (E design) and metric tapered roller bearings. The designation is
+    matched in three steps, the first that finds it wins: ``exact`` (case,
+    spaces and a suffix glued to the number do not matter), ``cage``
+    (without cage, material, clearance and tolerance suffixes), ``design``
+    (where no design suffix is given, also without the table's); see
+    :mod:`bearingheat.catalogue.bearings`. Seal and shield suffixes are
+    never dropped.
+
+    Parameters
+    ----------
+    designation : str
+        Designation as printed in the catalogue, with or without cage and
+        design suffixes, e.g. ``"6208"``, ``"NU206-E"``, ``"30205-A"``,
+        ``"nu 206 e tvp2"``.
+
+    Returns
+    -------
+    BearingData
+        The row in catalogue units (d, D, B, T [mm]; C, C0 [N]; e, Y, Y0 [1];
+        n_G, n_thr [1/min]; NaN where the catalogue gives none), its
+        ``source`` (catalogue, edition, page, row), the ``match`` step and a
+        ``note`` on how it was matched. :meth:`BearingData.quantities` gives
+        the values as pint Quantities.
+
+    Raises
+    ------
+    bearingheat.errors.DesignationError
+        For an empty designation; one that is not in the table (naming close
+        designations of the table, and the bearing type or series the table
+        does not hold); one that matches several bearings whose values
+        differ (``7220-B``, ``32307``), listing them.
+
+    Examples
+    --------
     >>> b = bearing("NU206-E")
     >>> b.designation, b.match, b.d, b.D, b.B, b.C0, b.n_thr
     ('NU206-E-TVP2', 'cage', 30.0, 62.0, 16.0, 36000.0, 9800.0)

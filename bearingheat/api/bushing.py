@@ -46,12 +46,92 @@ def _wrap(result: dict[str, Any]) -> dict[str, Any]:
 
 def size_bushing(F, n, d, *, application="bushing_constant_load", shaft=None, life=None, load_type,
                  T=None, K=None, p_adm=None, standard_lengths=None, f=None) -> dict[str, Any]:
-    """Size a cylindrical DU bushing (seed 004) with pint Quantities.
+    """Size a cylindrical DU bushing with pint Quantities.
 
     K comes from table 25 (application, shaft 'soft'/'hardened', life 1000 h
     or 10 000 h) unless given; it is derated for T. [p] comes from the load
     type unless given. Returns a dict of Quantities keyed 'name [unit]'.
+    The length is the larger of l_pV = π·n·F/(60 000·K) and
+    l_p = F/([p]·d), rounded up to ``standard_lengths`` where given.
 
+    Source: the Russian book chapter on metal-fluoroplastic ("DU", "DP")
+    bushings, section «Служебные свойства подшипников марки «DU»»: table 25
+    (admissible K = pV by application, shaft and life), the admissible
+    specific loads [p] on p. 167, the life line of fig. 86 and the
+    friction coefficients; its units kgf/cm² are converted with
+    1 kgf/cm² = 0.0980665 N/mm².
+
+    Parameters
+    ----------
+    F : pint.Quantity [force]
+        Radial load; must be > 0.
+    n : pint.Quantity [1/min]
+        Shaft speed (for an oscillating shaft: cycles per minute times the
+        amplitude in revolutions); must be > 0 and at most 15 000 1/min, and
+        give a sliding speed V = π·d·n/60 000 of at least 0.05 m/s.
+    d : pint.Quantity [length]
+        Bore (shaft diameter); must be > 0.
+    application : str, optional
+        Row of table 25: 'bushing_constant_load' (default),
+        'bushing_rotating_load', 'bushing_oscillating', 'guide' or
+        'thrust_washer'.
+    shaft : str, optional
+        'soft' (mild steel, also cast iron, austenitic stainless, anodised
+        aluminium, chromium-plated mild steel) or 'hardened' (HB 540);
+        needed with ``life`` unless K is given.
+    life : pint.Quantity [time], optional
+        Required life, 1000 h or 10 000 h (the columns of table 25); needed
+        with ``shaft`` unless K is given.
+    load_type : str
+        Load type for the admissible pressure [p] (p. 167): 'static',
+        'rotating_fixed_load_point', 'moving_load_moderate' or
+        'moving_load_severe'. Required even where ``p_adm`` is given.
+    T : pint.Quantity [temperature], optional
+        Operating temperature, -200 to +280 °C; K is derated linearly from
+        1 at +120 °C to 0.5 at +280 °C. Default: no derating.
+    K : pint.Quantity [N/mm²·m/s], optional
+        Admissible pV instead of table 25; must be > 0.
+    p_adm : pint.Quantity [N/mm²], optional
+        Admissible specific load [p] instead of the load type's; must be > 0.
+    standard_lengths : pint.Quantity [length], optional
+        Standard bushing lengths (an array, all > 0); the result is rounded
+        up to the next one.
+    f : float, optional
+        Friction coefficient for the power loss; default: the source's range
+        at V (0.05-0.1 at 0.05-0.1 m/s, 0.1-0.2 at 0.2-5 m/s).
+
+    Returns
+    -------
+    dict of str to pint.Quantity, float or str
+        Keyed 'name [unit]' (values as Quantities in that unit; text and
+        factors stay plain): ``F [N]``, ``n [1/min]``, ``d [mm]``, the
+        derated ``K`` and ``K_table`` [N/mm²·m/s], ``p_adm [N/mm^2]``,
+        ``V [m/s]``, ``l_pV [mm]``, ``p_at_l_pV [N/mm^2]``, ``l_p [mm]``,
+        ``governing`` ('pV' or 'pressure'), ``l_required [mm]``,
+        ``l_standard [mm]`` (NaN without standard lengths), ``p [N/mm^2]``
+        and ``pV`` at the chosen length, ``f_low``, ``f_high``,
+        ``N_low [W]``, ``N_high [W]`` (friction power f·F·V),
+        ``life_fig86 [h]`` (NaN outside the fig. 86 line) with
+        ``life_note``, ``temperature_factor``, ``T [degC]`` (None without
+        T) and ``kind`` = 'bushing'.
+
+    Raises
+    ------
+    bearingheat.errors.BushingInputError
+        For neither K nor shaft and life; an application, shaft, life or
+        load type the tables do not have; a table 25 cell lost in the
+        source's OCR; F, n, d, K or [p] not > 0; standard lengths not > 0.
+    bearingheat.errors.OutsideMethodError
+        For n above 15 000 1/min, V below 0.05 m/s, or T outside -200 to
+        +280 °C (the range of the sizing method).
+    bearingheat.errors.NoStandardSizeError
+        When no standard length is as long as the required one.
+    bearingheat.errors.UnitError
+        For a plain number where a Quantity is needed, or a unit of the
+        wrong dimension.
+
+    Examples
+    --------
     >>> from bearingheat.units import ureg
     >>> u = ureg()
     >>> out = size_bushing(2 * u.kN, 500 * u.rpm, 25 * u.mm, shaft="soft", life=1000 * u.h,
@@ -69,12 +149,83 @@ def size_bushing(F, n, d, *, application="bushing_constant_load", shaft=None, li
 
 def size_thrust_washer(F, n, d, *, shaft=None, life=None, load_type, T=None, K=None, p_adm=None,
                        standard_diameters=None, f=None) -> dict[str, Any]:
-    """Size a DU thrust washer (seed 004) with pint Quantities; d is the inner diameter.
+    """Size a DU thrust washer with pint Quantities; d is the inner diameter.
 
     K comes from table 25 (application thrust_washer) unless given, derated for
     T; [p] from the load type unless given. V and pV are taken at the mean
-    diameter. Returns a dict of Quantities keyed 'name [unit]'.
+    diameter. Returns a dict of Quantities keyed 'name [unit]'. The outer
+    diameter is the larger of D_pV = d + 2·n·F/(60 000·K) and
+    D_p = sqrt(d² + 4·F/(π·[p])), rounded up to ``standard_diameters`` where
+    given.
 
+    Source: the Russian book chapter on metal-fluoroplastic ("DU", "DP")
+    bushings, section «Служебные свойства подшипников марки «DU»»: table 25
+    (admissible K = pV by application, shaft and life), the admissible
+    specific loads [p] on p. 167, the life line of fig. 86 and the
+    friction coefficients; its units kgf/cm² are converted with
+    1 kgf/cm² = 0.0980665 N/mm².
+
+    Parameters
+    ----------
+    F : pint.Quantity [force]
+        Axial load; must be > 0.
+    n : pint.Quantity [1/min]
+        Shaft speed; must be > 0 and at most 15 000 1/min, and give a
+        sliding speed of at least 0.05 m/s at the mean diameter.
+    d : pint.Quantity [length]
+        Inner diameter of the washer; must be > 0.
+    shaft : str, optional
+        'soft' or 'hardened' (HB 540) counterface; needed with ``life``
+        unless K is given.
+    life : pint.Quantity [time], optional
+        Required life, 1000 h or 10 000 h; needed with ``shaft`` unless K
+        is given. Only the soft and the hardened 1000 h cells of the
+        thrust washer row survived the source's OCR.
+    load_type : str
+        Load type for [p] (p. 167): 'static', 'rotating_fixed_load_point',
+        'moving_load_moderate' or 'moving_load_severe'.
+    T : pint.Quantity [temperature], optional
+        Operating temperature, -200 to +280 °C, for the derating of K.
+    K : pint.Quantity [N/mm²·m/s], optional
+        Admissible pV instead of table 25; must be > 0.
+    p_adm : pint.Quantity [N/mm²], optional
+        Admissible specific load [p] instead of the load type's; must be > 0.
+    standard_diameters : pint.Quantity [length], optional
+        Standard outer diameters (an array, all > 0); the result is rounded
+        up to the next one.
+    f : float, optional
+        Friction coefficient for the power loss; default: the source's range
+        at V.
+
+    Returns
+    -------
+    dict of str to pint.Quantity, float or str
+        Keyed 'name [unit]': ``F [N]``, ``n [1/min]``, ``d [mm]``, ``K`` and
+        ``K_table`` [N/mm²·m/s], ``p_adm [N/mm^2]``, ``b_pV [mm]`` (radial
+        width from pV), ``D_pV [mm]``, ``D_p [mm]``, ``governing`` ('pV' or
+        'pressure'), ``D_required [mm]``, ``D_standard [mm]`` (NaN without
+        standard diameters), ``V [m/s]``, ``p [N/mm^2]`` and ``pV`` at the
+        chosen diameter, ``f_low``, ``f_high``, ``N_low [W]``,
+        ``N_high [W]``, ``life_fig86 [h]`` with ``life_note``,
+        ``temperature_factor``, ``T [degC]`` and ``kind`` = 'thrust_washer'.
+
+    Raises
+    ------
+    bearingheat.errors.BushingInputError
+        For neither K nor shaft and life; a shaft, life or load type the
+        tables do not have; a table 25 cell lost in the source's OCR; F, n,
+        d, K or [p] not > 0; standard diameters not > 0.
+    bearingheat.errors.OutsideMethodError
+        For n above 15 000 1/min, V below 0.05 m/s, or T outside -200 to
+        +280 °C.
+    bearingheat.errors.NoStandardSizeError
+        When no standard diameter is as large as the required one.
+    bearingheat.errors.UnitError
+        For a plain number where a Quantity is needed, or a unit of the
+        wrong dimension.
+
+    Examples
+    --------
     >>> from bearingheat.units import ureg
     >>> u = ureg()
     >>> out = size_thrust_washer(2 * u.kN, 500 * u.rpm, 25 * u.mm, shaft="soft", life=1000 * u.h, load_type="static")

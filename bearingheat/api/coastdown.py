@@ -30,13 +30,69 @@ def _rig_value(value, default, unit, name):
 
 def analyse_coastdown(t, n, *, I=_TMM, G=_TMM, r=_TMM, window=None, interval_dn=None, interval_dt=None,
                       interval_count=10) -> CoastdownResult:
-    """Coast-down analysis with pint Quantities (seed 003).
+    """Coast-down analysis with pint Quantities.
 
     t: times (Quantity array), n: shaft speeds (1/min, rpm, Hz or rad/s).
     I, G, r default to the TMM-7M rig (2.6 kg·m², 1100 N, 25 mm); pass
     G=None, r=None when the journal load is unknown (torques only).
     interval_dn / interval_dt: interval steps for formula (2) as Quantities.
 
+    Source: the laboratory sheet «Определение приведенного коэффициента
+    трения в подшипниках скольжения методом выбега» (the TMM-7M rig): the
+    equation of motion I·dω/dt = −M and its reduced friction coefficient
+    f = M/(G·r), formulas (1) and (2). The resisting torque is fitted as the
+    nested models M = M_c (Coulomb), + c_v·ω, + c_a·ω² by least squares on
+    n(t) and chosen by cross-validation and the Bayesian information
+    criterion (:func:`bearingheat.analysis.coastdown.coastdown_analysis`).
+
+    Parameters
+    ----------
+    t : pint.Quantity [time]
+        Sample times, a 1-D array strictly increasing, at least 10 samples.
+    n : pint.Quantity [1/min]
+        Shaft speeds at ``t`` (1/min, rpm, Hz or rad/s), finite and >= 0,
+        falling from the first to the last sample.
+    I : pint.Quantity [kg·m²], optional
+        Moment of inertia about the shaft, > 0; default 2.6 kg·m² (TMM-7M).
+        None is refused.
+    G : pint.Quantity [force] or None, optional
+        Journal load (rotor weight), > 0; default 1100 N (TMM-7M). None: no
+        friction coefficient, torques only.
+    r : pint.Quantity [length] or None, optional
+        Journal radius, > 0; default 25 mm (TMM-7M). None: torques only.
+    window : int, optional
+        Savitzky-Golay window in samples for the derivative (default about
+        a tenth of the samples, odd, 7 to 51).
+    interval_dn : pint.Quantity [1/min], optional
+        Speed step of the interval table of formula (2), > 0; give this or
+        ``interval_dt``, not both.
+    interval_dt : pint.Quantity [time], optional
+        Time step of the interval table, > 0.
+    interval_count : int, optional
+        Number of intervals where neither step is given; default 10.
+
+    Returns
+    -------
+    bearingheat.analysis.coastdown.CoastdownResult
+        The chosen model and every fit (parameters in N·m, N·m·s, N·m·s²
+        with 95 % intervals), ``f_constant`` (the source's single
+        coefficient, NaN without G and r), the smoothed samples, the
+        interval table, the run-down time [s] and the energies [J].
+
+    Raises
+    ------
+    bearingheat.errors.CoastdownError
+        For a record that cannot be analysed: t and n not 1-D or of unequal
+        length, fewer than 10 samples (or fewer than 4 above 2 % of the top
+        speed), a non-finite time, a negative or non-finite speed, times
+        that do not increase strictly, a speed that does not fall, I, G or
+        r not > 0, I = None, both interval steps or a step not > 0.
+    bearingheat.errors.UnitError
+        For a plain number where a Quantity is needed, or a unit of the
+        wrong dimension (a speed must be revolutions or radians per time).
+
+    Examples
+    --------
     >>> import numpy as np
     >>> from bearingheat.units import ureg
     >>> u = ureg()
@@ -60,7 +116,73 @@ def analyse_coastdown(t, n, *, I=_TMM, G=_TMM, r=_TMM, window=None, interval_dn=
 
 
 def analyse_spindle_coastdown(t, n, *, I, nu, dM, bearings=2, P=None, f0_catalogue=None) -> SpindleFit:
-    """Fit the seed 002 M0 + M1 form to a rolling-bearing spindle run-down, with pint Quantities."""
+    """Fit the catalogue M0 + M1 form to a rolling-bearing spindle run-down, with pint Quantities.
+
+    The torque of a shaft on z identical rolling bearings is taken in the
+    form of the Schaeffler rolling bearing catalogue (Russian edition),
+    chapter «Трение и нагрев» (Friction and increases in temperature),
+    p. 64: M = z·(M0 + M1), M0 = f0·(ν·n)^(2/3)·dM³·1e-7 N·mm for
+    ν·n >= 2000 (f0·160·dM³·1e-7 below), M1 = f1·P·dM constant during the
+    run-down. f0 and M1 are fitted to n(t) by least squares, so that a
+    catalogue f0 can be audited. Seals and windage are lumped into the fit.
+
+    Parameters
+    ----------
+    t : pint.Quantity [time]
+        Sample times, a 1-D array strictly increasing, at least 10 samples.
+    n : pint.Quantity [1/min]
+        Shaft speeds at ``t`` (1/min, rpm, Hz or rad/s), finite and >= 0,
+        falling; ν·n must reach 2000 mm²/s·1/min.
+    I : pint.Quantity [kg·m²]
+        Moment of inertia of the rotor about the shaft, > 0.
+    nu : pint.Quantity [mm²/s]
+        Oil viscosity at the operating temperature, taken as constant; > 0.
+    dM : pint.Quantity [length]
+        Mean bearing diameter (d + D)/2, > 0.
+    bearings : int, optional
+        Number z of identical bearings on the shaft, a whole number >= 1;
+        default 2.
+    P : pint.Quantity [force], optional
+        Bearing load, > 0; gives f1 = M1/(P·dM).
+    f0_catalogue : float, optional
+        The catalogue f0 to compare the fitted one with.
+
+    Returns
+    -------
+    bearingheat.analysis.coastdown.SpindleFit
+        The fit: ``f0``, ``M1`` [N·mm] of one bearing, ``f1`` (NaN without
+        P), confidence intervals in ``fit`` and ``summary()``.
+
+    Raises
+    ------
+    bearingheat.errors.CoastdownError
+        For a record that cannot be analysed (as for
+        :func:`analyse_coastdown`), nu, dM, I or P not > 0, a number of
+        bearings that is not a whole number >= 1, or a run-down whose ν·n
+        stays below 2000 (M0 is then constant and cannot be told apart
+        from M1).
+    bearingheat.errors.UnitError
+        For a plain number where a Quantity is needed, or a unit of the
+        wrong dimension.
+
+    Examples
+    --------
+    A synthetic run-down of a shaft on two bearings with f0 = 2 and
+    M1 = 30 N·mm each:
+
+    >>> import numpy as np
+    >>> from bearingheat.kernels.coastdown import rolling_bearing_M0_seed002, rundown_speed
+    >>> from bearingheat.units import ureg
+    >>> u = ureg()
+    >>> def torque(omega):  # N*m of both bearings at omega [rad/s]
+    ...     return 2 * (rolling_bearing_M0_seed002(omega * 30 / np.pi, 20.0, 50.0, 2.0) + 30.0) / 1000
+    >>> t = np.linspace(0.0, 20.0, 41)
+    >>> n = rundown_speed(t, 0.0, 6000.0, torque, 0.01)
+    >>> fit = analyse_spindle_coastdown(t * u.s, n * u.rpm, I=0.01 * u("kg*m^2"), nu=20 * u("mm^2/s"),
+    ...                                 dM=50 * u.mm, P=1 * u.kN)
+    >>> round(fit.f0, 2), round(fit.M1, 1), round(fit.f1, 5)
+    (2.0, 30.0, 0.0006)
+    """
     return spindle_coastdown_fit(
         np.atleast_1d(magnitude(t, "s", "t")), np.atleast_1d(speed_rpm(n, "n")), magnitude(I, "kg*m^2", "I"),
         magnitude(nu, "mm^2/s", "nu"), magnitude(dM, "mm", "dM"), bearings,

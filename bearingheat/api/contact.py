@@ -26,8 +26,62 @@ __all__ = ["BallContact", "ball_bearing_contact", "contact_angle_from_clearance"
 
 @dataclass(frozen=True)
 class BallContact:
-    """Contact of one ball bearing (Quantities). ``Fa_min`` needs n; it uses α0 (the seed's rule),
-    ``Fa_min_at_alpha`` the working angle under Fa."""
+    """Contact of one ball bearing (Quantities). ``Fa_min`` needs n; it uses α0 (the source's rule),
+    ``Fa_min_at_alpha`` the working angle under Fa.
+
+    The method of В.А. Зайцев, В.А. Воронкин, «Расчёт осевых усилий и рабочих
+    углов контакта подшипников качения при оценке их качества на стендах»
+    (ФГУП «НПП ВНИИЭМ», 2009). Every value is a pint Quantity (float or
+    array, of the shape of the broadcast arguments).
+
+    Parameters
+    ----------
+    alpha0 : pint.Quantity [deg]
+        Initial contact angle (given, or from the clearance).
+    alpha : pint.Quantity [deg]
+        Working contact angle under the axial load Fa.
+    Fa : pint.Quantity [N]
+        Axial load (0 when none was given: α = α0).
+    xi_a : pint.Quantity [1]
+        Dimensionless axial displacement ξ_a of the rings.
+    delta_a : pint.Quantity [mm]
+        Axial displacement of the rings, ξ_a·(r_i + r_o − d_w).
+    C_star : pint.Quantity [N]
+        Stiffness ("force") characteristic C* of the bearing.
+    sum_rho_i : pint.Quantity [1/mm]
+        Curvature sum Σρ of the inner ball-race contact.
+    sum_rho_o : pint.Quantity [1/mm]
+        Curvature sum Σρ of the outer ball-race contact.
+    cos_tau_i : pint.Quantity [1]
+        Auxiliary cos τ = F(ρ) of the inner contact.
+    cos_tau_o : pint.Quantity [1]
+        Auxiliary cos τ = F(ρ) of the outer contact.
+    deflection_i : pint.Quantity [1]
+        Hertz coefficient 2K/(μπ) (δ*) of the inner contact.
+    deflection_o : pint.Quantity [1]
+        Hertz coefficient 2K/(μπ) (δ*) of the outer contact.
+    n : pint.Quantity [1/min], optional
+        Inner-ring speed; None when not given.
+    Fa_min : pint.Quantity [N], optional
+        Minimum axial load against gyroscopic sliding of the balls at n and
+        α0 (the source's rule); None without n.
+    Fa_min_at_alpha : pint.Quantity [N], optional
+        The same at the working angle α (the larger, stricter value); None
+        without n.
+
+    See Also
+    --------
+    ball_bearing_contact : computes it.
+
+    Examples
+    --------
+    >>> from bearingheat.units import ureg
+    >>> u = ureg()
+    >>> r = ball_bearing_contact(z=7, d_w=2 * u.mm, d_m=8.7355 * u.mm, r_i=1.05 * u.mm, r_o=1.16 * u.mm,
+    ...                          clearance=10 * u.um)
+    >>> round(r.alpha0.to("deg").magnitude, 4), r.Fa, r.n
+    (12.5279, <Quantity(0.0, 'newton')>, None)
+    """
 
     alpha0: Any
     alpha: Any
@@ -65,7 +119,27 @@ class BallContact:
     }
 
     def to_dict(self) -> dict[str, Any]:
-        """Magnitudes under keys carrying their unit, e.g. ``'alpha [deg]'``; keys of absent values left out."""
+        """Magnitudes under keys carrying their unit, e.g. ``'alpha [deg]'``; keys of absent values left out.
+
+        Returns
+        -------
+        dict of str to float or list of float
+            Keys 'alpha0 [deg]', 'Fa [N]', 'alpha [deg]', 'xi_a',
+            'delta_a [mm]', 'C_star [N]', 'sum_rho_i [1/mm]',
+            'sum_rho_o [1/mm]', 'cos_tau_i', 'cos_tau_o', '2K/(mu*pi)_i',
+            '2K/(mu*pi)_o' and, with n, 'n [1/min]', 'Fa_min [N]',
+            'Fa_min at alpha [N]'; arrays become lists.
+
+        Examples
+        --------
+        >>> from bearingheat.units import ureg
+        >>> u = ureg()
+        >>> r = ball_bearing_contact(z=7, d_w=2 * u.mm, d_m=8.7355 * u.mm, r_i=1.05 * u.mm, r_o=1.16 * u.mm,
+        ...                          alpha0=12 * u.deg)
+        >>> d = r.to_dict()
+        >>> d["alpha [deg]"], d["Fa [N]"], "n [1/min]" in d
+        (12.0, 0.0, False)
+        """
         result = {}
         for key, (attribute, unit) in self._KEYS.items():
             value = getattr(self, attribute)
@@ -94,7 +168,37 @@ def contact_angle_from_clearance(clearance, r_i, r_o, d_w):
     """Initial contact angle α0 (Quantity in degrees) from the mean radial clearance.
 
     Unit-aware form of :func:`~bearingheat.kernels.contact.initial_contact_angle`: lengths are Quantities.
+    α0 = arccos[1 − e / (2·(r_i + r_o − d_w))], after В.А. Зайцев, В.А. Воронкин,
+    «Расчёт осевых усилий и рабочих углов контакта подшипников качения при
+    оценке их качества на стендах» (ФГУП «НПП ВНИИЭМ», 2009), p. 1.
 
+    Parameters
+    ----------
+    clearance : pint.Quantity [length]
+        Mean radial clearance e (the catalogue value of the clearance group);
+        valid 0 <= e <= 2·(r_i + r_o − d_w) (α0 up to 90°).
+    r_i : pint.Quantity [length]
+        Groove radius of the inner ring.
+    r_o : pint.Quantity [length]
+        Groove radius of the outer ring; r_i + r_o must exceed d_w.
+    d_w : pint.Quantity [length]
+        Ball diameter; must be > 0.
+
+    Returns
+    -------
+    pint.Quantity [deg]
+        α0, a float or an array of the broadcast shape.
+
+    Raises
+    ------
+    bearingheat.errors.ContactInputError
+        For d_w <= 0, r_i + r_o <= d_w, a negative clearance, or one above
+        2·(r_i + r_o − d_w) (naming the value and, for arrays, the element).
+    bearingheat.errors.UnitError
+        For a plain number or a unit that is not a length.
+
+    Examples
+    --------
     >>> from bearingheat.units import ureg
     >>> u = ureg()
     >>> round(contact_angle_from_clearance(10 * u.um, 1.05 * u.mm, 1.16 * u.mm, 2 * u.mm).to('deg').magnitude, 4)
@@ -106,7 +210,7 @@ def contact_angle_from_clearance(clearance, r_i, r_o, d_w):
 
 
 def ball_bearing_contact(*, z, d_w, d_m, r_i, r_o, alpha0=None, clearance=None, Fa=None, n=None) -> BallContact:
-    """Contact angles, stiffness and minimum axial load of a ball bearing (seed 001), unit-aware.
+    """Contact angles, stiffness and minimum axial load of a ball bearing, unit-aware.
 
     z: number of balls (plain number); d_w ball diameter, d_m pitch diameter,
     r_i, r_o groove radii: lengths; exactly one of alpha0 (angle) or clearance
@@ -114,6 +218,53 @@ def ball_bearing_contact(*, z, d_w, d_m, r_i, r_o, alpha0=None, clearance=None, 
     n inner-ring speed (1/min, rpm, Hz, rad/s), optional, for the minimum
     axial load. Returns a :class:`BallContact` of Quantities.
 
+    Source: В.А. Зайцев, В.А. Воронкин, «Расчёт осевых
+    усилий и рабочих углов контакта подшипников качения при оценке их качества
+    на стендах» (ФГУП «НПП ВНИИЭМ», 2009), pp. 1–3. The load is shared equally
+    by all balls (pure axial load, no misalignment, no centrifugal force).
+
+    Parameters
+    ----------
+    z : int or float [1]
+        Number of balls, a whole number >= 1 without a unit.
+    d_w : pint.Quantity [length]
+        Ball diameter; must be > 0.
+    d_m : pint.Quantity [length]
+        Pitch diameter; must exceed d_w.
+    r_i : pint.Quantity [length]
+        Groove radius of the inner ring; must exceed d_w/2.
+    r_o : pint.Quantity [length]
+        Groove radius of the outer ring; must exceed d_w/2.
+    alpha0 : pint.Quantity [angle], optional
+        Initial contact angle, 0 <= α0 < 90°. Give this or ``clearance``.
+    clearance : pint.Quantity [length], optional
+        Mean radial clearance, 0 to 2·(r_i + r_o − d_w); α0 follows by
+        :func:`contact_angle_from_clearance`. Give this or ``alpha0``.
+    Fa : pint.Quantity [force], optional
+        Axial load, >= 0; default 0 (α = α0).
+    n : pint.Quantity [1/min], optional
+        Inner-ring speed (1/min, rpm, Hz, rad/s), >= 0; needed for the
+        minimum axial load.
+
+    Returns
+    -------
+    BallContact
+        α0, α, Fa, ξ_a, δ_a, C*, the curvature sums and Hertz coefficients
+        of both contacts and, with n, Fa_min at α0 and at α.
+
+    Raises
+    ------
+    bearingheat.errors.ContactInputError
+        For neither or both of alpha0 and clearance, and a value outside the
+        ranges above (impossible geometry, a negative load or speed, a
+        clearance that turns α0 past 90°, a number of balls that is not a
+        whole number >= 1).
+    bearingheat.errors.UnitError
+        For a plain number where a Quantity is needed (an angle without a
+        unit), a unit of the wrong dimension, or a unit on ``z``.
+
+    Examples
+    --------
     >>> from bearingheat.kernels.contact import degrees_to_dms
     >>> from bearingheat.units import ureg
     >>> u = ureg()

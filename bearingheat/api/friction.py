@@ -232,8 +232,10 @@ def friction_torque(bearing: str | None = None, *, n, nu, lubrication: str | Non
         A user-digitised f2 chart (:class:`~bearingheat.catalogue.f2chart.F2Chart`)
         to read f2 from where ``f2`` is not given; never extrapolated.
     model : str, optional
-        The friction model, a name of :data:`bearingheat.calc.models.MODELS`
-        (default 'schaeffler').
+        The friction model, a name of :data:`bearingheat.calc.models.MODELS`:
+        'schaeffler' (default; the catalogue model above) or 'skf' (the SKF
+        four-component model of the SKF General Catalogue 6000, chapter
+        Friction, and SKF Rolling bearings 10000/3, 2017).
     model_inputs : dict, optional
         The inputs a model reads beyond the catalogue model's, by contract
         column name: for the SKF model ``oil_level`` and ``d_s`` [length],

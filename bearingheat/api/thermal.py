@@ -28,10 +28,51 @@ __all__ = ["HeatBalanceResult", "heat_balance", "thermal_reference_speed"]
 class HeatBalanceResult:
     """Heat balance of one bearing or of many operating points, as Quantities.
 
-    n_thr, n_per [1/min]; T_op [degC]; nu_op [mm²/s]; Q_S, Q_L [W] carried
-    away (at T_bearing where given, else at T_op); N_R [W] friction power at
-    the operating point. NaN where a value could not be computed:
-    ``status`` ('ok' | 'warning' | 'error') and ``messages`` say why, per row.
+    The values are pint Quantities of the shape of the broadcast arguments
+    of :func:`heat_balance` (a pint-pandas Series when a Series went in).
+    NaN where a value could not be computed: ``status`` and ``messages`` say
+    why, per operating point.
+
+    Parameters
+    ----------
+    n_thr : pint.Quantity [1/min]
+        Thermal reference speed n_θr (ISO 15312; Schaeffler catalogue HR 1
+        "Rolling bearings", edition June 2006); NaN where the method does not
+        apply or neither B nor T is given.
+    n_per : pint.Quantity [1/min]
+        Thermally permissible speed n_θr·f_n at ``T_bearing`` (needs
+        T_bearing and T_ambient), capped at n_G where that is given.
+    T_op : pint.Quantity [degC]
+        Operating temperature at the speed n, where the friction heat and
+        the heat carried away balance (needs T_ambient).
+    nu_op : pint.Quantity [mm²/s]
+        Oil viscosity at T_op (from nu40/nu100 or iso_vg, or the given nu).
+    Q_S : pint.Quantity [W]
+        Heat carried away through the bearing seat, at T_bearing where given,
+        else at T_op.
+    Q_L : pint.Quantity [W]
+        Heat carried away by circulating oil, at the same temperature
+        (0 without V_oil).
+    N_R : pint.Quantity [W]
+        Friction power at the operating point, (π·n/30)·1e-3·M_R.
+    status : list of str
+        Per operating point: 'ok', 'warning' or 'error'.
+    messages : list of str
+        Per operating point: the warnings and errors, joined by '; ' ('' when
+        ok).
+
+    See Also
+    --------
+    heat_balance : computes it.
+
+    Examples
+    --------
+    >>> import pint
+    >>> u = pint.get_application_registry()
+    >>> r = heat_balance("6205", d=25 * u.mm, D=52 * u.mm, B=15 * u.mm, C0=7.8 * u.kN, n=3000 * u.rpm,
+    ...                  Fr=2 * u.kN, nu=12 * u("mm^2/s"), T_ambient=u.Quantity(20, "degC"))
+    >>> round(r.T_op.to("degC").magnitude, 1), round(r.N_R.to("W").magnitude, 2), r.n_per.magnitude
+    (32.9, 14.93, nan)
     """
 
     n_thr: object
@@ -81,16 +122,119 @@ def heat_balance(designation: str | None = None, *, d, D, n=None, C0=None, B=Non
                  t_limit=None, bearing_type: str | None = None, series: str | None = None) -> HeatBalanceResult:
     """Thermal reference speed, permissible speed and operating temperature of a bearing (Quantities).
 
+    The heat balance N_R + Q_E = Q_S + Q_L of the Schaeffler catalogue HR 1
+    "Rolling bearings" (edition June 2006), after ISO 15312 (thermal
+    reference speed) and the draft of DIN 732 (thermally permissible speed);
+    the friction N_R is the model of :func:`friction_torque` (Schaeffler
+    rolling bearing catalogue, chapter «Трение и нагрев», Friction and
+    increases in temperature). Viscosity against temperature follows
+    ASTM D341 (Walther), ISO 3448 grades and ASTM D2270.
+
     Every dimensional argument is a pint Quantity (arrays and pint-pandas
     Series broadcast: one bearing, many operating points). Temperatures are
     absolute (degC, K); ``dT_oil`` is a difference (K, delta_degC);
-    ``iso_vg`` and ``viscosity_index`` are plain numbers. ``viscosity_at``:
-    'auto' (ν at T_bearing where given, else at T_op), 'bearing' or
-    'operating' — where ν comes from nu40/nu100 or iso_vg; a given ``nu``
-    is always used as it is. ``method``: 'exact' root of the f_n equation
-    or the catalogue 'approximation'. ``t_limit``: the highest temperature
-    searched for T_op (default 150 °C).
+    ``iso_vg`` and ``viscosity_index`` are plain numbers. A number outside
+    its valid range raises; one outside its plausible range is a warning in
+    ``messages``. A row the friction model or the balance cannot compute
+    (a missing n, a negative load, an unknown designation, no equilibrium)
+    gets status 'error' and NaN, and does not raise.
 
+    Parameters
+    ----------
+    designation : str, optional
+        Bearing designation such as ``"6205"`` or ``"30205-A"``; or give
+        ``bearing_type`` and ``series``.
+    d : pint.Quantity [length]
+        Bore; valid up to 1e5 mm (outside 0.5 to 5000 mm a warning).
+    D : pint.Quantity [length]
+        Outside diameter; valid up to 1e5 mm (outside 1 to 6000 mm a warning).
+    n : pint.Quantity [1/min], optional
+        Operating speed (1/min, rpm, Hz); needed for T_op, n_per and N_R.
+        Valid up to 1e7 1/min (above 2e5 1/min a warning).
+    C0 : pint.Quantity [force], optional
+        Basic static load rating; needed for n_thr (reference load
+        P1 = 0.05·C0) and where f1 depends on P0/C0. Valid up to 1e10 N.
+    B : pint.Quantity [length], optional
+        Width; the heat flow area A_r = π·B·(D + d) of radial bearings
+        (thrust bearings: (π/2)·(D² − d²)).
+    T : pint.Quantity [length], optional
+        Total width of tapered roller bearings: A_r = π·T·(D + d).
+    Fr : pint.Quantity [force], optional
+        Radial load at the operating point; default 0.
+    Fa : pint.Quantity [force], optional
+        Axial load at the operating point; default 0.
+    lubrication : str, optional
+        'grease', 'oil_mist', 'oil_bath' (default) or 'circulating_oil'.
+    nu : pint.Quantity [mm²/s], optional
+        Operating viscosity, used as it is; else give ``nu40`` and ``nu100``
+        or ``iso_vg``.
+    nu40 : pint.Quantity [mm²/s], optional
+        Oil viscosity at 40 °C (with ``nu100``); valid up to 1e7 mm²/s
+        (outside 1 to 1e5 mm²/s a warning).
+    nu100 : pint.Quantity [mm²/s], optional
+        Oil viscosity at 100 °C (with ``nu40``); same ranges.
+    iso_vg : float, optional
+        ISO 3448 viscosity grade (2 to 3200) instead of nu40/nu100; valid
+        1 to 10 000.
+    viscosity_index : float, optional
+        Viscosity index of the ISO VG oil (ASTM D2270; default 95); valid
+        -100 to 400.
+    T_ambient : pint.Quantity [temperature], optional
+        Ambient temperature; needed for T_op, nu_op, Q_S, Q_L and n_per.
+        Valid -60 to 200 °C.
+    T_bearing : pint.Quantity [temperature], optional
+        Bearing (outer ring) temperature, for n_per and the heat carried
+        away. Valid -60 to 300 °C (above 200 °C a warning).
+    k_q : pint.Quantity [W/(mm²·K)], optional
+        Heat transfer coefficient of the seat; default q_r/50 K; must be > 0.
+    V_oil : pint.Quantity [l/min], optional
+        Circulating oil flow; valid 0 to 1e4 l/min.
+    dT_oil : pint.Quantity [temperature difference], optional
+        Oil temperature rise; default T_bearing − T_ambient (oil fed at
+        ambient). Valid 0 to 200 K.
+    Q_E : pint.Quantity [power], optional
+        External heat flowing into the bearing (negative: cooling); default 0.
+    n_G : pint.Quantity [1/min], optional
+        Limiting speed: n_per is capped at it (with a warning). Valid up to
+        1e7 1/min.
+    n_thr_catalogue : pint.Quantity [1/min], optional
+        The catalogue's n_θr; n_per then uses it instead of the computed one.
+        Valid > 0 and up to 1e7 1/min.
+    viscosity_at : str, optional
+        Where ν is taken when it comes from nu40/nu100 or iso_vg: 'auto'
+        (default; T_bearing where given, else T_op), 'bearing' or
+        'operating'. A given ``nu`` is always used as it is.
+    method : str, optional
+        How the speed factor f_n of n_per is found: 'exact' (default; the
+        root of the f_n equation) or 'approximation' (the catalogue's
+        formula, valid for 0.01 <= k_L, k_P <= 10).
+    t_limit : pint.Quantity [temperature], optional
+        Highest temperature searched for T_op; default 150 °C.
+    bearing_type : str, optional
+        Bearing type of the coefficient tables instead of a designation.
+    series : str, optional
+        Dimension series with ``bearing_type``.
+
+    Returns
+    -------
+    HeatBalanceResult
+        n_thr, n_per [1/min], T_op [degC], nu_op [mm²/s], Q_S, Q_L, N_R [W],
+        and per operating point ``status`` and ``messages``.
+
+    Raises
+    ------
+    bearingheat.errors.HeatBalanceError
+        For an unknown ``method`` or ``viscosity_at``, no viscosity at all
+        (none of nu, nu40 with nu100, an ISO VG grade), and a number that is NaN,
+        infinite or outside its valid range (naming the argument and, for
+        arrays, the index).
+    bearingheat.errors.UnitError
+        For a plain number where a Quantity is needed, a unit of the wrong
+        dimension, or a temperature difference where an absolute
+        temperature is needed.
+
+    Examples
+    --------
     >>> import pint
     >>> u = pint.get_application_registry()
     >>> r = heat_balance("6205", d=25 * u.mm, D=52 * u.mm, B=15 * u.mm, C0=7.8 * u.kN, n=3000 * u.rpm,
@@ -174,11 +318,56 @@ def thermal_reference_speed(designation: str | None = None, *, d, D, C0, B=None,
                             bearing_type: str | None = None, series: str | None = None):
     """Thermal reference speed n_θr of catalogue bearings as a Quantity [1/min].
 
-    Arguments are pint Quantities (arrays broadcast). Raises
-    :class:`~bearingheat.errors.HeatBalanceError` with the reason where n_θr
-    cannot be computed; :func:`bearingheat.calc.thermal.thermal_reference_speed_rows`
-    returns NaN and the reasons instead.
+    The speed at which the friction heat under the reference conditions of
+    ISO 15312 (20 °C ambient, 70 °C outer ring, oil bath of 12 mm²/s for
+    radial and 24 mm²/s for thrust bearings, load 0.05·C0 radial or 0.02·C0
+    axial) equals the heat q_r·A_r carried away, as in the Schaeffler
+    catalogue HR 1 "Rolling bearings" (edition June 2006). The friction is
+    the model of the Schaeffler rolling bearing catalogue, chapter «Трение и
+    нагрев» (Friction and increases in temperature). Arguments are pint
+    Quantities; arrays broadcast. The method does not apply to thrust ball
+    bearings, bearings with contact seals or combined bearings.
 
+    Parameters
+    ----------
+    designation : str, optional
+        Bearing designation such as ``"6205"``; or give ``bearing_type`` and
+        ``series``.
+    d : pint.Quantity [length]
+        Bore.
+    D : pint.Quantity [length]
+        Outside diameter.
+    C0 : pint.Quantity [force]
+        Basic static load rating; must be > 0.
+    B : pint.Quantity [length], optional
+        Width; A_r = π·B·(D + d) of radial bearings, which need B or T
+        (thrust bearings: A_r = (π/2)·(D² − d²)).
+    T : pint.Quantity [length], optional
+        Total width of tapered roller bearings: A_r = π·T·(D + d).
+    bearing_type : str, optional
+        Bearing type of the coefficient tables instead of a designation.
+    series : str, optional
+        Dimension series with ``bearing_type``.
+
+    Returns
+    -------
+    pint.Quantity [1/min]
+        n_θr, a float or an array of the broadcast shape.
+
+    Raises
+    ------
+    bearingheat.errors.HeatBalanceError
+        With the reason where n_θr cannot be computed (the first such row
+        for arrays): the method does not apply to the bearing, B and T are
+        missing, C0 is not > 0, the designation is missing or unknown.
+        :func:`bearingheat.calc.thermal.thermal_reference_speed_rows`
+        returns NaN and the reasons instead.
+    bearingheat.errors.UnitError
+        For a plain number where a Quantity is needed, or a unit of the
+        wrong dimension.
+
+    Examples
+    --------
     >>> import pint
     >>> u = pint.get_application_registry()
     >>> round(thermal_reference_speed("30205-A", d=25 * u.mm, D=52 * u.mm, T=16.25 * u.mm, C0=34.5 * u.kN).magnitude)

@@ -22,13 +22,62 @@ def oil_viscosity(temperature, *, nu40=None, nu100=None, points=None, iso_vg=Non
                   viscosity_index=DEFAULT_VISCOSITY_INDEX, pour_point=None):
     """Kinematic viscosity of an oil at ``temperature`` (pint Quantities in and out).
 
+    The viscosity-temperature line of ASTM D341 (Walther),
+    log10 log10(ν + 0.7) = A − B·log10 T, through two points; an ISO VG grade
+    gives ν40 (the ISO 3448 mid-point) and ν100 from the viscosity index by
+    ASTM D2270 (table 1, its formulas above ν100 = 70 mm²/s).
+
     Give exactly one of: ``nu40`` and ``nu100``; ``points`` = ((ν1, θ1),
     (ν2, θ2)) at any two temperatures; ``iso_vg`` (a grade number) with
     ``viscosity_index`` (default 95). Temperatures are absolute (degC, K,
     degF); the result is in mm²/s. Values outside ASTM D341 (ν < 2 mm²/s,
-    or below ``pour_point``) raise a :class:`~bearingheat.errors.ViscosityRangeWarning`;
+    or below ``pour_point``) emit a :class:`~bearingheat.errors.ViscosityRangeWarning`;
     data that fix no line raise :class:`~bearingheat.errors.ViscosityError`.
 
+    Parameters
+    ----------
+    temperature : pint.Quantity [temperature]
+        Absolute temperature(s) at which ν is wanted (a float or an array).
+    nu40 : pint.Quantity [mm²/s], optional
+        Kinematic viscosity at 40 °C, with ``nu100``.
+    nu100 : pint.Quantity [mm²/s], optional
+        Kinematic viscosity at 100 °C, with ``nu40``.
+    points : tuple of two (pint.Quantity [mm²/s], pint.Quantity [temperature]), optional
+        Two (viscosity, absolute temperature) pairs at any temperatures.
+    iso_vg : float, optional
+        ISO 3448 viscosity grade, one of 2, 3, 5, 7, 10, 15, 22, 32, 46, 68,
+        100, 150, 220, 320, 460, 680, 1000, 1500, 2200, 3200.
+    viscosity_index : float, optional
+        Viscosity index of the ``iso_vg`` oil (ASTM D2270); default 95, the
+        mineral oil of the bearing catalogues' viscosity-temperature diagrams.
+        It must be reachable by an oil of the grade with ν100 >= 2 mm²/s.
+    pour_point : pint.Quantity [temperature], optional
+        Pour point of the oil; below it the value is an extrapolation (a
+        warning).
+
+    Returns
+    -------
+    pint.Quantity [mm²/s]
+        ν at ``temperature``, of its shape.
+
+    Raises
+    ------
+    bearingheat.errors.ViscosityError
+        When the data fix no line: not exactly one of nu40 with nu100,
+        points, iso_vg; an ``iso_vg`` that is not an ISO 3448 grade; a
+        ``viscosity_index`` no oil of the grade reaches.
+    bearingheat.errors.UnitError
+        For a plain number or a temperature difference where an absolute
+        temperature is needed, or a unit of the wrong dimension.
+
+    Warns
+    -----
+    bearingheat.errors.ViscosityRangeWarning
+        Where ν < 2 mm²/s or the temperature is below ``pour_point``: the
+        value is an extrapolation of ASTM D341.
+
+    Examples
+    --------
     >>> import pint
     >>> u = pint.get_application_registry()
     >>> round(oil_viscosity(u.Quantity(60, "degC"), nu40=404 * u("mm^2/s"), nu100=28 * u.cSt).magnitude, 2)

@@ -205,8 +205,10 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
         ``type`` and ``series``), ``D``, ``nu`` and ``lubrication`` (or
         ``f0``). Unknown columns are passed through untouched.
     model : str, optional
-        Friction model of rows whose ``model`` cell is blank (default
-        'schaeffler').
+        Friction model of rows whose ``model`` cell is blank: 'schaeffler'
+        (default) or 'skf' (the SKF four-component model of the SKF General
+        Catalogue 6000, chapter Friction, and SKF Rolling bearings 10000/3,
+        2017, which adds its own result columns).
     f2_chart : F2Chart or str, optional
         A digitised f2 chart (:class:`~bearingheat.catalogue.f2chart.F2Chart`),
         or the path of its CSV, for M2 of axially loaded cylindrical roller

@@ -104,7 +104,70 @@ ROUNDING = {
 
 @dataclass(frozen=True)
 class BearingData:
-    """One bearing of the table, values in catalogue units (NaN where the catalogue gives none)."""
+    """One bearing of the table, values in catalogue units (NaN where the catalogue gives none).
+
+    A row of ``tables/bearings_hr1_2006.csv``, from the Schaeffler catalogue
+    HR 1 "Rolling bearings" (edition June 2006), as :func:`bearing` returns
+    it.
+
+    Parameters
+    ----------
+    designation : str
+        As printed in the catalogue, suffixes included.
+    family : str
+        'deep groove ball', 'angular contact ball', 'cylindrical roller' or
+        'tapered roller'.
+    bearing_type : str
+        A key of :data:`bearingheat.catalogue.designation.BEARING_TYPES`.
+    series : str
+        The series key of the friction tables (62, 72, 22, 302, ...).
+    prefix : str
+        N, NU, NJ, NUP for cylindrical roller bearings, else ''.
+    shield : str
+        'open' or '2Z'.
+    d : float [mm]
+        Bore.
+    D : float [mm]
+        Outside diameter.
+    B : float [mm]
+        Width (tapered roller bearings: inner ring width).
+    T : float [mm]
+        Total width of a tapered roller bearing (NaN for the others).
+    C : float [N]
+        Basic dynamic radial load rating.
+    C0 : float [N]
+        Basic static radial load rating.
+    e : float [1]
+        Calculation factor (tapered roller bearings; else NaN).
+    Y : float [1]
+        Axial load factor (tapered roller bearings; else NaN).
+    Y0 : float [1]
+        Static axial load factor (tapered roller bearings; else NaN).
+    n_G : float [1/min]
+        Limiting speed.
+    n_thr : float [1/min]
+        Thermal reference speed of the catalogue (n_B in HR 1).
+    source : str
+        Catalogue, edition, pages, table and row.
+    query : str, optional
+        The designation that was looked up.
+    match : str, optional
+        How it was matched, a key of :data:`MATCHES`: 'exact' (default),
+        'cage' or 'design'.
+    note : str, optional
+        How the query was matched when not exactly; other rows with the
+        same values.
+
+    See Also
+    --------
+    bearing : looks a designation up.
+
+    Examples
+    --------
+    >>> b = bearing("6208-2Z")
+    >>> b.family, b.shield, b.C0, b.match
+    ('deep groove ball', '2Z', 18000.0, 'exact')
+    """
 
     designation: str     # as printed in the catalogue, suffixes included
     family: str          # deep groove ball | angular contact ball | cylindrical roller | tapered roller
@@ -131,6 +194,13 @@ class BearingData:
     def values(self) -> dict[str, float]:
         """The numeric fields the catalogue gives (NaN ones left out), in catalogue units.
 
+        Returns
+        -------
+        dict of str to float
+            Name (of :data:`NUMERIC`) to value in mm, N, 1 or 1/min.
+
+        Examples
+        --------
         >>> bearing("30205-A").values()["T"], "T" in bearing("6205").values()
         (16.25, False)
         """
@@ -139,6 +209,14 @@ class BearingData:
     def quantities(self) -> dict[str, Any]:
         """The numeric fields the catalogue gives as pint Quantities (NaN ones left out).
 
+        Returns
+        -------
+        dict of str to pint.Quantity
+            Name (of :data:`NUMERIC`) to value in the unit of the table's
+            units row.
+
+        Examples
+        --------
         >>> q = bearing("6208").quantities()
         >>> q["C0"].to("kN"), q["n_thr"]
         (<Quantity(18.0, 'kilonewton')>, <Quantity(9300.0, '1 / minute')>)
@@ -154,13 +232,70 @@ def units_of_table() -> dict[str, str]:
 
 
 def bearing_table() -> pd.DataFrame:
-    """The whole bearing table (a copy), numeric columns in catalogue units, blank -> NaN."""
+    """The whole bearing table (a copy), numeric columns in catalogue units, blank -> NaN.
+
+    The 1034 bearings of the Schaeffler catalogue HR 1 "Rolling bearings"
+    (edition June 2006), one row per bearing in catalogue order.
+
+    Parameters
+    ----------
+    None
+
+    Returns
+    -------
+    pandas.DataFrame
+        Columns ``designation``, ``family``, ``bearing_type``, ``series``,
+        ``prefix``, ``shield``, ``d``, ``D``, ``B``, ``T`` [mm], ``C``,
+        ``C0`` [N], ``e``, ``Y``, ``Y0`` [1], ``n_G``, ``n_thr`` [1/min]
+        and ``source`` (catalogue, edition, page and row). A copy: changing
+        it does not change the table.
+
+    Raises
+    ------
+    KeyError
+        Only if the table is not shipped (a packaging fault).
+    ValueError
+        Only if the shipped table is malformed (a packaging fault).
+
+    Examples
+    --------
+    >>> table = bearing_table()
+    >>> len(table), float(table.loc[table["designation"] == "6208", "C0"].iloc[0])
+    (1034, 18000.0)
+    """
     return load_table(TABLE)
 
 
 @functools.lru_cache(maxsize=None)
 def designations() -> tuple[str, ...]:
-    """Every designation of the table, as printed, in catalogue order."""
+    """Every designation of the table, as printed, in catalogue order.
+
+    The designations of the Schaeffler catalogue HR 1 "Rolling bearings"
+    (edition June 2006) that :func:`bearing` finds exactly.
+
+    Parameters
+    ----------
+    None
+
+    Returns
+    -------
+    tuple of str
+        The 1034 full designations, suffixes included (``"6208-2Z"``,
+        ``"NU208-E-TVP2"``, ``"30205-A"``).
+
+    Raises
+    ------
+    KeyError
+        Only if the table is not shipped (a packaging fault).
+    ValueError
+        Only if the shipped table is malformed (a packaging fault).
+
+    Examples
+    --------
+    >>> names = designations()
+    >>> len(names), "6208-2Z" in names, "NU208-E-TVP2" in names
+    (1034, True, True)
+    """
     return tuple(record.designation for record in _records())
 
 

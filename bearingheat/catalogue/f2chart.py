@@ -56,7 +56,43 @@ class _Curve:
 
 
 class F2Chart:
-    """Curves f2(ν·n·dM) at fixed Fa/A, interpolated in log-log and never extrapolated."""
+    """Curves f2(ν·n·dM) at fixed Fa/A, interpolated in log-log and never extrapolated.
+
+    The f2 charts of axially loaded cylindrical roller bearings (Schaeffler
+    rolling bearing catalogue, Russian edition, chapter «Трение и нагрев»,
+    Friction and increases in temperature, p. 70, figures 3 and 4), as the
+    user digitised them from their catalogue: bearingheat ships no chart
+    values. Read one with :meth:`from_csv` (format in the module docstring)
+    and pass it to :func:`~bearingheat.api.friction.friction_torque` or
+    :func:`~bearingheat.calc.table.calc`; :meth:`lookup` reads f2.
+
+    Parameters
+    ----------
+    points : dict of str to (float, list of float, list of float)
+        Curve label -> (Fa/A [1], [ν·n·dM in mm³/(s·min)], [f2 [1]]): at
+        least two points per curve, ν·n·dM strictly increasing, every value
+        > 0, and no two curves at the same Fa/A.
+    name : str, optional
+        Name of the chart in messages (the CSV path for :meth:`from_csv`);
+        default 'f2 chart'.
+
+    Raises
+    ------
+    bearingheat.errors.F2ChartError
+        For no curves, a curve with fewer than two points, a value that is
+        not > 0, ν·n·dM not strictly increasing along a curve, or two curves
+        sharing one Fa/A.
+
+    Examples
+    --------
+    >>> chart = F2Chart({"A": (0.5, [2000.0, 50000.0], [0.012, 0.004]),
+    ...                  "B": (2.0, [2000.0, 50000.0], [0.020, 0.006])})   # made-up points
+    >>> f2, refused = chart.lookup([1.0, 3.0], 10000.0)
+    >>> f2.round(5), chart.Fa_over_A_range
+    (array([0.00871,     nan]), (0.5, 2.0))
+    >>> refused[1]
+    "Fa/A = 3 is outside the f2 chart's curves (0.5 to 2); the seed forbids extrapolating the chart"
+    """
 
     def __init__(self, points: dict[str, tuple[float, list[float], list[float]]], name: str = "f2 chart"):
         """``points``: curve label -> (Fa/A, [ν·n·dM in mm³/(s·min)], [f2])."""
