@@ -38,6 +38,9 @@ __all__ = [
     "ExcelError",
     "WorkbookContentError",
     "UsageError",
+    "OutputFileError",
+    "WorkbookLockedError",
+    "WorkbookChangedError",
     "ViscosityRangeWarning",
 ]
 
@@ -138,6 +141,22 @@ class WorkbookContentError(ExcelError):
 
 class UsageError(BearingheatError):
     """A command-line argument that cannot be used (the command line reports it and exits with code 2)."""
+
+
+class OutputFileError(BearingheatError):
+    """An output file that cannot or must not be written: it exists (and no --force), it is the input, it is
+    read-only, its folder is missing or not writable, or the write failed (disk full); the message names the
+    file and the cause, and the file is left as it was."""
+
+
+class WorkbookLockedError(OutputFileError):
+    """A workbook that another program holds: Excel's or LibreOffice's lock file sits beside it, or another
+    bearingheat run is writing it."""
+
+
+class WorkbookChangedError(OutputFileError):
+    """A workbook that another program saved while bearingheat was reading or working on it; nothing was
+    written."""
 
 
 class ViscosityRangeWarning(BearingheatWarning):

@@ -196,8 +196,44 @@ def _split(text: str) -> tuple[str, tuple[str, ...]]:
 
 @functools.lru_cache(maxsize=4096)
 def parse_designation(text: str) -> Designation:
-    """Resolve a designation to a bearing type and a series row of seed 002.
+    """Resolve a designation to a bearing type and a series row of the friction coefficient tables.
 
+    The rows are those of ``tables/friction_coefficients.csv``, typed from
+    the Schaeffler rolling bearing catalogue (Russian edition), chapter
+    «Трение и нагрев» (Friction and increases in temperature), pp. 64–70.
+    Schaeffler/ISO designations ("6205-2RSR", "NU206-E", "30205-A",
+    "22210-E1", "HK2016", "62..-2Z" ...) are matched by the rules of
+    :data:`DESIGNATION_RULES`, the first that matches wins; the GOST 3189
+    numbers of the lab bearings of Е.П. Жильников, В.П. Тукмаков,
+    «Исследование момента сил трения в шарикоподшипниках при
+    комбинированном нагружении» (Samara University, 2016), table 3
+    ("1000095", "18", "101"), take the ISO row named there. Results are
+    cached.
+
+    Parameters
+    ----------
+    text : str
+        The designation; case, spaces and dashes before suffixes do not
+        matter ("NU 206 E", "6205 2RS", "6205ZZ").
+
+    Returns
+    -------
+    Designation
+        ``bearing_type`` (a key of :data:`BEARING_TYPES`), ``series``,
+        ``prefix`` (NU, NJ ...), ``bore`` [mm] from the bore code (None where
+        the designation gives none), ``width`` [mm] of drawn cups, the
+        ``suffixes``, ``seal`` ('open', 'shield' or 'contact'),
+        ``contact_angle`` [deg] implied by the suffix of an angular contact
+        ball bearing (B: 40, AC/E: 25, C: 15) and ``notes``.
+
+    Raises
+    ------
+    bearingheat.errors.DesignationError
+        For an empty designation or one no rule matches; the message names
+        close designations of the bearing table.
+
+    Examples
+    --------
     >>> d = parse_designation("6205-2RSR")
     >>> d.bearing_type, d.series, d.bore, d.seal
     ('deep_groove_ball', '62', 25.0, 'contact')
@@ -277,12 +313,39 @@ class GostCode:
 def decode_gost(text: str) -> GostCode:
     """Decode a GOST 3189 designation: bore, diameter series, type, design, width series.
 
-    Digits are counted from the right (seed 000, p. 4): the first two give
+    Digits are counted from the right (GOST 3189, as restated in
+    Е.П. Жильников, В.П. Тукмаков, «Исследование момента сил трения в
+    шарикоподшипниках при комбинированном нагружении», Samara University,
+    2016, p. 4): the first two give
     the bore (d >= 20 mm: code x 5; 00/01/02/03 -> 10/12/15/17 mm; below
     10 mm the first digit is the bore itself and the third place is 0), the
     third gives the diameter series, the fourth the type, the fifth and
     sixth the design, the seventh the width series.
 
+    Parameters
+    ----------
+    text : str
+        A GOST 3189 number of 2 to 7 digits (surrounding spaces ignored),
+        e.g. "1000095", "18", "101", "7205".
+
+    Returns
+    -------
+    GostCode
+        ``bore`` [mm], ``diameter_series`` (a digit) and its name (e.g.
+        'light', 'ultra light'; 'unknown' for a digit GOST 3189 does not
+        name), ``type_digit`` and ``bearing_type`` (a key of
+        :data:`BEARING_TYPES`), ``design`` (two digits) and
+        ``width_series`` (a digit).
+
+    Raises
+    ------
+    bearingheat.errors.DesignationError
+        For text that is not 2 to 7 digits, or a type digit (the fourth
+        from the right) outside the decoded types 0-4 and 6-9 (5, bearings
+        with twisted rollers, is not decoded).
+
+    Examples
+    --------
     >>> g = decode_gost("1000095")
     >>> g.bore, g.diameter_series, g.bearing_type, g.width_series
     (5.0, '9', 'deep_groove_ball', '1')
@@ -337,14 +400,21 @@ def known_series() -> dict[str, list[str]]:
     return out
 
 
-def _examples() -> list[str]:
-    prefixes = {"cylindrical_roller": "NU"}
-    return [f"{prefixes.get(t, '')}{s}.." for t, keys in known_series().items() for s in keys]
+@functools.lru_cache(maxsize=None)
+def _full_designations() -> tuple[str, ...]:
+    """Every full designation of the HR 1 bearing table (as :func:`bearingheat.catalogue.bearings.designations`)."""
+    return tuple(str(d) for d in load_table("bearings_hr1_2006")["designation"])
 
 
 def _unknown_message(text: str, body: str) -> str:
-    probe = re.sub(r"\d{2}$", "..", body)
-    close = difflib.get_close_matches(probe, _examples(), n=5, cutoff=0.5)
+    """Close full designations of the bearing table: those with the same number first (closest first), then
+    difflib's closest."""
+    probe = "-".join(p for p in re.split(r"[-\s]+", str(text).strip().upper()) if p)
+    names = _full_designations()
+    cores = {body, re.sub(r"(?<=\d)[A-Z]+$", "", body)}  # '6208X' -> 6208, 6208-2Z ...
+    same_body = sorted((n for n in names if n.split("-")[0] in cores),
+                       key=lambda n: -difflib.SequenceMatcher(None, probe, n).ratio())
+    close = list(dict.fromkeys(same_body + difflib.get_close_matches(probe, names, n=5, cutoff=0.5)))[:5]
     hint = f" (close matches: {', '.join(close)})" if close else ""
     return (f"designation: {text!r} matches no row of the seed 002 tables{hint}; "
             "give type and series explicitly instead")

@@ -8,11 +8,12 @@ from pathlib import Path
 from bearingheat.analysis.audit import (REFERENCE_SPEED_COLUMNS, audit_coefficients, audit_reference_speeds,
                                         series_deviation_summary)
 from bearingheat.calc.contract import parse_header
-from bearingheat.cli import UsageError
-from bearingheat.io.tables import read_table
+from bearingheat.cli import UsageError, add_csv_arguments, add_force_argument
 from bearingheat.errors import AuditError
+from bearingheat.io.files import check_outputs
 from bearingheat.io.reports.audit import (coefficient_lines, reference_speed_lines, write_coefficients,
                                           write_reference_speeds)
+from bearingheat.io.tables import read_table
 
 HELP = "fit f0, f1 (f2) to measured torque with 95-percent intervals; audit n_thr against a catalogue list"
 
@@ -32,10 +33,16 @@ list can also be given with --reference-speeds.
    reported per series; systematic deviations are flagged.
 
 Output: tables on stdout; with --out DIR also coefficients.csv,
-reference_speeds.csv and reference_speed_series.csv.
+reference_speeds.csv and reference_speed_series.csv (existing files are replaced
+only with --force; each file is written atomically).
 Exit codes: 0 done, nothing flagged; 1 done, something flagged or a bearing could
-not be fitted; 2 unusable input.
+not be fitted; 2 unusable input or a file fault.
 """
+
+
+#: the files each audit writes into --out DIR
+_FILES = {"coefficients": ("coefficients.csv",),
+          "speeds": ("reference_speeds.csv", "reference_speed_series.csv")}
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -44,6 +51,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--speed-column", metavar="NAME", help="name of the published n_thr column")
     parser.add_argument("--out", metavar="DIR", help="write the audit tables as CSV into DIR")
     parser.add_argument("--sheet", metavar="NAME", help="sheet of an Excel workbook")
+    add_force_argument(parser, "the files in DIR")
+    add_csv_arguments(parser)
     parser.add_argument("-q", "--quiet", action="store_true", help="print nothing")
 
 
@@ -51,14 +60,12 @@ def run(args: argparse.Namespace) -> int:
     if args.input is None and args.reference_speeds is None:
         raise UsageError("give DATA, --reference-speeds CSV, or both")
     out_dir = Path(args.out) if args.out else None
-    if out_dir:
-        out_dir.mkdir(parents=True, exist_ok=True)
     say = (lambda text: None) if args.quiet else (lambda text: sys.stdout.write(text + "\n"))
     flagged = False
     speed_names = [args.speed_column] if args.speed_column else list(REFERENCE_SPEED_COLUMNS)
     jobs = []
     if args.input is not None:
-        table = read_table(args.input, args.sheet)
+        table = read_table(args.input, args.sheet, sep=args.sep, decimal=args.decimal)
         names = {parse_header(h)[0] for h in table.columns}
         if "M" in names:
             jobs.append(("coefficients", table))
@@ -68,7 +75,11 @@ def run(args: argparse.Namespace) -> int:
             raise UsageError(f"{args.input}: neither a measured torque column 'M [N*mm]' nor a published "
                              f"thermal reference speed column ({', '.join(speed_names)})")
     if args.reference_speeds is not None:
-        jobs.append(("speeds", read_table(args.reference_speeds)))
+        jobs.append(("speeds", read_table(args.reference_speeds, sep=args.sep, decimal=args.decimal)))
+    inputs = (args.input, args.reference_speeds)
+    if out_dir:
+        check_outputs(out_dir, [name for kind, _ in jobs for name in _FILES[kind]], force=args.force, inputs=inputs,
+                      create=False)
     try:
         for kind, table in jobs:
             if kind == "coefficients":
@@ -77,7 +88,7 @@ def run(args: argparse.Namespace) -> int:
                     say(line)
                 flagged |= bool((result["flag"] != "").any() or (result["status"] != "ok").any())
                 if out_dir:
-                    write_coefficients(result, out_dir)
+                    write_coefficients(result, out_dir, force=True, inputs=inputs)  # checked above
             else:
                 rows = audit_reference_speeds(table, speed_column=args.speed_column)
                 summary = series_deviation_summary(rows)
@@ -85,7 +96,7 @@ def run(args: argparse.Namespace) -> int:
                     say(line)
                 flagged |= bool(summary["systematic"].any())
                 if out_dir:
-                    write_reference_speeds(rows, summary, out_dir)
+                    write_reference_speeds(rows, summary, out_dir, force=True, inputs=inputs)  # checked above
     except AuditError as exc:
         raise UsageError(str(exc)) from exc
     return 1 if flagged else 0

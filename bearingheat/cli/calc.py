@@ -2,20 +2,22 @@
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 from pathlib import Path
 
 from bearingheat.analysis.diagnose import FittedEffect
 from bearingheat.calc.contract import help_text
 from bearingheat.calc.models import DEFAULT_MODEL, MODELS
-from bearingheat.calc.table import calc
-from bearingheat.cli import UsageError
+from bearingheat.calc.thermal import DEFAULT_SPEED_FACTOR_METHOD, SPEED_FACTOR_METHODS
+from bearingheat.cli import UsageError, add_csv_arguments, add_force_argument
 from bearingheat.errors import ExcelError, F2ChartError, InputError
 from bearingheat.io.console import Progress, print_summary
 from bearingheat.io.excel.reader import EXCEL_SUFFIXES
 from bearingheat.io.excel.workbook import calc_workbook
 from bearingheat.io.excel.writer import write_results_workbook
-from bearingheat.io.tables import read_csv, write_csv
+from bearingheat.io.files import safe_output, workbook_lock
+from bearingheat.io.tables import calc_csv, write_csv
 
 HELP = "friction torque, power loss (and thermal speeds) of supports in a CSV or Excel table"
 
@@ -31,10 +33,22 @@ unit in brackets is the catalogue unit the numbers are converted to):
 
 Output: the input columns, then the results above where their inputs are
 present, status (ok|warning|error) and message. Rows with M2 also get Fa/A
-and nu*n*dM [mm^3/(s*min)] to read f2 off the chart.
+and nu*n*dM [mm^3/(s*min)] to read f2 off the chart. Row messages of a CSV
+begin with the row's line in the file: 'row 7 (id "spindle rear"): ...'.
+
+A CSV may be separated by ',', ';' or tabs, with decimal points or commas
+(found from the file; --sep and --decimal set them). Columns calc does not
+know are passed through untouched.
+
+Output files: -o never replaces an existing file without --force, never
+writes over the input, and is written atomically (a temporary file beside it,
+renamed when complete). CSV cells of text that a spreadsheet would run as a
+formula (starting with =, +, -, @, tab or CR) get a leading apostrophe;
+--no-csv-escape writes them as they are.
 
 Exit codes: 0 all rows ok or warning; 1 some row has an error; 2 unusable
-input (file missing, required column missing, unit of the wrong dimension).
+input (file missing, required column missing, unit of the wrong dimension)
+or a file fault (cannot read or write, disk full, damaged workbook).
 """
 
 
@@ -51,8 +65,16 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="Excel: write the results sheet into the input workbook (atomic)")
     parser.add_argument("--formulas", action="store_true",
                         help="Excel: write live formulas for M0, M1, M2, MR and NR")
+    parser.add_argument("--n-per-method", choices=list(SPEED_FACTOR_METHODS), default=DEFAULT_SPEED_FACTOR_METHOD,
+                        help="how n_per is found where a row's n_per_method is blank: the exact root of the heat "
+                             "balance or the catalogue approximation (default exact); the column n_per_method_used "
+                             "says which was used")
     parser.add_argument("--model", choices=sorted(MODELS), default=DEFAULT_MODEL,
                         help=f"friction model of rows whose 'model' cell is blank (default {DEFAULT_MODEL})")
+    add_force_argument(parser, "OUTPUT")
+    parser.add_argument("--no-csv-escape", action="store_true",
+                        help="CSV output: write text starting with =, +, -, @ as it is (no leading apostrophe)")
+    add_csv_arguments(parser)
     parser.add_argument("-q", "--quiet", action="store_true", help="print nothing")
 
 
@@ -65,6 +87,13 @@ def _load_effects(path: str | None):
         raise UsageError(f"--effects {path}: {exc}") from exc
 
 
+def _output(args: argparse.Namespace, source: Path) -> Path | None:
+    """The real file -o names, checked before any work: exists (needs --force), is the input, read-only ..."""
+    if not args.output:
+        return None
+    return safe_output(args.output, force=args.force, inputs=(source,))
+
+
 def run(args: argparse.Namespace) -> int:
     source = Path(args.input)
     if not source.is_file():
@@ -73,15 +102,15 @@ def run(args: argparse.Namespace) -> int:
         return run_calc_workbook(args)
     if args.in_place or args.formulas or args.sheet:
         raise UsageError("--in-place, --formulas and --sheet apply to Excel workbooks only")
+    target = _output(args, source)
     try:
-        table = read_csv(source)
-        result = calc(table, model=args.model, f2_chart=args.f2_chart, effects=_load_effects(args.effects))
-        if args.output:
-            target = Path(args.output)
+        result = calc_csv(source, sep=args.sep, decimal=args.decimal, model=args.model, f2_chart=args.f2_chart,
+                          n_per_method=args.n_per_method, effects=_load_effects(args.effects))
+        if target is not None:
             if target.suffix.lower() in EXCEL_SUFFIXES:
                 write_results_workbook(result, target)
             else:
-                write_csv(result, target)
+                write_csv(result, target, escape=not args.no_csv_escape)
     except (InputError, F2ChartError) as exc:  # ExcelError is an InputError
         raise UsageError(str(exc)) from exc
     if not args.quiet:
@@ -91,20 +120,38 @@ def run(args: argparse.Namespace) -> int:
 
 def run_calc_workbook(args: argparse.Namespace) -> int:
     """``bearingheat calc IN.xlsx ...``: exit 0 (rows ok), 1 (some row in error); UsageError for exit 2."""
+    if args.sep or args.decimal:
+        raise UsageError("--sep and --decimal apply to CSV input only")
+    source = Path(args.input)
+    if args.in_place and args.output:
+        raise UsageError("give either --in-place or -o OUTPUT, not both")
+    if args.formulas and args.output and Path(args.output).suffix.lower() == ".csv":
+        raise UsageError("--formulas needs an Excel output (.xlsx), not a CSV")
+    if args.output and os.path.exists(args.output) and os.path.samefile(args.output, source):
+        raise UsageError(f"-o {args.output} is the input workbook; use --in-place to write into it")
+    target = _output(args, source)
+    csv_target = target if target is not None and target.suffix.lower() == ".csv" else None
     progress = Progress(enabled=not args.quiet)
+    options = dict(sheet=args.sheet, formulas=args.formulas, model=args.model, n_per_method=args.n_per_method,
+                   f2_chart=args.f2_chart, effects=_load_effects(args.effects), progress=progress)
     try:
-        run = calc_workbook(args.input, args.output, sheet=args.sheet, in_place=args.in_place,
-                            formulas=args.formulas, model=args.model, f2_chart=args.f2_chart,
-                            effects=_load_effects(args.effects),
-                            progress=progress)
+        if args.in_place:
+            real = safe_output(source, force=True)  # refuses a read-only workbook; writes through a link
+            with workbook_lock(source):
+                run = calc_workbook(real, None, in_place=True, **options)
+        else:
+            run = calc_workbook(source, None if csv_target is not None else target, **options)
+        if csv_target is not None:
+            write_csv(run.result, csv_target, escape=not args.no_csv_escape)
     except ExcelError as exc:
         raise UsageError(str(exc)) from exc
     if not args.quiet:
         where = None
-        if run.output is not None:
-            where = f"{run.output}" + (f", sheet {run.results_sheet!r}" if run.results_sheet else "")
+        output = args.input if args.in_place else args.output
+        if output is not None:
+            where = f"{output}" + (f", sheet {run.results_sheet!r}" if run.results_sheet else "")
         print_summary(run.result, where)
         if run.dropped:
-            print(f"note: {run.output} lacks the {', '.join(run.dropped)} of {args.input} (openpyxl cannot copy "
+            print(f"note: {args.output} lacks the {', '.join(run.dropped)} of {args.input} (openpyxl cannot copy "
                   f"them); {args.input} is unchanged", file=sys.stderr)
     return 1 if (run.result["status"] == "error").any() else 0

@@ -4,9 +4,10 @@ from __future__ import annotations
 import argparse
 
 from bearingheat.api.coastdown import analyse_coastdown, analyse_spindle_coastdown
-from bearingheat.cli import UsageError
+from bearingheat.cli import UsageError, add_csv_arguments, add_force_argument
 from bearingheat.errors import BearingheatError, UnitError
 from bearingheat.io.coastdown import read_rundown
+from bearingheat.io.files import check_outputs
 from bearingheat.io.reports.coastdown import render_report, write_coastdown_outputs
 from bearingheat.units import parse_quantity
 
@@ -37,10 +38,15 @@ so that f0 can be audited against the catalogue value given by --f0.
 
 --out DIR writes DIR/report.md, DIR/coastdown.png and DIR/summary.json
 (keys include model, 'M_c [N*m]', 'c_v [N*m*s]', 'c_a [N*m*s^2]', f_constant,
-'rmse_before [1/min]', 'rmse_after [1/min]').
+'rmse_before [1/min]', 'rmse_after [1/min]'). Existing files in DIR are
+replaced only with --force; each file is written atomically.
 
 Exit codes: 0 done; 2 unusable input (missing file or column, bad cell, bad
-unit, too few samples, speed not falling)."""
+unit, too few samples, speed not falling) or a file fault."""
+
+
+#: the files written into --out DIR
+_FILES = ("coastdown.png", "report.md", "summary.json")
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -53,6 +59,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     intervals.add_argument("--dn", default=None, help="speed step of the formula (2) intervals, e.g. 100rpm")
     intervals.add_argument("--dt", default=None, help="time step of the formula (2) intervals, e.g. 10s")
     parser.add_argument("--out", default=None, metavar="DIR", help="write report.md, coastdown.png, summary.json")
+    add_force_argument(parser, "the files in DIR")
+    add_csv_arguments(parser)
     parser.add_argument("--spindle", action="store_true", help="also fit the seed 002 rolling-bearing form")
     parser.add_argument("--nu", default=None, help="oil viscosity at operating temperature, e.g. 20mm^2/s")
     parser.add_argument("--dM", default=None, help="bearing mean diameter (d + D)/2, e.g. 50mm")
@@ -69,8 +77,10 @@ def _quantity(text, name):
 
 
 def run(args: argparse.Namespace) -> int:
+    if args.out:
+        check_outputs(args.out, _FILES, force=args.force, inputs=(args.data,), create=False)
     try:
-        t, n = read_rundown(args.data)
+        t, n = read_rundown(args.data, sep=args.sep, decimal=args.decimal)
     except BearingheatError as exc:
         raise UsageError(str(exc)) from exc
     rig = {name: _quantity(getattr(args, name), f"--{name}") for name in ("I", "G", "r")}
@@ -90,5 +100,5 @@ def run(args: argparse.Namespace) -> int:
         raise UsageError(str(exc)) from exc
     print(render_report(result, args.data, png=None))
     if args.out:
-        write_coastdown_outputs(result, args.out, args.data)
+        write_coastdown_outputs(result, args.out, args.data, force=args.force, inputs=(args.data,))
     return 0

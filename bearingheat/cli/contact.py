@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import csv
+import io
 import json
 import sys
 from pathlib import Path
@@ -10,6 +11,7 @@ from bearingheat.api.contact import ball_bearing_contact
 from bearingheat.calc.contract import parse_header
 from bearingheat.cli import UsageError
 from bearingheat.errors import BearingheatError, InputError, UnitError
+from bearingheat.io.tables import escape_cell, read_text, sniff_format
 from bearingheat.units import parse_quantity, parse_unit, ureg
 
 HELP = "contact angle from clearance, working angle under Fa, stiffness C*, minimum axial load (seed 001)"
@@ -131,8 +133,13 @@ def _run_csv(path: str, as_json: bool) -> int:
     file = Path(path)
     if not file.is_file():
         raise UsageError(f"no such file: {path}")
-    with file.open(newline="", encoding="utf-8-sig") as handle:
-        rows = list(csv.reader(handle))
+    if not file.read_bytes().strip():
+        raise UsageError(f"{path}: the file is empty")
+    text = read_text(file)
+    sep, decimal = sniff_format(text)
+    rows = [row for row in csv.reader(io.StringIO(text, newline=""), delimiter=sep)]
+    while rows and not rows[0]:
+        rows.pop(0)
     if not rows:
         raise UsageError(f"{path}: the file is empty")
     header = [parse_header(cell, strict=False) for cell in rows[0]]
@@ -184,7 +191,7 @@ def _run_csv(path: str, as_json: bool) -> int:
                         raise InputError(f"{column} is empty")
                     continue
                 try:
-                    value = float(text)
+                    value = float(text.replace(",", ".") if decimal == "," else text)
                 except ValueError:
                     raise InputError(f"{column}: {text!r} is not a number") from None
                 inputs[_FIELDS[option][0]] = value if unit is None else ureg().Quantity(value, unit)
@@ -209,5 +216,5 @@ def _run_csv(path: str, as_json: bool) -> int:
         writer = csv.DictWriter(sys.stdout, fieldnames=keys, lineterminator="\n")
         writer.writeheader()
         for record in records:
-            writer.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v) for k, v in record.items()})
+            writer.writerow({k: (f"{v:.6g}" if isinstance(v, float) else escape_cell(v)) for k, v in record.items()})
     return 1 if failures else 0

@@ -4,10 +4,11 @@ from __future__ import annotations
 import argparse
 
 from bearingheat.analysis.lab import process_lab
-from bearingheat.cli import UsageError
-from bearingheat.io.tables import read_table
+from bearingheat.cli import UsageError, add_csv_arguments, add_force_argument
 from bearingheat.errors import BearingheatError, UnitError
+from bearingheat.io.files import check_outputs
 from bearingheat.io.reports.lab import write_lab_outputs
+from bearingheat.io.tables import read_table
 from bearingheat.units import magnitude, parse_quantity
 
 HELP = "process DP11A lab rig readings (seed 000): mu, f0 and T_F, f and T0, tables 4 and 5, plots"
@@ -29,8 +30,14 @@ task 3: f and T0 for each speed (N = P0^1.55).
 
 Output in --out DIR: report.md (tables 4 and 5 filled, task results, the
 comparison with the catalogue model of seed 002), CSV of each task, PNG plots.
-Exit codes: 0 done; 2 unusable input.
+Existing files in DIR are replaced only with --force; each file is written
+atomically.
+Exit codes: 0 done; 2 unusable input or a file fault.
 """
+
+
+#: files every run writes (the plots depend on the readings), checked before the work starts
+_KNOWN_FILES = ("readings.csv", "task1_mu.csv", "task2_f0_TF.csv", "task3_f_T0.csv", "comparison.csv", "report.md")
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -40,6 +47,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--lubrication", default="grease",
                         help="lubrication of the seed 002 comparison (default grease)")
     parser.add_argument("--sheet", metavar="NAME", help="sheet of an Excel workbook")
+    add_force_argument(parser, "the files in DIR")
+    add_csv_arguments(parser)
     parser.add_argument("-q", "--quiet", action="store_true", help="print nothing")
 
 
@@ -54,12 +63,13 @@ def run(args: argparse.Namespace) -> int:
             nu = float(magnitude(viscosity, "mm^2/s", "--nu"))
         except UnitError as exc:
             raise UsageError(f"--nu: {args.nu!r} is not a kinematic viscosity (e.g. 20mm^2/s)") from exc
-    table = read_table(args.input, args.sheet)
+    check_outputs(args.out, _KNOWN_FILES, force=args.force, inputs=(args.input,), create=False)
+    table = read_table(args.input, args.sheet, sep=args.sep, decimal=args.decimal)
     try:
         result = process_lab(table, nu=nu, lubrication=args.lubrication)
     except BearingheatError as exc:
         raise UsageError(str(exc)) from exc
-    files = write_lab_outputs(result, args.out)
+    files = write_lab_outputs(result, args.out, force=args.force, inputs=(args.input,))
     if not args.quiet:
         print(result.task1.to_string(index=False, float_format=lambda x: f"{x:.4g}"))
         print(result.comparison.to_string(index=False, float_format=lambda x: f"{x:.4g}"))

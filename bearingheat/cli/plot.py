@@ -4,11 +4,11 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-import pandas as pd
-
-from bearingheat.cli import UsageError
+from bearingheat.cli import UsageError, add_csv_arguments, add_force_argument
 from bearingheat.errors import InputError
-from bearingheat.io.reports.thermal import draw_heat_balance, heat_balance_curves
+from bearingheat.io.files import atomic_write, safe_output
+from bearingheat.io.reports.thermal import draw_heat_balance, figure_format, heat_balance_curves
+from bearingheat.io.tables import read_csv
 
 HELP = "plot friction heat and heat carried away of one support against speed and temperature (PNG)"
 
@@ -32,8 +32,11 @@ Q_E, C0 (for n_thr).
   bearingheat plot supports.csv --row 0 -o heat_balance.png
   bearingheat plot supports.csv --id "spindle rear" -o heat_balance.png
 
+The figure format follows the ending of -o (.png, .svg, .pdf ...). An existing
+file is replaced only with --force; the file is written atomically.
+
 Exit codes: 0 plot written, 1 the row is in error (the message goes to stderr),
-2 unusable input (missing file, missing column, no such row).
+2 unusable input (missing file, missing column, no such row) or a file fault.
 """
 
 
@@ -43,6 +46,8 @@ def add_arguments(parser) -> None:
     which.add_argument("--row", type=int, default=None, help="row position (0 = first data row); default 0")
     which.add_argument("--id", default=None, help="the row whose 'id' column has this text")
     parser.add_argument("-o", "--output", required=True, help="PNG file to write")
+    add_force_argument(parser, "OUTPUT")
+    add_csv_arguments(parser)
 
 
 def run(args) -> int:
@@ -50,18 +55,17 @@ def run(args) -> int:
     if not path.is_file():
         raise UsageError(f"{path}: no such file")
     try:
-        table = pd.read_csv(path, skipinitialspace=True)
-    except (pd.errors.ParserError, UnicodeDecodeError, pd.errors.EmptyDataError) as exc:
-        raise UsageError(f"{path}: not a readable CSV ({exc})") from exc
-    table = _select_row(table, args.row, args.id, path)
-    try:
+        fmt = figure_format(args.output)
+        target = safe_output(args.output, force=args.force, inputs=(path,))
+        table = read_csv(path, sep=args.sep, decimal=args.decimal)
+        table = _select_row(table, args.row, args.id, path)
         curves = heat_balance_curves(table)
     except InputError as exc:
         raise UsageError(str(exc)) from exc
     if curves["status"] == "error":
         print(f"bearingheat plot: row in error: {curves['message']}", file=sys.stderr)
         return 1
-    draw_heat_balance(curves, args.output)
+    atomic_write(target, lambda temp: draw_heat_balance(curves, temp, format=fmt))
     if curves["message"]:
         print(f"bearingheat plot: warning: {curves['message']}", file=sys.stderr)
     print(f"wrote {args.output}")

@@ -4,9 +4,9 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from bearingheat.cli import UsageError
+from bearingheat.cli import UsageError, add_force_argument
 from bearingheat.io.excel.template import build_template
-from bearingheat.io.excel.writer import atomic_save
+from bearingheat.io.files import atomic_write, safe_output
 
 HELP = "write an Excel template (.xlsx) to fill in with shaft supports"
 
@@ -26,7 +26,7 @@ Exit codes: 0 written; 2 the file exists (without --force) or is not .xlsx.
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("output", metavar="OUT.xlsx", help="where to write the template")
-    parser.add_argument("--force", action="store_true", help="overwrite OUT.xlsx if it exists")
+    add_force_argument(parser, "OUT.xlsx")
     parser.add_argument("-q", "--quiet", action="store_true", help="print nothing")
 
 
@@ -34,11 +34,9 @@ def run(args: argparse.Namespace) -> int:
     target = Path(args.output)
     if target.suffix.lower() != ".xlsx":
         raise UsageError(f"{target}: the template is an .xlsx workbook; name it e.g. supports.xlsx")
-    if target.exists() and not args.force:
-        raise UsageError(f"{target} exists; it is not overwritten (give --force to replace it)")
-    if not target.parent.is_dir():
-        raise UsageError(f"{target.parent}: no such folder")
-    atomic_save(build_template(), target)
+    real = safe_output(target, force=args.force)
+    workbook = build_template()
+    atomic_write(real, workbook.save)
     if not args.quiet:
         print(f"template written to {target}; fill in the sheet 'Supports', then run: "
               f"bearingheat calc {target} -o results.xlsx")

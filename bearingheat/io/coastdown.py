@@ -2,30 +2,38 @@
 from __future__ import annotations
 
 import csv
+import io
 
 import numpy as np
 
 from bearingheat.calc.contract import parse_header
 from bearingheat.errors import InputError
+from bearingheat.io.tables import read_text, separator, sniff_format
 from bearingheat.units import parse_unit, ureg
 
 __all__ = ["read_rundown"]
 
 
-def read_rundown(path):
+def read_rundown(path, *, sep: str | None = None, decimal: str | None = None):
     """Read a run-down CSV into (t Quantity array, n Quantity array).
 
     One column ``t [UNIT]`` (a time unit) and one column ``n [UNIT]`` (a shaft
-    speed), one sample a row; other columns are ignored. An unreadable file, a
+    speed), one sample a row; other columns are ignored. The separator (``,``,
+    ``;`` or tab) and the decimal mark are found from the file unless given
+    (:func:`bearingheat.io.tables.sniff_format`). An unreadable file, a
     missing column or a cell that is not a number raises
     :class:`~bearingheat.errors.InputError`; an unknown unit
     :class:`~bearingheat.errors.UnitError`.
     """
     try:
-        with open(path, newline="", encoding="utf-8-sig") as handle:
-            rows = list(csv.reader(handle))
+        text = read_text(path)
     except OSError as exc:
         raise InputError(f"cannot read {path}: {exc.strerror}") from exc
+    sep, sniffed = sniff_format(text, separator(sep))
+    decimal = decimal or sniffed
+    rows = list(csv.reader(io.StringIO(text, newline=""), delimiter=sep))
+    while rows and not rows[0]:
+        rows.pop(0)
     if not rows:
         raise InputError(f"{path}: empty file")
     header = rows[0]
@@ -43,9 +51,11 @@ def read_rundown(path):
         unit = parse_unit(unit_text, name=f"column '{name}'")
         values = []
         for line, row in enumerate(rows[1:], start=2):
+            if not row:
+                continue
             cell = row[col].strip() if col < len(row) else ""
             try:
-                values.append(float(cell))
+                values.append(float(cell.replace(",", ".") if decimal == "," else cell))
             except ValueError:
                 raise InputError(f"{path} line {line}, column '{name}': {cell!r} is not a number") from None
         out[key] = ureg().Quantity(np.array(values), unit)

@@ -8,11 +8,14 @@ reads and writes large sheets (any object with ``start``, ``update`` and
 """
 from __future__ import annotations
 
+import re
 import sys
 
 import pandas as pd
 
 __all__ = ["print_summary", "Progress", "PROGRESS_MIN_ROWS"]
+
+_CITED = re.compile(r"^row \d+[ :]")
 
 #: sheets at least this long get a progress bar (when stderr is a terminal)
 PROGRESS_MIN_ROWS = 2000
@@ -30,8 +33,12 @@ def print_summary(result: pd.DataFrame, output: str | None, stream=None) -> None
     stream.write(table.to_string(index=False, na_rep="-", float_format=lambda x: f"{x:.4g}") + "\n")
     for _, row in result.iterrows():
         if row["status"] != "ok":
+            message = row["message"]
+            if isinstance(message, str) and _CITED.match(message):  # 'row 7 (id "x"): ...' names the row already
+                stream.write(f"{row['status']}: {message}\n")
+                continue
             who = row[label] if label else ""
-            stream.write(f"{row['status']}: {who}: {row['message']}\n")
+            stream.write(f"{row['status']}: {who}: {message}\n")
     counts = result["status"].value_counts()
     summary = ", ".join(f"{counts.get(s, 0)} {s}" for s in ("ok", "warning", "error"))
     where = f"; results written to {output}" if output else ""

@@ -97,8 +97,12 @@ def test_gost_errors():
 def test_unknown_designation_lists_close_matches():
     with pytest.raises(DesignationError) as exc:
         parse_designation("7905")
-    assert str(exc.value) == ("designation: '7905' matches no row of the seed 002 tables (close matches: 73.., 72.., "
-                              "70.., 894.., 893..); give type and series explicitly instead")
+    assert str(exc.value) == ("designation: '7905' matches no row of the seed 002 tables (close matches: 6405, 6305, "
+                              "6205, 6015, 6005); give type and series explicitly instead")
+    with pytest.raises(DesignationError) as exc:
+        parse_designation("6208X")
+    assert str(exc.value) == ("designation: '6208X' matches no row of the seed 002 tables (close matches: 6208, 6208-2Z, "
+                              "608, 6320, 6308); give type and series explicitly instead")
 
 
 def test_empty_designation():

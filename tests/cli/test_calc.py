@@ -124,3 +124,14 @@ def test_module_entry_point_subprocess(tmp_path):
     assert out.exists()
     top = subprocess.run([sys.executable, "-m", "bearingheat", "--help"], capture_output=True, text=True, check=False)
     assert top.returncode == 0 and "calc" in top.stdout
+
+
+def test_n_per_method_option(tmp_path):
+    exact, approx = tmp_path / "exact.csv", tmp_path / "approx.csv"
+    assert main(["calc", str(EXAMPLE), "-o", str(exact), "-q"]) == 0
+    assert main(["calc", str(EXAMPLE), "-o", str(approx), "-q", "--n-per-method", "approximation"]) == 0
+    a, b = pd.read_csv(exact), pd.read_csv(approx)
+    assert a["n_per_method_used"].tolist()[:4] == ["exact root"] * 4
+    assert b["n_per_method_used"].tolist()[:4] == ["catalogue approximation"] * 4
+    assert b["n_per [1/min]"].iat[0] == pytest.approx(a["n_per [1/min]"].iat[0], rel=0.01)
+    assert b["MR [N*mm]"].tolist() == a["MR [N*mm]"].tolist()

@@ -9,7 +9,7 @@ from excel_helpers import EXAMPLE_CSV, csv_result
 
 from bearingheat.cli import main
 from bearingheat.errors import InputError
-from bearingheat.io.tables import read_csv, write_csv
+from bearingheat.io.tables import calc_csv, cite_rows, escape_formulas, read_csv, sniff_format, write_csv
 
 
 def test_read_csv_ignores_spaces_after_commas(tmp_path):
@@ -36,3 +36,183 @@ def test_write_csv_round_trip(tmp_path):
     assert list(back.columns) == list(result.columns)
     pd.testing.assert_series_equal(back["MR [N*mm]"], result["MR [N*mm]"], rtol=1e-15)
     assert len(pd.read_csv(EXAMPLE_CSV)) == len(back)
+
+
+# ---- separators, decimal marks, encodings --------------------------------------------------------------------
+
+HEAD = ["id", "designation", "d [mm]", "D [mm]", "C0 [kN]", "lubrication", "n [rpm]", "Fr [kN]", "nu [mm^2/s]"]
+ROW = ["spindle rear", "6205", "25", "52", "7.8", "oil_bath", "3000", "2.5", "12.5"]
+
+
+def _write(path, sep=",", decimal=".", rows=(ROW,), header=HEAD, encoding="utf-8"):
+    lines = [sep.join(header)] + [sep.join(c.replace(".", decimal) for c in row) for row in rows]
+    path.write_text("\n".join(lines) + "\n", encoding=encoding)
+    return path
+
+
+@pytest.mark.parametrize("sep, decimal", [(",", "."), (";", ","), (";", "."), ("\t", "."), ("\t", ",")])
+def test_separator_and_decimal_mark_are_found(tmp_path, sep, decimal):
+    path = _write(tmp_path / "in.csv", sep, decimal)
+    table = read_csv(path)
+    assert list(table.columns) == HEAD
+    assert table.loc[0, "Fr [kN]"] == 2.5 and table.loc[0, "nu [mm^2/s]"] == 12.5 and table.loc[0, "C0 [kN]"] == 7.8
+
+
+def test_sniff_format():
+    assert sniff_format("a;b;c\n1,5;2;3\n") == (";", ",")
+    assert sniff_format("a;b;c\n1.5;2;3\n") == (";", ".")
+    assert sniff_format('"x;y",b,c\n1,2,3\n') == (",", ".")
+    assert sniff_format("a\tb\n1,5\t2\n") == ("\t", ",")
+    assert sniff_format("a\n1\n") == (",", ".")
+
+
+def test_sep_and_decimal_can_be_given(tmp_path):
+    path = tmp_path / "in.csv"
+    path.write_text("designation;n [rpm]\n6205;1,5\n")
+    assert read_csv(path, sep=";", decimal=",").loc[0, "n [rpm]"] == 1.5
+    assert read_csv(path, sep=";", decimal=".").loc[0, "n [rpm]"] == "1,5"
+    with pytest.raises(InputError) as exc:
+        read_csv(path, sep=",", decimal=",")
+    assert str(exc.value) == "--decimal ',' is also the separator; give --sep ';' or --sep tab with it"
+
+
+def test_unreadable_csv_names_the_separator_and_the_options(tmp_path, capsys):
+    path = tmp_path / "in.csv"
+    path.write_text("a,b\n1,2\n3,4,5\n")
+    message = (f"{path}: not a readable CSV (line 3 has 3 fields, the header 2); its columns were read as separated "
+               "by comma ',' with decimal mark '.': if the file uses another separator or decimal commas, give --sep "
+               "(',', ';' or tab) and --decimal (',' or '.')")
+    with pytest.raises(InputError) as exc:
+        read_csv(path)
+    assert str(exc.value) == message
+    assert main(["calc", str(path)]) == 2
+    assert capsys.readouterr().err == f"bearingheat calc: error: {message}\n"
+
+
+def test_european_csv_runs_through_calc(tmp_path, capsys):
+    comma = _write(tmp_path / "comma.csv")
+    euro = _write(tmp_path / "euro.csv", ";", ",")
+    out_comma, out_euro = tmp_path / "a.csv", tmp_path / "b.csv"
+    assert main(["calc", str(comma), "-o", str(out_comma), "-q"]) == 0
+    assert main(["calc", str(euro), "-o", str(out_euro), "-q"]) == 0
+    pd.testing.assert_frame_equal(pd.read_csv(out_comma), pd.read_csv(out_euro))
+
+
+@pytest.mark.parametrize("encoding", ["utf-8-sig", "utf-16", "cp1252"])
+def test_encodings(tmp_path, encoding):
+    row = ["Lager vorn (Öl)", *ROW[1:]]
+    path = _write(tmp_path / "in.csv", ";", ",", rows=(row,), encoding=encoding)
+    table = read_csv(path)
+    assert table.loc[0, "id"] == "Lager vorn (Öl)" and table.loc[0, "Fr [kN]"] == 2.5
+
+
+def test_binary_and_undecodable_files(tmp_path, capsys):
+    binary = tmp_path / "book.csv"
+    binary.write_bytes(b"PK\x03\x04\x00\x00garbage")
+    with pytest.raises(InputError) as exc:
+        read_csv(binary)
+    assert str(exc.value) == f"{binary}: not a CSV text file (it holds binary data; is it a workbook with the wrong name?)"
+    bad = tmp_path / "bad.csv"
+    bad.write_bytes(b"id,n [rpm]\n\x81\x8d,1\n")
+    assert main(["calc", str(bad)]) == 2
+    assert capsys.readouterr().err == (f"bearingheat calc: error: {bad}: not a readable CSV (byte 0x81 at position 11 "
+                                       "is not UTF-8 text); save it as 'CSV UTF-8'\n")
+
+
+# ---- columns -------------------------------------------------------------------------------------------------
+
+def test_duplicated_column_is_named_by_its_header(tmp_path, capsys):
+    path = _write(tmp_path / "in.csv", header=[*HEAD, "Fr [kN]"], rows=([*ROW, "3"],))
+    assert main(["calc", str(path)]) == 2
+    assert capsys.readouterr().err == (f"bearingheat calc: error: {path}: column 'Fr [kN]' appears twice (columns 8 "
+                                       "and 10); keep one\n")
+
+
+def test_unknown_columns_pass_through_untouched(tmp_path):
+    header = [HEAD[0], "a[b]c", *HEAD[1:], "[internal]", "note [see p. 3]", "code"]
+    path = tmp_path / "in.csv"
+    pd.DataFrame([[ROW[0], "x]y", *ROW[1:], "=cmd", "12.50", "007"]], columns=header).to_csv(path, index=False)
+    result = calc_csv(path)
+    assert list(result.columns[:len(header)]) == header
+    assert result.loc[0, "status"] == "ok"
+    assert [result.loc[0, c] for c in ("a[b]c", "[internal]", "note [see p. 3]", "code")] == ["x]y", "=cmd", "12.50",
+                                                                                             "007"]
+
+
+def test_header_only_csv_is_no_supports(tmp_path, capsys):
+    path = tmp_path / "in.csv"
+    path.write_text(",".join(HEAD) + "\n")
+    with pytest.raises(InputError) as exc:
+        read_csv(path)
+    assert str(exc.value) == f"{path}: no supports (only a header row)"
+    assert main(["calc", str(path)]) == 2
+    assert capsys.readouterr().err == f"bearingheat calc: error: {path}: no supports (only a header row)\n"
+
+
+# ---- row numbers -------------------------------------------------------------------------------------------------
+
+def test_row_messages_cite_the_line_of_the_file(tmp_path, capsys):
+    path = tmp_path / "in.csv"
+    path.write_text(",".join(HEAD) + "\n"
+                    + ",".join(ROW) + "\n"
+                    + "\n"                                                        # line 3: blank, skipped
+                    + '"two\nlines",6205,25,52,7.8,oil_bath,3000,abc,12\n'         # lines 4-5
+                    + ",6205,25,52,7.8,oil_bath,-10,2,12\n"                        # line 6: no id
+                    + "spindle rear,6Z05,25,52,7.8,oil_bath,3000,2,12\n")          # line 7
+    out = tmp_path / "out.csv"
+    assert main(["calc", str(path), "-o", str(out)]) == 1
+    messages = pd.read_csv(out, keep_default_na=False)["message"].tolist()
+    assert messages[0] == ""
+    assert messages[1] == "row 4 (id \"two\nlines\"): 'abc' is not a number for Fr [kN]"
+    assert messages[2] == "row 6: n [rpm]: -10 must be >= 0 (speed magnitude)"
+    assert messages[3] == ('row 7 (id "spindle rear"): designation: \'6Z05\' matches no row of the seed 002 tables '
+                           "(close matches: 6405, 6305, 6205, 6015, 6005); give type and series explicitly instead")
+    printed = capsys.readouterr().out
+    assert ('error: row 7 (id "spindle rear"): designation: \'6Z05\' matches no row of the seed 002 tables'
+            in printed)
+
+
+def test_cite_rows_leaves_rows_without_a_message(tmp_path):
+    result = pd.DataFrame({"id": ["a", None], "message": ["", "bad"]})
+    assert cite_rows(result, [2, 9])["message"].tolist() == ["", "row 9: bad"]
+    assert cite_rows(pd.DataFrame({"message": ["bad"]}), None)["message"].tolist() == ["bad"]
+
+
+# ---- CSV injection -----------------------------------------------------------------------------------------------
+
+def test_escape_formulas_text_only():
+    frame = pd.DataFrame({"=head": ["=1+1", "+A1", "-2+3", "@SUM(A1)", "\tx", "\rx", "-3.2", "+5", "1e-3", "ok", None],
+                          "x": [-3.2, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10]})
+    out = escape_formulas(frame)
+    assert list(out.columns) == ["'=head", "x"]
+    assert out["'=head"].tolist()[:-1] == ["'=1+1", "'+A1", "'-2+3", "'@SUM(A1)", "'\tx", "'\rx", "-3.2", "+5",
+                                           "1e-3", "ok"]
+    assert pd.isna(out["'=head"].iloc[-1])
+    assert out["x"].tolist() == frame["x"].tolist()
+    assert frame.loc[0, "=head"] == "=1+1"  # the input is not changed
+
+
+def test_write_csv_escapes_unless_told_not_to(tmp_path):
+    frame = pd.DataFrame({"id": ["=HYPERLINK(\"http://x\")", "a"], "M [N*mm]": [-3.2, 4.0]})
+    write_csv(frame, tmp_path / "a.csv")
+    assert (tmp_path / "a.csv").read_text() == 'id,M [N*mm]\n"\'=HYPERLINK(""http://x"")",-3.2\na,4.0\n'
+    write_csv(frame, tmp_path / "b.csv", escape=False)
+    assert (tmp_path / "b.csv").read_text() == 'id,M [N*mm]\n"=HYPERLINK(""http://x"")",-3.2\na,4.0\n'
+
+
+def test_calc_escapes_csv_cells_and_no_csv_escape_turns_it_off(tmp_path):
+    path = _write(tmp_path / "in.csv", rows=(["=1+2", *ROW[1:]], ["@cmd", *ROW[1:]]))
+    escaped, plain = tmp_path / "escaped.csv", tmp_path / "plain.csv"
+    assert main(["calc", str(path), "-o", str(escaped), "-q"]) == 0
+    assert main(["calc", str(path), "-o", str(plain), "-q", "--no-csv-escape"]) == 0
+    assert pd.read_csv(escaped)["id"].tolist() == ["'=1+2", "'@cmd"]
+    assert pd.read_csv(plain)["id"].tolist() == ["=1+2", "@cmd"]
+    assert pd.read_csv(escaped)["Fr [kN]"].tolist() == [2.5, 2.5]
+
+
+def test_text_columns_are_read_as_text(tmp_path):
+    path = tmp_path / "in.csv"
+    path.write_text("id,designation,series,n [rpm],code\n007,6205,02,1500,0042\n")
+    table = read_csv(path)
+    assert [table.loc[0, c] for c in ("id", "designation", "series", "code")] == ["007", "6205", "02", "0042"]
+    assert table.loc[0, "n [rpm]"] == 1500

@@ -15,6 +15,8 @@ from pathlib import Path
 import pandas as pd
 
 from bearingheat.analysis.audit import SYSTEMATIC_RULE
+from bearingheat.io.files import write_outputs
+from bearingheat.io.tables import escape_formulas
 
 __all__ = ["coefficient_lines", "reference_speed_lines", "write_coefficients", "write_reference_speeds"]
 
@@ -43,12 +45,18 @@ def reference_speed_lines(summary: pd.DataFrame) -> list[str]:
     return lines
 
 
-def write_coefficients(result: pd.DataFrame, out_dir) -> None:
-    """``coefficients.csv`` in ``out_dir`` (an existing folder)."""
-    result.to_csv(Path(out_dir) / "coefficients.csv", index=False)
+def _csv(frame: pd.DataFrame):
+    return lambda path: escape_formulas(frame).to_csv(path, index=False)
 
 
-def write_reference_speeds(rows: pd.DataFrame, summary: pd.DataFrame, out_dir) -> None:
-    """``reference_speeds.csv`` and ``reference_speed_series.csv`` in ``out_dir`` (an existing folder)."""
-    rows.to_csv(Path(out_dir) / "reference_speeds.csv", index=False)
-    summary.to_csv(Path(out_dir) / "reference_speed_series.csv", index=False)
+def write_coefficients(result: pd.DataFrame, out_dir, *, force: bool = False, inputs=()) -> list[Path]:
+    """``coefficients.csv`` in ``out_dir``, atomically; an existing file is replaced only with ``force``."""
+    return write_outputs(out_dir, {"coefficients.csv": _csv(result)}, force=force, inputs=inputs)
+
+
+def write_reference_speeds(rows: pd.DataFrame, summary: pd.DataFrame, out_dir, *, force: bool = False,
+                           inputs=()) -> list[Path]:
+    """``reference_speeds.csv`` and ``reference_speed_series.csv`` in ``out_dir``, atomically; existing files
+    are replaced only with ``force``."""
+    return write_outputs(out_dir, {"reference_speeds.csv": _csv(rows), "reference_speed_series.csv": _csv(summary)},
+                         force=force, inputs=inputs)

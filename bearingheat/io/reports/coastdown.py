@@ -6,9 +6,11 @@ backend); matplotlib is imported when a figure is drawn.
 from __future__ import annotations
 
 import json
-import os
+from functools import partial
+from pathlib import Path
 
 from bearingheat.analysis.coastdown import CoastdownResult
+from bearingheat.io.files import write_outputs
 from bearingheat.io.json import json_safe
 
 __all__ = ["plot_coastdown", "render_report", "coastdown_summary", "write_coastdown_outputs"]
@@ -43,7 +45,7 @@ def plot_coastdown(result: CoastdownResult, path) -> None:
     bottom.set_ylabel(label)
     bottom.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(path)
+    fig.savefig(path, format="png")
 
 
 def _ci(fit, name, digits=4):
@@ -107,16 +109,18 @@ def coastdown_summary(result: CoastdownResult) -> dict:
     return json_safe(result.summary())
 
 
-def write_coastdown_outputs(result: CoastdownResult, out_dir, source: str) -> list[str]:
-    """Write ``coastdown.png``, ``report.md`` and ``summary.json`` into ``out_dir``; returns their paths."""
-    os.makedirs(out_dir, exist_ok=True)
-    png = os.path.join(out_dir, "coastdown.png")
-    plot_coastdown(result, png)
-    report = os.path.join(out_dir, "report.md")
-    with open(report, "w", encoding="utf-8") as handle:
-        handle.write(render_report(result, source, png="coastdown.png"))
-    summary = os.path.join(out_dir, "summary.json")
-    with open(summary, "w", encoding="utf-8") as handle:
-        json.dump(coastdown_summary(result), handle, indent=2)
-        handle.write("\n")
-    return [png, report, summary]
+def write_coastdown_outputs(result: CoastdownResult, out_dir, source: str, *, force: bool = False,
+                            inputs=()) -> list[str]:
+    """Write ``coastdown.png``, ``report.md`` and ``summary.json`` into ``out_dir``; returns their paths.
+
+    Existing files are not replaced unless ``force``; none of them may be one of ``inputs``; each file is
+    written atomically (:func:`bearingheat.io.files.write_outputs`).
+    """
+    report = render_report(result, source, png="coastdown.png")
+    summary = json.dumps(coastdown_summary(result), indent=2) + "\n"
+    files = write_outputs(out_dir, {
+        "coastdown.png": partial(plot_coastdown, result),
+        "report.md": lambda path: Path(path).write_text(report, encoding="utf-8"),
+        "summary.json": lambda path: Path(path).write_text(summary, encoding="utf-8"),
+    }, force=force, inputs=inputs)
+    return [str(f) for f in files]

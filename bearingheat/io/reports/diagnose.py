@@ -10,11 +10,13 @@ regressor of the residual plot), ``report.md`` (:func:`report_markdown`),
 from __future__ import annotations
 
 import json
+from functools import partial
 from pathlib import Path
 
 import numpy as np
 
 from bearingheat.analysis.diagnose import REGRESSOR_UNITS, Diagnosis, format_value, key_regressor, regressors
+from bearingheat.io.files import write_outputs as write_files
 
 __all__ = ["plot_residuals", "plot_measured_vs_predicted", "report_markdown", "write_outputs", "summary_lines"]
 
@@ -51,7 +53,7 @@ def plot_residuals(diagnosis: Diagnosis, path: Path) -> str:
     axes[0].set_ylabel("(M measured − M model)/M measured [%]")
     axes[1].legend(fontsize=7, loc="best")
     fig.tight_layout()
-    fig.savefig(path, dpi=90)
+    fig.savefig(path, dpi=90, format="png")
     return key
 
 
@@ -75,7 +77,7 @@ def plot_measured_vs_predicted(diagnosis: Diagnosis, path: Path) -> None:
     ax.set_ylabel("M measured [N·mm]")
     ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(path, dpi=90)
+    fig.savefig(path, dpi=90, format="png")
 
 
 def report_markdown(diagnosis: Diagnosis, summary: dict, key: str) -> str:
@@ -125,16 +127,23 @@ def report_markdown(diagnosis: Diagnosis, summary: dict, key: str) -> str:
     return "\n".join(lines)
 
 
-def write_outputs(diagnosis: Diagnosis, out_dir) -> dict:
-    """Write summary.json, report.md, residuals.png and measured_vs_predicted.png into ``out_dir``."""
-    out = Path(out_dir)
-    out.mkdir(parents=True, exist_ok=True)
+def write_outputs(diagnosis: Diagnosis, out_dir, *, force: bool = False, inputs=()) -> dict:
+    """Write summary.json, report.md, residuals.png and measured_vs_predicted.png into ``out_dir``.
+
+    Existing files are not replaced unless ``force``; none of them may be one of ``inputs``; each file is
+    written atomically (:func:`bearingheat.io.files.write_outputs`). Returns the summary.
+    """
     summary = diagnosis.summary()
-    key = plot_residuals(diagnosis, out / "residuals.png")
-    plot_measured_vs_predicted(diagnosis, out / "measured_vs_predicted.png")
+    key = key_regressor(diagnosis)
     summary["key_regressor"] = key
-    (out / "summary.json").write_text(json.dumps(summary, indent=2, ensure_ascii=False), encoding="utf-8")
-    (out / "report.md").write_text(report_markdown(diagnosis, summary, key), encoding="utf-8")
+    summary_text = json.dumps(summary, indent=2, ensure_ascii=False)
+    report = report_markdown(diagnosis, summary, key)
+    write_files(out_dir, {
+        "residuals.png": partial(plot_residuals, diagnosis),
+        "measured_vs_predicted.png": partial(plot_measured_vs_predicted, diagnosis),
+        "summary.json": lambda path: Path(path).write_text(summary_text, encoding="utf-8"),
+        "report.md": lambda path: Path(path).write_text(report, encoding="utf-8"),
+    }, force=force, inputs=inputs)
     return summary
 
 

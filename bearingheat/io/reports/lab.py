@@ -6,6 +6,7 @@ backend); matplotlib is imported when a figure is drawn.
 from __future__ import annotations
 
 import math
+from functools import partial
 from pathlib import Path
 
 import numpy as np
@@ -13,16 +14,21 @@ import pandas as pd
 
 from bearingheat.analysis.lab import LabResult
 from bearingheat.catalogue.lab import LOAD_EXPONENT_RADIAL, REDUCED_FRICTION_RADIAL
+from bearingheat.io.files import write_outputs
+from bearingheat.io.tables import escape_formulas
 
 __all__ = ["write_lab_outputs"]
 
 
-def _figure(out, files: list, bearing: str, task: int, title: str, xlabel: str, groups) -> list[str]:
-    """Plot one task of one bearing into OUT/task<k>_<bearing>.png; the report lines that show it."""
-    path = out / f"task{task}_{bearing}.png"
-    _plot_task(path, title, xlabel, groups)
-    files.append(path)
-    return ["", f"![task {task}]({path.name})", ""]
+def _figure(writers: dict, bearing: str, task: int, title: str, xlabel: str, groups) -> list[str]:
+    """Plan the plot of one task of one bearing as OUT/task<k>_<bearing>.png; the report lines that show it."""
+    name = f"task{task}_{bearing}.png"
+    writers[name] = partial(_plot_task, title=title, xlabel=xlabel, groups=groups)
+    return ["", f"![task {task}]({name})", ""]
+
+
+def _write_csv(frame: pd.DataFrame, path: Path) -> None:
+    escape_formulas(frame).to_csv(path, index=False)
 
 
 def _plot_task(path: Path, title: str, xlabel: str, groups) -> None:
@@ -38,7 +44,7 @@ def _plot_task(path: Path, title: str, xlabel: str, groups) -> None:
     ax.set_title(title, fontsize=9)
     ax.legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(path, dpi=90)
+    fig.savefig(path, dpi=90, format="png")
 
 
 def _table_markdown(frame: pd.DataFrame, index_name: str, column_name: str) -> list[str]:
@@ -49,17 +55,18 @@ def _table_markdown(frame: pd.DataFrame, index_name: str, column_name: str) -> l
     return lines
 
 
-def write_lab_outputs(result: LabResult, out_dir) -> list[Path]:
-    """report.md, task CSVs and one PNG per task and bearing into ``out_dir``; returns the files."""
-    out = Path(out_dir)
-    out.mkdir(parents=True, exist_ok=True)
-    files = []
+def write_lab_outputs(result: LabResult, out_dir, *, force: bool = False, inputs=()) -> list[Path]:
+    """report.md, task CSVs and one PNG per task and bearing into ``out_dir``; returns the files.
+
+    Existing files are not replaced unless ``force``; none of them may be one of ``inputs``. Every file is
+    checked before the first is written, and each is written atomically
+    (:func:`bearingheat.io.files.write_outputs`).
+    """
+    writers: dict = {}
     r = result.readings
     for name, frame in (("readings", r), ("task1_mu", result.task1), ("task2_f0_TF", result.task2),
                         ("task3_f_T0", result.task3), ("comparison", result.comparison)):
-        path = out / f"{name}.csv"
-        frame.to_csv(path, index=False)
-        files.append(path)
+        writers[f"{name}.csv"] = partial(_write_csv, frame)
     lines = ["# DP11A lab rig: processing after seed 000", ""]
     lines += [f"- {note}" for note in result.notes] + ([""] if result.notes else [])
     for bearing in sorted(r["bearing"].unique()):
@@ -87,7 +94,7 @@ def write_lab_outputs(result: LabResult, out_dir) -> list[Path]:
                   "| β [deg] | n [1/min] | μ | μ (general least squares) |", "|---|---|---|---|"]
         lines += [f"| {row['beta']:g} | {row['n']:g} | {row['mu']:.5g} | {row['mu_lstsq']:.5g} |"
                   for _, row in t1.iterrows()]
-        lines += _figure(out, files, bearing, 1, f"{bearing}: T = μ·P0·d/2", "P0 [N]", groups1)
+        lines += _figure(writers, bearing, 1, f"{bearing}: T = μ·P0·d/2", "P0 [N]", groups1)
         t2 = result.task2[result.task2["bearing"] == bearing] if not result.task2.empty else result.task2
         if len(t2):
             lines += ["### Task 2: f0 and T_F (T = f0·dm³·n^(2/3) + T_F)", "",
@@ -102,7 +109,7 @@ def write_lab_outputs(result: LabResult, out_dir) -> list[Path]:
                 equivalent = row.get("f0_seed002_equivalent", math.nan)
                 lines.append(f"| {row['Q']:g} | {row['beta']:g} | {row['f0']:.4g} | {row['T_F']:.4g} | "
                              f"{'–' if pd.isna(equivalent) else f'{equivalent:.3g}'} |")
-            lines += _figure(out, files, bearing, 2, f"{bearing}: T = f0·dm³·N + T_F", "N = n^(2/3)", groups2)
+            lines += _figure(writers, bearing, 2, f"{bearing}: T = f0·dm³·N + T_F", "N = n^(2/3)", groups2)
         t3 = result.task3[result.task3["bearing"] == bearing] if not result.task3.empty else result.task3
         if len(t3):
             lines += ["### Task 3: f and T0 (T = T0 + f·P0·(P0/C0)^c·dm, c = 0.55)", "",
@@ -115,7 +122,7 @@ def write_lab_outputs(result: LabResult, out_dir) -> list[Path]:
                 groups3.append((f"β={row['beta']:g}°, n={row['n']:g}", N, pts["T"], x,
                                 row["T0"] + row["f"] * dm / C0 ** LOAD_EXPONENT_RADIAL * x))
                 lines.append(f"| {row['beta']:g} | {row['n']:g} | {row['f']:.4g} | {row['T0']:.4g} |")
-            lines += _figure(out, files, bearing, 3, f"{bearing}: T = T0 + f·(dm/C0^c)·N", "N = P0^(1+c) [N^1.55]",
+            lines += _figure(writers, bearing, 3, f"{bearing}: T = T0 + f·(dm/C0^c)·N", "N = P0^(1+c) [N^1.55]",
                              groups3)
     lines += ["## Comparison with the models of the seeds", "",
               f"Medians over the readings. seed 000: T = μ·P0·d/2 with μ = {REDUCED_FRICTION_RADIAL}; "
@@ -123,7 +130,6 @@ def write_lab_outputs(result: LabResult, out_dir) -> list[Path]:
     lines += ["| " + " | ".join(result.comparison.columns) + " |", "|---" * len(result.comparison.columns) + "|"]
     for _, row in result.comparison.iterrows():
         lines.append("| " + " | ".join(f"{v:.4g}" if isinstance(v, float) else str(v) for v in row) + " |")
-    path = out / "report.md"
-    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
-    files.append(path)
-    return files
+    text = "\n".join(lines) + "\n"
+    writers["report.md"] = lambda path: Path(path).write_text(text, encoding="utf-8")
+    return write_outputs(out_dir, writers, force=force, inputs=inputs)

@@ -12,14 +12,29 @@ pyplot, no global backend). The curves themselves are
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import pandas as pd
 
 from bearingheat.calc.models import compute_supports
 from bearingheat.calc.table import require_columns, to_catalogue_units
 from bearingheat.calc.thermal import fill_viscosity, heat_balance_rows, heat_flow_curves
+from bearingheat.errors import InputError
 
-__all__ = ["heat_balance_curves", "draw_heat_balance"]
+__all__ = ["heat_balance_curves", "draw_heat_balance", "figure_format", "FIGURE_FORMATS"]
+
+#: file name endings matplotlib writes a figure as
+FIGURE_FORMATS = ("png", "svg", "svgz", "pdf", "eps", "ps", "jpg", "jpeg", "tif", "tiff", "webp")
+
+
+def figure_format(path) -> str:
+    """The figure format of a file name (``plot.svg`` -> ``svg``); :class:`InputError` for an ending matplotlib
+    does not write."""
+    suffix = Path(path).suffix.lower().lstrip(".")
+    if suffix not in FIGURE_FORMATS:
+        raise InputError(f"{path}: a figure is written as {', '.join('.' + f for f in FIGURE_FORMATS)}; "
+                         "name it e.g. heat_balance.png")
+    return suffix
 
 
 def heat_balance_curves(table: pd.DataFrame, points: int = 200) -> dict:
@@ -63,8 +78,9 @@ def _label(table: pd.DataFrame) -> str:
     return "support"
 
 
-def draw_heat_balance(curves: dict, path) -> None:
-    """Write the two panels of :func:`heat_balance_curves` to a PNG file."""
+def draw_heat_balance(curves: dict, path, format: str | None = None) -> None:  # noqa: A002 (matplotlib's name)
+    """Write the two panels of :func:`heat_balance_curves` to a figure file (``format``, else the file's
+    ending, :func:`figure_format`)."""
     from matplotlib.figure import Figure
 
     fig = Figure(figsize=(9.0, 3.6), dpi=90)
@@ -90,4 +106,4 @@ def draw_heat_balance(curves: dict, path) -> None:
     right.legend(fontsize=8, loc="upper left")
     fig.suptitle(f"Heat balance of {curves['label']}", fontsize=11)
     fig.tight_layout()
-    fig.savefig(path)
+    fig.savefig(path, format=format or figure_format(path))
