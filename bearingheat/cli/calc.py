@@ -151,6 +151,8 @@ def run_calc_workbook(args: argparse.Namespace) -> int:
         if output is not None:
             where = f"{output}" + (f", sheet {run.results_sheet!r}" if run.results_sheet else "")
         print_summary(run.result, where)
+        for note in run.notes:
+            print(f"note: {note}", file=sys.stderr)
         if run.dropped:
             print(f"note: {args.output} lacks the {', '.join(run.dropped)} of {args.input} (openpyxl cannot copy "
                   f"them); {args.input} is unchanged", file=sys.stderr)

@@ -4,6 +4,7 @@ from __future__ import annotations
 import os
 import subprocess
 import sys
+import zipfile
 
 import numpy as np
 import openpyxl
@@ -97,26 +98,25 @@ def test_in_place_keeps_everything_else(tmp_path, capsys):
     assert set(styles_before) <= set(styles_after)
     assert after == before
     workbook = openpyxl.load_workbook(path)
-    assert workbook.sheetnames == ["Supports", "Results", "Notes", "Calc (hidden)"]
+    assert workbook.sheetnames == ["Supports", "Notes", "Calc (hidden)", "Results"]  # a new sheet goes last
     assert workbook["Results"].max_row == 8
     assert not [p for p in os.listdir(tmp_path) if p.startswith(".rich")]
 
 
-@pytest.mark.parametrize("build, lost", [
-    (chart_workbook, "charts"),
-    (image_workbook, "images"),
-    (pivot_workbook, "pivot tables, pivot caches"),
-    (control_workbook, "form controls"),
-])
-def test_in_place_refuses_what_openpyxl_would_drop(tmp_path, capsys, build, lost):
-    path = build(tmp_path / "lossy.xlsx")
-    before = digest(path)
-    assert main(["calc", str(path), "--in-place"]) == 2
-    assert capsys.readouterr().err == (
-        f"bearingheat calc: error: {path}: --in-place refused, rewriting the workbook would lose its {lost} "
-        "(openpyxl cannot keep them); the file is unchanged. Write the results to a new workbook with "
-        "-o OUTPUT.xlsx instead\n")
-    assert digest(path) == before
+@pytest.mark.parametrize("build", [chart_workbook, image_workbook, pivot_workbook, control_workbook])
+def test_in_place_keeps_what_openpyxl_would_drop(tmp_path, capsys, build):
+    """Charts, images, pivot tables and form controls survive --in-place: only the results sheet is added."""
+    path = build(tmp_path / "rich.xlsx")
+    with zipfile.ZipFile(path) as archive:
+        before = {name: archive.read(name) for name in archive.namelist()}
+    assert main(["calc", str(path), "--in-place"]) == 0
+    with zipfile.ZipFile(path) as archive:
+        after = {name: archive.read(name) for name in archive.namelist()}
+    registration = {"xl/workbook.xml", "xl/_rels/workbook.xml.rels", "[Content_Types].xml", "xl/styles.xml"}
+    assert set(before) <= set(after)
+    assert {name for name in before if before[name] != after[name]} <= registration
+    added = set(after) - set(before)
+    assert len(added) == 1 and added.pop().startswith("xl/worksheets/sheet")
 
 
 def test_output_of_a_lossy_workbook_says_what_the_copy_lacks(tmp_path, capsys):

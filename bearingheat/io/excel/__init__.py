@@ -3,6 +3,9 @@
 - :mod:`.reader`: :func:`read_supports` -> (DataFrame, :class:`SheetInfo`), :func:`with_units`
 - :mod:`.writer`: :func:`write_results`, :func:`write_results_workbook`, :func:`atomic_save`
 - :mod:`.workbook`: :func:`calc_workbook` (read -> calc -> write) -> :class:`WorkbookRun`
+- :mod:`.package`: ``--in-place`` as a surgical edit of the OPC package (only the results sheet is
+  written; :mod:`.sheetxml` renders it, :mod:`.stylesheet` appends its styles, :mod:`.ownership`
+  marks it as bearingheat's)
 - :mod:`.formulas`: the live Excel formulas of ``calc --formulas``
 - :mod:`.safety`: what a rewrite would lose, and a fingerprint to prove what it kept
 - :mod:`.style`, :mod:`.template`: the named cell styles and the designer's template

@@ -35,6 +35,7 @@ from openpyxl.utils.exceptions import InvalidFileException
 
 from bearingheat.calc.contract import input_units, parse_header
 from bearingheat.errors import ExcelError, InputError, UnitError
+from bearingheat.io.excel.ownership import read_marks
 from bearingheat.units import parse_unit, quantity
 
 __all__ = [
@@ -47,6 +48,7 @@ __all__ = [
     "DEFAULT_SHEET",
     "RESULTS_SHEET",
     "EXCEL_SUFFIXES",
+    "stored_cells",
 ]
 
 #: the input sheet of the template; its results go to RESULTS_SHEET
@@ -220,12 +222,16 @@ def _choose_sheet(workbook, sheet: str | None, path: Path) -> str:
         return sheet
     if DEFAULT_SHEET in names:
         return DEFAULT_SHEET
+    owned = {results for results, _ in read_marks((n, d.attr_text) for n, d in workbook.defined_names.items())
+             .values() if results is not None}
     for name in names:
         ws = workbook[name]
-        if name.endswith(RESULTS_SHEET) or name.endswith("results") or ws.sheet_state != "visible":
+        if (name in owned or name.endswith(RESULTS_SHEET) or name.endswith("results")
+                or ws.sheet_state != "visible"):
             continue
         try:
-            _find_header_row(ws, min(ws.max_column, 200), _merged_header_values(ws, HEADER_SEARCH_ROWS))
+            _find_header_row(ws, _used_columns(ws, HEADER_SEARCH_ROWS + 1),
+                             _merged_header_values(ws, HEADER_SEARCH_ROWS))
         except ExcelError:
             continue
         return name
@@ -255,7 +261,7 @@ def read_sheet(workbook, path: Path, sheet: str | None, *, progress=None) -> tup
     """:func:`read_supports` on a workbook already open (``progress``: an object with start, update, finish)."""
     name = _choose_sheet(workbook, sheet, path)
     ws = workbook[name]
-    max_col = ws.max_column
+    max_col = _used_columns(ws, HEADER_SEARCH_ROWS + 1)
     merged = _merged_header_values(ws, HEADER_SEARCH_ROWS)
     try:
         header_row = _find_header_row(ws, max_col, merged)
@@ -307,18 +313,14 @@ def read_sheet(workbook, path: Path, sheet: str | None, *, progress=None) -> tup
     data: list[list] = [[] for _ in columns]
     rows: list[int] = []
     formula_cells: dict[tuple[str, int], str] = {}
-    total = max(ws.max_row - first_data + 1, 0)
-    if progress is not None:
-        progress.start(total, f"reading {ws.title}")
     positions = {col: i for i, col in enumerate(wanted)}
-    max_wanted = max(wanted) if wanted else 1
-    for count, row_cells in enumerate(ws.iter_rows(min_row=first_data, max_col=max_wanted), start=1):
+    used = _used_rows(ws, positions, first_data)
+    if progress is not None:
+        progress.start(len(used), f"reading {ws.title}")
+    for count, (row, row_cells) in enumerate(used.items(), start=1):
         values = [None] * len(wanted)
         blank = True
-        for cell in row_cells:
-            i = positions.get(cell.column)
-            if i is None:
-                continue
+        for i, cell in row_cells:
             value = cell.value
             if cell.data_type == "f":
                 formula_cells[(columns[i][1], cell.row)] = str(value)
@@ -327,7 +329,7 @@ def read_sheet(workbook, path: Path, sheet: str | None, *, progress=None) -> tup
             values[i] = value
             blank = blank and value is None
         if not blank:
-            rows.append(row_cells[0].row)
+            rows.append(row)
             for i, value in enumerate(values):
                 data[i].append(value)
         if progress is not None and count % 500 == 0:
@@ -360,6 +362,32 @@ def read_sheet(workbook, path: Path, sheet: str | None, *, progress=None) -> tup
                      letters=letters, rows=rows, headers=contract_headers, formula_cells=formula_cells,
                      uncached=uncached)
     return table, info
+
+
+def stored_cells(ws) -> dict:
+    """The cells a worksheet holds, {(row, column): cell}: openpyxl keeps them sparse, so this costs nothing
+    for a stray cell far down (the row 1 048 576 of a mistyped Ctrl+Down)."""
+    return ws._cells
+
+
+def _used_columns(ws, rows: int) -> int:
+    """The last column with a value in the first ``rows`` rows (at least 1)."""
+    return max([col for (row, col), cell in stored_cells(ws).items() if row <= rows and cell.value is not None]
+               + [1])
+
+
+def _used_rows(ws, columns: dict[int, int], first: int) -> dict[int, list]:
+    """{row: [(position of the column, cell), ...]} of the rows from ``first`` on with a value in ``columns``
+    ({column index: position}), in row order.
+
+    Only the used range of the contract's columns is read: a stray value far
+    down (row 1 048 576) costs one row, not a million.
+    """
+    rows: dict[int, list] = {}
+    for (row, col), cell in stored_cells(ws).items():
+        if row >= first and col in columns and cell.value is not None:
+            rows.setdefault(row, []).append((columns[col], cell))
+    return dict(sorted(rows.items()))
 
 
 def _ref(sheet: str) -> str:

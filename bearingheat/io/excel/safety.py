@@ -23,6 +23,7 @@ from pathlib import Path
 from openpyxl import load_workbook
 
 from bearingheat.errors import ExcelError, WorkbookContentError
+from bearingheat.io.excel.ownership import INPUT_MARK, RESULTS_MARK, read_marks
 
 __all__ = ["unsupported_content", "refuse_lossy_rewrite", "workbook_fingerprint", "LOSSY_PARTS"]
 
@@ -106,14 +107,19 @@ def _style_key(cell) -> tuple:
 
 
 def workbook_fingerprint(workbook_or_path, *, skip_sheets=()) -> dict:
-    """Everything a designer sees in a workbook, as plain comparable data (sheets in ``skip_sheets`` left out)."""
+    """Everything a designer sees in a workbook, as plain comparable data (sheets in ``skip_sheets`` left out, and
+    the hidden names that mark them as bearingheat's results sheets, :mod:`.ownership`)."""
     workbook = workbook_or_path
     if not hasattr(workbook_or_path, "worksheets"):
         workbook = load_workbook(workbook_or_path, keep_vba=str(workbook_or_path).endswith(".xlsm"))
+    marks = read_marks((name, dn.attr_text) for name, dn in workbook.defined_names.items())
+    skipped_marks = {f"{prefix}{k}".lower() for k, (results, _) in marks.items() if results in skip_sheets
+                     for prefix in (RESULTS_MARK, INPUT_MARK)}
     out: dict = {
         "sheets": [(ws.title, ws.sheet_state) for ws in workbook.worksheets if ws.title not in skip_sheets],
         "defined_names": sorted((name, str(dn.attr_text), dn.localSheetId)
-                                for name, dn in workbook.defined_names.items()),
+                                for name, dn in workbook.defined_names.items()
+                                if name.lower() not in skipped_marks),
         "named_styles": sorted(str(s) for s in workbook.named_styles),
     }
     for ws in workbook.worksheets:
@@ -145,7 +151,8 @@ def workbook_fingerprint(workbook_or_path, *, skip_sheets=()) -> dict:
             "freeze_panes": ws.freeze_panes,
             "sheet_names": sorted((name, str(dn.attr_text)) for name, dn in ws.defined_names.items()),
             "print_area": ws.print_area,
-            "tables": sorted((name, str(t.ref)) for name, t in ws.tables.items()),
+            # TableList.items() gives (name, ref text) pairs, not tables
+            "tables": sorted((name, str(getattr(ref, "ref", ref))) for name, ref in ws.tables.items()),
             "protection": ws.protection.sheet,
             "tab_color": repr(ws.sheet_properties.tabColor),
         }

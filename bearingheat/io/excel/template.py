@@ -32,9 +32,10 @@ from bearingheat.calc import contract
 from bearingheat.calc.contract import parse_header
 from bearingheat.calc.models import RESULT_UNITS
 from bearingheat.io.excel import style as st
+from bearingheat.io.excel.reader import stored_cells
 
-__all__ = ["TEMPLATE_COLUMNS", "LISTS", "build_template", "build_example", "save_deterministic", "regenerate",
-           "main"]
+__all__ = ["TEMPLATE_COLUMNS", "LISTS", "PLACEHOLDER", "is_placeholder", "build_template", "build_example",
+           "save_deterministic", "regenerate", "main"]
 
 #: (name, unit, required, width, what a designer types) in sheet order, from the column contract; Fr in column F
 TEMPLATE_COLUMNS = [(c.name, c.template[0], c.required, c.template[1], c.meaning)
@@ -50,6 +51,8 @@ TEMPLATE_EXAMPLES = [
     {"id": "example: output shaft A", "designation": "30208-A", "d": 40, "D": 80, "n": 310, "Fr": 6.0, "Fa": 2.4,
      "nu": 40, "lubrication": "oil_bath", "arrangement": "single", "B": 18, "C0": 66, "Y": 1.6},
 ]
+#: the text of the template's empty Results sheet (:func:`is_placeholder`)
+PLACEHOLDER = "bearingheat calc fills this sheet"
 _FIXED_DATE = _dt.datetime(2024, 1, 1, 0, 0, 0)
 _FIXED_STAMP = b"2024-01-01T00:00:00Z"
 _ZIP_DATE = (1980, 1, 1, 0, 0, 0)
@@ -148,9 +151,24 @@ def _results_sheet(workbook) -> None:
         ws.cell(2, col, unit).style = st.UNITS_RESULT
         ws.column_dimensions[get_column_letter(col)].width = 80 if name == "message" else (
             24 if name in ("id", "designation") else 11)
-    ws.cell(3, 1, "bearingheat calc fills this sheet").style = st.RESULT
+    ws.cell(3, 1, PLACEHOLDER).style = st.RESULT
     ws.freeze_panes = "A3"
     ws.sheet_properties.tabColor = "44546A"
+
+
+def is_placeholder(ws) -> bool:
+    """True for the template's empty results sheet: headers and units, and only the placeholder text under them
+    (nothing of the designer's, so calc may fill it although it carries no bearingheat mark)."""
+    cells = stored_cells(ws)
+    first = cells.get((3, 1))
+    if first is None or first.value != PLACEHOLDER:
+        return False
+    header = cells.get((1, 1))
+    if header is None or header.value != "row":
+        return False
+    if ws.merged_cells.ranges or ws.data_validations.dataValidation or ws._charts or ws._images:
+        return False
+    return all(row <= 2 or (row, col) == (3, 1) for (row, col), cell in cells.items() if cell.value is not None)
 
 
 def _instructions_sheet(workbook) -> None:

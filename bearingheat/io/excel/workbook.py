@@ -3,8 +3,9 @@
 :func:`calc_workbook` reads a sheet of supports (:mod:`.reader`), runs
 :func:`bearingheat.calc.table.calc` on it, and writes a results sheet
 (:mod:`.writer`), optionally with live Excel formulas (:mod:`.formulas`),
-into a copy of the workbook, into the workbook itself (``in_place``, refused
-when that would lose content, :mod:`.safety`) or into a CSV. Input it cannot
+into a copy of the workbook, into the workbook itself (``in_place``: a
+surgical edit of the package that keeps every other part byte for byte,
+:mod:`.package`) or into a CSV. Input it cannot
 use raises :class:`~bearingheat.errors.ExcelError` with a message that cites
 the cell, e.g. ``Supports!F2: column 'Fr [kg]': kilogram is a mass, not a
 force; for kilogram-force write kgf``; a bad value in one row is reported in
@@ -16,21 +17,27 @@ that row (``Supports!F7: 'abc' is not a number for Fr [kN]``).
 """
 from __future__ import annotations
 
+import contextlib
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
+from openpyxl.workbook.defined_name import DefinedName
 
 from bearingheat.calc.models import DEFAULT_MODEL
 from bearingheat.calc.table import calc
 from bearingheat.calc.thermal import DEFAULT_SPEED_FACTOR_METHOD
-from bearingheat.errors import ExcelError, F2ChartError, InputError
+from bearingheat.errors import ExcelError, F2ChartError, InputError, WorkbookContentError
 from bearingheat.io.excel.formulas import live_formulas
+from bearingheat.io.excel.ownership import INPUT_MARK, RESULTS_MARK, choose_results_sheet, mark_value, read_marks
+from bearingheat.io.excel.package import Package, open_package, write_results_in_place
 from bearingheat.io.excel.reader import EXCEL_SUFFIXES, SheetInfo, contract_name, open_workbook, read_sheet
-from bearingheat.io.excel.safety import refuse_lossy_rewrite, unsupported_content
-from bearingheat.io.excel.writer import atomic_save, fill_sheet, install_sheet, result_table, results_sheet_name
+from bearingheat.io.excel.safety import unsupported_content
+from bearingheat.io.excel.template import is_placeholder
+from bearingheat.io.excel.writer import atomic_save, fill_sheet, install_sheet, result_table
+from bearingheat.io.files import safe_output, workbook_lock
 from bearingheat.io.tables import write_csv
 
 __all__ = ["calc_workbook", "WorkbookRun"]
@@ -65,13 +72,36 @@ def _input_error(exc: Exception, info: SheetInfo) -> ExcelError:
 
 @dataclass
 class WorkbookRun:
-    """What :func:`calc_workbook` did: the results, where they went, what was left out."""
+    """What :func:`calc_workbook` did: the results, where they went, what was left out, what to tell the user.
+
+    ``notes`` are sentences for the user, e.g. that a sheet of theirs named
+    'Results' was kept and the results went to 'Results (2)'.
+    """
 
     result: pd.DataFrame
     info: SheetInfo
     output: Path | None
     results_sheet: str | None
     dropped: list[str]
+    notes: list[str] = field(default_factory=list)
+
+
+def _mark_results_sheet(workbook, input_sheet: str, placeholders: list[str]) -> tuple[str, str | None]:
+    """(results sheet name, note) for an openpyxl workbook (the -o copy), with its ownership marks set."""
+    names = workbook.defined_names
+    marks = read_marks((name, defined.attr_text) for name, defined in names.items())
+    name, _, note = choose_results_sheet(workbook.sheetnames, marks, input_sheet, placeholders=placeholders)
+    present = {s.casefold() for s in workbook.sheetnames} | {name.casefold()}
+    k = next((k for k, (results, source) in marks.items()
+              if results is not None and results.casefold() == name.casefold() and source == input_sheet), None)
+    for j, (results, _) in marks.items():
+        if results is None or results.casefold() not in present:
+            for prefix in (RESULTS_MARK, INPUT_MARK):
+                names.pop(f"{prefix}{j}", None)
+    k = k if k is not None else 1 + max(list(marks) + [0])
+    for prefix, sheet in ((RESULTS_MARK, name), (INPUT_MARK, input_sheet)):
+        names[f"{prefix}{k}"] = DefinedName(f"{prefix}{k}", attr_text=mark_value(sheet), hidden=True)
+    return name, note
 
 
 def calc_workbook(path, output=None, *, sheet: str | None = None, in_place: bool = False, formulas: bool = False,
@@ -82,9 +112,13 @@ def calc_workbook(path, output=None, *, sheet: str | None = None, in_place: bool
 
     ``output`` (a new .xlsx/.xlsm) gets a copy of the workbook plus the
     results sheet; ``in_place=True`` writes the results sheet into ``path``
-    itself (atomically, refused when that would drop content). With neither,
-    nothing is written. ``formulas=True`` writes live Excel formulas for
-    P1, M0, M1, M2, MR and NR. ``progress`` (e.g.
+    itself as a surgical edit of the package (:mod:`.package`: every other
+    part of the file is kept byte for byte; refused when that cannot be
+    done), holding the workbook's lock (:func:`bearingheat.io.files.workbook_lock`)
+    from the read to the atomic rename. With neither, nothing is written.
+    A results sheet replaces only a results sheet that bearingheat marked as
+    its own (:mod:`.ownership`). ``formulas=True`` writes live Excel
+    formulas for P1, M0, M1, M2, MR and NR. ``progress`` (e.g.
     :class:`bearingheat.io.console.Progress`) is advanced while the sheets
     are read and written. Raises :class:`ExcelError` for unusable input
     (:class:`~bearingheat.errors.WorkbookContentError` when ``in_place``
@@ -108,11 +142,29 @@ def calc_workbook(path, output=None, *, sheet: str | None = None, in_place: bool
         raise ExcelError("--formulas needs an Excel output (.xlsx), not a CSV")
     if target is not None and target.suffix.lower() == ".xlsm" and source.suffix.lower() != ".xlsm":
         raise ExcelError(f"{target}: only a .xlsm input can be written as .xlsm")
+    with contextlib.ExitStack() as stack:
+        lock = package = None
+        if in_place:
+            safe_output(source, force=True)  # a read-only workbook, or one with other hard links, is refused
+            lock = stack.enter_context(workbook_lock(source))
+            package = open_package(source)
+            if not keep_vba and package.find("xl/vbaProject.bin") is not None:
+                raise WorkbookContentError(
+                    f"{source}: --in-place keeps every part of the workbook, its VBA macros too; keep_vba=False "
+                    "would drop them; the file is unchanged. Write the results to a new workbook with "
+                    "-o OUTPUT.xlsx instead")
+        return _run(source, target, package, lock, sheet=sheet, formulas=formulas, model=model,
+                    n_per_method=n_per_method, f2_chart=f2_chart, effects=effects, keep_vba=keep_vba,
+                    progress=progress)
+
+
+def _run(source: Path, target: Path | None, package: Package | None, lock, *, sheet, formulas, model, n_per_method,
+         f2_chart, effects, keep_vba, progress) -> WorkbookRun:
+    """Read, calc and write (the checks of :func:`calc_workbook` done; ``package`` and ``lock`` for in-place)."""
+    in_place = package is not None
     writes_workbook = target is not None and target.suffix.lower() in EXCEL_SUFFIXES
-    vba = keep_vba and writes_workbook and target.suffix.lower() == ".xlsm"
+    vba = keep_vba and writes_workbook and not in_place and target.suffix.lower() == ".xlsm"
     workbook = open_workbook(source, keep_vba=vba)
-    if in_place:
-        refuse_lossy_rewrite(source, workbook, option="--in-place", keep_vba=keep_vba)
     table, info = read_sheet(workbook, source, sheet, progress=progress)
     if not len(table):
         raise ExcelError(f"sheet {info.sheet!r}: no supports under the header (row {info.header_row})")
@@ -125,19 +177,26 @@ def calc_workbook(path, output=None, *, sheet: str | None = None, in_place: bool
         raise _input_error(exc, info) from exc
     _mark_uncached(result, info)
     dropped: list[str] = []
+    notes: list[str] = []
     results_sheet = None
     if target is not None and target.suffix.lower() == ".csv":
         write_csv(result, target)
     elif writes_workbook:
-        if not in_place:
-            dropped = unsupported_content(source, workbook, keep_vba=vba)
-        results_sheet = results_sheet_name(info.sheet)
         out_table = result_table(result, table, info)
         formula_text = None
         if formulas:
             out_table, formula_text = live_formulas(out_table, table, info, result)
-        ws = install_sheet(workbook, results_sheet, after=info.sheet)
-        fill_sheet(ws, out_table, units={"row": "-"}, formulas=formula_text, progress=progress)
-        ws.sheet_properties.tabColor = "44546A"
-        atomic_save(workbook, target)
-    return WorkbookRun(result, info, target, results_sheet, dropped)
+        placeholders = [ws.title for ws in workbook.worksheets if is_placeholder(ws)]
+        if in_place:
+            done = write_results_in_place(package, info.sheet, out_table, lock=lock, units={"row": "-"},
+                                          formulas=formula_text, progress=progress, placeholders=placeholders)
+            results_sheet, notes = done.sheet, done.notes
+        else:
+            dropped = unsupported_content(source, workbook, keep_vba=vba)
+            results_sheet, note = _mark_results_sheet(workbook, info.sheet, placeholders)
+            notes = [note] if note else []
+            ws = install_sheet(workbook, results_sheet, after=info.sheet)
+            fill_sheet(ws, out_table, units={"row": "-"}, formulas=formula_text, progress=progress)
+            ws.sheet_properties.tabColor = "44546A"
+            atomic_save(workbook, target)
+    return WorkbookRun(result, info, target, results_sheet, dropped, notes)

@@ -14,9 +14,8 @@ headers (:func:`split_header`); cells take the named styles of
 from __future__ import annotations
 
 import math
-import os
-import tempfile
 from copy import copy
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -31,6 +30,7 @@ from bearingheat.io.excel import style as st
 from bearingheat.io.excel.reader import (DEFAULT_SHEET, EXCEL_SUFFIXES, RESULTS_SHEET, SheetInfo, contract_name,
                                          open_workbook)
 from bearingheat.io.excel.safety import refuse_lossy_rewrite
+from bearingheat.io.files import atomic_write
 
 __all__ = [
     "write_results",
@@ -70,18 +70,22 @@ def _cell_value(value):
     return value
 
 
-def fill_sheet(ws, table: pd.DataFrame, *, units: dict[str, str] | None = None,
-                input_columns: set[str] = frozenset(), formulas: dict[tuple[str, int], str] | None = None,
-                progress=None) -> None:
-    """Header row, units row, one row per table row; named styles; frozen panes and widths.
+@dataclass
+class SheetLayout:
+    """What a results sheet shows, column by column: header, unit, style name, values and width."""
 
-    ``progress`` is an object with start, update and finish
-    (:class:`bearingheat.io.console.Progress`), or None.
-    """
-    register = st.register_styles
-    register(ws.parent)
-    formulas = formulas or {}
-    headers, unit_row, styles, magnitudes = [], [], [], []
+    headers: list[str]
+    units: list[str]
+    styles: list[str]
+    values: list[np.ndarray]
+    widths: list[float]
+    input_columns: list[bool]
+
+
+def sheet_layout(table: pd.DataFrame, units: dict[str, str] | None = None,
+                 input_columns: set[str] = frozenset()) -> SheetLayout:
+    """The header row, units row, cell style and width of every column of ``table`` (values as objects)."""
+    headers, unit_row, styles, magnitudes, widths, inputs = [], [], [], [], [], []
     for header in table.columns:
         column = table[header]
         name, unit = split_header(header, column, units)
@@ -89,22 +93,37 @@ def fill_sheet(ws, table: pd.DataFrame, *, units: dict[str, str] | None = None,
         unit_row.append(unit)
         if str(column.dtype).startswith("pint["):
             column = pd.Series(column.pint.magnitude, index=column.index)
-        if header in input_columns:
-            styles.append(st.INPUT)
-        else:
-            styles.append(_column_style(unit))
-        magnitudes.append(column.to_numpy(dtype=object))
+        inputs.append(header in input_columns)
+        styles.append(st.INPUT if header in input_columns else _column_style(unit))
+        values = column.to_numpy(dtype=object)
+        magnitudes.append(values)
+        sample = [len(str(v)) for v in values[:200] if isinstance(v, str)]
+        width = min(max([len(str(name)), len(str(unit)), 8] + sample) + 2, 40)
+        widths.append(80 if name == "message" else width)
+    return SheetLayout(headers, unit_row, styles, magnitudes, widths, inputs)
+
+
+def fill_sheet(ws, table: pd.DataFrame, *, units: dict[str, str] | None = None,
+                input_columns: set[str] = frozenset(), formulas: dict[tuple[str, int], str] | None = None,
+                progress=None) -> None:
+    """Header row, units row, one row per table row; named styles; frozen panes and widths.
+
+    Text values are written as text, also when they begin with '=' (they
+    never become formulas); only ``formulas`` are formulas. ``progress`` is
+    an object with start, update and finish
+    (:class:`bearingheat.io.console.Progress`), or None.
+    """
+    register = st.register_styles
+    register(ws.parent)
+    formulas = formulas or {}
+    layout = sheet_layout(table, units, set(input_columns))
+    headers, styles, magnitudes = layout.headers, layout.styles, layout.values
     ws.append(headers)
-    ws.append(unit_row)
-    for col, header in enumerate(table.columns, start=1):
-        is_input = header in input_columns
+    ws.append(layout.units)
+    for col, is_input in enumerate(layout.input_columns, start=1):
         ws.cell(1, col).style = st.HEADER_INPUT if is_input else st.HEADER_RESULT
         ws.cell(2, col).style = st.UNITS if is_input else st.UNITS_RESULT
-        sample = [len(str(v)) for v in magnitudes[col - 1][:200] if isinstance(v, str)]
-        width = min(max([len(str(headers[col - 1])), len(str(unit_row[col - 1])), 8] + sample) + 2, 40)
-        if headers[col - 1] == "message":
-            width = 80
-        ws.column_dimensions[get_column_letter(col)].width = width
+        ws.column_dimensions[get_column_letter(col)].width = layout.widths[col - 1]
     status_col = list(table.columns).index("status") if "status" in table.columns else None
     formula_cols = {}
     for (header, position) in formulas:
@@ -124,6 +143,9 @@ def fill_sheet(ws, table: pd.DataFrame, *, units: dict[str, str] | None = None,
                 cell._style = copy(status_styles.get(str(cell.value), style_arrays[st.RESULT]))
             else:
                 cell._style = copy(column_styles[c])
+            if cell.data_type == "f":  # text that begins with '=': text, as it was in the input
+                cell.data_type = "s"
+                cell._style.quotePrefix = 1
             row.append(cell)
         for header, c in formula_cols.items():
             text = formulas.get((header, position))
@@ -202,21 +224,11 @@ def install_sheet(workbook, name: str, after: str | None = None):
 def atomic_save(workbook, path: Path) -> None:
     """Save to a temporary file in the target's folder, then rename it over the target.
 
-    A failure while saving leaves the target as it was (and no temporary
-    file behind); the target keeps its permission bits.
+    :func:`bearingheat.io.files.atomic_write`: a failure while saving leaves
+    the target as it was (and no temporary file behind); the target keeps
+    its permission bits; a symbolic link is written through.
     """
-    path = Path(path)
-    handle, temp_name = tempfile.mkstemp(prefix=f".{path.stem}.", suffix=path.suffix, dir=path.parent)
-    os.close(handle)
-    try:
-        workbook.save(temp_name)
-        if path.exists():
-            os.chmod(temp_name, path.stat().st_mode & 0o7777)
-        os.replace(temp_name, path)
-    except BaseException:
-        if os.path.exists(temp_name):
-            os.unlink(temp_name)
-        raise
+    atomic_write(path, lambda temp: workbook.save(temp))
 
 
 def write_results(results: pd.DataFrame, path, *, sheet: str = RESULTS_SHEET, units: dict[str, str] | None = None,

@@ -87,14 +87,20 @@ def assert_formulas_equal_python(recalculated, result):
     return checked
 
 
-@pytest.fixture(scope="module")
-def recalculated(tmp_path_factory):
-    """The formula workbook, a copy with new n, ν and loads typed into 'Supports', both recalculated."""
+@pytest.fixture(scope="module", params=["copy", "in_place"])
+def recalculated(request, tmp_path_factory):
+    """The formula workbook (written with -o, or into the input with --in-place), a copy with new n, ν and loads
+    typed into 'Supports', both recalculated."""
     require_soffice()
-    folder = tmp_path_factory.mktemp("formulas")
+    folder = tmp_path_factory.mktemp(f"formulas_{request.param}")
     source = make_workbook(folder / "mixed.xlsx", HEADER, UNITS, ROWS)
     live = folder / "live.xlsx"
-    run = calc_workbook(source, live, formulas=True)
+    if request.param == "copy":
+        run = calc_workbook(source, live, formulas=True)
+    else:
+        source.rename(live)
+        run = calc_workbook(live, in_place=True, formulas=True)
+        assert run.results_sheet == "Results"
     edited = folder / "edited.xlsx"
     workbook = openpyxl.load_workbook(live)
     ws = workbook["Supports"]

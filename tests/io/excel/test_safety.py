@@ -1,4 +1,4 @@
-"""No data loss: in_place keeps everything else, writes atomically, and refuses what openpyxl would drop."""
+"""No data loss: in_place keeps everything else and writes atomically; -o copies note what openpyxl drops."""
 from __future__ import annotations
 
 import os
@@ -8,7 +8,7 @@ import openpyxl
 import pytest
 from excel_helpers import digest, make_workbook, rich_workbook, vba_workbook
 
-from bearingheat.errors import ExcelError, WorkbookContentError
+from bearingheat.errors import OutputFileError, WorkbookContentError, WorkbookLockedError
 from bearingheat.io.excel.safety import unsupported_content, workbook_fingerprint
 from bearingheat.io.excel.workbook import calc_workbook
 
@@ -35,11 +35,14 @@ def test_output_leaves_the_input_untouched(tmp_path):
     copy = workbook_fingerprint(tmp_path / "copy.xlsx", skip_sheets=("Results",))
     original = workbook_fingerprint(path)
     copy.pop("named_styles"), original.pop("named_styles")
-    assert copy == original
+    assert copy == original  # the marks of the skipped results sheet are left out too
+    marks = [n for n in workbook_fingerprint(tmp_path / "copy.xlsx")["defined_names"] if n[0].startswith("_bearing")]
+    assert marks == [("_bearingheat_input_1", "Supports!$1:$1048576", None),
+                     ("_bearingheat_results_1", "Results!$1:$1048576", None)]
     assert run.dropped == []
 
 
-def test_failed_save_leaves_the_workbook_and_no_temp_file(tmp_path, monkeypatch):
+def test_failed_save_of_a_copy_leaves_no_temp_file(tmp_path, monkeypatch):
     path = rich_workbook(tmp_path / "rich.xlsx")
     before = digest(path)
 
@@ -49,7 +52,26 @@ def test_failed_save_leaves_the_workbook_and_no_temp_file(tmp_path, monkeypatch)
         raise OSError("disk full")
 
     monkeypatch.setattr(openpyxl.Workbook, "save", broken_save)
-    with pytest.raises(OSError, match="disk full"):
+    with pytest.raises(OutputFileError, match="disk full"):
+        calc_workbook(path, tmp_path / "copy.xlsx")
+    assert digest(path) == before
+    assert sorted(os.listdir(tmp_path)) == ["rich.xlsx"]
+
+
+def test_failed_in_place_write_leaves_the_workbook_and_no_temp_file(tmp_path, monkeypatch):
+    path = rich_workbook(tmp_path / "rich.xlsx")
+    before = digest(path)
+    written = []
+    real_writestr = zipfile.ZipFile.writestr
+
+    def broken_writestr(self, info, data, *args, **kwargs):
+        written.append(info)
+        if len(written) == 2:
+            raise OSError(28, "No space left on device")
+        return real_writestr(self, info, data, *args, **kwargs)
+
+    monkeypatch.setattr(zipfile.ZipFile, "writestr", broken_writestr)
+    with pytest.raises(OutputFileError, match=f"cannot write {path}: No space left on device"):
         calc_workbook(path, in_place=True)
     assert digest(path) == before
     assert sorted(os.listdir(tmp_path)) == ["rich.xlsx"]
@@ -74,17 +96,23 @@ def test_in_place_without_keep_vba_refuses(tmp_path):
     path = vba_workbook(tmp_path / "macro.xlsm")
     with pytest.raises(WorkbookContentError) as exc:
         calc_workbook(path, in_place=True, keep_vba=False)
-    assert str(exc.value) == (f"{path}: --in-place refused, rewriting the workbook would lose its VBA macros "
-                              "(openpyxl cannot keep them); the file is unchanged. Write the results to a new "
+    assert str(exc.value) == (f"{path}: --in-place keeps every part of the workbook, its VBA macros too; "
+                              "keep_vba=False would drop them; the file is unchanged. Write the results to a new "
                               "workbook with -o OUTPUT.xlsx instead")
 
 
 def test_in_place_refuses_a_workbook_open_in_excel(tmp_path):
     path = make_workbook(tmp_path / "open.xlsx")
     (tmp_path / "~$open.xlsx").write_bytes(b"owner")
-    with pytest.raises(ExcelError) as exc:
+    with pytest.raises(WorkbookLockedError) as exc:
         calc_workbook(path, in_place=True)
     assert str(exc.value) == f"{path} is open in Excel (lock file ~$open.xlsx); close it and run again"
+    (tmp_path / "~$open.xlsx").unlink()
+    (tmp_path / ".~lock.open.xlsx#").write_bytes(b"owner")
+    with pytest.raises(WorkbookLockedError) as exc:
+        calc_workbook(path, in_place=True)
+    assert str(exc.value) == (f"{path} is open in LibreOffice (lock file .~lock.open.xlsx#); close it and run "
+                              "again")
 
 
 def test_unsupported_content_of_a_plain_workbook_is_empty(tmp_path):

@@ -1,0 +1,149 @@
+"""Which results sheet is bearingheat's: the marks it leaves in a workbook, and the name of a new results sheet.
+
+bearingheat replaces only a sheet it wrote itself. Each results sheet it
+writes is marked by a pair of hidden, workbook-scoped defined names::
+
+    _bearingheat_results_1   'Results'!$1:$1048576     the results sheet
+    _bearingheat_input_1     Supports!$1:$1048576      the input sheet it holds the results of
+
+They are references, so Excel and LibreOffice carry them along when a sheet
+is renamed, moved or gets rows inserted or deleted; a deleted sheet turns
+its reference into ``#REF!`` and the mark is dropped on the next run. A copy
+of a results sheet (Excel's "Move or Copy") is not marked, so it is the
+designer's. A sheet without a mark is never replaced: when it holds the name
+the results sheet would get (``Results``, ``<sheet> results``) the results
+go to the next free name, ``Results (2)``, and the run says so.
+
+>>> mark_value("Supports"), mark_value("Shaft 2 results")
+('Supports!$1:$1048576', "'Shaft 2 results'!$1:$1048576")
+>>> sheet_of_mark("'Q1''s loads'!$1:$1048576"), sheet_of_mark("#REF!$1:$1048576")
+("Q1's loads", None)
+>>> name, replace, note = choose_results_sheet(["Supports", "Results"], {}, "Supports")
+>>> name, replace
+('Results (2)', False)
+>>> print(note)
+sheet 'Results' is not a results sheet of bearingheat (it has no bearingheat mark), so it is kept; the results
+of 'Supports' went to 'Results (2)'
+"""
+from __future__ import annotations
+
+import re
+from collections.abc import Collection, Iterable, Mapping
+
+__all__ = ["RESULTS_MARK", "INPUT_MARK", "MAX_SHEET_NAME", "mark_value", "sheet_of_mark", "read_marks",
+           "choose_results_sheet", "candidate_names", "sheet_ref"]
+
+RESULTS_MARK = "_bearingheat_results_"
+INPUT_MARK = "_bearingheat_input_"
+#: Excel's longest sheet name
+MAX_SHEET_NAME = 31
+_WHOLE_SHEET = "$1:$1048576"
+_MARK_NAME = re.compile(rf"^({RESULTS_MARK}|{INPUT_MARK})(\d+)$", re.IGNORECASE)
+
+
+def sheet_ref(sheet: str) -> str:
+    """A sheet name as a reference prefix: Supports, 'Shaft 1', 'Q1''s loads', 'R2C3' (quoted unless plain).
+
+    >>> [sheet_ref(s) for s in ("Supports", "Shaft 1", "AB12", "R2C3", "C", "Cases")]
+    ['Supports', "'Shaft 1'", "'AB12'", "'R2C3'", "'C'", 'Cases']
+    """
+    looks_like_a_reference = (re.fullmatch(r"[A-Za-z]{1,3}[0-9]+|[Rr][0-9]*[Cc]?[0-9]*|[Cc][0-9]*", sheet)
+                              or sheet.upper() in ("TRUE", "FALSE"))
+    if re.fullmatch(r"[A-Za-z_][A-Za-z0-9_.]*", sheet) and not looks_like_a_reference:
+        return sheet
+    return "'" + sheet.replace("'", "''") + "'"
+
+
+def mark_value(sheet: str) -> str:
+    """The value of a mark: every row of ``sheet`` (a reference that survives row and column edits)."""
+    return f"{sheet_ref(sheet)}!{_WHOLE_SHEET}"
+
+
+def sheet_of_mark(value: str | None) -> str | None:
+    """The sheet a mark's value refers to; None for a broken (``#REF!``) or foreign value."""
+    if not value:
+        return None
+    text = value.strip().lstrip("=")
+    match = re.fullmatch(r"'((?:[^']|'')+)'!(.+)|([^'!]+)!(.+)", text)
+    if match is None:
+        return None
+    sheet = match.group(1).replace("''", "'") if match.group(1) is not None else match.group(3)
+    if sheet.startswith("#REF") or "#REF" in (match.group(2) or match.group(4)):
+        return None
+    return sheet
+
+
+def read_marks(names: Iterable[tuple[str, str | None]]) -> dict[int, tuple[str | None, str | None]]:
+    """{k: (results sheet, input sheet)} from (defined name, value) pairs of workbook scope."""
+    marks: dict[int, list] = {}
+    for name, value in names:
+        match = _MARK_NAME.match(name or "")
+        if match is None:
+            continue
+        slot = marks.setdefault(int(match.group(2)), [None, None])
+        slot[0 if match.group(1).lower() == RESULTS_MARK else 1] = sheet_of_mark(value)
+    return {k: (v[0], v[1]) for k, v in sorted(marks.items())}
+
+
+def candidate_names(base: str) -> Iterable[str]:
+    """``base``, then ``base (2)``, ``base (3)`` ... each at most 31 characters; a ``<sheet> results`` base keeps
+    its word 'results' and gives up characters of the sheet name instead.
+
+    >>> [name for name, _ in zip(candidate_names("Results"), range(3))]
+    ['Results', 'Results (2)', 'Results (3)']
+    >>> [name for name, _ in zip(candidate_names("Gearbox G-17 intermedia results"), range(2))]
+    ['Gearbox G-17 intermedia results', 'Gearbox G-17 interm results (2)']
+    """
+    stem, tail = (base[:-len(" results")], " results") if base.endswith(" results") else (base, "")
+    yield stem[:MAX_SHEET_NAME - len(tail)] + tail
+    k = 2
+    while True:
+        suffix = f"{tail} ({k})"
+        yield stem[:MAX_SHEET_NAME - len(suffix)] + suffix
+        k += 1
+
+
+def _owner_text(sheet: str, input_sheet: str, owners: Mapping[str, str]) -> str:
+    if sheet.casefold() == input_sheet.casefold():
+        return f"sheet {sheet!r} is the input sheet"
+    other = owners.get(sheet.casefold())
+    if other is not None:
+        return f"sheet {sheet!r} holds the results of sheet {other!r}"
+    return f"sheet {sheet!r} is not a results sheet of bearingheat (it has no bearingheat mark), so it is kept"
+
+
+def choose_results_sheet(sheets: list[str], marks: Mapping[int, tuple[str | None, str | None]],
+                         input_sheet: str, base: str | None = None,
+                         placeholders: Collection[str] = ()) -> tuple[str, bool, str | None]:
+    """(results sheet name, replace it?, note) for the results of ``input_sheet``.
+
+    ``sheets`` are the workbook's sheet names, ``marks`` :func:`read_marks`.
+    A marked results sheet of ``input_sheet`` is replaced whatever its name
+    now is; so is an unmarked sheet of the name ``base`` that is in
+    ``placeholders`` (the empty 'Results' sheet of bearingheat's template,
+    which holds nothing of the designer's). Otherwise the first free name of
+    :func:`candidate_names` (Excel compares sheet names without case) is
+    taken, with a note when it is not ``base`` (default: ``Results`` for
+    'Supports', else ``<first 23 characters> results``).
+    """
+    if base is None:
+        base = "Results" if input_sheet == "Supports" else f"{input_sheet[:23]} results"
+    present = {s.casefold(): s for s in sheets}
+    for results, source in marks.values():
+        if (results is not None and source == input_sheet and results.casefold() in present
+                and results.casefold() != input_sheet.casefold()):
+            return present[results.casefold()], True, None
+    owned = {r.casefold() for r, _ in marks.values() if r is not None}
+    holder = present.get(base.casefold())
+    if (holder is not None and holder in placeholders and holder.casefold() not in owned
+            and holder.casefold() != input_sheet.casefold()):
+        return holder, True, None
+    owners = {r.casefold(): s for r, s in marks.values() if r is not None and s is not None}
+    for name in candidate_names(base):
+        if name.casefold() not in present:
+            if name == base:
+                return name, False, None
+            first = present.get(base.casefold(), base)
+            return name, False, f"{_owner_text(first, input_sheet, owners)}; the results of {input_sheet!r} went " \
+                                f"to {name!r}"
+    raise AssertionError("unreachable")  # pragma: no cover

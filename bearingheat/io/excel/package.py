@@ -1,0 +1,512 @@
+"""``calc --in-place`` as a surgical edit of the workbook's OPC package: only the results sheet is written.
+
+An .xlsx or .xlsm file is a ZIP package of parts (ECMA-376 Part 2, OPC).
+:func:`write_results_in_place` adds or replaces one worksheet part, the
+results sheet, and changes only what registers it:
+
+- ``xl/workbook.xml``: its ``<sheet>`` entry, the two hidden defined names
+  that mark it as bearingheat's (:mod:`.ownership`), and
+  ``calcPr fullCalcOnLoad="1"`` so that Excel and LibreOffice recalculate
+  formulas (the live formulas, and the designer's formulas that read the
+  results) when the file is opened;
+- ``xl/_rels/workbook.xml.rels`` and ``[Content_Types].xml`` for a new sheet;
+- ``xl/styles.xml``: bearingheat's cell formats appended
+  (:mod:`.stylesheet`), nothing renumbered;
+- ``xl/calcChain.xml`` only when a replaced results sheet had formulas in it.
+
+Every other part is copied byte for byte, in the same order, so whatever the
+workbook holds (charts, images, form controls, connections, custom XML,
+dynamic-array metadata, printer settings, cached formula values, rich text,
+notes, pivot caches, VBA ...) is kept without being understood. Text is
+written as inline strings, so the shared strings are not touched.
+
+What cannot be kept is refused with
+:class:`~bearingheat.errors.WorkbookContentError` and the file left as it
+was: an encrypted (password to open) or digitally signed workbook, a Strict
+Open XML workbook, a write-reservation password, a shared workbook with a
+change history, a workbook whose structure is protected (no sheet may be
+added), and a results sheet that the designer has since given charts,
+notes, tables or other parts of its own.
+"""
+from __future__ import annotations
+
+import io
+import posixpath
+import re
+import shutil
+import zipfile
+from dataclasses import dataclass, field
+from pathlib import Path
+from urllib.parse import unquote
+
+from lxml import etree
+
+from bearingheat.errors import ExcelError, WorkbookContentError
+from bearingheat.io.excel.ownership import (INPUT_MARK, RESULTS_MARK, choose_results_sheet, mark_value,
+                                            read_marks)
+from bearingheat.io.excel.sheetxml import DEFAULT_MARGINS, results_sheet_xml
+from bearingheat.io.excel.stylesheet import StyleSheet
+from bearingheat.io.files import WorkbookLock, atomic_write
+
+__all__ = ["Package", "open_package", "write_results_in_place", "InPlaceResult"]
+
+MAIN = "http://schemas.openxmlformats.org/spreadsheetml/2006/main"
+REL = "http://schemas.openxmlformats.org/officeDocument/2006/relationships"
+PKG_REL = "http://schemas.openxmlformats.org/package/2006/relationships"
+CT = "http://schemas.openxmlformats.org/package/2006/content-types"
+STRICT = "http://purl.oclc.org/ooxml/"
+WORKSHEET_TYPE = "application/vnd.openxmlformats-officedocument.spreadsheetml.worksheet+xml"
+STYLES_TYPE = "application/vnd.openxmlformats-officedocument.spreadsheetml.styles+xml"
+_M, _R, _P, _C = (f"{{{ns}}}" for ns in (MAIN, REL, PKG_REL, CT))
+#: the order of the children of <workbook> (CT_Workbook)
+_WORKBOOK_ORDER = ("fileVersion", "fileSharing", "workbookPr", "workbookProtection", "bookViews", "sheets",
+                   "functionGroups", "externalReferences", "definedNames", "calcPr", "oleSize",
+                   "customWorkbookViews", "pivotCaches", "smartTagPr", "smartTagTypes", "webPublishing",
+                   "fileRecoveryPr", "webPublishObjects", "extLst")
+#: elements of a replaced results sheet that are kept: its print setup and protection (CT_Worksheet order)
+_KEPT_SHEET_ELEMENTS = ("sheetProtection", "printOptions", "pageMargins", "pageSetup", "headerFooter")
+_KEPT_RELATIONSHIPS = {"printerSettings"}
+_WHAT = {"drawing": "charts, images or shapes", "comments": "notes", "vmlDrawing": "notes or form controls",
+         "table": "tables", "hyperlink": "hyperlinks", "pivotTable": "pivot tables", "threadedComment":
+         "threaded comments", "control": "form controls", "oleObject": "embedded objects"}
+_PARSER = etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=True)
+_OLE_MAGIC = b"\xd0\xcf\x11\xe0\xa1\xb1\x1a\xe1"
+
+
+def _parse(data: bytes, where: str, path) -> etree._Element:
+    try:
+        return etree.fromstring(data, _PARSER)
+    except etree.XMLSyntaxError as exc:
+        raise ExcelError(f"{path}: damaged workbook, the part {where} cannot be read ({exc})") from exc
+
+
+def _xml(root: etree._Element) -> bytes:
+    return etree.tostring(root, xml_declaration=True, encoding="UTF-8", standalone=True)
+
+
+def rels_part(part: str) -> str:
+    """The relationships part of ``part``: xl/workbook.xml -> xl/_rels/workbook.xml.rels."""
+    folder, name = posixpath.split(part)
+    return posixpath.join(folder, "_rels", name + ".rels")
+
+
+def _resolve(source: str, target: str) -> str:
+    """The part a relationship of ``source`` targets (relative to its folder, or absolute from the root)."""
+    target = unquote(target)
+    if target.startswith("/"):
+        return posixpath.normpath(target.lstrip("/"))
+    return posixpath.normpath(posixpath.join(posixpath.dirname(source), target))
+
+
+@dataclass
+class Package:
+    """A workbook file read once: its bytes, ZIP members (in order) and the workbook part's name."""
+
+    path: Path
+    data: bytes
+    infos: list[zipfile.ZipInfo]
+    workbook: str
+    _parts: dict[str, bytes] = field(default_factory=dict)
+
+    def names(self) -> list[str]:
+        return [info.filename for info in self.infos]
+
+    def find(self, part: str) -> str | None:
+        """The member name of ``part`` (OPC part names ignore case), None when absent."""
+        wanted = part.lower()
+        return next((n for n in self.names() if n.lower() == wanted), None)
+
+    def read(self, part: str) -> bytes | None:
+        name = self.find(part)
+        if name is None:
+            return None
+        if name not in self._parts:
+            try:
+                with zipfile.ZipFile(io.BytesIO(self.data)) as archive:
+                    self._parts[name] = archive.read(name)
+            except (zipfile.BadZipFile, OSError, EOFError) as exc:
+                raise ExcelError(f"{self.path}: damaged workbook, the part {name} cannot be read ({exc})") from exc
+        return self._parts[name]
+
+    def relationships(self, part: str) -> list[etree._Element]:
+        data = self.read(rels_part(part))
+        return [] if data is None else list(_parse(data, rels_part(part), self.path).iter(_P + "Relationship"))
+
+
+def _refuse(path, why: str) -> WorkbookContentError:
+    return WorkbookContentError(f"{path}: --in-place refused, {why}; the file is unchanged. Write the results to "
+                                "a new workbook with -o OUTPUT.xlsx instead")
+
+
+def open_package(path) -> Package:
+    """The workbook at ``path`` as a package that :func:`write_results_in_place` can edit, or a refusal.
+
+    :class:`ExcelError` for a file that is not a workbook (or is damaged),
+    :class:`WorkbookContentError` for a workbook that cannot be edited
+    without losing something (module docstring).
+    """
+    path = Path(path)
+    data = path.read_bytes()
+    if data.startswith(_OLE_MAGIC):
+        if "EncryptionInfo".encode("utf-16-le") in data:
+            raise _refuse(path, "the workbook is encrypted (it has a password to open); bearingheat cannot "
+                                "edit it without the password")
+        raise ExcelError(f"{path}: not a readable Excel workbook (an old binary .xls file, not .xlsx)")
+    try:
+        with zipfile.ZipFile(io.BytesIO(data)) as archive:
+            infos = archive.infolist()
+    except (zipfile.BadZipFile, OSError, EOFError) as exc:
+        raise ExcelError(f"{path}: not a readable Excel workbook ({exc})") from exc
+    lowered = [i.filename.lower() for i in infos]
+    if len(set(lowered)) != len(lowered):
+        raise ExcelError(f"{path}: damaged workbook, a part appears twice in the ZIP file")
+    package = Package(path, data, infos, "")
+    if package.find("[Content_Types].xml") is None or package.find("_rels/.rels") is None:
+        raise ExcelError(f"{path}: not a readable Excel workbook (no [Content_Types].xml or _rels/.rels)")
+    office = [r for r in package.relationships("") if r.get("Type", "").endswith("/officeDocument")]
+    if not office:
+        raise ExcelError(f"{path}: not a readable Excel workbook (no workbook part)")
+    if office[0].get("Type", "").startswith(STRICT):
+        raise _refuse(path, "the workbook is saved as Strict Open XML, which bearingheat does not edit (save it "
+                            "in Excel as 'Excel Workbook (*.xlsx)')")
+    package.workbook = _resolve("", office[0].get("Target", ""))
+    if package.read(package.workbook) is None:
+        raise ExcelError(f"{path}: not a readable Excel workbook (its workbook part {package.workbook} is missing)")
+    if any(n.startswith("_xmlsignatures/") for n in lowered):
+        raise _refuse(path, "the workbook is digitally signed and any change would break its signature")
+    if any(n.startswith(posixpath.dirname(package.workbook).lower() + "/revisions/") for n in lowered):
+        raise _refuse(path, "the workbook is a shared workbook with a change history (xl/revisions), which an edit "
+                            "outside Excel would not be part of")
+    root = _parse(package.read(package.workbook), package.workbook, path)
+    if root.tag != _M + "workbook":
+        raise _refuse(path, f"its workbook part is not SpreadsheetML Transitional ({etree.QName(root).namespace})")
+    sharing = root.find(_M + "fileSharing")
+    if sharing is not None and (sharing.get("reservationPassword") or sharing.get("hashValue")):
+        raise _refuse(path, "the workbook has a password to modify (write reservation), which bearingheat does "
+                            "not bypass")
+    return package
+
+
+@dataclass
+class InPlaceResult:
+    """What :func:`write_results_in_place` did: the results sheet, whether it replaced one, and notes."""
+
+    sheet: str
+    replaced: bool
+    notes: list[str]
+    changed_parts: list[str]
+
+
+@dataclass
+class _Sheet:
+    name: str
+    sheet_id: int
+    rid: str
+    part: str
+    element: etree._Element
+
+
+class _Workbook:
+    """``xl/workbook.xml`` with its relationships, edited in memory."""
+
+    def __init__(self, package: Package):
+        self.package = package
+        self.part = package.workbook
+        self.root = _parse(package.read(self.part), self.part, package.path)
+        self.rels_name = rels_part(self.part)
+        rels_data = package.read(self.rels_name)
+        if rels_data is None:
+            raise ExcelError(f"{package.path}: damaged workbook, {self.rels_name} is missing")
+        self.rels = _parse(rels_data, self.rels_name, package.path)
+        self.targets = {r.get("Id"): (r.get("Type", ""), _resolve(self.part, r.get("Target", "")))
+                        for r in self.rels.iter(_P + "Relationship") if r.get("TargetMode") != "External"}
+        sheets = self.root.find(_M + "sheets")
+        if sheets is None:
+            raise ExcelError(f"{package.path}: damaged workbook, {self.part} lists no sheets")
+        self.sheets_element = sheets
+        self.sheets = [_Sheet(s.get("name", ""), int(s.get("sheetId", "0")), s.get(_R + "id", ""),
+                              self.targets.get(s.get(_R + "id", ""), ("", ""))[1], s)
+                       for s in sheets.iter(_M + "sheet")]
+        self.changed = self.rels_changed = False
+
+    def child(self, name: str, create: bool = False) -> etree._Element | None:
+        found = self.root.find(_M + name)
+        if found is not None or not create:
+            return found
+        element = etree.Element(_M + name)
+        later = _WORKBOOK_ORDER[_WORKBOOK_ORDER.index(name) + 1:]
+        for index, node in enumerate(self.root):
+            if isinstance(node.tag, str) and etree.QName(node).localname in later:
+                self.root.insert(index, element)
+                break
+        else:
+            self.root.append(element)
+        return element
+
+    def names(self) -> list[tuple[str, str]]:
+        names = self.child("definedNames")
+        if names is None:
+            return []
+        return [(n.get("name", ""), n.text or "") for n in names.iter(_M + "definedName")
+                if n.get("localSheetId") is None]
+
+    def set_marks(self, k: int, results: str, source: str, stale: list[int]) -> None:
+        """Write the marks of pair ``k`` (results sheet, input sheet); drop the marks of pairs in ``stale``."""
+        names = self.child("definedNames", create=True)
+        wanted = {f"{RESULTS_MARK}{k}": mark_value(results), f"{INPUT_MARK}{k}": mark_value(source)}
+        drop = {f"{m}{j}".lower() for j in stale for m in (RESULTS_MARK, INPUT_MARK)}
+        for element in list(names.iter(_M + "definedName")):
+            if element.get("localSheetId") is not None:
+                continue
+            name = element.get("name", "")
+            if name.lower() in drop:
+                names.remove(element)
+                self.changed = True
+            elif name in wanted:
+                if element.text != wanted[name]:
+                    element.text = wanted.pop(name)
+                    self.changed = True
+                else:
+                    wanted.pop(name)
+        for name, value in wanted.items():
+            element = etree.SubElement(names, _M + "definedName", {"name": name, "hidden": "1"})
+            element.text = value
+            self.changed = True
+
+    def full_calc_on_load(self) -> None:
+        calc = self.child("calcPr", create=True)
+        if calc.get("fullCalcOnLoad") not in ("1", "true"):
+            calc.set("fullCalcOnLoad", "1")
+            self.changed = True
+
+    def relationship(self, kind: str) -> tuple[str, str] | None:
+        """(rId, part) of the first relationship of type ``.../kind``."""
+        for rid, (rel_type, target) in self.targets.items():
+            if rel_type.endswith("/" + kind):
+                return rid, target
+        return None
+
+    def add_relationship(self, kind: str, part: str) -> str:
+        used = {r.get("Id") for r in self.rels.iter(_P + "Relationship")}
+        number = 1 + max([int(m.group(1)) for u in used if (m := re.fullmatch(r"rId(\d+)", u or ""))] + [0])
+        rid = f"rId{number}"
+        target = posixpath.relpath(part, posixpath.dirname(self.part) or ".")
+        etree.SubElement(self.rels, _P + "Relationship", {"Id": rid, "Type": f"{REL}/{kind}", "Target": target})
+        self.targets[rid] = (f"{REL}/{kind}", part)
+        self.rels_changed = True
+        return rid
+
+    def remove_relationship(self, rid: str) -> None:
+        for element in self.rels.iter(_P + "Relationship"):
+            if element.get("Id") == rid:
+                self.rels.remove(element)
+                self.rels_changed = True
+                return
+
+    def add_sheet(self, name: str, part: str) -> _Sheet:
+        rid = self.add_relationship("worksheet", part)
+        sheet_id = 1 + max([s.sheet_id for s in self.sheets] + [0])
+        element = etree.SubElement(self.sheets_element, _M + "sheet",
+                                   {"name": name, "sheetId": str(sheet_id), _R + "id": rid})
+        self.changed = True
+        sheet = _Sheet(name, sheet_id, rid, part, element)
+        self.sheets.append(sheet)
+        return sheet
+
+
+class _ContentTypes:
+    def __init__(self, package: Package):
+        self.name = package.find("[Content_Types].xml")
+        self.root = _parse(package.read(self.name), self.name, package.path)
+        self.changed = False
+
+    def override(self, part: str, content_type: str) -> None:
+        for element in self.root.iter(_C + "Override"):
+            if element.get("PartName", "").lstrip("/").lower() == part.lower():
+                return
+        etree.SubElement(self.root, _C + "Override", {"PartName": "/" + part, "ContentType": content_type})
+        self.changed = True
+
+    def remove(self, part: str) -> None:
+        for element in list(self.root.iter(_C + "Override")):
+            if element.get("PartName", "").lstrip("/").lower() == part.lower():
+                self.root.remove(element)
+                self.changed = True
+
+
+def _new_sheet_part(package: Package, workbook_part: str) -> str:
+    folder = posixpath.join(posixpath.dirname(workbook_part), "worksheets")
+    taken = {n.lower() for n in package.names()}
+    k = 1
+    while posixpath.join(folder, f"sheet{k}.xml").lower() in taken:
+        k += 1
+    return posixpath.join(folder, f"sheet{k}.xml")
+
+
+def _kept_setup(package: Package, sheet: _Sheet, input_sheet: str) -> tuple[str, str]:
+    """(print setup and protection XML, sheetPr children) of a results sheet about to be replaced, or a refusal
+    naming what it holds that the replacement would lose."""
+    lost = []
+    for relationship in package.relationships(sheet.part):
+        kind = relationship.get("Type", "").rsplit("/", 1)[-1]
+        if kind not in _KEPT_RELATIONSHIPS:
+            what = _WHAT.get(kind, kind)
+            if what not in lost:
+                lost.append(what)
+    if lost:
+        raise _refuse(package.path, f"sheet {sheet.name!r} (bearingheat's results of {input_sheet!r}) now holds "
+                                    f"{', '.join(lost)} that replacing it would lose; move them to another sheet "
+                                    "or delete the sheet, then run again")
+    data = package.read(sheet.part)
+    if data is None:
+        return "", ""
+    root = _parse(data, sheet.part, package.path)
+    kept = {etree.QName(child).localname: etree.tostring(child, encoding="unicode", with_tail=False)
+            for child in root if isinstance(child.tag, str) and etree.QName(child).localname in _KEPT_SHEET_ELEMENTS}
+    if kept:
+        kept.setdefault("pageMargins", DEFAULT_MARGINS)
+    setup = "".join(kept[name] for name in _KEPT_SHEET_ELEMENTS if name in kept)
+    sheet_pr = root.find(_M + "sheetPr")
+    setup_pr = sheet_pr.find(_M + "pageSetUpPr") if sheet_pr is not None else None
+    return setup, etree.tostring(setup_pr, encoding="unicode", with_tail=False) if setup_pr is not None else ""
+
+
+def _drop_from_calc_chain(data: bytes, sheet_id: int, where: str, path) -> bytes | None:
+    """The calc chain without the cells of sheet ``sheet_id`` (None: nothing is left; ``data``: nothing changed)."""
+    root = _parse(data, where, path)
+    cells = [c for c in root if isinstance(c.tag, str) and etree.QName(c).localname == "c"]
+    effective, current = [], None
+    for cell in cells:
+        current = int(cell.get("i")) if cell.get("i") is not None else current
+        effective.append(current)
+    if sheet_id not in effective:
+        return data
+    previous = None
+    for cell, sheet in zip(cells, effective):
+        if sheet == sheet_id:
+            root.remove(cell)
+            continue
+        if sheet != previous and cell.get("i") is None:
+            cell.set("i", str(sheet))
+        previous = sheet
+    return _xml(root) if any(s != sheet_id for s in effective) else None
+
+
+def write_results_in_place(package: Package, input_sheet: str, table, *, lock: WorkbookLock,
+                           units: dict[str, str] | None = None, formulas: dict | None = None,
+                           progress=None, placeholders=()) -> InPlaceResult:
+    """Write ``table`` as the results sheet of ``input_sheet`` into the workbook of ``package``.
+
+    The results sheet that bearingheat marked for ``input_sheet`` is replaced
+    (at its place, under its present name); without one a new sheet is added
+    at the end of the tabs (no other sheet moves, so macros that count
+    sheets keep working), named ``Results`` or ``<sheet> results``, or the
+    next free ``(2)`` name when a sheet of the designer's holds that name
+    (then a note says so); ``placeholders`` are sheets that hold nothing of
+    the designer's and may be filled although unmarked (the template's empty
+    'Results' sheet, :func:`bearingheat.io.excel.template.is_placeholder`).
+    ``lock`` (:func:`bearingheat.io.files.workbook_lock`) is checked just
+    before the file is replaced. Returns an :class:`InPlaceResult`.
+    """
+    workbook = _Workbook(package)
+    marks = read_marks(workbook.names())
+    present = {s.name.casefold() for s in workbook.sheets}
+    name, replace, note = choose_results_sheet([s.name for s in workbook.sheets], marks, input_sheet,
+                                               placeholders=placeholders)
+    protection = workbook.child("workbookProtection")
+    if not replace and protection is not None and protection.get("lockStructure") in ("1", "true"):
+        raise _refuse(package.path, "the workbook's structure is protected (Review > Protect Workbook), so no sheet "
+                                    "may be added to it")
+    changes: dict[str, bytes] = {}
+    removed: set[str] = set()
+    types = _ContentTypes(package)
+    styles_rel = workbook.relationship("styles")
+    styles_part = styles_rel[1] if styles_rel else posixpath.join(posixpath.dirname(workbook.part), "styles.xml")
+    styles = StyleSheet(package.read(styles_part) if styles_rel else None)
+    page_setup = sheet_pr = ""
+    if replace:
+        sheet = next(s for s in workbook.sheets if s.name == name)
+        page_setup, sheet_pr = _kept_setup(package, sheet, input_sheet)
+        if package.find(sheet.part) is None:  # a sheet entry whose part is missing: the part is written anew
+            types.override(sheet.part, WORKSHEET_TYPE)
+        chain = workbook.relationship("calcChain")
+        if chain is not None and package.read(chain[1]) is not None:
+            data = package.read(chain[1])
+            new = _drop_from_calc_chain(data, sheet.sheet_id, chain[1], package.path)
+            if new is None:
+                removed.add(package.find(chain[1]))
+                workbook.remove_relationship(chain[0])
+                types.remove(chain[1])
+            elif new is not data:
+                changes[chain[1]] = new
+    else:
+        sheet = workbook.add_sheet(name, _new_sheet_part(package, workbook.part))
+        types.override(sheet.part, WORKSHEET_TYPE)
+    xml = results_sheet_xml(table, styles.index, units=units, formulas=formulas, page_setup=page_setup,
+                            sheet_pr=sheet_pr, progress=progress, title=name)
+    changes[sheet.part] = xml
+    current = next((k for k, (results, source) in marks.items()
+                    if results is not None and results.casefold() == name.casefold() and source == input_sheet), None)
+    stale = [k for k, (results, _) in marks.items() if results is None or results.casefold() not in present]
+    k = current if current is not None else 1 + max(list(marks) + [0])
+    workbook.set_marks(k, name, input_sheet, stale)
+    workbook.full_calc_on_load()
+    if styles.changed:
+        changes[styles_part] = styles.to_bytes()
+        if styles_rel is None:
+            workbook.add_relationship("styles", styles_part)
+            types.override(styles_part, STYLES_TYPE)
+    if workbook.changed:
+        changes[workbook.part] = _xml(workbook.root)
+    if workbook.rels_changed:
+        changes[workbook.rels_name] = _xml(workbook.rels)
+    if types.changed:
+        changes[types.name] = _xml(types.root)
+    written = _write(package, changes, removed, lock)
+    return InPlaceResult(name, replace, [note] if note else [], written)
+
+
+def _zip_info(info: zipfile.ZipInfo, compress_type: int | None = None) -> zipfile.ZipInfo:
+    copy = zipfile.ZipInfo(info.filename, info.date_time)
+    copy.compress_type = info.compress_type if compress_type is None else compress_type
+    copy.external_attr = info.external_attr
+    copy.create_system = info.create_system
+    copy.comment = info.comment
+    copy.file_size = info.file_size
+    return copy
+
+
+def _write(package: Package, changes: dict[str, bytes], removed: set[str], lock: WorkbookLock) -> list[str]:
+    """Write the edited package over the workbook (atomically, after the lock's last check); the parts written."""
+    existing = {package.find(part): data for part, data in changes.items() if package.find(part) is not None}
+    new = {part: data for part, data in changes.items() if package.find(part) is None}
+    names = package.names()
+    sheets = [i for i, n in enumerate(names) if re.search(r"worksheets/[^/]+\.xml$", n)]
+    insert_after = sheets[-1] if sheets else len(names) - 1
+
+    def write(temp: Path) -> None:
+        with zipfile.ZipFile(io.BytesIO(package.data)) as source, \
+                zipfile.ZipFile(temp, "w", zipfile.ZIP_DEFLATED, allowZip64=True) as target:
+            target.comment = source.comment
+            for index, info in enumerate(package.infos):
+                if info.filename in removed:
+                    pass
+                elif info.filename in existing:
+                    target.writestr(_zip_info(info, zipfile.ZIP_DEFLATED), existing[info.filename])
+                else:
+                    with source.open(info) as src, target.open(_zip_info(info), "w",
+                                                               force_zip64=info.file_size >= 1 << 31) as dst:
+                        shutil.copyfileobj(src, dst, 1 << 20)
+                if index == insert_after:
+                    for part, data in new.items():
+                        stamp = zipfile.ZipInfo(part, info.date_time if info.date_time[0] >= 1980
+                                                else (1980, 1, 1, 0, 0, 0))
+                        stamp.compress_type = zipfile.ZIP_DEFLATED
+                        target.writestr(stamp, data)
+        lock.check_unchanged()
+
+    try:
+        atomic_write(package.path, write)
+    except (zipfile.BadZipFile, EOFError) as exc:
+        raise ExcelError(f"{package.path}: damaged workbook, a part cannot be read ({exc})") from exc
+    return sorted(set(existing) | set(new) | removed)

@@ -1,0 +1,161 @@
+"""The results sheet as SpreadsheetML, written directly (the worksheet part of ``calc --in-place``).
+
+:func:`results_sheet_xml` renders the same sheet as
+:func:`bearingheat.io.excel.writer.fill_sheet` (a header row, a units row,
+one styled row per support, frozen panes, column widths, the tab colour),
+as the bytes of a worksheet part (ECMA-376 Part 1, 18.3 ``worksheet``):
+
+- text is an inline string (``t="inlineStr"``), so ``sharedStrings.xml``
+  stays untouched, and text is always text: a name beginning with ``=``
+  gets Excel's quote prefix and never becomes a formula;
+- numbers are written with Python's shortest round-trip repr; a missing,
+  NaN or infinite value is an empty cell;
+- formulas of ``calc --formulas`` are ``<f>`` elements without a cached
+  value, and the workbook is told to recalculate on load
+  (:mod:`bearingheat.io.excel.package`).
+"""
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Callable
+from xml.sax.saxutils import escape
+
+import numpy as np
+import pandas as pd
+from openpyxl.utils import get_column_letter
+
+from bearingheat.io.excel import style as st
+from bearingheat.io.excel.writer import sheet_layout
+
+__all__ = ["results_sheet_xml", "xstring", "TAB_COLOR", "DEFAULT_MARGINS"]
+
+TAB_COLOR = "FF44546A"
+_HEAD = ('<?xml version="1.0" encoding="UTF-8" standalone="yes"?>\n'
+         '<worksheet xmlns="http://schemas.openxmlformats.org/spreadsheetml/2006/main" '
+         'xmlns:r="http://schemas.openxmlformats.org/officeDocument/2006/relationships">')
+_INVALID = re.compile("[\x00-\x08\x0b\x0c\x0d\x0e-\x1f\ufffe\uffff]")
+_ESCAPE_LOOKALIKE = re.compile(r"_(x[0-9A-Fa-f]{4}_)")
+#: text a spreadsheet would read as a formula when the cell is edited
+_FORMULA_START = ("=", "+", "-", "@")
+DEFAULT_MARGINS = '<pageMargins left="0.7" right="0.7" top="0.75" bottom="0.75" header="0.3" footer="0.3"/>'
+
+
+def xstring(text: str) -> str:
+    """Text as an ST_Xstring in XML: '_xHHHH_' look-alikes and characters XML 1.0 cannot hold escaped, then &<>.
+
+    >>> xstring("a<b & _x0041_ \\x01")
+    'a&lt;b &amp; _x005F_x0041_ _x0001_'
+    """
+    text = _ESCAPE_LOOKALIKE.sub(r"_x005F_\1", text)
+    text = _INVALID.sub(lambda m: f"_x{ord(m.group()):04X}_", text)
+    text = "".join(c if not 0xD800 <= ord(c) <= 0xDFFF else "\ufffd" for c in text)
+    return escape(text)
+
+
+def _number(value) -> str | None:
+    if isinstance(value, (bool, np.bool_)):
+        return None
+    if isinstance(value, (int, np.integer)):
+        return str(int(value))
+    value = float(value)
+    if not math.isfinite(value):
+        return None
+    text = repr(value)
+    return text[:-2] if text.endswith(".0") else text
+
+
+def _cell(ref: str, value, style: int, quote_style: Callable[[], int]) -> str:
+    """One <c> element: number, boolean, inline text or an empty styled cell."""
+    if value is None or value is pd.NA or value is pd.NaT:
+        return f'<c r="{ref}" s="{style}"/>'
+    if isinstance(value, (bool, np.bool_)):
+        return f'<c r="{ref}" s="{style}" t="b"><v>{int(bool(value))}</v></c>'
+    if isinstance(value, (int, float, np.integer, np.floating)):
+        number = _number(value)
+        if number is None:
+            return f'<c r="{ref}" s="{style}"/>'
+        return f'<c r="{ref}" s="{style}"><v>{number}</v></c>'
+    text = str(value)
+    if text.startswith(_FORMULA_START) and len(text) > 1:
+        style = quote_style()
+    space = ' xml:space="preserve"' if text != text.strip() or "\n" in text else ""
+    return f'<c r="{ref}" s="{style}" t="inlineStr"><is><t{space}>{xstring(text)}</t></is></c>'
+
+
+def results_sheet_xml(table: pd.DataFrame, style_index: Callable[..., int], *, units: dict[str, str] | None = None,
+                      formulas: dict[tuple[str, int], str] | None = None, page_setup: str = "",
+                      sheet_pr: str = "", progress=None, title: str = "Results") -> bytes:
+    """The worksheet part of a results sheet.
+
+    ``style_index(name, quote=False)`` gives the cellXfs index of a named
+    style of :mod:`bearingheat.io.excel.style`
+    (:meth:`bearingheat.io.excel.stylesheet.StyleSheet.index`).
+    ``formulas`` maps (column, row position) to formula text ('=...').
+    ``page_setup`` is the print setup XML kept from the sheet this one
+    replaces (printOptions, pageMargins, pageSetup, headerFooter), ``sheet_pr``
+    extra children of sheetPr (pageSetUpPr). ``progress``: an object with
+    start, update, finish.
+    """
+    formulas = formulas or {}
+    layout = sheet_layout(table, units)
+    n_cols, n_rows = len(layout.headers), len(table)
+    letters = [get_column_letter(c) for c in range(1, n_cols + 1)]
+    styles = {name: style_index(name) for name in set(layout.styles) | set(st.STATUS.values())
+              | {st.FORMULA, st.RESULT, st.HEADER_RESULT, st.UNITS_RESULT}}
+    quoted: dict[str, int] = {}
+
+    def quote_of(name: str) -> Callable[[], int]:
+        def index() -> int:
+            if name not in quoted:
+                quoted[name] = style_index(name, quote=True)
+            return quoted[name]
+        return index
+
+    columns = list(table.columns)
+    status_col = columns.index("status") if "status" in columns else None
+    formula_cols = {columns.index(header): header for header, _ in formulas}
+    last = f"{letters[-1]}{n_rows + 2}" if n_cols else "A1"
+    parts = [_HEAD, f'<sheetPr><tabColor rgb="{TAB_COLOR}"/>{sheet_pr}</sheetPr>', f'<dimension ref="A1:{last}"/>',
+             '<sheetViews><sheetView workbookViewId="0"><pane ySplit="2" topLeftCell="A3" activePane="bottomLeft" '
+             'state="frozen"/><selection pane="bottomLeft" activeCell="A3" sqref="A3"/></sheetView></sheetViews>',
+             '<sheetFormatPr defaultRowHeight="15"/>']
+    if n_cols:
+        parts.append("<cols>" + "".join(f'<col min="{c}" max="{c}" width="{w:g}" customWidth="1"/>'
+                                        for c, w in enumerate(layout.widths, start=1)) + "</cols>")
+    parts.append("<sheetData>")
+    header_style, units_style = styles[st.HEADER_RESULT], styles[st.UNITS_RESULT]
+    for row, texts, style in ((1, layout.headers, header_style), (2, layout.units, units_style)):
+        name = st.HEADER_RESULT if row == 1 else st.UNITS_RESULT
+        cells = "".join(_cell(f"{letters[c]}{row}", texts[c], style, quote_of(name)) for c in range(n_cols))
+        parts.append(f'<row r="{row}">{cells}</row>')
+    if progress is not None:
+        progress.start(n_rows, f"writing {title}")
+    column_styles = [styles[name] for name in layout.styles]
+    column_quotes = [quote_of(name) for name in layout.styles]
+    for position in range(n_rows):
+        row = position + 3
+        cells = []
+        for c in range(n_cols):
+            ref = f"{letters[c]}{row}"
+            if c in formula_cols and (formula_cols[c], position) in formulas:
+                text = formulas[(formula_cols[c], position)].removeprefix("=")
+                cells.append(f'<c r="{ref}" s="{styles[st.FORMULA]}"><f>{escape(text)}</f></c>')
+                continue
+            value = layout.values[c][position]
+            if isinstance(value, (float, np.floating)) and math.isnan(value):
+                value = None
+            if c == status_col:
+                name = st.STATUS.get(str(value), st.RESULT)
+                cells.append(_cell(ref, value, styles[name], quote_of(name)))
+            else:
+                cells.append(_cell(ref, value, column_styles[c], column_quotes[c]))
+        parts.append(f'<row r="{row}">{"".join(cells)}</row>')
+        if progress is not None and position % 500 == 0:
+            progress.update(position)
+    if progress is not None:
+        progress.finish()
+    parts.append("</sheetData>")
+    parts.append(page_setup or DEFAULT_MARGINS)
+    parts.append("</worksheet>")
+    return "".join(parts).encode("utf-8")

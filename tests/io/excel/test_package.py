@@ -1,0 +1,225 @@
+"""``calc --in-place`` as a surgical edit of the package: the parts it writes, the marks, text, the calc chain."""
+from __future__ import annotations
+
+import io
+import os
+import re
+import shutil
+import zipfile
+
+import openpyxl
+import pytest
+from excel_helpers import EXAMPLE_XLSX, gearbox_rows, make_workbook
+from workbook_corpus import CASES, edit_package, results_part
+
+from bearingheat.cli import main
+from bearingheat.errors import ExcelError
+from bearingheat.io.console import Progress
+from bearingheat.io.excel.libreoffice import convert, soffice
+from bearingheat.io.excel.ownership import choose_results_sheet, read_marks, sheet_of_mark
+from bearingheat.io.excel.sheetxml import xstring
+from bearingheat.io.excel.workbook import calc_workbook
+
+
+pytestmark = pytest.mark.filterwarnings("ignore:.*extension is not supported:UserWarning")
+
+
+def part(path, name) -> bytes:
+    with zipfile.ZipFile(path) as archive:
+        return archive.read(name)
+
+
+def names(path) -> list[str]:
+    with zipfile.ZipFile(path) as archive:
+        return archive.namelist()
+
+
+def test_results_are_inline_strings_and_the_shared_strings_stay(tmp_path):
+    path = CASES["rich_text"](tmp_path).path  # XlsxWriter: shared strings with rich text runs
+    strings = part(path, "xl/sharedStrings.xml")
+    run = calc_workbook(path, in_place=True)
+    assert part(path, "xl/sharedStrings.xml") == strings
+    sheet = part(path, results_part(path, run.results_sheet)).decode()
+    assert 't="s"' not in sheet and 't="inlineStr"' in sheet
+    assert '<pane ySplit="2" topLeftCell="A3" activePane="bottomLeft" state="frozen"/>' in sheet
+    assert '<tabColor rgb="FF44546A"/>' in sheet
+
+
+def test_the_results_sheet_is_marked_by_hidden_names(tmp_path):
+    path = make_workbook(tmp_path / "book.xlsx", sheet="Shaft 2")
+    calc_workbook(path, in_place=True)
+    workbook = part(path, "xl/workbook.xml").decode()
+    assert ('<definedName name="_bearingheat_results_1" hidden="1">\'Shaft 2 results\'!$1:$1048576</definedName>'
+            in workbook)
+    assert '<definedName name="_bearingheat_input_1" hidden="1">\'Shaft 2\'!$1:$1048576</definedName>' in workbook
+    assert re.search(r'<calcPr[^>]*fullCalcOnLoad="1"', workbook)
+    book = openpyxl.load_workbook(path)
+    marks = read_marks((n, d.attr_text) for n, d in book.defined_names.items())
+    assert marks == {1: ("Shaft 2 results", "Shaft 2")}
+    assert book.defined_names["_bearingheat_results_1"].hidden
+
+
+def test_marks_and_names():
+    assert sheet_of_mark("=Supports!$1:$1048576") == "Supports"
+    assert sheet_of_mark("'Loss 2024'!$1:$1048576") == "Loss 2024"
+    assert sheet_of_mark("#REF!") is None and sheet_of_mark("") is None and sheet_of_mark("42") is None
+    marks = {1: ("Results", "Supports"), 2: ("Other results", "Other")}
+    assert choose_results_sheet(["Supports", "Results", "Other"], marks, "Supports") == ("Results", True, None)
+    assert choose_results_sheet(["Supports", "Results (3)"], {1: ("Results (3)", "Supports")}, "Supports") == (
+        "Results (3)", True, None)
+    name, replace, note = choose_results_sheet(["Supports", "RESULTS"], {}, "Supports")
+    assert (name, replace) == ("Results (2)", False) and note.startswith("sheet 'RESULTS' is not a results sheet")
+    # a mark that names the input sheet as its results sheet is never followed
+    assert choose_results_sheet(["Supports"], {1: ("Supports", "Supports")}, "Supports")[:2] == ("Results", False)
+
+
+def test_text_is_never_a_formula_on_the_results_sheet(tmp_path):
+    rows = gearbox_rows()
+    rows[0][0] = "=1+1"
+    rows[1][0] = "=HYPERLINK(\"http://evil.example\",\"x\")"
+    source = make_workbook(tmp_path / "book.xlsx", rows=rows)
+    workbook = openpyxl.load_workbook(source)
+    for cell in (workbook["Supports"]["A3"], workbook["Supports"]["A4"]):
+        cell.data_type = "s"  # apostrophe-quoted text, as a designer types '=1+1
+        cell.quotePrefix = True
+    workbook.save(source)
+    copy = tmp_path / "copy.xlsx"
+    calc_workbook(source, copy)
+    calc_workbook(source, in_place=True)
+    for path in (copy, source):
+        ws = openpyxl.load_workbook(path)["Results"]
+        cells = [ws.cell(3, 2), ws.cell(4, 2)]
+        assert [c.value for c in cells] == ["=1+1", "=HYPERLINK(\"http://evil.example\",\"x\")"]
+        assert [c.data_type for c in cells] == ["s", "s"]
+        assert all(c.quotePrefix for c in cells)
+
+
+def test_a_copy_keeps_a_sheet_named_results_too(tmp_path):
+    case = CASES["user_sheet_named_results"](tmp_path)
+    run = calc_workbook(case.path, tmp_path / "copy.xlsx")
+    assert run.results_sheet == "Results (2)" and run.notes[0].startswith("sheet 'Results' is not a results sheet")
+    copy = openpyxl.load_workbook(tmp_path / "copy.xlsx")
+    assert copy["Results"]["A1"].value == "my own results, typed by hand"
+    assert calc_workbook(tmp_path / "copy.xlsx", in_place=True).results_sheet == "Results (2)"  # marked in the copy
+
+
+def test_xstring_escapes():
+    assert xstring("a\rb\x00c") == "a_x000D_b_x0000_c"
+    assert xstring("_x0041_ and _x41_") == "_x005F_x0041_ and _x41_"
+    assert xstring("tab\tand\nnewline & <b>") == "tab\tand\nnewline &amp; &lt;b&gt;"
+
+
+def test_a_second_run_adds_no_style_and_keeps_the_workbook_part(tmp_path):
+    path = make_workbook(tmp_path / "book.xlsx")
+    calc_workbook(path, in_place=True)
+    styles, workbook = part(path, "xl/styles.xml"), part(path, "xl/workbook.xml")
+    calc_workbook(path, in_place=True, formulas=True)
+    calc_workbook(path, in_place=True)
+    assert part(path, "xl/styles.xml") == styles and part(path, "xl/workbook.xml") == workbook
+    names_ = openpyxl.load_workbook(path).named_styles
+    assert "bearingheat result" in names_ and "bearingheat status ok" in names_
+
+
+def test_a_new_results_sheet_goes_last_and_no_sheet_moves(tmp_path):
+    path = make_workbook(tmp_path / "book.xlsx")
+    workbook = openpyxl.load_workbook(path)
+    workbook.create_sheet("Notes")["A1"] = "keep me"
+    workbook.save(path)
+    run = calc_workbook(path, in_place=True)
+    book = openpyxl.load_workbook(path)
+    assert book.sheetnames == ["Supports", "Notes", "Results"] and run.results_sheet == "Results"
+    assert book["Results"].cell(3, 1).style == "bearingheat result"
+    status = [c.value for c in book["Results"][1]].index("status") + 1
+    assert book["Results"].cell(3, status).style == "bearingheat status ok"
+
+
+def test_the_template_placeholder_is_filled(tmp_path):
+    path = tmp_path / "example.xlsx"
+    shutil.copy(EXAMPLE_XLSX, path)
+    run = calc_workbook(path, in_place=True)
+    assert run.results_sheet == "Results" and run.notes == []
+    assert openpyxl.load_workbook(path).sheetnames == ["Supports", "Results", "Instructions", "Lists"]
+    # once the designer typed into it, an unmarked sheet is theirs
+    other = make_workbook(tmp_path / "typed.xlsx")
+    workbook = openpyxl.load_workbook(other)
+    typed = workbook.create_sheet("Results")
+    typed.append(["row", "id"])
+    typed.append(["-", "-"])
+    typed["A3"] = "bearingheat calc fills this sheet"
+    typed["B4"] = "my note"
+    workbook.save(other)
+    assert calc_workbook(other, in_place=True).results_sheet == "Results (2)"
+
+
+def test_calc_chain_entries_of_the_replaced_sheet_are_dropped(tmp_path):
+    case = CASES["results_sheet_with_formulas_in_the_calc_chain"](tmp_path)
+    calc_workbook(case.path, in_place=True)
+    chain = part(case.path, "xl/calcChain.xml").decode()
+    assert re.findall(r"<c [^>]*/>", chain) == ['<c r="A1" i="2"/>']
+    # only cells of the results sheet: the part goes, with its relationship and content type
+    calc_workbook(case.path, in_place=True, formulas=True)
+    edit_package(case.path, {"xl/calcChain.xml": lambda d: re.sub(rb'<c r="A1" i="2"/>', b'<c r="M3" i="3"/>', d)})
+    calc_workbook(case.path, in_place=True)
+    assert "xl/calcChain.xml" not in names(case.path)
+    assert b"calcChain" not in part(case.path, "xl/_rels/workbook.xml.rels")
+    assert b"calcChain" not in part(case.path, "[Content_Types].xml")
+
+
+def test_in_place_through_a_symbolic_link_writes_the_real_file(tmp_path):
+    real = make_workbook(tmp_path / "real.xlsx")
+    link = tmp_path / "link.xlsx"
+    link.symlink_to(real)
+    calc_workbook(link, in_place=True)
+    assert link.is_symlink() and "Results" in openpyxl.load_workbook(real).sheetnames
+
+
+def test_progress_while_writing_in_place(tmp_path):
+    rows = gearbox_rows()
+    path = make_workbook(tmp_path / "big.xlsx", rows=[rows[i % len(rows)] for i in range(2100)])
+
+    class Terminal(io.StringIO):
+        def isatty(self):
+            return True
+
+    stream = Terminal()
+    calc_workbook(path, in_place=True, progress=Progress(stream=stream))
+    assert "\rreading Supports" in stream.getvalue() and "\rwriting Results" in stream.getvalue()
+
+
+def test_command_line_in_place_keeps_a_sheet_named_results(tmp_path, capsys):
+    case = CASES["user_sheet_named_results"](tmp_path)
+    mine = part(case.path, "xl/worksheets/sheet2.xml")
+    assert main(["calc", str(case.path), "--in-place"]) == 0
+    assert part(case.path, "xl/worksheets/sheet2.xml") == mine
+    assert openpyxl.load_workbook(case.path).sheetnames == ["Supports", "Results", "Results (2)"]
+    assert "Results (2)" in capsys.readouterr().out
+
+
+def test_command_line_refusal_leaves_the_file(tmp_path, capsys):
+    case = CASES["refused_digitally_signed"](tmp_path)
+    before = case.path.read_bytes()
+    assert main(["calc", str(case.path), "--in-place"]) == 2
+    assert "the workbook is digitally signed" in capsys.readouterr().err
+    assert case.path.read_bytes() == before
+
+
+def test_a_damaged_workbook_is_an_excel_error(tmp_path):
+    case = CASES["refused_damaged_part"](tmp_path)
+    with pytest.raises(ExcelError, match="damaged workbook, the part xl/workbook.xml cannot be read"):
+        calc_workbook(case.path, in_place=True)
+
+
+@pytest.mark.integration
+def test_libreoffice_reads_the_results_written_in_place(tmp_path):
+    if soffice() is None:
+        if os.environ.get("CI") == "true":
+            pytest.fail("CI=true but LibreOffice (soffice) is not installed")
+        pytest.skip("LibreOffice (soffice) is not installed")
+    case = CASES["validation_and_conditional_formats"](tmp_path)
+    run = calc_workbook(case.path, in_place=True)
+    (converted,) = convert([case.path], "xlsx", tmp_path / "lo")
+    ws = openpyxl.load_workbook(converted, data_only=True)["Results"]
+    header = [c.value for c in ws[1]]
+    mr = [ws.cell(r, header.index("MR") + 1).value for r in range(3, 3 + len(run.result))]
+    assert mr == pytest.approx(list(run.result["MR [N*mm]"]), rel=1e-12)
+    assert [ws.cell(r, 2).value for r in range(3, 3 + len(run.result))] == list(run.result["id"])
