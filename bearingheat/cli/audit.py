@@ -6,13 +6,13 @@ import sys
 from pathlib import Path
 
 from bearingheat.analysis.audit import (REFERENCE_SPEED_COLUMNS, audit_coefficients, audit_reference_speeds,
-                                        series_deviation_summary)
+                                        classify_reference_speeds)
 from bearingheat.calc.contract import parse_header
 from bearingheat.cli import UsageError, add_csv_arguments, add_force_argument
 from bearingheat.errors import AuditError
 from bearingheat.io.files import check_outputs
-from bearingheat.io.reports.audit import (coefficient_lines, reference_speed_lines, write_coefficients,
-                                          write_reference_speeds)
+from bearingheat.io.reports.audit import (REFERENCE_SPEED_FILES, coefficient_lines, reference_speed_lines,
+                                          write_coefficients, write_reference_speeds)
 from bearingheat.io.tables import read_table
 
 HELP = "fit f0, f1 (f2) to measured torque with 95-percent intervals; audit n_thr against a catalogue list"
@@ -29,12 +29,17 @@ list can also be given with --reference-speeds.
 2. Catalogue list (DATA or --reference-speeds has a published thermal reference
    speed column n_thr / n_B [1/min]): designation (or type and series), d, D, B,
    T [mm] (tapered), C0 [N]; optional family, series, shield name the series.
-   n_thr is computed from the tables for every bearing and the deviation is
-   reported per series; systematic deviations are flagged.
+   n_thr is computed from the tables for every bearing. Each series is pooled
+   over its shield and seal variants and split into size classes where only
+   some sizes deviate; groups that deviate systematically are flagged with the
+   f0 that reproduces their published speeds (95 % interval, allowing for the
+   catalogue's rounding of speeds); single misprinted rows are listed as
+   outliers.
 
-Output: tables on stdout; with --out DIR also coefficients.csv,
-reference_speeds.csv and reference_speed_series.csv (existing files are replaced
-only with --force; each file is written atomically).
+Output: tables on stdout (flagged groups and their implied f0 first); with
+--out DIR also coefficients.csv, or reference_speeds.csv (per bearing),
+reference_speed_series.csv (per series and size class) and reference_speeds.png
+(existing files are replaced only with --force; each file is written atomically).
 Exit codes: 0 done, nothing flagged; 1 done, something flagged or a bearing could
 not be fitted; 2 unusable input or a file fault.
 """
@@ -42,7 +47,7 @@ not be fitted; 2 unusable input or a file fault.
 
 #: the files each audit writes into --out DIR
 _FILES = {"coefficients": ("coefficients.csv",),
-          "speeds": ("reference_speeds.csv", "reference_speed_series.csv")}
+          "speeds": REFERENCE_SPEED_FILES}
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -90,13 +95,12 @@ def run(args: argparse.Namespace) -> int:
                 if out_dir:
                     write_coefficients(result, out_dir, force=True, inputs=inputs)  # checked above
             else:
-                rows = audit_reference_speeds(table, speed_column=args.speed_column)
-                summary = series_deviation_summary(rows)
-                for line in reference_speed_lines(summary):
+                speeds = classify_reference_speeds(audit_reference_speeds(table, speed_column=args.speed_column))
+                for line in reference_speed_lines(speeds):
                     say(line)
-                flagged |= bool(summary["systematic"].any())
+                flagged |= bool(len(speeds.flagged))
                 if out_dir:
-                    write_reference_speeds(rows, summary, out_dir, force=True, inputs=inputs)  # checked above
+                    write_reference_speeds(speeds, out_dir, force=True, inputs=inputs)  # checked above
     except AuditError as exc:
         raise UsageError(str(exc)) from exc
     return 1 if flagged else 0

@@ -7,20 +7,67 @@ from pathlib import Path
 
 import pandas as pd
 import pytest
+from PIL import Image
+from synthetic_catalogue import synthetic_catalogue
 from synthetic_torque import measured_set
 
 from bearingheat.cli import main
 
-HR1 = Path(__file__).resolve().parents[3] / "shared" / "data" / "hr1_2006_reference_speeds.csv"
+HR1 = Path(__file__).resolve().parents[2].parent / "shared" / "data" / "hr1_2006_reference_speeds.csv"
 
 
 def test_cli_reference_speeds(capsys, tmp_path):
     if not HR1.is_file():
-        pytest.skip(f"{HR1} is not present")
+        pytest.skip(f"{HR1} is not present: the HR 1 (2006) list is read from ../shared/data next to the repository")
     assert main(["audit", "--reference-speeds", str(HR1), "--out", str(tmp_path)]) == 1
     out = capsys.readouterr().out
     assert "systematic: tapered roller 330" in out
-    assert (tmp_path / "reference_speed_series.csv").is_file()
+    # the flagged groups and their implied f0 come first, before the outliers and the table of all groups
+    flagged = out.index("Flagged groups (7)")
+    assert flagged < out.index("Outliers") < out.index("All series and size classes:")
+    head = out[flagged:out.index("Outliers")]
+    for group, implied in (("deep groove ball 618 d 45-140 mm", "1.212 ["), ("tapered roller 313", "2.991 ["),
+                           ("tapered roller 320", "4.502 ["), ("tapered roller 330", "6.072 [")):
+        line = next(line for line in head.splitlines() if group in line)
+        assert implied in line, line
+    series = pd.read_csv(tmp_path / "reference_speed_series.csv", keep_default_na=False)
+    flagged_rows = series[series["systematic"].astype(str) == "True"]
+    assert sorted(zip(flagged_rows["series"].astype(str), flagged_rows["subgroup"])) == [
+        ("313", ""), ("320", ""), ("330", ""), ("331", ""), ("332", ""), ("60", "d 7-140 mm"),
+        ("618", "d 45-140 mm")]
+    assert (tmp_path / "reference_speeds.png").is_file()
+
+
+#: the columns reference_speed_series.csv has at least (issue 13)
+SERIES_COLUMNS = ["family", "series", "subgroup", "bearings", "median_deviation", "systematic", "f0_table",
+                  "f0_implied", "f0_implied_low", "f0_implied_high"]
+
+
+def test_cli_reference_speed_files(tmp_path, capsys):
+    source = tmp_path / "catalogue.csv"
+    synthetic_catalogue(f0_factor={("tapered roller 302", 0): 4.0 / 3.0}, misprints={"6208": 1.4}).to_csv(
+        source, index=False)
+    out_dir = tmp_path / "out"
+    out_dir.mkdir()
+    assert main(["audit", "--reference-speeds", str(source), "--out", str(out_dir)]) == 1
+    out = capsys.readouterr().out
+    assert out.index("Flagged groups (1)") < out.index("tapered roller 302") < out.index("Outliers (1)")
+    series = pd.read_csv(out_dir / "reference_speed_series.csv", keep_default_na=False)
+    assert list(series.columns[:4]) == ["group", "family", "series", "subgroup"]
+    assert set(SERIES_COLUMNS) <= set(series.columns)
+    row = series[series["group"] == "tapered roller 302"].iloc[0]
+    assert row["systematic"] and row["subgroup"] == "" and row["bearings"] == 31
+    assert float(row["f0_implied_low"]) <= 4.0 <= float(row["f0_implied_high"])
+    bearings = pd.read_csv(out_dir / "reference_speeds.csv", keep_default_na=False)
+    assert {"designation", "group", "subgroup", "variant", "deviation", "local_deviation", "outlier",
+            "f0_implied", "rounding_step"} <= set(bearings.columns)
+    assert list(bearings.loc[bearings["outlier"].astype(str) == "True", "designation"]) == ["6208"]
+    with Image.open(out_dir / "reference_speeds.png") as image:
+        assert image.size[0] == 1650                     # 11 in at 150 dpi
+        assert round(image.info["dpi"][0]) == 150
+    # the files are there: a second run refuses to replace them without --force, and replaces them with it
+    assert main(["audit", "--reference-speeds", str(source), "--out", str(out_dir)]) == 2
+    assert main(["audit", "--reference-speeds", str(source), "--out", str(out_dir), "--force", "-q"]) == 1
 
 
 def test_cli_coefficients(tmp_path, capsys):

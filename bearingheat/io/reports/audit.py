@@ -1,27 +1,36 @@
-"""What ``bearingheat audit`` writes: the audit tables as text and as CSV files.
+"""What ``bearingheat audit`` writes: the audit tables as text, CSV files and the reference speed figure.
 
 The coefficient audit (:func:`bearingheat.analysis.audit.audit_coefficients`)
-is printed as one table and written to ``coefficients.csv``; the reference
-speed audit (:func:`bearingheat.analysis.audit.audit_reference_speeds` and
-:func:`~bearingheat.analysis.audit.series_deviation_summary`) is printed per
-series with the rule and the systematic series, and written to
-``reference_speeds.csv`` (one row per bearing) and
-``reference_speed_series.csv`` (one row per series).
+is printed as one table and written to ``coefficients.csv``. The reference
+speed audit (:func:`bearingheat.analysis.audit.audit_reference_speeds`,
+grouped by :func:`~bearingheat.analysis.audit.classify_reference_speeds`)
+is printed with the flagged groups and their implied f0 first, then the
+outliers, then every group; it is written to ``reference_speeds.csv`` (one
+row per bearing: its group, deviation and outlier mark),
+``reference_speed_series.csv`` (one row per series and size class) and
+``reference_speeds.png`` (deviation against bore for every series, drawn
+with matplotlib's Figure API).
 """
 from __future__ import annotations
 
 from pathlib import Path
 
+import numpy as np
 import pandas as pd
 
-from bearingheat.analysis.audit import SYSTEMATIC_RULE
+from bearingheat.analysis.audit import SYSTEMATIC_RULE, ReferenceSpeedAudit
 from bearingheat.io.files import write_outputs
 from bearingheat.io.tables import escape_formulas
 
-__all__ = ["coefficient_lines", "reference_speed_lines", "write_coefficients", "write_reference_speeds"]
+__all__ = ["coefficient_lines", "reference_speed_lines", "write_coefficients", "write_reference_speeds",
+           "draw_reference_speeds", "REFERENCE_SPEED_FILES"]
 
 #: at most this many excluded rows are listed under the coefficient table
 SHOWN_EXCLUDED = 20
+#: the files of the reference speed audit
+REFERENCE_SPEED_FILES = ("reference_speeds.csv", "reference_speed_series.csv", "reference_speeds.png")
+#: resolution of the figure [dots per inch]
+FIGURE_DPI = 150
 
 
 def coefficient_lines(result: pd.DataFrame) -> list[str]:
@@ -32,16 +41,67 @@ def coefficient_lines(result: pd.DataFrame) -> list[str]:
     return lines
 
 
-def reference_speed_lines(summary: pd.DataFrame) -> list[str]:
-    """The per-series summary of the reference speed audit as text lines, with the rule and the flagged series."""
-    shown = summary.copy()
-    for col in ("median", "mean", "min", "max"):
-        shown[col] = (shown[col] * 100).map(lambda v: f"{v:+.1f} %" if pd.notna(v) else "-")
-    lines = ["Thermal reference speed from the tables against the published value, per series "
-             "(deviation = tables/published - 1):",
-             shown.to_string(index=False),
-             f"rule: {SYSTEMATIC_RULE}"]
-    lines += [f"systematic: {key}" for key in summary.loc[summary["systematic"], "series_key"]]
+def _percent(value: float) -> str:
+    return f"{value * 100:+.1f} %" if pd.notna(value) else "-"
+
+
+def _f0(value: float) -> str:
+    return f"{value:.3f}" if pd.notna(value) else "-"
+
+
+def _f1(value: float) -> str:
+    return f"{value:.2e}" if pd.notna(value) else "-"
+
+
+def reference_speed_lines(audit: ReferenceSpeedAudit) -> list[str]:
+    """The reference speed audit as text lines: flagged groups with their implied f0, outliers, every group, rule."""
+    groups = audit.groups
+    lines = ["Thermal reference speed from the tables against the published value "
+             "(deviation = n_thr(tables)/n_thr(published) - 1).",
+             f"sigma = {audit.scale:.2%} (robust scale of the median deviations of the {audit.consistent} series "
+             f"that agree with the tables); threshold = +/-{audit.threshold:.2%}."]
+    flagged = audit.flagged
+    if len(flagged):
+        lines.append(f"Flagged groups ({len(flagged)}), with the f0 that reproduces their published speeds "
+                     "(median, 95 % interval; f1 holding f0 as the alternative):")
+        shown = pd.DataFrame({
+            "group": flagged["group"].to_numpy(),
+            "bearings": flagged["bearings"].to_numpy(),
+            "variants": flagged["variants"].to_numpy(),
+            "median": flagged["median_deviation"].map(_percent).to_numpy(),
+            "f0 table": flagged["f0_table"].map(_f0).to_numpy(),
+            "f0 implied [95 %]": [f"{_f0(r['f0_implied'])} [{_f0(r['f0_implied_low'])}, "
+                                  f"{_f0(r['f0_implied_high'])}]" for _, r in flagged.iterrows()],
+            "f1 table": flagged["f1_table"].map(_f1).to_numpy(),
+            "f1 implied [95 %]": [f"{_f1(r['f1_implied'])} [{_f1(r['f1_implied_low'])}, "
+                                  f"{_f1(r['f1_implied_high'])}]" for _, r in flagged.iterrows()],
+        })
+        lines += ["  " + line for line in shown.to_string(index=False).splitlines()]
+        lines += [f"  note: {g}: {n}" for g, n in zip(flagged["group"], flagged["note"]) if n]
+    else:
+        lines.append("Flagged groups: none.")
+    outliers = audit.outliers
+    if len(outliers):
+        lines.append(f"Outliers ({len(outliers)}): single bearings off their own series (misprints?), left out of "
+                     "the group statistics:")
+        shown = pd.DataFrame({
+            "designation": outliers["designation"].to_numpy(), "group": outliers["group"].to_numpy(),
+            "published": outliers["n_thr_published"].map(lambda v: f"{v:.0f}").to_numpy(),
+            "tables": outliers["n_thr_tables"].map(lambda v: f"{v:.0f}").to_numpy(),
+            "deviation": outliers["deviation"].map(_percent).to_numpy(),
+            "vs neighbours": outliers["local_deviation"].map(_percent).to_numpy()})
+        lines += ["  " + line for line in shown.to_string(index=False).splitlines()]
+    table = pd.DataFrame({
+        "group": groups["group"].to_numpy(),
+        "bearings": groups["bearings"].to_numpy(), "outliers": groups["outliers"].to_numpy(),
+        "median": groups["median_deviation"].map(_percent).to_numpy(),
+        "min": groups["min_deviation"].map(_percent).to_numpy(),
+        "max": groups["max_deviation"].map(_percent).to_numpy(),
+        "systematic": groups["systematic"].to_numpy(),
+        "f0 table": groups["f0_table"].map(_f0).to_numpy(),
+        "f0 implied": groups["f0_implied"].map(_f0).to_numpy()})
+    lines += ["All series and size classes:", table.to_string(index=False), f"rule: {SYSTEMATIC_RULE}"]
+    lines += [f"systematic: {g}" for g in flagged["group"]]
     return lines
 
 
@@ -54,9 +114,81 @@ def write_coefficients(result: pd.DataFrame, out_dir, *, force: bool = False, in
     return write_outputs(out_dir, {"coefficients.csv": _csv(result)}, force=force, inputs=inputs)
 
 
-def write_reference_speeds(rows: pd.DataFrame, summary: pd.DataFrame, out_dir, *, force: bool = False,
-                           inputs=()) -> list[Path]:
-    """``reference_speeds.csv`` and ``reference_speed_series.csv`` in ``out_dir``, atomically; existing files
-    are replaced only with ``force``."""
-    return write_outputs(out_dir, {"reference_speeds.csv": _csv(rows), "reference_speed_series.csv": _csv(summary)},
-                         force=force, inputs=inputs)
+def write_reference_speeds(audit: ReferenceSpeedAudit, out_dir, *, force: bool = False, inputs=()) -> list[Path]:
+    """``reference_speeds.csv``, ``reference_speed_series.csv`` and ``reference_speeds.png`` in ``out_dir``,
+    each atomically; existing files are replaced only with ``force``."""
+    writers = {"reference_speeds.csv": _csv(audit.bearings), "reference_speed_series.csv": _csv(audit.groups),
+               "reference_speeds.png": lambda path: draw_reference_speeds(audit, path)}
+    return write_outputs(out_dir, writers, force=force, inputs=inputs)
+
+
+def draw_reference_speeds(audit: ReferenceSpeedAudit, path, *, dpi: int = FIGURE_DPI) -> None:
+    """Deviation against bore for every series, one panel per family, written as a PNG (150 dpi).
+
+    Series and size classes that agree with the tables are grey; flagged
+    groups are coloured and named in the legend with their implied f0;
+    outliers are red crosses labelled with their designation; the band is
+    ± the systematic threshold.
+    """
+    from matplotlib.figure import Figure
+    from matplotlib.ticker import FixedLocator, NullFormatter, ScalarFormatter
+
+    bearings = audit.bearings[np.isfinite(audit.bearings["deviation"].to_numpy(dtype=float))]
+    families = list(dict.fromkeys(bearings["family"]))
+    if not families:
+        families = ["(no bearing computed)"]
+    fig = Figure(figsize=(11.0, 2.9 * len(families) + 0.6), dpi=dpi, layout="constrained")
+    axes = fig.subplots(len(families), 1, squeeze=False, sharex=True)[:, 0]
+    flagged = audit.flagged
+    palette = ["tab:blue", "tab:orange", "tab:green", "tab:purple", "tab:brown", "tab:pink", "tab:olive", "tab:cyan"]
+    colour = 0
+    for ax, family in zip(axes, families):
+        mine = bearings[bearings["family"] == family]
+        ax.axhspan(-audit.threshold * 100, audit.threshold * 100, color="0.9", zorder=0,
+                   label=f"±{audit.threshold:.1%}: agrees with the tables")
+        ax.axhline(0.0, color="0.5", lw=0.6, zorder=1)
+        agreeing = []
+        for group, rows in mine.groupby("group", sort=False):
+            rows = rows.sort_values("d")
+            use = rows[~rows["outlier"]]
+            flag = flagged[flagged["group"] == group]
+            per_bore = use.groupby("d")["deviation"].median() * 100
+            if len(flag):
+                f = flag.iloc[0]
+                c = palette[colour % len(palette)]
+                colour += 1
+                label = (f"{f['series']} {f['subgroup']}".strip() + f": {f['median_deviation']:+.1%}, f0 "
+                         f"{f['f0_table']:.2f} → {f['f0_implied']:.2f} [{f['f0_implied_low']:.2f}, "
+                         f"{f['f0_implied_high']:.2f}]" + ("" if f["single_f0"] else ", spread: no single f0"))
+                ax.plot(per_bore.index, per_bore.to_numpy(), "-o", color=c, lw=1.8, ms=3.5, label=label, zorder=3)
+            else:
+                agreeing.append(str(rows["series"].iloc[0]) + (f" {rows['subgroup'].iloc[0]}"
+                                                               if rows["subgroup"].iloc[0] else ""))
+                ax.plot(per_bore.index, per_bore.to_numpy(), "-", color="0.55", lw=0.9, zorder=2,
+                        label="_nolegend_")
+        if agreeing:
+            ax.plot([], [], "-", color="0.55", lw=0.9, label="agree: " + ", ".join(agreeing))
+        out = mine[mine["outlier"]]
+        if len(out):
+            ax.plot(out["d"], out["deviation"] * 100, "x", color="red", ms=7, mew=1.8, zorder=4,
+                    label="outlier (left out)")
+            for k, (_, r) in enumerate(out.sort_values("d").iterrows()):
+                ax.annotate(r["designation"], (r["d"], r["deviation"] * 100), textcoords="offset points",
+                            xytext=((5, 5), (5, -12), (5, 15))[k % 3], fontsize=7, color="red",
+                            bbox={"boxstyle": "square,pad=0.1", "fc": "white", "ec": "none", "alpha": 0.8})
+        ax.set_xscale("log")
+        ax.xaxis.set_major_locator(FixedLocator([1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 2000]))
+        ax.xaxis.set_major_formatter(ScalarFormatter())
+        ax.xaxis.set_minor_formatter(NullFormatter())
+        ax.tick_params(labelbottom=True)
+        ax.set_title(f"{family}", fontsize=10, loc="left")
+        ax.set_ylabel("deviation of n_θr [%]", fontsize=9)
+        ax.grid(True, which="both", color="0.85", lw=0.5)
+        ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)
+        if len(mine):
+            low, high = mine["deviation"].min() * 100, mine["deviation"].max() * 100
+            pad = max(1.0, 0.08 * (high - low))
+            ax.set_ylim(min(low, -audit.threshold * 100) - pad, max(high, audit.threshold * 100) + pad)
+    axes[-1].set_xlabel("bore d [mm]")
+    fig.suptitle("Thermal reference speed: n_θr(tables)/n_θr(published) − 1 against bore, per series", fontsize=11)
+    fig.savefig(path, format="png")
