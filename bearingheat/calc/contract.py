@@ -162,7 +162,8 @@ CONTRACT: tuple[Column, ...] = (
     _in("n_G", "1/min", "limiting speed: n_per is capped at it (warning)", "thermal"),
     _in("n_thr_catalogue", "1/min", "catalogue n_thr; n_per then uses it instead of the computed one", "thermal"),
     _in("n_per_method", "", "how n_per is found: exact (root of the heat balance) or approximation (the "
-        "catalogue's formula for f_n); blank: the table's --n-per-method, default exact", "thermal"),
+        "catalogue's formula for f_n); blank: the table's --n-per-method, default exact", "thermal",
+        template=("-", 14)),
     _in("oil", "", "SKF model: mineral (default), synthetic or transmission_fluid (sets mu_EHL)", "skf"),
     _in("mu_sl", "1", "SKF model: fixed sliding friction coefficient (the catalogue example: 0.05 at full film)",
         "skf"),

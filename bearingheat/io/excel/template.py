@@ -41,7 +41,8 @@ __all__ = ["TEMPLATE_COLUMNS", "LISTS", "PLACEHOLDER", "is_placeholder", "build_
 TEMPLATE_COLUMNS = [(c.name, c.template[0], c.required, c.template[1], c.meaning)
                     for c in contract.template_columns()]
 #: the drop-down lists: (contract column, title on the hidden Lists sheet), in the Lists sheet's column order
-LISTS = (("type", "bearing type"), ("lubrication", "lubrication"), ("arrangement", "arrangement"))
+LISTS = (("type", "bearing type"), ("lubrication", "lubrication"), ("arrangement", "arrangement"),
+         ("n_per_method", "n_per method"))
 #: rows of the Supports sheet that carry the drop-down lists and the input style (row 3 onwards)
 LIST_ROWS = 10000
 #: the two example rows of the template (taken from examples/gearbox_shaft.csv)

@@ -77,3 +77,16 @@ def test_example_holds_the_gearbox_csv():
             np.testing.assert_array_equal(values.to_numpy(dtype=float), csv[header].to_numpy(dtype=float))
         else:
             assert values.tolist() == csv[header].tolist()
+
+
+def test_template_offers_the_n_per_method():
+    """The designer chooses how n_per is found in the template too (exact root or catalogue approximation)."""
+    workbook = openpyxl.load_workbook(TEMPLATE_XLSX)
+    ws = workbook["Supports"]
+    headers = [c.value for c in ws[1]]
+    letter = openpyxl.utils.get_column_letter(headers.index("n_per_method") + 1)
+    lists = {str(dv.sqref).split(":")[0]: dv.formula1 for dv in ws.data_validations.dataValidation}
+    source = lists[f"{letter}3"]
+    column = source.split("!")[1].split(":")[0].replace("$", "")[0]
+    values = [c.value for c in workbook["Lists"][column][1:] if c.value]
+    assert values == ["exact", "approximation"]
