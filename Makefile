@@ -15,8 +15,8 @@ $(STAMP): pyproject.toml
 
 demo: $(STAMP)
 	mkdir -p out
-	$(BH) calc examples/gearbox_shaft.csv -o out/gearbox_shaft_results.csv
-	$(BH) calc spreadsheets/gearbox_shaft_example.xlsx -o out/gearbox_shaft_results.xlsx --formulas
+	$(BH) calc examples/gearbox_shaft.csv -o out/gearbox_shaft_results.csv --force
+	$(BH) calc spreadsheets/gearbox_shaft_example.xlsx -o out/gearbox_shaft_results.xlsx --formulas --force
 	@echo "Excel results: out/gearbox_shaft_results.xlsx, sheet 'Results' (live formulas: change n, Fr or nu on sheet 'Supports')"
 
 test: $(STAMP)
