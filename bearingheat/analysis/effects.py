@@ -40,7 +40,8 @@ from scipy import optimize
 
 from bearingheat.calc.friction import evaluate_catalogue_model
 from bearingheat.calc.messages import Labels
-from bearingheat.calc.supports import KEY_INPUTS, NUMBER_INPUTS, SupportArrays, build_support_arrays, number_column
+from bearingheat.calc.models import support_arrays_of
+from bearingheat.calc.supports import SupportArrays
 from bearingheat.kernels import friction
 from bearingheat.kernels.effects import (VISCOSITY_TEMPERATURE_COEFFICIENT, drag_loss_torque, heated_total_torque,
                                          seal_drag_torque)
@@ -64,13 +65,11 @@ __all__ = [
 def catalogue_arrays(frame: pd.DataFrame) -> tuple[SupportArrays, np.ndarray]:
     """The support arrays of a catalogue-unit frame, and the rows whose bearing did not resolve.
 
-    Built by the one builder, :func:`bearingheat.calc.supports.build_support_arrays`
-    (bearings resolved once per distinct key); a row whose designation,
+    Built as calc builds them (:func:`bearingheat.calc.models.support_arrays_of`,
+    bearings resolved once per distinct key); a row whose designation,
     lubrication or arrangement cannot be used is flagged in the mask.
     """
-    keys = frame[[c for c in KEY_INPUTS if c in frame.columns]]
-    supports = build_support_arrays(keys if len(keys.columns) else pd.DataFrame(index=frame.index),
-                                    {c: number_column(frame, c) for c in NUMBER_INPUTS})
+    supports = support_arrays_of(frame)
     unresolved = ~np.broadcast_to(supports.resolved, (supports.size,)) | \
         (np.broadcast_to(supports.error, (supports.size,)) != "")
     return supports, unresolved

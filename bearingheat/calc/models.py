@@ -38,7 +38,7 @@ from bearingheat.kernels.thermal import friction_heat, friction_power
 
 __all__ = ["FrictionModel", "FrictionPower", "MODELS", "DEFAULT_MODEL", "get_model", "compute_supports",
            "RESULT_UNITS", "M2_REPORT_UNITS", "PLAIN_REPORT_UNITS", "MODEL_REPORT_UNITS", "EXTRA_INPUTS",
-           "model_inputs"]
+           "model_inputs", "support_arrays_of"]
 
 Evaluation = Callable[[SupportArrays, Labels, "F2Chart | None"], "tuple[dict[str, np.ndarray], list[Problem]]"]
 
@@ -117,13 +117,23 @@ MODEL_REPORT_UNITS = {name: contract.output_units()[name] for name in SKF_RESULT
 
 
 def model_inputs(frame: pd.DataFrame) -> dict:
-    """The model-specific inputs a frame has (catalogue units; text as stripped strings or None)."""
+    """The model-specific inputs a frame has (catalogue units; text cells as they are, the model cleans them:
+    a numeric column may hold 6000.0 for the edition '6000')."""
     out = {}
     for name in EXTRA_INPUTS:
         if name in frame.columns:
             unit = contract.column(name).unit
-            out[name] = np.array(text_column(frame, name), dtype=object) if unit == "" else number_column(frame, name)
+            out[name] = frame[name].to_numpy(dtype=object) if unit == "" else number_column(frame, name)
     return out
+
+
+def support_arrays_of(frame: pd.DataFrame) -> SupportArrays:
+    """The support arrays of a frame in catalogue units (contract names), with the models' extra inputs."""
+    keys = frame[[c for c in KEY_INPUTS if c in frame.columns]]
+    supports = build_support_arrays(keys if len(keys.columns) else pd.DataFrame(index=frame.index),
+                                    {c: number_column(frame, c) for c in NUMBER_INPUTS})
+    supports.extra = model_inputs(frame)
+    return supports
 
 
 def get_model(name: str) -> FrictionModel:
@@ -189,10 +199,7 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
     get_model(model)
     labels = labels or Labels()
     n_rows = len(frame)
-    keys = frame[[c for c in KEY_INPUTS if c in frame.columns]]
-    numbers = {c: number_column(frame, c) for c in NUMBER_INPUTS}
-    supports = build_support_arrays(keys if len(keys.columns) else pd.DataFrame(index=frame.index), numbers)
-    supports.extra = model_inputs(frame)
+    supports = support_arrays_of(frame)
     names, model_errors = _row_models(frame, model)
     plain = supports.plain
     catalogue_rows = np.array([MODELS[m].catalogue_keys if m in MODELS else True for m in names], dtype=bool)
@@ -275,10 +282,7 @@ class FrictionPower:
         self.closed = np.array([MODELS[m].speed_exponent is not None if m in MODELS else True for m in names])
         self.generic: dict[str, tuple[np.ndarray, SupportArrays]] = {}
         if not self.closed.all():
-            keys = frame[[c for c in KEY_INPUTS if c in frame.columns]]
-            supports = build_support_arrays(keys if len(keys.columns) else pd.DataFrame(index=frame.index),
-                                            {c: number_column(frame, c) for c in NUMBER_INPUTS})
-            supports.extra = model_inputs(frame)
+            supports = support_arrays_of(frame)
             for name in sorted(set(names[~self.closed])):
                 rows = np.flatnonzero(names == name)
                 self.generic[name] = (rows, supports.take(rows))

@@ -21,13 +21,13 @@ import numpy as np
 import pandas as pd
 
 from bearingheat.calc.messages import Labels, Problem, at
-from bearingheat.calc.supports import SupportArrays, number_column
+from bearingheat.calc.supports import SupportArrays
 from bearingheat.catalogue import skf as catalogue
 from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.errors import BearingheatError
 from bearingheat.kernels import skf
 
-__all__ = ["RESULTS", "EXTRA_INPUTS", "extra_inputs", "evaluate_skf_model"]
+__all__ = ["RESULTS", "EXTRA_INPUTS", "evaluate_skf_model"]
 
 #: the results of the SKF model, in the order calc writes them (catalogue units)
 RESULTS = ("G_rr", "G_sl", "M_rr", "M_sl", "M_seal", "M_drag", "phi_ish", "phi_rs", "phi_bl", "mu_sl", "M_start",
@@ -88,21 +88,6 @@ class _Extra:
         if np.ndim(value) == 0:
             return np.full(self.size, _to_float(value))
         return pd.to_numeric(pd.Series(list(value)), errors="coerce").to_numpy(dtype=float)
-
-
-def extra_inputs(frame: pd.DataFrame) -> dict[str, np.ndarray]:
-    """The columns of :data:`EXTRA_INPUTS` that a table (in catalogue units) has, as ``extra`` of the evaluation.
-
-    >>> frame = pd.DataFrame({"designation": ["22208 E"], "oil_level": ["2.5"], "skf_edition": [6000.0]})
-    >>> extra = extra_inputs(frame)
-    >>> sorted(extra), extra["oil_level"].tolist(), _Extra(extra, 1).text("skf_edition").tolist()
-    (['designation', 'oil_level', 'skf_edition'], [2.5], ['6000'])
-    """
-    out = {}
-    for name, (unit, _meaning, _default) in EXTRA_INPUTS.items():
-        if name in frame.columns:
-            out[name] = frame[name].to_numpy(dtype=object) if unit == "" else number_column(frame, name)
-    return out
 
 
 def _clean(value, upper):

@@ -113,6 +113,14 @@ def _convert_column(values: pd.Series, header: str, unit_text: str | None, targe
     return converted, factor
 
 
+def _text_cell(value) -> str:
+    """A text cell as typed: a whole number that a numeric column made a float (62.0 of a column of series
+    with a blank cell) reads as the integer it was ('62')."""
+    if isinstance(value, (float, np.floating)) and float(value).is_integer():
+        return str(int(value))
+    return str(value).strip()
+
+
 def _blank(value) -> bool:
     return value is None or (isinstance(value, float) and math.isnan(value)) or str(value).strip() == ""
 
@@ -140,7 +148,7 @@ def to_catalogue_units(table: pd.DataFrame, *, units: dict[str, str] | None = No
         target = known[name]
         display = f"{name} [{unit_text}]" if unit_text not in (None, "", "-", "1") else name
         if target == "":
-            columns[name] = [None if _blank(v) else str(v).strip() for v in table[header]]
+            columns[name] = [None if _blank(v) else _text_cell(v) for v in table[header]]
             continue
         columns[name], factor = _convert_column(table[header], display, unit_text, target, cell, name, errors,
                                                 warnings)

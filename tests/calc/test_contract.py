@@ -88,3 +88,13 @@ def test_unreadable_header():
     with pytest.raises(InputError) as exc:
         contract.parse_header("a] b")
     assert str(exc.value) == "column 'a] b': cannot read the header; write it as 'name [unit]'"
+
+
+def test_a_text_column_read_as_numbers_keeps_its_text():
+    """A CSV column of series with a blank cell comes as floats (62.0); it still names series 62."""
+    rows = pd.DataFrame({"type": ["deep_groove_ball", "deep_groove_ball"], "series": [62.0, None],
+                         "d [mm]": [25, 25], "D [mm]": [52, 52], "C0 [kN]": [7.8, 7.8], "lubrication": ["grease"] * 2,
+                         "n [1/min]": [3000, 3000], "Fr [kN]": [2, 2], "nu [mm^2/s]": [12, 12]})
+    out = calc(rows)
+    assert out["status"].iat[0] == "ok"
+    assert out["message"].iat[1] == "series: missing; give type and series together"

@@ -11,7 +11,8 @@ import pandas as pd
 import pytest
 
 from bearingheat.calc.messages import Labels
-from bearingheat.calc.skf import EXTRA_INPUTS, RESULTS, evaluate_skf_model, extra_inputs
+from bearingheat.calc.models import model_inputs
+from bearingheat.calc.skf import EXTRA_INPUTS, RESULTS, evaluate_skf_model
 from bearingheat.calc.supports import NUMBER_INPUTS, build_support_arrays
 
 #: headers of the new columns, fixed here so that the messages do not depend on the column contract
@@ -316,7 +317,7 @@ def test_results_are_float_arrays_of_the_rows_length():
 
 def test_extra_inputs_of_a_table():
     frame = pd.DataFrame([{**EXAMPLE, "skf_edition": 6000.0, "VM": "3e-05", "id": "A"}])
-    extra = extra_inputs(frame)
+    extra = model_inputs(frame)
     assert "id" not in extra and "d" not in extra
     assert extra["VM"].tolist() == [3e-05]
     keys = frame[["designation", "lubrication"]]

@@ -78,3 +78,10 @@ def test_the_unit_aware_api_runs_the_skf_model():
     with pytest.raises(bh.FrictionInputError) as exc:
         bh.friction_torque("22208 E", model="skf", **args, model_inputs={"f2": 0.01})
     assert str(exc.value).startswith("model_inputs: 'f2' is not an input of this model; it reads oil, mu_sl, mu_bl")
+
+
+def test_a_numeric_edition_column_is_read_as_the_edition():
+    """A CSV column of editions with a blank cell comes as floats (6000.0); it still names edition 6000."""
+    out = calc(pd.DataFrame([{**EXAMPLE, "skf_edition": 6000.0}, {**EXAMPLE, "skf_edition": None}]), model="skf")
+    assert out["status"].tolist() == ["ok", "ok"]
+    assert out["MR [N*mm]"].iat[0] == pytest.approx(331.075, abs=1e-3)
