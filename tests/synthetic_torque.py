@@ -122,3 +122,25 @@ def measured_set(effect: str, seed: int, designations=None, noise=None, repeats=
     table["M [N*mm]"] = measured
     noise_rms = float(np.sqrt(np.mean((measured - truth) ** 2)))
     return table, noise_rms, sigma
+
+
+#: widths B [mm] (T of the tapered bearing) for the SKF model, which needs them
+WIDTHS = {"6205": 15, "6208": 18, "6310": 27, "6004": 12, "7206-B": 16, "30206-A": 16, "NU208-E": 18,
+          "NU206-E": 16}
+
+
+def model_set(model: str, seed: int, *, designations=("6205", "6208", "NU208-E", "30206-A"), sigma=0.05,
+              f0_scale=1.0):
+    """Measured torque made with one friction model ('schaeffler' or 'skf') on circulating oil, with
+    multiplicative log-normal noise of ``sigma``; ``f0_scale`` scales the catalogue model's M0 (a fitted f0)."""
+    rng = np.random.default_rng(seed)
+    table = grid(list(designations), rng).drop(columns=["T_oil [degC]", "t [h]"])
+    table["lubrication"] = "circulating_oil"
+    table["B [mm]"] = table["designation"].map(WIDTHS)
+    table["T [mm]"] = np.where(table["designation"].str.startswith("3"), 17.25, np.nan)
+    out = calc(table, model=model)
+    assert (out["status"] != "error").all(), out.loc[out["status"] == "error", "message"].tolist()
+    torque = out["MR [N*mm]"].to_numpy() + (f0_scale - 1.0) * out["M0 [N*mm]"].to_numpy() \
+        if model == "schaeffler" else out["MR [N*mm]"].to_numpy()
+    table["M [N*mm]"] = torque * np.exp(rng.normal(0.0, sigma, len(table)))
+    return table

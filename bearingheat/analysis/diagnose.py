@@ -57,12 +57,15 @@ __all__ = [
     "model_data",
     "diagnose",
     "diagnose_table",
+    "diagnose_measurements",
     "error_metrics",
     "regressors",
     "residual_structure",
     "key_regressor",
     "format_value",
     "bearing_keys",
+    "operating_point_groups",
+    "assign_folds",
     "FittedEffect",
 ]
 
@@ -217,14 +220,17 @@ def _load_column(results: pd.DataFrame, a: SupportArrays, rows: np.ndarray) -> n
 # ---------------------------------------------------------------------------------------------
 
 def error_metrics(measured, predicted) -> dict:
-    """RMSE [N·mm], MAPE [%], bias = mean(predicted − measured) [N·mm] and relative RMSE [1].
+    """RMSE [N·mm], MAPE [%], bias = mean(measured − predicted) [N·mm] and relative RMSE [1].
+
+    The residual is measured − model everywhere (reports, plots, bias): a
+    positive bias means the model predicts too little torque.
 
     >>> error_metrics([10.0, 20.0], [11.0, 18.0])
-    {'rmse': 1.5811388300841898, 'mape': 10.0, 'bias': -0.5, 'rel_rmse': 0.1}
+    {'rmse': 1.5811388300841898, 'mape': 10.0, 'bias': 0.5, 'rel_rmse': 0.1}
     """
     M = np.asarray(measured, dtype=float)
     P = np.asarray(predicted, dtype=float)
-    err = P - M
+    err = M - P
     return {
         "rmse": float(np.sqrt(np.mean(err ** 2))),
         "mape": float(np.mean(np.abs(err) / np.abs(M)) * 100.0),
@@ -347,19 +353,19 @@ class Diagnosis:
         }
 
 
-def _operating_point_groups(data: ModelData, user_group: np.ndarray | None) -> np.ndarray:
+def operating_point_groups(columns: list[np.ndarray], user_group: np.ndarray | None) -> np.ndarray:
+    """Group codes of rows: the user's ``group`` labels, or one group per distinct operating point (the rows'
+    values of ``columns``: bearing code, n, ν, Fr, Fa, T_oil; NaN counts as one value)."""
     if user_group is not None:
         return pd.factorize(pd.Series(user_group, dtype=object))[0]
-    columns = [data.bearing.astype(float)]
-    for values in (data.n, data.nu, data.Fr, data.Fa, data.T_oil):
-        rounded = np.where(np.isnan(values), -1.0, np.round(values, 6))
-        columns.append(rounded)
-    stacked = np.column_stack(columns)
+    stacked = np.column_stack([np.where(np.isnan(values), -1.0, np.round(values, 6))
+                               for values in (np.asarray(c, dtype=float) for c in columns)])
     _, codes = np.unique(stacked, axis=0, return_inverse=True)
     return codes.ravel()
 
 
-def _assign_folds(groups: np.ndarray, k: int, seed: int) -> np.ndarray:
+def assign_folds(groups: np.ndarray, k: int, seed: int) -> np.ndarray:
+    """Fold of each row: whole groups, shuffled with ``seed``, dealt round the ``k`` folds."""
     unique = np.unique(groups)
     rng = np.random.default_rng(seed)
     order = rng.permutation(len(unique))
@@ -381,11 +387,11 @@ def diagnose(data: ModelData, *, k: int = 5, seed: int = 0, groups: np.ndarray |
     N = len(data)
     if N < MIN_ROWS:
         raise DiagnoseError(f"diagnose needs at least {MIN_ROWS} usable rows of measured torque; got {N}")
-    groups = _operating_point_groups(data, groups)
+    groups = operating_point_groups([data.bearing, data.n, data.nu, data.Fr, data.Fa, data.T_oil], groups)
     n_groups = len(np.unique(groups))
     if n_groups < k:
         raise DiagnoseError(f"{k}-fold cross-validation needs at least {k} operating points (groups); got {n_groups}")
-    folds = _assign_folds(groups, k, seed)
+    folds = assign_folds(groups, k, seed)
     all_rows = np.arange(N)
     names = candidates or list(CANDIDATES)
     if "none" not in names:
@@ -438,7 +444,12 @@ def diagnose(data: ModelData, *, k: int = 5, seed: int = 0, groups: np.ndarray |
 def diagnose_table(table: pd.DataFrame, *, k: int = 5, seed: int = 0,
                    candidates: list[str] | None = None) -> Diagnosis:
     """Read a measured table (unit headers), run the catalogue model and :func:`diagnose` it."""
-    measured = read_measurements(table)
+    return diagnose_measurements(read_measurements(table), k=k, seed=seed, candidates=candidates)
+
+
+def diagnose_measurements(measured: MeasuredData, *, k: int = 5, seed: int = 0,
+                          candidates: list[str] | None = None) -> Diagnosis:
+    """Run the catalogue model on a measured table read by :func:`read_measurements` and :func:`diagnose` it."""
     data, rows, excluded = model_data(measured)
     user_groups = measured.group[rows] if measured.group is not None else None
     return diagnose(data, k=k, seed=seed, groups=user_groups, candidates=candidates, excluded=excluded)

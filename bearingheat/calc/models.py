@@ -59,6 +59,10 @@ class FrictionModel:
     None where the model has none. ``catalogue_keys`` says whether the model
     uses the catalogue model's resolution of designations (its errors are
     then the row's); a model with its own tables reports its own.
+    ``fit_terms(results) -> {name: torque [N*mm]}`` gives the terms of MR
+    that a fit to measured torque scales (the catalogue model's M0 and M1:
+    a fitted f0 and f1); MR minus their sum stays as computed
+    (:mod:`bearingheat.analysis.comparison`).
     """
 
     name: str
@@ -69,6 +73,7 @@ class FrictionModel:
     speed_exponent: float | None = None
     excel_formulas: dict[str, str] | None = None
     catalogue_keys: bool = True
+    fit_terms: Callable[[pd.DataFrame], dict[str, np.ndarray]] | None = None
 
 
 SCHAEFFLER = FrictionModel(
@@ -80,6 +85,7 @@ SCHAEFFLER = FrictionModel(
     evaluate=evaluate_catalogue_model,
     speed_exponent=2.0 / 3.0,
     excel_formulas=EXCEL_FORMULAS,
+    fit_terms=lambda results: {"M0": results["M0"].to_numpy(dtype=float), "M1": results["M1"].to_numpy(dtype=float)},
 )
 
 def _evaluate_skf(supports: SupportArrays, labels: Labels, f2_chart: F2Chart | None):
@@ -96,6 +102,9 @@ SKF = FrictionModel(
     outputs=SKF_RESULTS,
     evaluate=_evaluate_skf,
     catalogue_keys=False,
+    fit_terms=lambda results: {
+        "phi_ish*phi_rs*M_rr": (results["phi_ish"] * results["phi_rs"] * results["M_rr"]).to_numpy(dtype=float),
+        "M_sl": results["M_sl"].to_numpy(dtype=float)},
 )
 
 #: name -> model; the keys come from the models themselves

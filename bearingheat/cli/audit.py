@@ -5,12 +5,16 @@ import argparse
 import sys
 from pathlib import Path
 
+from bearingheat.analysis.comparison import ALL_MODELS, compare_models_table, model_names
 from bearingheat.analysis.audit import (REFERENCE_SPEED_COLUMNS, audit_coefficients, audit_reference_speeds,
                                         classify_reference_speeds)
 from bearingheat.calc.contract import parse_header
-from bearingheat.cli import UsageError, add_csv_arguments, add_force_argument
-from bearingheat.errors import AuditError
+from bearingheat.calc.models import DEFAULT_MODEL, MODELS
+from bearingheat.cli import UsageError, add_csv_arguments
+from bearingheat.cli.options import add_force, add_out_dir, add_quiet
+from bearingheat.errors import AuditError, DiagnoseError
 from bearingheat.io.files import check_outputs
+from bearingheat.io.reports.comparison import COMPARISON_FILES, comparison_lines, write_comparison
 from bearingheat.io.reports.audit import (REFERENCE_SPEED_FILES, coefficient_lines, reference_speed_lines,
                                           write_coefficients, write_reference_speeds)
 from bearingheat.io.tables import read_table
@@ -26,6 +30,12 @@ list can also be given with --reference-speeds.
    f0 and f1 (f1_a where f1 = f1_a*(P0/C0)^x; f2 where a cylindrical roller
    bearing with ribs carries Fa) are fitted by least squares on relative
    residuals, with 95 % confidence intervals; table values outside are flagged.
+   --model skf or --model all compares the friction models on the same rows:
+   each model's error as published and with its scalable terms fitted (the
+   catalogue model's M0 and M1, the SKF model's phi_ish*phi_rs*M_rr and M_sl),
+   held out by a grouped cross-validation, and which fits better and by how
+   much (models.md, models.json, models.png with --out-dir). The f0/f1 audit
+   is of the catalogue model's tables, so it runs when that model is selected.
 2. Catalogue list (DATA or --reference-speeds has a published thermal reference
    speed column n_thr / n_B [1/min]): designation (or type and series), d, D, B,
    T [mm] (tapered), C0 [N]; optional family, series, shield name the series.
@@ -37,7 +47,7 @@ list can also be given with --reference-speeds.
    outliers.
 
 Output: tables on stdout (flagged groups and their implied f0 first); with
---out DIR also coefficients.csv, or reference_speeds.csv (per bearing),
+--out-dir DIR also coefficients.csv, or reference_speeds.csv (per bearing),
 reference_speed_series.csv (per series and size class) and reference_speeds.png
 (existing files are replaced only with --force; each file is written atomically).
 Exit codes: 0 done, nothing flagged; 1 done, something flagged or a bearing could
@@ -45,8 +55,9 @@ not be fitted; 2 unusable input or a file fault.
 """
 
 
-#: the files each audit writes into --out DIR
+#: the files each audit writes into --out-dir DIR
 _FILES = {"coefficients": ("coefficients.csv",),
+          "models": COMPARISON_FILES,
           "speeds": REFERENCE_SPEED_FILES}
 
 
@@ -54,17 +65,25 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("input", metavar="DATA", nargs="?", help="measured torque or a catalogue list (.csv/.xlsx)")
     parser.add_argument("--reference-speeds", metavar="CSV", help="catalogue list with published n_thr")
     parser.add_argument("--speed-column", metavar="NAME", help="name of the published n_thr column")
-    parser.add_argument("--out", metavar="DIR", help="write the audit tables as CSV into DIR")
+    add_out_dir(parser, "the audit tables (CSV) and figures")
+    parser.add_argument("--model", choices=[*MODELS, ALL_MODELS], default=DEFAULT_MODEL,
+                        help=f"measured torque: friction model(s) to audit, one of {', '.join(MODELS)}, or "
+                             f"{ALL_MODELS} to compare them (default {DEFAULT_MODEL})")
+    parser.add_argument("--folds", type=int, default=5,
+                        help="k of the grouped k-fold cross-validation of the model comparison (default 5)")
     parser.add_argument("--sheet", metavar="NAME", help="sheet of an Excel workbook")
-    add_force_argument(parser, "the files in DIR")
+    add_force(parser, "the files in DIR")
     add_csv_arguments(parser)
-    parser.add_argument("-q", "--quiet", action="store_true", help="print nothing")
+    add_quiet(parser)
 
 
 def run(args: argparse.Namespace) -> int:
     if args.input is None and args.reference_speeds is None:
         raise UsageError("give DATA, --reference-speeds CSV, or both")
-    out_dir = Path(args.out) if args.out else None
+    if args.folds < 2:
+        raise UsageError(f"--folds: {args.folds} must be >= 2")
+    out_dir = Path(args.out_dir) if args.out_dir else None
+    models = model_names(args.model)
     say = (lambda text: None) if args.quiet else (lambda text: sys.stdout.write(text + "\n"))
     flagged = False
     speed_names = [args.speed_column] if args.speed_column else list(REFERENCE_SPEED_COLUMNS)
@@ -73,7 +92,10 @@ def run(args: argparse.Namespace) -> int:
         table = read_table(args.input, args.sheet, sep=args.sep, decimal=args.decimal)
         names = {parse_header(h)[0] for h in table.columns}
         if "M" in names:
-            jobs.append(("coefficients", table))
+            if DEFAULT_MODEL in models:
+                jobs.append(("coefficients", table))
+            if models != (DEFAULT_MODEL,):
+                jobs.append(("models", table))
         elif names & set(speed_names):
             jobs.append(("speeds", table))
         else:
@@ -94,6 +116,16 @@ def run(args: argparse.Namespace) -> int:
                 flagged |= bool((result["flag"] != "").any() or (result["status"] != "ok").any())
                 if out_dir:
                     write_coefficients(result, out_dir, force=True, inputs=inputs)  # checked above
+            elif kind == "models":
+                try:
+                    comparison = compare_models_table(table, args.model, k=args.folds)
+                except DiagnoseError as exc:
+                    raise AuditError(str(exc)) from exc
+                for line in comparison_lines(comparison):
+                    say(line)
+                flagged |= bool(comparison.excluded)
+                if out_dir:
+                    write_comparison(comparison, out_dir, force=True, inputs=inputs)  # checked above
             else:
                 speeds = classify_reference_speeds(audit_reference_speeds(table, speed_column=args.speed_column))
                 for line in reference_speed_lines(speeds):

@@ -3,17 +3,22 @@ from __future__ import annotations
 
 import argparse
 
-from bearingheat.analysis.diagnose import diagnose_table
-from bearingheat.cli import UsageError, add_csv_arguments, add_force_argument
+from bearingheat.analysis.comparison import ALL_MODELS, compare_models, model_names
+from bearingheat.analysis.diagnose import diagnose_measurements, read_measurements
+from bearingheat.calc.models import DEFAULT_MODEL, MODELS
+from bearingheat.cli import UsageError, add_csv_arguments
+from bearingheat.cli.options import add_force, add_out_dir, add_quiet
 from bearingheat.errors import DiagnoseError
 from bearingheat.io.files import check_outputs
+from bearingheat.io.reports.comparison import COMPARISON_FILES, comparison_lines, write_comparison
 from bearingheat.io.reports.diagnose import summary_lines, write_outputs
 from bearingheat.io.tables import read_table
 
 HELP = "trace the residuals of measured torque to a missing effect; model error before and after"
 
 DESCRIPTION = """\
-Compare measured friction torque with the catalogue model (seed 002), look at the
+Compare measured friction torque with the catalogue model of the Schaeffler rolling
+bearing catalogue (Russian edition, chapter «Трение и нагрев»), look at the
 structure of the residuals, fit each candidate effect (seal_drag, f0_scale,
 viscosity_heating, drag_losses, run_in, preload) by least squares, choose one by
 grouped k-fold cross-validation and BIC under a stated significance rule, or
@@ -26,7 +31,14 @@ lubrication, n, Fr, Fa, nu, ...) plus
   t [h]           optional running time (needed by the run_in candidate)
   group           optional label of rows that must stay in one fold (a test run)
 
-Output in --out DIR: summary.json (effect, parameters, rmse_before, rmse_after,
+--model skf or --model all compares the friction models on the same rows: each
+model's error as published and with its scalable terms fitted (the catalogue
+model's M0 and M1, the SKF model's phi_ish*phi_rs*M_rr and M_sl), held out by the
+same grouped cross-validation, and which model fits better and by how much
+(models.md, models.json, models.png). The candidate effects extend the catalogue
+model, so they are searched when it is among the models.
+
+Output in --out-dir DIR: summary.json (effect, parameters, rmse_before, rmse_after,
 cv_rmse_after [N*mm], mape_before, mape_after [%], candidates ...), report.md,
 residuals.png, measured_vs_predicted.png. Use the fitted effect in predictions
 with 'bearingheat calc INPUT --effects DIR/summary.json'. Existing files in DIR
@@ -37,32 +49,50 @@ report); 2 unusable input (file, columns, units, too few rows) or a file fault.
 """
 
 
-#: the files written into --out DIR
+#: the files of the effect search on the catalogue model, written into --out-dir DIR
 _FILES = ("residuals.png", "measured_vs_predicted.png", "summary.json", "report.md")
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("input", metavar="DATA", help="measured torque, CSV (.csv) or Excel (.xlsx)")
-    parser.add_argument("--out", metavar="DIR", required=True, help="folder for summary.json, report.md, plots")
+    add_out_dir(parser, "summary.json, report.md and the plots (models.* with --model)", required=True)
+    parser.add_argument("--model", choices=[*MODELS, ALL_MODELS], default=DEFAULT_MODEL,
+                        help=f"friction model(s) to check: one of {', '.join(MODELS)}, or {ALL_MODELS} to compare "
+                             f"them (default {DEFAULT_MODEL})")
     parser.add_argument("--folds", type=int, default=5, help="k of the grouped k-fold cross-validation (default 5)")
     parser.add_argument("--seed", type=int, default=0, help="seed of the fold assignment (default 0)")
     parser.add_argument("--sheet", metavar="NAME", help="sheet of an Excel workbook")
-    add_force_argument(parser, "the files in DIR")
+    add_force(parser, "the files in DIR")
     add_csv_arguments(parser)
-    parser.add_argument("-q", "--quiet", action="store_true", help="print nothing")
+    add_quiet(parser)
 
 
 def run(args: argparse.Namespace) -> int:
     if args.folds < 2:
         raise UsageError(f"--folds: {args.folds} must be >= 2")
-    check_outputs(args.out, _FILES, force=args.force, inputs=(args.input,), create=False)
+    models = model_names(args.model)
+    search = DEFAULT_MODEL in models
+    compare = models != (DEFAULT_MODEL,)
+    files = (_FILES if search else ()) + (COMPARISON_FILES if compare else ())
+    check_outputs(args.out_dir, files, force=args.force, inputs=(args.input,), create=False)
     table = read_table(args.input, args.sheet, sep=args.sep, decimal=args.decimal)
+    excluded = 0
     try:
-        diagnosis = diagnose_table(table, k=args.folds, seed=args.seed)
+        measured = read_measurements(table)
+        comparison = compare_models(measured, models, k=args.folds, seed=args.seed) if compare else None
+        diagnosis = diagnose_measurements(measured, k=args.folds, seed=args.seed) if search else None
     except DiagnoseError as exc:
         raise UsageError(str(exc)) from exc
-    summary = write_outputs(diagnosis, args.out, force=args.force, inputs=(args.input,))
-    if not args.quiet:
-        for line in summary_lines(summary, args.out):
-            print(line)
-    return 1 if summary["n_excluded"] else 0
+    if comparison is not None:
+        write_comparison(comparison, args.out_dir, force=args.force, inputs=(args.input,))
+        excluded = len(comparison.excluded)
+        if not args.quiet:
+            for line in comparison_lines(comparison):
+                print(line)
+    if diagnosis is not None:
+        summary = write_outputs(diagnosis, args.out_dir, force=args.force, inputs=(args.input,))
+        excluded = summary["n_excluded"]
+        if not args.quiet:
+            for line in summary_lines(summary, args.out_dir):
+                print(line)
+    return 1 if excluded else 0

@@ -9,7 +9,7 @@ import pandas as pd
 import pytest
 from PIL import Image
 from synthetic_catalogue import synthetic_catalogue
-from synthetic_torque import measured_set
+from synthetic_torque import measured_set, model_set
 
 from bearingheat.cli import main
 
@@ -19,7 +19,7 @@ HR1 = Path(__file__).resolve().parents[2].parent / "shared" / "data" / "hr1_2006
 def test_cli_reference_speeds(capsys, tmp_path):
     if not HR1.is_file():
         pytest.skip(f"{HR1} is not present: the HR 1 (2006) list is read from ../shared/data next to the repository")
-    assert main(["audit", "--reference-speeds", str(HR1), "--out", str(tmp_path)]) == 1
+    assert main(["audit", "--reference-speeds", str(HR1), "--out-dir", str(tmp_path)]) == 1
     out = capsys.readouterr().out
     assert "systematic: tapered roller 330" in out
     # the flagged groups and their implied f0 come first, before the outliers and the table of all groups
@@ -49,7 +49,7 @@ def test_cli_reference_speed_files(tmp_path, capsys):
         source, index=False)
     out_dir = tmp_path / "out"
     out_dir.mkdir()
-    assert main(["audit", "--reference-speeds", str(source), "--out", str(out_dir)]) == 1
+    assert main(["audit", "--reference-speeds", str(source), "--out-dir", str(out_dir)]) == 1
     out = capsys.readouterr().out
     assert out.index("Flagged groups (1)") < out.index("tapered roller 302") < out.index("Outliers (1)")
     series = pd.read_csv(out_dir / "reference_speed_series.csv", keep_default_na=False)
@@ -66,15 +66,15 @@ def test_cli_reference_speed_files(tmp_path, capsys):
         assert image.size[0] == 1650                     # 11 in at 150 dpi
         assert round(image.info["dpi"][0]) == 150
     # the files are there: a second run refuses to replace them without --force, and replaces them with it
-    assert main(["audit", "--reference-speeds", str(source), "--out", str(out_dir)]) == 2
-    assert main(["audit", "--reference-speeds", str(source), "--out", str(out_dir), "--force", "-q"]) == 1
+    assert main(["audit", "--reference-speeds", str(source), "--out-dir", str(out_dir)]) == 2
+    assert main(["audit", "--reference-speeds", str(source), "--out-dir", str(out_dir), "--force", "-q"]) == 1
 
 
 def test_cli_coefficients(tmp_path, capsys):
     table, _, _ = measured_set("none", 3, designations=["30206-A", "6004", "6310", "NU208-E"])
     source = tmp_path / "m.csv"
     table.to_csv(source, index=False)
-    assert main(["audit", str(source), "--out", str(tmp_path)]) == 0
+    assert main(["audit", str(source), "--out-dir", str(tmp_path)]) == 0
     assert pd.read_csv(tmp_path / "coefficients.csv")["fitted"].notna().all()
 
 
@@ -108,3 +108,14 @@ def test_top_level_help_lists_the_measured_data_commands():
     assert done.returncode == 0, done.stderr
     for name in ("lab", "audit", "diagnose"):
         assert f"    {name} " in done.stdout
+
+
+def test_audit_model_all_prints_the_comparison_after_the_coefficients(tmp_path, capsys):
+
+    source = tmp_path / "made.csv"
+    model_set("schaeffler", seed=23).to_csv(source, index=False)
+    assert main(["audit", str(source), "--model", "all", "--out-dir", str(tmp_path / "a")]) == 0
+    printed = capsys.readouterr().out
+    assert "schaeffler fits these data better than skf" in printed
+    assert {p.name for p in (tmp_path / "a").iterdir()} == {"coefficients.csv", "models.md", "models.json",
+                                                           "models.png"}

@@ -8,7 +8,7 @@ import sys
 import pandas as pd
 import pytest
 from diagnose_cases import CASES, CONTROLS, run_case, small_table
-from synthetic_torque import EFFECTS
+from synthetic_torque import EFFECTS, model_set
 
 from bearingheat.analysis.diagnose import error_metrics
 from bearingheat.cli import main
@@ -19,7 +19,7 @@ def test_summary_and_report_files(tmp_path):
     source = tmp_path / "measured.csv"
     table.to_csv(source, index=False)
     out = tmp_path / "diag"
-    assert main(["diagnose", str(source), "--out", str(out), "-q"]) == 0
+    assert main(["diagnose", str(source), "--out-dir", str(out), "-q"]) == 0
     summary = json.loads((out / "summary.json").read_text())
     for key in ("effect", "parameters", "rmse_before", "rmse_after", "cv_rmse_after", "mape_before", "mape_after",
                 "candidates"):
@@ -36,7 +36,7 @@ def test_calc_cli_takes_the_effects(tmp_path, capsys):
     table, noise, diagnosis = run_case(*CASES[0])
     source = tmp_path / "m.csv"
     table.to_csv(source, index=False)
-    assert main(["diagnose", str(source), "--out", str(tmp_path / "d"), "-q"]) == 0
+    assert main(["diagnose", str(source), "--out-dir", str(tmp_path / "d"), "-q"]) == 0
     result = tmp_path / "r.csv"
     assert main(["calc", str(source), "--effects", str(tmp_path / "d" / "summary.json"), "-o", str(result), "-q"]) == 0
     rmse = error_metrics(table["M [N*mm]"], pd.read_csv(result)["MR [N*mm]"])["rmse"]
@@ -56,7 +56,7 @@ def test_summary_missing_parameter(tmp_path, capsys):
 def test_cli_too_few_rows_exit_2(tmp_path, capsys):
     source = tmp_path / "in.csv"
     small_table().to_csv(source, index=False)
-    assert main(["diagnose", str(source), "--out", str(tmp_path / "o")]) == 2
+    assert main(["diagnose", str(source), "--out-dir", str(tmp_path / "o")]) == 2
     assert capsys.readouterr().err.strip() == (
         "bearingheat diagnose: error: diagnose needs at least 20 usable rows of measured torque; got 3")
 
@@ -68,7 +68,7 @@ def test_cli_excluded_rows_exit_1(tmp_path, capsys):
     table.loc[0, "M [N*mm]"] = "broken"
     source = tmp_path / "in.csv"
     table.to_csv(source, index=False)
-    assert main(["diagnose", str(source), "--out", str(tmp_path / "o")]) == 1
+    assert main(["diagnose", str(source), "--out-dir", str(tmp_path / "o")]) == 1
     summary = json.loads((tmp_path / "o" / "summary.json").read_text())
     assert summary["excluded"] == ["row 1: 'broken' is not a number for M [N*mm]"]
     assert summary["effect"] == "none"
@@ -78,7 +78,30 @@ def test_subprocess_diagnose(tmp_path):
     table, noise, _ = run_case(*CASES[2])
     source = tmp_path / "m.csv"
     table.to_csv(source, index=False)
-    done = subprocess.run([sys.executable, "-m", "bearingheat", "diagnose", str(source), "--out", str(tmp_path / "o")],
+    done = subprocess.run([sys.executable, "-m", "bearingheat", "diagnose", str(source), "--out-dir", str(tmp_path / "o")],
                           capture_output=True, text=True, timeout=120)
     assert done.returncode == 0, done.stderr
     assert done.stdout.startswith("effect: f0_scale")
+
+
+def test_diagnose_model_all_compares_the_models_and_still_searches_the_effects(tmp_path, capsys):
+
+    source = tmp_path / "skf_made.csv"
+    model_set("skf", seed=21).to_csv(source, index=False)
+    out = tmp_path / "d"
+    assert main(["diagnose", str(source), "--out-dir", str(out), "--model", "all"]) == 0
+    printed = capsys.readouterr().out.splitlines()
+    assert printed[0].startswith("skf fits these data better than schaeffler: held-out relative RMSE after fitting")
+    assert {p.name for p in out.iterdir()} == {"models.md", "models.json", "models.png", "summary.json",
+                                               "report.md", "residuals.png", "measured_vs_predicted.png"}
+    summary = json.loads((out / "models.json").read_text())
+    assert summary["best"] == "skf" and summary["residual"] == "measured - model"
+
+
+def test_diagnose_model_skf_writes_only_the_comparison(tmp_path):
+
+    source = tmp_path / "skf_made.csv"
+    model_set("skf", seed=22).to_csv(source, index=False)
+    out = tmp_path / "d"
+    assert main(["diagnose", str(source), "--out-dir", str(out), "--model", "skf", "-q"]) == 0
+    assert {p.name for p in out.iterdir()} == {"models.md", "models.json", "models.png"}

@@ -90,7 +90,7 @@ def report_markdown(diagnosis: Diagnosis, summary: dict, key: str) -> str:
         f"**Effect found: `{summary['effect']}`**: {summary['description']}.", "",
         f"Parameters: {format_value(summary['parameters']) or '(none)'}", "",
         "## Error before and after", "",
-        "| | RMSE [N·mm] | MAPE [%] | bias [N·mm] |", "|---|---|---|---|",
+        "| | RMSE [N·mm] | MAPE [%] | bias, measured − model [N·mm] |", "|---|---|---|---|",
         f"| catalogue model, fitting data | {format_value(summary['rmse_before'])} | {format_value(summary['mape_before'])} "
         f"| {format_value(summary['bias_before'])} |",
         f"| with the effect, fitting data | {format_value(summary['rmse_after'])} | {format_value(summary['mape_after'])} "
