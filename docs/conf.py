@@ -2,10 +2,14 @@
 
 The column tables of ``columns.md`` are generated here from the column
 contract (``bearingheat.calc.contract``), so the docs cannot drift from the
-columns calc reads and writes.
+columns calc reads and writes. The side-by-side table of the friction
+models in ``skf.md`` is computed here from ``examples/gearbox_shaft_skf.csv``.
 """
 from pathlib import Path
 
+import pandas as pd
+
+from bearingheat.analysis.comparison import side_by_side
 from bearingheat.calc import contract
 
 project = "bearingheat"
@@ -30,3 +34,13 @@ for _kind in ("input", "output"):
     _path = _generated / f"contract_{_kind}.md"
     if not _path.exists() or _path.read_text(encoding="utf-8") != _text:
         _path.write_text(_text, encoding="utf-8")
+
+
+def _write_if_changed(path: Path, text: str) -> None:
+    if not path.exists() or path.read_text(encoding="utf-8") != text:
+        path.write_text(text, encoding="utf-8")
+
+
+_demo = pd.read_csv(Path(__file__).parent.parent / "examples" / "gearbox_shaft_skf.csv")
+_write_if_changed(_generated / "skf_side_by_side.md",
+                  side_by_side(_demo).to_markdown(index=False, floatfmt=".4g") + "\n")

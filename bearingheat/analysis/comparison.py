@@ -33,9 +33,11 @@ from bearingheat.analysis.diagnose import (MIN_ROWS, MeasuredData, assign_folds,
 from bearingheat.analysis.effects import bearing_keys
 from bearingheat.calc.models import DEFAULT_MODEL, MODELS, compute_supports, get_model
 from bearingheat.calc.supports import number_column
+from bearingheat.calc.table import calc
 from bearingheat.errors import DiagnoseError
 
-__all__ = ["ALL_MODELS", "ModelFit", "ModelComparison", "model_names", "compare_models", "compare_models_table"]
+__all__ = ["ALL_MODELS", "ModelFit", "ModelComparison", "model_names", "compare_models", "compare_models_table",
+           "side_by_side"]
 
 #: the ``--model`` value that compares every model of the registry
 ALL_MODELS = "all"
@@ -220,3 +222,35 @@ def compare_models_table(table: pd.DataFrame, model: str = ALL_MODELS, *, k: int
                          ) -> ModelComparison:
     """Read a measured table (unit headers, ``M [N*mm]``) and :func:`compare_models` the models ``model`` selects."""
     return compare_models(read_measurements(table), model_names(model), k=k, seed=seed)
+
+
+def side_by_side(table: pd.DataFrame, models: tuple[str, ...] | None = None) -> pd.DataFrame:
+    """MR and NR of every support under each model, and each model's MR over the default model's.
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        A calc table (``name [unit]`` headers) with the inputs every model needs.
+    models : tuple of str, optional
+        Names of :data:`bearingheat.calc.models.MODELS` (default: all).
+
+    Returns
+    -------
+    pandas.DataFrame
+        ``id`` (or ``designation``), then ``MR [N*mm] (model)`` and ``NR [W] (model)`` per model and
+        ``MR model/default`` for the other models; a row in error under a model has NaN there and its
+        message in ``message (model)``.
+    """
+    models = tuple(models or MODELS)
+    label = "id" if "id" in table.columns else "designation"
+    out = pd.DataFrame({label: table[label].to_numpy()}, index=table.index)
+    out["designation"] = table["designation"].to_numpy()
+    for name in models:
+        result = calc(table, model=name)
+        out[f"MR [N*mm] ({name})"] = result["MR [N*mm]"].to_numpy()
+        out[f"NR [W] ({name})"] = result["NR [W]"].to_numpy()
+        out[f"message ({name})"] = np.where(result["status"] == "error", result["message"], "")
+    for name in models:
+        if name != DEFAULT_MODEL and DEFAULT_MODEL in models:
+            out[f"MR {name}/{DEFAULT_MODEL}"] = out[f"MR [N*mm] ({name})"] / out[f"MR [N*mm] ({DEFAULT_MODEL})"]
+    return out.loc[:, [c for c in out.columns if not (c.startswith("message") and not out[c].astype(bool).any())]]

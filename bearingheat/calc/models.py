@@ -56,7 +56,8 @@ class FrictionModel:
     None means the heat balance uses the generic bracketed root of
     :mod:`bearingheat.kernels.roots`. ``excel_formulas`` maps result
     columns to live Excel formula templates (``calc --formulas``), or is
-    None where the model has none. ``catalogue_keys`` says whether the model
+    None where the model has none (``no_formulas`` then says why).
+    ``catalogue_keys`` says whether the model
     uses the catalogue model's resolution of designations (its errors are
     then the row's); a model with its own tables reports its own.
     ``fit_terms(results) -> {name: torque [N*mm]}`` gives the terms of MR
@@ -74,6 +75,7 @@ class FrictionModel:
     excel_formulas: dict[str, str] | None = None
     catalogue_keys: bool = True
     fit_terms: Callable[[pd.DataFrame], dict[str, np.ndarray]] | None = None
+    no_formulas: str = ""
 
 
 SCHAEFFLER = FrictionModel(
@@ -102,6 +104,9 @@ SKF = FrictionModel(
     outputs=SKF_RESULTS,
     evaluate=_evaluate_skf,
     catalogue_keys=False,
+    no_formulas=("its per-type geometry constants (R1-R4, S1-S5), the seal and drag tables, the inlet shear "
+                 "and replenishment factors and the edition's drag formula would take some forty helper cells "
+                 "a row, too many to check by eye; bearingheat writes its results as numbers"),
     fit_terms=lambda results: {
         "phi_ish*phi_rs*M_rr": (results["phi_ish"] * results["phi_rs"] * results["M_rr"]).to_numpy(dtype=float),
         "M_sl": results["M_sl"].to_numpy(dtype=float)},

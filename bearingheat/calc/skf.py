@@ -20,6 +20,7 @@ import math
 import numpy as np
 import pandas as pd
 
+from bearingheat.calc import contract
 from bearingheat.calc.messages import Labels, Problem, at
 from bearingheat.calc.supports import SupportArrays
 from bearingheat.catalogue import skf as catalogue
@@ -33,29 +34,17 @@ __all__ = ["RESULTS", "EXTRA_INPUTS", "evaluate_skf_model"]
 RESULTS = ("G_rr", "G_sl", "M_rr", "M_sl", "M_seal", "M_drag", "phi_ish", "phi_rs", "phi_bl", "mu_sl", "M_start",
            "MR", "NR")
 
-#: inputs read from ``extra``: name -> (unit, meaning, default); '' unit is text
-EXTRA_INPUTS = {
-    "designation": ("", "bearing designation (also CARB: C2208, C 2208 TN9)", "none"),
-    "type": ("", "SKF bearing type instead of a designation, with series", "none"),
-    "series": ("", "series with type, as in the SKF tables: 62, 222 E, C 22, 302", "none"),
-    "lubrication": ("", "grease, oil_mist (oil-air), oil_bath or circulating_oil (oil jet)", "required"),
-    "oil": ("", "mineral, synthetic or transmission_fluid: μEHL 0.05, 0.04, 0.1", "mineral"),
-    "mu_sl": ("1", "fixed sliding friction coefficient μsl (the worked example: 0.05 at full film)",
-              "φbl·μbl + (1 − φbl)·μEHL"),
-    "mu_bl": ("1", "boundary friction coefficient μbl", "0.15"),
-    "oil_level": ("mm", "oil level H above the lowest contact point of the outer ring raceway",
-                  "required in an oil bath"),
-    "VM": ("1", "drag loss factor read off the diagram of the edition (6000 diagram 2, 10000/3 diagram 4)",
-           "required in an oil bath"),
-    "skf_edition": ("", "6000 or 10000: the catalogue edition of the drag formula", "10000"),
-    "seal": ("", "seal type of SKF table 4: RSL, RZ, RSH, RS1, LS, CS, CS2, CS5", "from the designation suffix"),
-    "seals": ("1", "number of seals, 0, 1 or 2", "from the designation (2RSH: 2), else 2 where seal is given"),
-    "d_s": ("mm", "seal counterface diameter (d1, d2 or E of the bearing tables, table 4 says which)",
-            "required for contact seals"),
-    "Dw": ("mm", "rolling element diameter: an oil bath below Dw/2 is a low level (φrs)",
-           "none: H < (D − d)/4 counts as low"),
-    "T": ("mm", "total width of tapered roller bearings (the 10000/3 drag formula)", "required there"),
+#: the default of each input read from ``extra`` where its cell is blank or its column absent
+_DEFAULTS = {
+    "designation": "none", "type": "none", "series": "none", "lubrication": "required", "oil": "mineral",
+    "mu_sl": "φbl·μbl + (1 − φbl)·μEHL", "mu_bl": "0.15", "oil_level": "required in an oil bath",
+    "VM": "required in an oil bath", "skf_edition": "10000", "seal": "from the designation suffix",
+    "seals": "from the designation (2RSH: 2), else 2 where seal is given", "d_s": "required for contact seals",
+    "Dw": "none: H < (D − d)/4 counts as low", "T": "required for tapered roller bearings",
 }
+#: inputs read from ``extra``: name -> (unit, meaning, default); unit and meaning from the column contract
+EXTRA_INPUTS = {name: (contract.column(name).unit, contract.column(name).meaning, default)
+                for name, default in _DEFAULTS.items()}
 
 _DRAG_SOURCE = {
     "6000": "SKF 6000 diagram 2 (p. 99; red curve ball bearings, blue roller bearings)",

@@ -66,3 +66,22 @@ def test_too_few_rows():
         compare_models_table(table, "all")
     assert str(info.value) == ("the model comparison needs at least 20 rows usable in every model "
                                "(schaeffler, skf); got 10")
+
+
+def test_side_by_side_of_the_demo_supports():
+    from pathlib import Path
+
+    from bearingheat.analysis.comparison import side_by_side
+    from bearingheat.calc.table import calc
+
+    table = pd.read_csv(Path(__file__).resolve().parents[2] / "examples" / "gearbox_shaft_skf.csv")
+    both = side_by_side(table)
+    assert list(both.columns) == ["id", "designation", "MR [N*mm] (schaeffler)", "NR [W] (schaeffler)",
+                                  "MR [N*mm] (skf)", "NR [W] (skf)", "MR skf/schaeffler"]
+    for model in ("schaeffler", "skf"):
+        alone = calc(table, model=model)
+        assert np.array_equal(both[f"MR [N*mm] ({model})"].to_numpy(), alone["MR [N*mm]"].to_numpy())
+    ratio = both["MR [N*mm] (skf)"] / both["MR [N*mm] (schaeffler)"]
+    assert np.allclose(both["MR skf/schaeffler"], ratio, rtol=1e-15)
+    # the tapered roller bearing under 2.4 kN axial load at 310 r/min: the SKF model's sliding moment dominates
+    assert both.loc[2, "MR skf/schaeffler"] > 2.5
