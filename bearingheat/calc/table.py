@@ -33,11 +33,12 @@ from bearingheat.calc.contract import (PLAIN_TYPES, input_units, output_header, 
                                        range_problems)
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.supports import number_column, text_column
-from bearingheat.catalogue.bearings import bearing
+from bearingheat.calc.fill import fill_from_catalogue
+from bearingheat.catalogue.bearings import CATALOGUE
 from bearingheat.calc.models import (DEFAULT_MODEL, M2_REPORT_UNITS, MODEL_REPORT_UNITS, PLAIN_REPORT_UNITS,
                                     RESULT_UNITS, compute_supports)
 from bearingheat.catalogue.f2chart import F2Chart
-from bearingheat.errors import DesignationError, InputError, UnitError
+from bearingheat.errors import InputError, UnitError
 from bearingheat.units import convert_column
 
 __all__ = ["calc", "to_catalogue_units", "ConvertedTable", "require_columns", "Extension", "EXTENSIONS"]
@@ -276,7 +277,8 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
     if n_per_method != DEFAULT_SPEED_FACTOR_METHOD:  # the table's default for blank n_per_method cells
         cells = frame["n_per_method"] if "n_per_method" in frame.columns else pd.Series(None, index=frame.index)
         frame = frame.assign(n_per_method=cells.where(cells.notna(), n_per_method))
-    extra_problems: list[tuple[int, str, str]] = []
+    frame, fill_problems, from_table = fill_from_catalogue(frame, converted.labels)
+    extra_problems = [p for p in fill_problems if p[1] == "warning"]
     for ext in EXTENSIONS.values():
         with np.errstate(all="ignore"):  # rows in error are computed too, and masked afterwards
             frame, problems = ext.prepare(frame)
@@ -287,7 +289,10 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
     results.index = table.index
     _merge_row_messages(results, converted.row_errors, "error", first=True)  # the cell's own fault leads
     _merge_row_messages(results, converted.row_warnings, "warning")
-    for position, level, message in extra_problems + _implausible_relations(frame, converted.labels):
+    for position, level, message in fill_problems:
+        if level == "error":  # an unknown designation without dimensions: why the model's inputs are missing
+            _add_message(results, position, level, message, first=True)
+    for position, level, message in extra_problems + _implausible_relations(frame, converted.labels, from_table):
         _add_message(results, position, level, message)
     if effects is not None:
         effects.apply(frame, results)
@@ -301,20 +306,13 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
     return _assemble(table, results, extension_columns)
 
 
-def _catalogue_limiting_speed(designation) -> tuple[float, str]:
-    """n_G [1/min] of a designation in the bearing table, and where it is from (NaN, '' where it is not there)."""
-    try:
-        entry = bearing(designation)
-    except DesignationError:
-        return math.nan, ""
-    return entry.n_G, f"{entry.designation} (Schaeffler HR 1, 2006)"
-
-
-def _implausible_relations(frame: pd.DataFrame, labels: Labels) -> list[tuple[int, str, str]]:
+def _implausible_relations(frame: pd.DataFrame, labels: Labels, from_table: dict[str, np.ndarray]
+                           ) -> list[tuple[int, str, str]]:
     """Warnings where inputs are each possible but not together: a load above C0, a speed above n_G.
 
-    Both are usual signs of a unit mix-up (rpm typed under a header in Hz, N under kN); the limiting
-    speed is the row's ``n_G`` or, where blank, the bearing table's for the designation.
+    Both are usual signs of a unit mix-up (rpm typed under a header in Hz, N under kN); ``from_table``
+    marks the values the bearing table filled (:func:`~bearingheat.calc.fill.fill_from_catalogue`),
+    whose messages name the catalogue.
     """
     problems = []
     n_rows = len(frame)
@@ -332,19 +330,13 @@ def _implausible_relations(frame: pd.DataFrame, labels: Labels) -> list[tuple[in
             problems.append((int(i), "warning", f"{labels.name(name, i)}: {user(name, i, load[i])} is above the "
                                                 f"static load rating C0 = {C0[i]:g} N; check the load and its unit"))
     n = number_column(frame, "n")
-    n_G = number_column(frame, "n_G").copy()
-    source = [""] * n_rows
+    n_G = number_column(frame, "n_G")
+    catalogue_n_G = from_table.get("n_G", np.zeros(n_rows, dtype=bool))
     designations = text_column(frame, "designation")
-    blank = np.isnan(n_G)
-    if blank.any():
-        looked_up = {d: _catalogue_limiting_speed(d) for d in set(designations[i] for i in np.flatnonzero(blank)) if d}
-        for i in np.flatnonzero(blank):
-            if designations[i] in looked_up:
-                n_G[i], source[i] = looked_up[designations[i]]
     with np.errstate(invalid="ignore"):
         fast = np.isfinite(n) & (n > n_G)
     for i in np.flatnonzero(fast):
-        of = f" of {source[i]}" if source[i] else ""
+        of = f" of {designations[i]} ({CATALOGUE})" if catalogue_n_G[i] else ""
         problems.append((int(i), "warning", f"{labels.name('n', i)}: {user('n', i, n[i])} is above the limiting "
                                             f"speed n_G = {n_G[i]:g} 1/min{of}; check the speed and its unit"))
     return problems

@@ -43,6 +43,7 @@ import math
 from dataclasses import dataclass, fields
 from typing import Any
 
+import numpy as np
 import pandas as pd
 
 from bearingheat.catalogue.designation import BEARING_TYPES, _split, parse_designation
@@ -63,7 +64,9 @@ __all__ = [
     "MATCHES",
     "ROUNDING",
     "half_step",
+    "half_steps",
     "disagrees",
+    "disagreeing",
 ]
 
 #: name of the table in ``tables/``
@@ -425,11 +428,22 @@ def half_step(name: str, value: float) -> float:
     >>> half_step("C", 29000.0), half_step("n_G", 20000.0), half_step("n_thr", 9300.0), half_step("e", 0.37)
     (50.0, 500.0, 5.0, 0.005)
     """
+    return float(half_steps(name, np.asarray(value, dtype=float)))
+
+
+def half_steps(name: str, values: np.ndarray) -> np.ndarray:
+    """:func:`half_step` of an array of catalogue values (NaN where a value is NaN or zero).
+
+    >>> half_steps("C0", np.array([18000.0, 365.0])).tolist()
+    [50.0, 0.5]
+    """
     kind, amount = ROUNDING[name]
+    values = np.asarray(values, dtype=float)
     if kind == "step":
-        return amount / 2
-    exponent = math.floor(math.log10(abs(value))) - (amount - 1)
-    return 0.5 * 10.0 ** exponent
+        return np.where(np.isnan(values), np.nan, amount / 2)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        exponent = np.floor(np.log10(np.abs(values))) - (amount - 1)
+    return np.where(np.isfinite(exponent), 0.5 * 10.0 ** exponent, np.nan)
 
 
 def disagrees(name: str, given: float, catalogue_value: float) -> bool:
@@ -438,6 +452,14 @@ def disagrees(name: str, given: float, catalogue_value: float) -> bool:
     >>> disagrees("C", 32.5e3, 32500.0), disagrees("C", 32540.0, 32500.0), disagrees("C", 33000.0, 32500.0)
     (False, False, True)
     """
-    if math.isnan(catalogue_value) or math.isnan(given):
-        return False
-    return abs(given - catalogue_value) > half_step(name, catalogue_value) * (1 + 1e-9)
+    return bool(disagreeing(name, np.asarray(given, dtype=float), np.asarray(catalogue_value, dtype=float)))
+
+
+def disagreeing(name: str, given: np.ndarray, catalogue_values: np.ndarray) -> np.ndarray:
+    """:func:`disagrees` of arrays: False where either value is NaN.
+
+    >>> disagreeing("C", np.array([32540.0, 33000.0, np.nan]), np.array([32500.0, 32500.0, 1.0])).tolist()
+    [False, True, False]
+    """
+    with np.errstate(invalid="ignore"):
+        return np.abs(given - catalogue_values) > half_steps(name, catalogue_values) * (1 + 1e-9)

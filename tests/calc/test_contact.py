@@ -10,7 +10,7 @@ def test_minimum_axial_load_warning():
     base = {"designation": "7205", "d [mm]": 25, "D [mm]": 52, "C0 [N]": 9300, "alpha [deg]": 30, "z": 12,
             "Dw [mm]": 7.9, "dm_pitch [mm]": 38.5, "lubrication": "grease", "n [rpm]": 12000, "Fr [N]": 100,
             "nu [mm^2/s]": 20}
-    table = pd.DataFrame([{**base, "Fa [N]": 10}, {**base, "Fa [N]": 500}, {**base, "alpha [deg]": None, "Fa [N]": 0,
+    table = pd.DataFrame([{**base, "Fa [N]": 10}, {**base, "Fa [N]": 500}, {**base, "alpha [deg]": None, "Fa [N]": 0, "C0 [N]": 7800,
                                                                            "designation": "6205"}])
     out = calc(table)
     fa_min = minimum_axial_load(12, 7.9, 38.5, 12000, 30.0)

@@ -95,7 +95,10 @@ def test_an_implausible_but_valid_diameter_warns():
     assert out["status"].tolist() == ["warning"]
     assert out["message"].iat[0] == ("D [mm]: 8000 is outside the plausible range 1 to 6000 mm; check the number "
                                      "and its unit; d [mm]: 7000 is outside the plausible range 0.5 to 5000 mm; "
-                                     "check the number and its unit")
+                                     "check the number and its unit; d [mm]: 7000 differs from 40 mm of 6208 in "
+                                     "the bearing table (Schaeffler HR 1, 2006); the value given is used; D [mm]: "
+                                     "8000 differs from 80 mm of 6208 in the bearing table (Schaeffler HR 1, 2006); "
+                                     "the value given is used")
 
 
 def test_a_subnormal_static_rating_cannot_give_an_ok_infinite_torque():

@@ -142,8 +142,16 @@ def test_extension_is_registered():
 
 
 def test_no_thermal_columns_without_their_inputs():
+    table = supports(**{"nu [mm^2/s]": [12, 20]}).drop(columns="B [mm]")
+    # n_thr only with a width B: typed, or from the bearing table for a designation it knows
+    table["designation"] = ["22205-E1", "22206-E1"]
+    assert not set(THERMAL_COLUMNS) & set(calc(table).columns)
+
+
+def test_the_bearing_table_gives_the_width_for_the_reference_speed_only():
     out = calc(supports(**{"nu [mm^2/s]": [12, 20]}).drop(columns="B [mm]"))
-    assert not set(THERMAL_COLUMNS) & set(out.columns)
+    assert set(THERMAL_COLUMNS) & set(out.columns) == {"n_thr [1/min]"}
+    np.testing.assert_allclose(out["n_thr [1/min]"], [14416.18, 9850.52], rtol=1e-6)
 
 
 def test_reference_speed_only_with_geometry():
@@ -212,8 +220,9 @@ def test_catalogue_reference_speed_and_limiting_speed():
     np.testing.assert_allclose(out["n_thr [1/min]"], [14416.18, 9850.52], rtol=1e-6)
     assert out.loc[0, "n_per [1/min]"] == 5000.0
     assert out.loc[0, "status"] == "warning"
-    assert out.loc[0, "message"] == ("n_per: the thermal value 8050 1/min is above the limiting speed "
-                                     "n_G = 5000 1/min; n_per = n_G")
+    assert out.loc[0, "message"] == ("n_G [1/min]: 5000 differs from 17000 1/min of 6205 in the bearing table "
+                                     "(Schaeffler HR 1, 2006); the value given is used; n_per: the thermal value "
+                                     "8050 1/min is above the limiting speed n_G = 5000 1/min; n_per = n_G")
     assert out.loc[1, "status"] == "ok"
 
 
@@ -248,4 +257,5 @@ def test_friction_only_tables_get_n_thr_quietly():
     assert out["status"].tolist() == ["ok", "ok"]
     assert out["message"].tolist() == ["", ""]
     assert out.loc[0, "n_thr [1/min]"] == pytest.approx(14416.18, rel=1e-6)
-    assert math.isnan(out.loc[1, "n_thr [1/min]"])
+    # the blank C0 of the NU206-E comes from the bearing table (36 kN, as typed in the other tests)
+    assert out.loc[1, "n_thr [1/min]"] == pytest.approx(9850.52, rel=1e-6)

@@ -64,7 +64,7 @@ def test_units_in_headers_are_honoured(tmp_path):
 
 
 @pytest.mark.parametrize("content,message", [
-    ("designation,d [mm],lubrication,n [rpm],nu [mm^2/s]\n6205,25,grease,100,10\n",
+    ("designation,d [mm],lubrication,n [rpm],nu [mm^2/s]\n22205-E1,25,grease,100,10\n",
      "bearingheat calc: error: missing column: 'D [mm]' (any D unit of the right dimension)\n"),
     ("d [mm],D [mm],lubrication,n [rpm],nu [mm^2/s]\n25,52,grease,100,10\n",
      "bearingheat calc: error: missing column: 'designation' (or 'type' and 'series')\n"),

@@ -1,0 +1,90 @@
+"""Blank dimensions, ratings and factors filled from the bearing table by designation.
+
+The bearing table is the Schaeffler catalogue HR 1 "Rolling bearings"
+(edition June 2006), :mod:`bearingheat.catalogue.bearings`. For every row
+with a designation the table knows, the columns of :data:`FILLED` that are
+absent or blank take the catalogue's value; a value the user typed wins,
+and one that differs from the catalogue's by more than the catalogue's
+rounding (:func:`~bearingheat.catalogue.bearings.disagrees`) gets a row
+warning naming both. A designation the table does not know is fine where
+the row gives its outside diameter D (as before the table existed); where
+it does not, the row is an error that lists close designations of the
+table. Each distinct designation is looked up once.
+"""
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from bearingheat.calc.messages import Labels
+from bearingheat.calc.supports import number_column, text_column
+from bearingheat.catalogue.bearings import CATALOGUE, BearingData, bearing, disagreeing
+from bearingheat.errors import DesignationError
+
+__all__ = ["FILLED", "fill_from_catalogue", "catalogue_values"]
+
+#: the columns the bearing table fills (catalogue units: mm, N, 1, 1/min)
+FILLED = ("d", "D", "B", "T", "C0", "e", "Y", "Y0", "n_G")
+
+
+def catalogue_values(designations: list) -> tuple[dict[str, np.ndarray], list[str | None]]:
+    """Per row, the bearing table's value of each :data:`FILLED` column (NaN where it has none) and the
+    lookup's error message for designations it does not know (None where found or blank)."""
+    found: dict[str, BearingData | str] = {}
+    for text in dict.fromkeys(d for d in designations if d):
+        try:
+            found[text] = bearing(text)
+        except DesignationError as exc:
+            found[text] = str(exc)
+    values = {name: np.full(len(designations), np.nan) for name in FILLED}
+    problems: list[str | None] = [None] * len(designations)
+    codes, uniques = pd.factorize(pd.Series(designations, dtype=object))
+    for code, text in enumerate(uniques):
+        rows = codes == code
+        entry = found[text]
+        if isinstance(entry, str):
+            for i in np.flatnonzero(rows):
+                problems[i] = entry
+            continue
+        for name in FILLED:
+            values[name][rows] = getattr(entry, name)
+    return values, problems
+
+
+def fill_from_catalogue(frame: pd.DataFrame, labels: Labels
+                        ) -> tuple[pd.DataFrame, list[tuple[int, str, str]], dict[str, np.ndarray]]:
+    """The frame (contract names, catalogue units) with blank :data:`FILLED` cells taken from the bearing
+    table, (row position, 'error' | 'warning', message) problems for the rows that have them, and per
+    filled column the mask of the rows whose value came from the table."""
+    if "designation" not in frame.columns or len(frame) == 0:
+        return frame, [], {}
+    designations = text_column(frame, "designation")
+    values, lookup_errors = catalogue_values(designations)
+    problems: list[tuple[int, str, str]] = []
+    filled: dict[str, np.ndarray] = {}
+    from_table: dict[str, np.ndarray] = {}
+    for name in FILLED:
+        catalogue = values[name]
+        if name not in frame.columns and np.isnan(catalogue).all():
+            continue
+        given = number_column(frame, name)
+        blank = np.isnan(given)
+        filled[name] = np.where(blank, catalogue, given)
+        from_table[name] = blank & ~np.isnan(catalogue)
+        for i in np.flatnonzero(~blank & disagreeing(name, given, catalogue)):
+            problems.append((int(i), "warning",
+                             f"{labels.name(name, int(i))}: {labels.value(name, given[i])} differs from "
+                             f"{catalogue[i]:g} {_unit(name)}of {designations[i]} in the bearing table "
+                             f"({CATALOGUE}); the value given is used"))
+    D = filled.get("D", number_column(frame, "D"))
+    for i in np.flatnonzero(np.isnan(D)):
+        if lookup_errors[i] is not None:
+            problems.append((int(i), "error", f"{lookup_errors[i]}; or type the dimensions d, D (and C0)"))
+    if not filled:
+        return frame, problems, from_table
+    return frame.assign(**filled), problems, from_table
+
+
+def _unit(name: str) -> str:
+    unit = {"C0": "N", "n_G": "1/min"}.get(name, "mm" if name in ("d", "D", "B", "T") else "")
+    return f"{unit} " if unit else ""

@@ -1,0 +1,65 @@
+"""Blank dimensions, ratings and factors come from the bearing table (Schaeffler HR 1, 2006) by designation."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from bearingheat.calc.table import calc
+
+DEMO = Path(__file__).resolve().parents[2] / "examples" / "gearbox_shaft.csv"
+RESULTS = ["f0", "f1", "P0 [N]", "P1 [N]", "M0 [N*mm]", "M1 [N*mm]", "M2 [N*mm]", "MR [N*mm]", "NR [W]",
+           "n_thr [1/min]", "n_per [1/min]", "T_op [degC]", "nu_op [mm^2/s]", "Q_S [W]", "Q_L [W]"]
+
+
+def test_designations_alone_give_the_demo_numbers():
+    typed = pd.read_csv(DEMO)
+    # what a designer types: no dimensions, ratings or speeds; Y0 of the 40-degree 7210-B stays typed (the
+    # bearing table gives Y0 of tapered roller bearings only, and the contact-angle table ends at 36 degrees)
+    short = typed[["id", "designation", "arrangement", "lubrication", "n [rpm]", "Fr [kN]", "Fa [kN]", "Y0",
+                   "nu [mm^2/s]", "T_amb [degC]", "T_bearing [degC]"]]
+    full, filled = calc(typed), calc(short)
+    for column in RESULTS:
+        np.testing.assert_array_equal(filled[column].to_numpy(), full[column].to_numpy(), err_msg=column)
+    assert filled["status"].tolist() == full["status"].tolist()
+    assert filled["message"].tolist() == full["message"].tolist()
+
+
+def _row(**cells):
+    base = {"designation": "6208", "lubrication": "oil_bath", "n [rpm]": 3000, "Fr [kN]": 2, "nu [mm^2/s]": 12}
+    return pd.DataFrame([{**base, **cells}])
+
+
+def test_suffixes_match_and_the_values_are_the_catalogue_rows():
+    out = calc(pd.concat([_row(designation="6208-2Z"), _row(designation="NU208-E-TVP2"), _row(designation="6208")],
+                         ignore_index=True))
+    assert out["status"].tolist() == ["ok", "ok", "ok"]
+    # 6208: 40 x 80 mm (HR 1 p. 196); M0 = f0 (nu n)^(2/3) dM^3 1e-7 by hand, f0 = 2 (series 62, oil bath)
+    assert out.loc[2, "M0 [N*mm]"] == pytest.approx(2.0 * (12 * 3000) ** (2 / 3) * 60.0 ** 3 * 1e-7, rel=1e-12)
+    assert out["M0 [N*mm]"].nunique() == 1
+
+
+def test_a_typed_value_wins_and_a_disagreement_is_a_warning():
+    # C0 is printed to 3 significant digits (18 kN: +-50 N); 18.04 kN agrees, 19 kN does not
+    out = calc(pd.concat([_row(**{"C0 [kN]": 19.0, "D [mm]": 80.0}), _row(**{"C0 [kN]": 18.04})],
+                         ignore_index=True))
+    assert out["status"].tolist() == ["warning", "ok"]
+    assert out["message"].iat[0] == ("C0 [kN]: 19 differs from 18000 N of 6208 in the bearing table "
+                                     "(Schaeffler HR 1, 2006); the value given is used")
+    assert out["P0 [N]"].iat[0] == 2000.0
+
+
+def test_an_unknown_designation_without_dimensions_lists_close_matches():
+    out = calc(pd.concat([_row(designation="6208-2ZZ"), _row()], ignore_index=True))
+    assert out["status"].tolist() == ["error", "ok"]
+    assert out["message"].iat[0].startswith(
+        "designation: '6208-2ZZ' is not in the bearing table (Schaeffler HR 1, 2006); close matches: 6208-2Z, "
+        "6208, 608-2Z, 6320-2Z, 6308-2Z; or type the dimensions d, D (and C0)")
+
+
+def test_an_unknown_designation_with_dimensions_is_computed_as_before():
+    out = calc(_row(designation="22208-E1", **{"d [mm]": 40, "D [mm]": 80, "C0 [kN]": 90, "e": 0.28, "Y": 2.4,
+                                               "Y0": 2.5}))
+    assert out["status"].tolist() == ["ok"] and out["message"].tolist() == [""]
