@@ -21,6 +21,7 @@ __all__ = [
     "UnitError",
     "InputError",
     "DesignationError",
+    "DutyCycleError",
     "CatalogueError",
     "F2ChartError",
     "ModelError",
@@ -129,6 +130,11 @@ class AuditError(BearingheatError):
 
 class DiagnoseError(BearingheatError):
     """Measured data that cannot be diagnosed, or a fitted effect that cannot be applied."""
+
+
+class DutyCycleError(InputError):
+    """A duty cycle that cannot be summarised: shares not summing to 1, a negative share, a support whose
+    rows name different bearings."""
 
 
 class ExcelError(InputError):

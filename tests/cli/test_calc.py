@@ -135,3 +135,17 @@ def test_n_per_method_option(tmp_path):
     assert b["n_per_method_used"].tolist()[:4] == ["catalogue approximation"] * 4
     assert b["n_per [1/min]"].iat[0] == pytest.approx(a["n_per [1/min]"].iat[0], rel=0.01)
     assert b["MR [N*mm]"].tolist() == a["MR [N*mm]"].tolist()
+
+
+def test_a_duty_cycle_gets_its_summary_beside_the_results(tmp_path, capsys):
+    from pathlib import Path
+    example = Path(__file__).resolve().parents[2] / "examples" / "gearbox_duty_cycle.csv"
+    out = tmp_path / "results.csv"
+    assert main(["calc", str(example), "-o", str(out)]) == 0
+    summary = pd.read_csv(tmp_path / "results.duty.csv")
+    assert summary["support"].tolist() == ["input shaft A", "input shaft B"]
+    assert "duty cycle (time-weighted per support):" in capsys.readouterr().out
+    # the summary is an output like the results: not replaced without --force
+    (tmp_path / "results.csv").unlink()
+    assert main(["calc", str(example), "-o", str(out)]) == 2
+    assert "results.duty.csv" in capsys.readouterr().err
