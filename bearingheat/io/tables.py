@@ -36,10 +36,11 @@ from bearingheat.calc.contract import columns as contract_columns
 from bearingheat.calc.contract import input_units, parse_header
 from bearingheat.calc.table import calc
 from bearingheat.errors import InputError
+from bearingheat.io.arrow import ARROW_SUFFIXES, read_arrow, write_arrow
 from bearingheat.io.files import atomic_write
 
 __all__ = ["read_csv", "read_table", "read_text", "write_csv", "sniff_format", "escape_formulas", "escape_cell", "calc_csv",
-           "cite_rows", "separator", "SEPARATORS"]
+           "cite_rows", "separator", "SEPARATORS", "TABLE_WRITERS", "write_table", "check_table_suffix"]
 
 #: separator -> how a message names it (and how --sep accepts it)
 SEPARATORS = {",": "comma ','", ";": "semicolon ';'", "\t": "tab"}
@@ -220,6 +221,8 @@ def read_table(path, sheet: str | None = None, *, sep: str | None = None, decima
         raise InputError(f"{path}: no such file")
     if sheet and path.suffix.lower() not in (".xlsx", ".xlsm"):
         raise InputError("--sheet applies to Excel workbooks only")
+    if path.suffix.lower() in ARROW_SUFFIXES:
+        return read_arrow(path)
     if path.suffix.lower() not in (".xlsx", ".xlsm"):
         return _read_text(path, sep=sep, decimal=decimal, what="rows")
     try:
@@ -265,11 +268,14 @@ def _set_aside(table: pd.DataFrame) -> tuple[pd.DataFrame, list[tuple[int, str, 
 
 
 def calc_csv(path, *, sep: str | None = None, decimal: str | None = None, **options) -> pd.DataFrame:
-    """:func:`bearingheat.calc.table.calc` on a CSV file of supports, its row messages citing the file's rows.
+    """:func:`bearingheat.calc.table.calc` on a CSV file of supports, its row messages citing the file's rows
+    (or on a Parquet or Arrow/Feather file, by its suffix).
 
     Columns the contract does not know are passed through untouched, even
     with brackets that are no unit in their names; ``options`` go to calc.
     """
+    if Path(path).suffix.lower() in ARROW_SUFFIXES:  # a binary table: no separators, no file lines to cite
+        return calc(read_arrow(path), **options)
     table = read_csv(path, sep=sep, decimal=decimal)
     lines = table.attrs.get("lines")
     usable, extras = _set_aside(table)
@@ -307,3 +313,28 @@ def write_csv(result: pd.DataFrame, path, *, escape: bool = True) -> Path:
     """
     frame = escape_formulas(result) if escape else result
     return atomic_write(path, lambda temp: frame.to_csv(temp, index=False))
+
+
+#: output suffix -> writer(result, path, escape) of the table formats (workbooks are written by io.excel)
+TABLE_WRITERS = {
+    ".csv": lambda result, path, escape: write_csv(result, path, escape=escape),
+    **{suffix: (lambda result, path, escape: write_arrow(result, path)) for suffix in ARROW_SUFFIXES},
+}
+
+
+def check_table_suffix(path, also: tuple[str, ...] = ()) -> None:
+    """Raise :class:`InputError` when ``path`` has no suffix of :data:`TABLE_WRITERS` (or of ``also``)."""
+    suffix = Path(path).suffix.lower()
+    accepted = (*TABLE_WRITERS, *also)
+    if suffix not in accepted:
+        raise InputError(f"{path}: cannot write a {suffix or 'file without suffix'}; the output formats are "
+                         f"{', '.join(accepted)}")
+
+
+def write_table(result: pd.DataFrame, path, *, escape: bool = True) -> Path:
+    """Write a results table in the format of the suffix of ``path`` (:data:`TABLE_WRITERS`), atomically.
+
+    ``escape`` applies to CSV (:func:`write_csv`); Parquet and Arrow hold text as text.
+    """
+    check_table_suffix(path)
+    return TABLE_WRITERS[Path(path).suffix.lower()](result, path, escape)

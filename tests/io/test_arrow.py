@@ -1,0 +1,62 @@
+"""Parquet and Arrow/Feather tables: round trips with units, calc on them, and refusals."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pyarrow.parquet as parquet
+import pytest
+
+from bearingheat.cli import main
+from bearingheat.errors import InputError
+from bearingheat.io.arrow import column_units, read_arrow, write_arrow
+from bearingheat.io.tables import calc_csv, write_table
+
+DEMO = Path(__file__).resolve().parents[2] / "examples" / "gearbox_shaft.csv"
+
+
+@pytest.mark.parametrize("suffix", [".parquet", ".arrow", ".feather"])
+def test_calc_results_round_trip_with_their_units(tmp_path, suffix):
+    result = calc_csv(DEMO)
+    path = write_table(result, tmp_path / f"out{suffix}")
+    back = read_arrow(path)
+    assert list(back.columns) == list(result.columns)
+    for column in result.columns:
+        if pd.api.types.is_float_dtype(result[column]):
+            np.testing.assert_array_equal(back[column].to_numpy(), result[column].to_numpy())
+        else:
+            assert back[column].fillna("").astype(str).tolist() == result[column].fillna("").astype(str).tolist()
+    units = column_units(path)
+    assert units["MR [N*mm]"] == "N*mm" and units["Fr [kN]"] == "kN" and units["status"] == ""
+
+
+def test_parquet_schema_carries_the_units(tmp_path):
+    path = write_table(pd.DataFrame({"n [rpm]": [1500.0], "id": ["a"]}), tmp_path / "t.parquet")
+    schema = parquet.read_schema(path)
+    assert schema.field("n [rpm]").metadata == {b"unit": b"rpm"}
+
+
+def test_calc_reads_parquet_as_it_reads_csv(tmp_path):
+    source = tmp_path / "in.parquet"
+    write_arrow(pd.read_csv(DEMO), source)
+    from_csv, from_parquet = calc_csv(DEMO), calc_csv(source)
+    np.testing.assert_array_equal(from_parquet["MR [N*mm]"].to_numpy(), from_csv["MR [N*mm]"].to_numpy())
+    assert main(["calc", str(source), "-o", str(tmp_path / "out.parquet"), "-q"]) == 0
+    assert read_arrow(tmp_path / "out.parquet")["status"].tolist() == from_csv["status"].tolist()
+
+
+def test_an_unknown_output_suffix_is_refused_before_any_work(tmp_path, capsys):
+    assert main(["calc", str(DEMO), "-o", str(tmp_path / "out.txt")]) == 2
+    assert capsys.readouterr().err == (
+        f"bearingheat calc: error: {tmp_path / 'out.txt'}: cannot write a .txt; the output formats are .csv, "
+        ".parquet, .arrow, .feather, .xlsx, .xlsm\n")
+    assert not (tmp_path / "out.txt").exists()
+
+
+def test_a_damaged_parquet_file_is_named(tmp_path):
+    bad = tmp_path / "bad.parquet"
+    bad.write_bytes(b"not parquet at all")
+    with pytest.raises(InputError) as info:
+        read_arrow(bad)
+    assert str(info.value).startswith(f"{bad}: not a readable .parquet table (")
