@@ -15,6 +15,7 @@ from __future__ import annotations
 import dataclasses
 import math
 from dataclasses import dataclass, field
+from typing import Callable
 
 import numpy as np
 import pandas as pd
@@ -121,12 +122,26 @@ class SupportArrays:
         return dataclasses.replace(self, **values)
 
 
+def per_distinct(values: pd.Series, convert: Callable) -> np.ndarray:
+    """``convert(value)`` of every cell as an object array, computed once per distinct value (NaN, None and
+    pandas' missing values are one value: ``convert(None)``)."""
+    codes, uniques = pd.factorize(values, use_na_sentinel=True)
+    converted = np.array([convert(v) for v in uniques] + [convert(None)], dtype=object)
+    return converted[codes]  # code -1 (missing) takes the last entry
+
+
+def _stripped_or_none(value):
+    if value is None or (isinstance(value, float) and math.isnan(value)):
+        return None
+    text = str(value).strip()
+    return text or None
+
+
 def text_column(frame: pd.DataFrame, name: str) -> list:
     """A text column as stripped strings, None for blank cells (or a column of None where it is absent)."""
     if name not in frame.columns:
         return [None] * len(frame)
-    return [None if (v is None or (isinstance(v, float) and math.isnan(v)) or str(v).strip() == "")
-            else str(v).strip() for v in frame[name]]
+    return per_distinct(frame[name], _stripped_or_none).tolist()
 
 
 def number_column(frame: pd.DataFrame, name: str, default: float = math.nan) -> np.ndarray:

@@ -32,7 +32,7 @@ from bearingheat.calc.thermal import DEFAULT_SPEED_FACTOR_METHOD, SPEED_FACTOR_M
 from bearingheat.calc.contract import (PLAIN_TYPES, input_units, output_header, output_units, parse_header,
                                        range_problems)
 from bearingheat.calc.messages import Labels
-from bearingheat.calc.supports import number_column, text_column
+from bearingheat.calc.supports import number_column, per_distinct, text_column
 from bearingheat.calc.fill import fill_from_catalogue
 from bearingheat.catalogue.bearings import CATALOGUE
 from bearingheat.calc.models import (DEFAULT_MODEL, M2_REPORT_UNITS, MODEL_REPORT_UNITS, PLAIN_REPORT_UNITS,
@@ -83,14 +83,21 @@ def _convert_column(values: pd.Series, header: str, unit_text: str | None, targe
     non-finite numbers and numbers outside the contract's valid range become row errors; numbers outside
     its plausible range become row warnings."""
     raw = values.to_numpy(dtype=object)
-    logical = np.array([isinstance(v, (bool, np.bool_)) for v in raw], dtype=bool)
+    if pd.api.types.is_bool_dtype(values.dtype):
+        logical = np.ones(len(values), dtype=bool)
+    elif values.dtype == object:  # a mixed column: True/False cells among numbers
+        logical = per_distinct(values, lambda v: isinstance(v, (bool, np.bool_))).astype(bool)
+    else:
+        logical = np.zeros(len(values), dtype=bool)
     numeric = pd.to_numeric(values.where(~logical, np.nan) if logical.any() else values,
                             errors="coerce").to_numpy(dtype=float)
 
     def where(i):
         return f"{cell(name, i)}: " if cell else ""
 
-    for i in np.flatnonzero(np.isnan(numeric)):
+    missing = np.flatnonzero(np.isnan(numeric))
+    blank = per_distinct(values.iloc[missing], _blank).astype(bool) if len(missing) else np.zeros(0, dtype=bool)
+    for i in missing[~blank | logical[missing]]:  # cells that are no numbers; blank cells are not given
         if logical[i]:
             errors[i].append(f"{where(i)}{raw[i]!r} is a logical value, not a number for {header}")
         elif not _blank(raw[i]):
@@ -149,7 +156,7 @@ def to_catalogue_units(table: pd.DataFrame, *, units: dict[str, str] | None = No
         target = known[name]
         display = f"{name} [{unit_text}]" if unit_text not in (None, "", "-", "1") else name
         if target == "":
-            columns[name] = [None if _blank(v) else _text_cell(v) for v in table[header]]
+            columns[name] = per_distinct(table[header], lambda v: None if _blank(v) else _text_cell(v)).tolist()
             continue
         columns[name], factor = _convert_column(table[header], display, unit_text, target, cell, name, errors,
                                                 warnings)
@@ -287,21 +294,21 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
     results = compute_supports(frame.reset_index(drop=True), f2_chart=f2_chart, labels=converted.labels,
                                model=model)
     results.index = table.index
-    _merge_row_messages(results, converted.row_errors, "error", first=True)  # the cell's own fault leads
-    _merge_row_messages(results, converted.row_warnings, "warning")
-    for position, level, message in fill_problems:
-        if level == "error":  # an unknown designation without dimensions: why the model's inputs are missing
-            _add_message(results, position, level, message, first=True)
-    for position, level, message in extra_problems + _implausible_relations(frame, converted.labels, from_table):
-        _add_message(results, position, level, message)
+    # the cell's own fault leads, before the model's message; an unknown designation without dimensions (why the
+    # model's inputs are missing) leads before that
+    _add_messages(results, [(i, "error", m, True) for i, errors in _flagged(converted.row_errors)
+                            for m in reversed(errors)]
+                  + [(i, "warning", m, False) for i, warnings in _flagged(converted.row_warnings) for m in warnings]
+                  + [(i, level, m, True) for i, level, m in fill_problems if level == "error"]
+                  + [(i, level, m, False) for i, level, m in
+                     extra_problems + _implausible_relations(frame, converted.labels, from_table)])
     if effects is not None:
         effects.apply(frame, results)
     extension_columns = []
     for ext in EXTENSIONS.values():
         with np.errstate(all="ignore"):  # rows in error are computed too, and masked afterwards
             columns, problems = ext.extend(frame, results)
-        for position, level, message in problems:
-            _add_message(results, position, level, message)
+        _add_messages(results, [(i, level, m, False) for i, level, m in problems])
         extension_columns.append((columns, output_units(owner=ext.owner)))
     return _assemble(table, results, extension_columns)
 
@@ -342,23 +349,32 @@ def _implausible_relations(frame: pd.DataFrame, labels: Labels, from_table: dict
     return problems
 
 
-def _merge_row_messages(results: pd.DataFrame, row_messages: list[list[str]], level: str, *,
-                        first: bool = False) -> None:
-    for position, messages in enumerate(row_messages):
-        for message in (reversed(messages) if first else messages):
-            _add_message(results, position, level, message, first=first)
+def _flagged(row_messages: list[list[str]]):
+    """(position, messages) of the rows that have messages."""
+    return ((i, messages) for i, messages in enumerate(row_messages) if messages)
 
 
-def _add_message(results: pd.DataFrame, position: int, level: str, message: str, *, first: bool = False) -> None:
-    row = results.index[position]
-    current = results.at[row, "message"]
-    joined = (f"{message}; {current}" if first else f"{current}; {message}") if current else message
-    results.at[row, "message"] = joined
-    if level == "error":
-        results.at[row, "status"] = "error"
-        results.loc[row, [c for c in RESULT_UNITS]] = np.nan
-    elif results.at[row, "status"] == "ok":
-        results.at[row, "status"] = "warning"
+def _add_messages(results: pd.DataFrame, items: list[tuple[int, str, str, bool]]) -> None:
+    """Add (row position, 'error' | 'warning', message, first) to the rows' messages in order: ``first`` puts
+    a message before the row's message so far. An error makes its row 'error' with NaN results, a warning
+    makes an 'ok' row 'warning'. One pass over the messages; the columns are written once."""
+    if not items:
+        return
+    messages = results["message"].to_numpy(dtype=object).copy()
+    status = results["status"].to_numpy(dtype=object).copy()
+    for position, level, message, first in items:
+        current = messages[position]
+        messages[position] = (f"{message}; {current}" if first else f"{current}; {message}") if current else message
+        if level == "error":
+            status[position] = "error"
+        elif status[position] == "ok":
+            status[position] = "warning"
+    failed = status == "error"
+    newly_failed = failed & (results["status"].to_numpy(dtype=object) != "error")
+    results["message"] = messages
+    results["status"] = status
+    if newly_failed.any():
+        results.loc[newly_failed, list(RESULT_UNITS)] = np.nan
 
 
 def _assemble(table: pd.DataFrame, results: pd.DataFrame, extension_columns) -> pd.DataFrame:
@@ -396,7 +412,7 @@ def _refuse_non_finite(out: pd.DataFrame, results: pd.DataFrame, written: list[s
     for header in (output_header("MR"), output_header("NR")):
         for i in np.flatnonzero(np.isnan(out[header].to_numpy(dtype=float)) & ~failed):
             bad.setdefault(int(i), header)
-    for i, header in sorted(bad.items()):
-        _add_message(results, i, "error", f"{header}: the result is not a finite number for these inputs; "
-                                          "check their magnitudes and units")
-        out.loc[out.index[i], numeric] = np.nan
+    _add_messages(results, [(i, "error", f"{header}: the result is not a finite number for these inputs; "
+                                         "check their magnitudes and units", False) for i, header in sorted(bad.items())])
+    if bad:
+        out.loc[out.index[sorted(bad)], numeric] = np.nan

@@ -34,35 +34,38 @@ def viscosity_model_rows(frame: pd.DataFrame):
     grade_nu40 = iso_vg_nu40(grade)
     with np.errstate(invalid="ignore"):
         grade_nu100 = nu100_from_viscosity_index(grade_nu40, VI_used)
+    has40, has100, has_grade = ~np.isnan(nu40), ~np.isnan(nu100), ~np.isnan(grade)
     A = np.full(n_rows, np.nan)
     B = np.full(n_rows, np.nan)
-    problems = []
-    for i in range(n_rows):
-        has40, has100, has_grade = not np.isnan(nu40[i]), not np.isnan(nu100[i]), not np.isnan(grade[i])
-        message = ""
-        if has_grade and (has40 or has100):
-            message = "iso_vg: give either iso_vg or nu40 and nu100, not both"
-        elif has_grade:
-            if np.isnan(grade_nu40[i]):
-                message = (f"iso_vg: {grade[i]:g} is not an ISO VG grade; expected one of "
-                           f"{', '.join(str(g) for g in iso_vg_grades())}")
-            elif np.isnan(grade_nu100[i]):
-                message = (f"VI: {VI_used[i]:g} cannot be reached by ISO VG {grade[i]:g} with nu100 >= 2 mm^2/s "
-                           "(ASTM D2270)")
-            else:
-                A[i], B[i] = walther_constants(grade_nu40[i], 40.0, grade_nu100[i], 100.0)
-        elif has40 != has100:
-            have, need = ("nu40", "nu100") if has40 else ("nu100", "nu40")
-            message = f"{need} [mm^2/s]: missing; {have} alone does not fix the viscosity-temperature line (ASTM D341)"
-        elif has40 and has100:
-            if not nu100[i] >= MIN_VISCOSITY:
-                message = f"nu100 [mm^2/s]: {nu100[i]:g} must be >= 2 (ASTM D341)"
-            elif not nu40[i] > nu100[i]:
-                message = f"nu40 [mm^2/s]: {nu40[i]:g} must be larger than nu100 = {nu100[i]:g}"
-            else:
-                A[i], B[i] = walther_constants(nu40[i], 40.0, nu100[i], 100.0)
-        if not has_grade and not np.isnan(VI[i]):
-            message = message or "VI: given without iso_vg; the viscosity index only serves an ISO VG grade"
-        if message:
-            problems.append((i, "error", message))
+    messages = np.full(n_rows, "", dtype=object)
+
+    def tell(rows: np.ndarray, text) -> None:
+        """The message of each flagged row (``text(i)``), built only for those rows."""
+        for i in np.flatnonzero(rows):
+            messages[i] = text(i)
+
+    tell(has_grade & (has40 | has100), lambda i: "iso_vg: give either iso_vg or nu40 and nu100, not both")
+    by_grade = has_grade & ~(has40 | has100)
+    no_grade = by_grade & np.isnan(grade_nu40)
+    tell(no_grade, lambda i: f"iso_vg: {grade[i]:g} is not an ISO VG grade; expected one of "
+                             f"{', '.join(str(g) for g in iso_vg_grades())}")
+    no_nu100 = by_grade & ~no_grade & np.isnan(grade_nu100)
+    tell(no_nu100, lambda i: f"VI: {VI_used[i]:g} cannot be reached by ISO VG {grade[i]:g} with nu100 >= 2 mm^2/s "
+                             "(ASTM D2270)")
+    good = by_grade & ~no_grade & ~no_nu100
+    A[good], B[good] = walther_constants(grade_nu40[good], 40.0, grade_nu100[good], 100.0)
+    tell(~has_grade & (has40 != has100),
+         lambda i: ("nu100 [mm^2/s]: missing; nu40 alone" if has40[i] else "nu40 [mm^2/s]: missing; nu100 alone")
+         + " does not fix the viscosity-temperature line (ASTM D341)")
+    by_points = ~has_grade & has40 & has100
+    with np.errstate(invalid="ignore"):
+        low100 = by_points & ~(nu100 >= MIN_VISCOSITY)
+        inverted = by_points & ~low100 & ~(nu40 > nu100)
+    tell(low100, lambda i: f"nu100 [mm^2/s]: {nu100[i]:g} must be >= 2 (ASTM D341)")
+    tell(inverted, lambda i: f"nu40 [mm^2/s]: {nu40[i]:g} must be larger than nu100 = {nu100[i]:g}")
+    good = by_points & ~low100 & ~inverted
+    A[good], B[good] = walther_constants(nu40[good], 40.0, nu100[good], 100.0)
+    tell(~has_grade & ~np.isnan(VI) & (messages == ""),
+         lambda i: "VI: given without iso_vg; the viscosity index only serves an ISO VG grade")
+    problems = [(int(i), "error", messages[i]) for i in np.flatnonzero(messages != "")]
     return A, B, problems
