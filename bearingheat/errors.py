@@ -22,6 +22,7 @@ __all__ = [
     "InputError",
     "DesignationError",
     "DutyCycleError",
+    "MissingExtraError",
     "CatalogueError",
     "F2ChartError",
     "ModelError",
@@ -112,7 +113,7 @@ class NoStandardSizeError(OutsideMethodError):
 
 class BushingInputError(BearingheatError):
     """An argument of the plain-bushing sizing that cannot be used: a load, speed, bore, K or [p] that is not
-    positive, an application, shaft, life or load type that seed 004 does not tabulate, or a table cell lost in
+    positive, an application, shaft, life or load type that the DU/DP bushing handbook does not tabulate, or a table cell lost in
     the seed's OCR."""
 
 
@@ -135,6 +136,10 @@ class DiagnoseError(BearingheatError):
 class DutyCycleError(InputError):
     """A duty cycle that cannot be summarised: shares not summing to 1, a negative share, a support whose
     rows name different bearings."""
+
+
+class MissingExtraError(BearingheatError):
+    """A feature needs an optional dependency that is not installed; the message names the extra."""
 
 
 class ExcelError(InputError):

@@ -75,3 +75,60 @@ def test_wheel_installs_into_a_fresh_venv_and_runs_the_demo(tmp_path):
     where = subprocess.run([str(python), "-c", "import bearingheat; print(bearingheat.__file__)"],
                            capture_output=True, text=True, cwd=tmp_path, check=True).stdout
     assert where.startswith(site)
+
+
+@pytest.mark.integration
+def test_wheel_and_sdist_contents(tmp_path):
+    proc = subprocess.run([sys.executable, "-m", "build", "--wheel", "--sdist", "--outdir", str(tmp_path), str(ROOT)],
+                          capture_output=True, text=True, check=False, env={**os.environ, "PIP_NO_INPUT": "1"})
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    wheel = zipfile.ZipFile(next(tmp_path.glob("bearingheat-*.whl")))
+    names = set(wheel.namelist())
+    version = __import__("bearingheat").__version__
+    assert any(n.endswith(".dist-info/licenses/LICENSE") for n in names)
+    assert not any(n.startswith(("tests/", ".venv/", "docs/", "benchmarks/")) for n in names)
+    for table in (ROOT / "tables").glob("*.csv"):
+        assert f"bearingheat/tables/{table.name}" in names
+    metadata = wheel.read(f"bearingheat-{version}.dist-info/METADATA").decode()
+    assert f"Version: {version}" in metadata and "License-Expression: MIT" in metadata
+    assert "Provides-Extra: plot" in metadata and "Requires-Dist: matplotlib>=3.7; extra == \"plot\"" in metadata
+    assert not any(line.startswith("Requires-Dist: matplotlib") and "extra" not in line for line in metadata.splitlines())
+    import tarfile
+    with tarfile.open(next(tmp_path.glob("bearingheat-*.tar.gz"))) as sdist:
+        members = {m.split("/", 1)[1] for m in sdist.getnames() if "/" in m}
+    for needed in ("LICENSE", "README.md", "pyproject.toml", "bearingheat/__init__.py", "bearingheat/cli/calc.py"):
+        assert needed in members, needed
+    assert {f"bearingheat/tables/{t.name}" for t in (ROOT / "tables").glob("*.csv")} <= members
+
+
+@pytest.mark.integration
+def test_the_core_runs_without_matplotlib_and_plots_name_the_extra(tmp_path):
+    import sysconfig
+    import venv
+
+    proc = subprocess.run([sys.executable, "-m", "pip", "wheel", "--no-deps", "-q", "-w", str(tmp_path / "dist"),
+                           str(ROOT)], capture_output=True, text=True, check=False,
+                          env={**os.environ, "PIP_NO_INPUT": "1"})
+    assert proc.returncode == 0, proc.stderr
+    env_dir = tmp_path / "venv"
+    venv.EnvBuilder(with_pip=False).create(env_dir)
+    python = env_dir / "bin" / "python"
+    site = Path(subprocess.run([str(python), "-c", "import sysconfig; print(sysconfig.get_paths()['purelib'])"],
+                               capture_output=True, text=True, check=True).stdout.strip())
+    (site / "dependencies.pth").write_text(sysconfig.get_paths()["purelib"] + "\n")
+    # matplotlib is not installed in this environment: its package is shadowed by one that cannot be imported
+    (site / "matplotlib").mkdir()
+    (site / "matplotlib" / "__init__.py").write_text("raise ImportError(\"No module named 'matplotlib'\")\n")
+    install = subprocess.run([sys.executable, "-m", "pip", "install", "--no-deps", "--no-index", "-q", "--target",
+                              str(site), str(next((tmp_path / "dist").glob("*.whl")))], capture_output=True, text=True,
+                             check=False)
+    assert install.returncode == 0, install.stderr
+    demo = str(ROOT / "examples" / "gearbox_shaft.csv")
+    calc = subprocess.run([str(python), "-m", "bearingheat", "calc", demo, "-q"], capture_output=True, text=True,
+                          cwd=tmp_path, check=False)
+    assert calc.returncode == 0, calc.stderr
+    plot = subprocess.run([str(python), "-m", "bearingheat", "plot", demo, "-o", str(tmp_path / "p.png")],
+                          capture_output=True, text=True, cwd=tmp_path, check=False)
+    assert plot.returncode == 2
+    assert plot.stderr.strip().endswith("plotting needs matplotlib, which is not installed: pip install "
+                                        "'bearingheat[plot]'")

@@ -233,6 +233,23 @@ def validation_and_conditional_formats(folder):
 
 
 @case
+def validation_and_conditional_formats_with_formulas(folder):
+    """The designer's own conditional formats (and their dxfs) beside the live check's."""
+    case_ = validation_and_conditional_formats(folder)
+    case_.formulas = True
+    return case_
+
+
+@case
+def custom_number_formats_with_formulas(folder):
+    """Number formats of the designer's (numFmt ids 164 and up) beside bearingheat's."""
+    def build(wb, ws):
+        ws.write_number("Z3", 1.5, wb.add_format({"num_format": "0.000"}))
+        ws.write_number("Z4", 2.5, wb.add_format({"num_format": "[>=100]0;[>=10]0.0;0.00"}))
+    return Case(xlsxwriter_book(folder / "formats.xlsx", build), present=("xl/styles.xml",), formulas=True)
+
+
+@case
 def sparklines(folder):
     return Case(xlsxwriter_book(folder / "sparklines.xlsx",
                                 lambda wb, ws: ws.add_sparkline("P3", {"range": "Supports!C3:M3"})))
@@ -628,6 +645,18 @@ def results_sheet_deleted_by_the_designer(folder):
 
 
 @case
+def copy_of_the_inputs_deleted_by_the_designer(folder):
+    """The hidden copy of the inputs unhidden and deleted: the next --formulas run writes a new one."""
+    path = xlsxwriter_book(folder / "copy_deleted.xlsx", lambda wb, ws: None)
+    run_in_place(path, formulas=True)
+    part = results_part(path, "Calc inputs")
+    edit_package(path, {"xl/workbook.xml": lambda d: re.sub(
+        rb"'Calc inputs'!\$1", b"#REF!$1", re.sub(rb'<sheet [^>]*name="Calc inputs"[^>]*/>', b"", d)),
+        "[Content_Types].xml": sub(rf'<Override PartName="/{part}"[^>]*/>', "")}, remove={part})
+    return Case(path, formulas=True)
+
+
+@case
 def results_sheet_with_print_setup(folder):
     path = xlsxwriter_book(folder / "print.xlsx", lambda wb, ws: None)
     run_in_place(path)
@@ -635,9 +664,11 @@ def results_sheet_with_print_setup(folder):
     rels = ('<?xml version="1.0" encoding="UTF-8" standalone="yes"?>\n<Relationships xmlns="http://schemas.'
             'openxmlformats.org/package/2006/relationships"><Relationship Id="rId1" Type="'
             f'{REL}/printerSettings" Target="../printerSettings/printerSettings9.bin"/></Relationships>').encode()
-    edit_package(path, {part: sub("<pageMargins[^>]*/>", '<pageMargins left="0.2" right="0.2" top="0.5" bottom="0.5" '
-                                  'header="0.1" footer="0.1"/><pageSetup paperSize="9" orientation="landscape" '
-                                  'r:id="rId1"/><headerFooter><oddHeader>&amp;CLosses</oddHeader></headerFooter>'),
+    # the designer's print setup instead of bearingheat's (margins, page setup with printer settings, header)
+    edit_package(path, {part: sub("<pageMargins.*</headerFooter>", '<pageMargins left="0.2" right="0.2" top="0.5" '
+                                  'bottom="0.5" header="0.1" footer="0.1"/><pageSetup paperSize="9" '
+                                  'orientation="portrait" r:id="rId1"/><headerFooter><oddHeader>&amp;CLosses'
+                                  '</oddHeader></headerFooter>'),
                         "[Content_Types].xml": sub("</Types>", '<Default Extension="bin" ContentType="application/'
                                                    'vnd.openxmlformats-officedocument.spreadsheetml.printerSettings"/>'
                                                    "</Types>")},

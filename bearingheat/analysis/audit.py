@@ -6,9 +6,9 @@ Two audits, both on tables with unit headers:
   roller bearing with ribs carries Fa) for each bearing of a measured data
   set (the columns of ``calc`` plus ``M [N*mm]``) by least squares with
   ``scipy.optimize.least_squares``, gives 95 % confidence intervals from the
-  Jacobian and flags the seed 002 table values that lie outside them.
+  Jacobian and flags the Schaeffler catalogue table values that lie outside them.
 
-  The model is linear in the coefficients (seed 002, pp. 64-70)::
+  The model is linear in the coefficients (the Schaeffler catalogue, pp. 64-70)::
 
       M = f0·X0 + a1·X1 + f2·X2,  X0 = M0/f0 = g(ν·n)·dM³·1e-7,
       X1 = M1/a1 = load·dM·(P0/C0 or Fa/C0)^x,  X2 = Fa·dM
@@ -148,7 +148,7 @@ def audit_coefficients(table: pd.DataFrame, *, confidence: float = CONFIDENCE) -
     """Fit f0, f1 (and f2) for each bearing of a measured table and compare them with the tables.
 
     Returns one row per bearing and coefficient: ``bearing``, ``coefficient``
-    (f0, f1 or f1_a, f2), ``table`` (the seed 002 value, NaN for f2 read off
+    (f0, f1 or f1_a, f2), ``table`` (the Schaeffler catalogue value, NaN for f2 read off
     a chart), ``fitted``, ``se``, ``ci_low``, ``ci_high``, ``rows``,
     ``rel_rmse`` [1], ``flag`` ('' or 'table value outside the 95 % interval')
     and ``status`` ('ok' or the reason the bearing could not be fitted).
@@ -345,7 +345,7 @@ def audit_reference_speeds(table: pd.DataFrame, *, speed_column: str | None = No
     """n_θr from the tables against the published n_θr, and the f0 and f1 it implies, for each bearing of a list.
 
     ``table`` has unit headers: ``designation`` (or ``type`` and ``series``
-    of the seed 002 tables), ``d``, ``D``, ``B``, ``T`` (tapered), ``C0``
+    of the Schaeffler catalogue tables), ``d``, ``D``, ``B``, ``T`` (tapered), ``C0``
     and the published speed (``n_thr``, ``n_B``, ... see
     :data:`REFERENCE_SPEED_COLUMNS`, or ``speed_column``). Optional
     ``family`` and ``series`` name the series (else the designation's type

@@ -1,6 +1,6 @@
-"""Coast-down (run-down) analysis of a rotor on plain or rolling bearings: the fits (seed 003, seed 002).
+"""Coast-down (run-down) analysis of a rotor on plain or rolling bearings: the fits (the TMM-7M lab sheet, the Schaeffler catalogue).
 
-A constant reduced friction coefficient f (seed 003) gives a straight
+A constant reduced friction coefficient f (the TMM-7M lab sheet) gives a straight
 run-down line. To test that assumption the resisting torque is fitted as
 nested models (Coulomb; + viscous; + aerodynamic)::
 
@@ -9,11 +9,11 @@ nested models (Coulomb; + viscous; + aerodynamic)::
 by least squares on n(t) itself (the model is integrated, not differentiated,
 :func:`bearingheat.kernels.coastdown.rundown_speed`), and the model is chosen
 by cross-validation and by the Bayesian information criterion. A
-rolling-bearing spindle is fitted with the catalogue form of seed 002
+rolling-bearing spindle is fitted with the catalogue form of the Schaeffler catalogue
 instead: M = z·(M0(n) + M1).
 
 The formulas are the kernels of :mod:`bearingheat.kernels.coastdown`.
-Units: t [s], n [1/min], I [kg·m²], G [N], r [mm], torques [N·m] (seed 002
+Units: t [s], n [1/min], I [kg·m²], G [N], r [mm], torques [N·m] (the Schaeffler catalogue
 M0 and M1 in [N·mm]), energy [J]. The unit-aware functions
 :func:`~bearingheat.api.coastdown.analyse_coastdown` and
 :func:`~bearingheat.api.coastdown.analyse_spindle_coastdown` take pint
@@ -170,7 +170,7 @@ def _select_model(fits: dict[str, ModelFit]) -> str:
 
 # --------------------------------------------------------------------------- interval table (formula 2)
 def interval_friction_table(t, n_smooth, I, G=None, r=None, dn=None, dt=None, count=10):
-    """Interval-average torque and seed 003 formula (2) over chosen intervals of the smoothed run-down.
+    """Interval-average torque and the TMM-7M lab sheet formula (2) over chosen intervals of the smoothed run-down.
 
     Intervals are speed steps ``dn`` [1/min] down from the first smoothed speed
     (the seed's way: read Δt for a chosen Δn off the diagram), or time steps
@@ -222,7 +222,7 @@ def _first_crossing(t, speed, level):
 # --------------------------------------------------------------------------- results
 @dataclass
 class SpindleFit:
-    """Seed 002 catalogue form fitted to a run-down of a shaft on ``bearings`` rolling bearings."""
+    """The Schaeffler catalogue catalogue form fitted to a run-down of a shaft on ``bearings`` rolling bearings."""
 
     fit: ModelFit
     nu: float  # [mm²/s]
@@ -380,7 +380,7 @@ def _usable_derivative_mask(n_smooth, n_max):
 
 def coastdown_analysis(t, n, I, G=None, r=None, *, window=None, interval_dn=None, interval_dt=None,
                        interval_count=10) -> CoastdownResult:
-    """Analyse a run-down n(t): seed 003 formulas (1) and (2) and the nested torque models.
+    """Analyse a run-down n(t): the TMM-7M lab sheet formulas (1) and (2) and the nested torque models.
 
     t [s], n [1/min] samples; I [kg·m²]; G [N] and r [mm] (None: no friction
     coefficient, torques only); window: Savitzky–Golay window in samples
@@ -457,7 +457,7 @@ def coastdown_analysis(t, n, I, G=None, r=None, *, window=None, interval_dn=None
 
 
 def spindle_coastdown_fit(t, n, I, nu, dM, bearings=2, P=None, f0_catalogue=None) -> SpindleFit:
-    """Fit f0 and M1 of the seed 002 form to a run-down of a shaft on rolling bearings.
+    """Fit f0 and M1 of the Schaeffler catalogue form to a run-down of a shaft on rolling bearings.
 
     M(n) = bearings·(M0(n; ν, dM, f0) + M1) [N·mm], M0 from
     :func:`rolling_bearing_M0_seed002`, M1 = f1·P·dM constant during the
@@ -475,7 +475,7 @@ def spindle_coastdown_fit(t, n, I, nu, dM, bearings=2, P=None, f0_catalogue=None
     n_max = float(np.max(n))
     if nu * n_max < 2000.0:
         raise CoastdownError(
-            f"spindle coast-down: ν·n reaches only {nu * n_max:.0f} mm²/s·1/min (< 2000): M0 of seed 002 is constant "
+            f"spindle coast-down: ν·n reaches only {nu * n_max:.0f} mm²/s·1/min (< 2000): M0 of the Schaeffler catalogue is constant "
             "over the whole run-down and cannot be told apart from M1"
         )
     n_smooth, dn_dt = savitzky_golay_irregular(t, n, _default_window(t.size))

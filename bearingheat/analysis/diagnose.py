@@ -4,7 +4,7 @@
 with the columns of ``calc`` plus ``M [N*mm]`` (any torque unit), optional
 ``T_oil [degC]`` and ``t [h]``, and:
 
-1. computes the catalogue model of seed 002 for every row and its error
+1. computes the catalogue model of the Schaeffler catalogue for every row and its error
    (RMSE [N·mm], MAPE [%], bias [N·mm]);
 2. measures the structure of the relative residual against n, ν·n, the
    load, Fa/Fr, t, T_oil (Spearman rank correlation) and the bearing

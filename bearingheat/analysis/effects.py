@@ -1,6 +1,6 @@
 """Candidate effects the catalogue friction model lacks: a library of parametrised extensions.
 
-Each candidate is a physical extension of the seed 002 model
+Each candidate is a physical extension of the Schaeffler catalogue model
 M_R = M0 + M1 (+ M2), written on the kernel outputs of
 :func:`bearingheat.calc.models.compute_supports` (catalogue units: N·mm, N,
 1/min, mm²/s, mm, W, h, °C); the physics of each extension is a kernel of
@@ -14,14 +14,14 @@ candidate; the names are the public vocabulary of ``bearingheat diagnose``:
 name               extension                                                          parameters
 ================== =================================================================  =====================
 none               M = M0 + M1 + M2 (the catalogue model)                             (none)
-seal_drag          M += M_seal[bearing], constant in n (contact seals, seed 002 p.64)  M_seal [N*mm] per bearing
+seal_drag          M += M_seal[bearing], constant in n (contact seals, the Schaeffler catalogue p.64)  M_seal [N*mm] per bearing
 f0_scale           M0 -> k·M0 (oil level above the lowest rolling element: k <= 3,    k [1] >= 1
-                   freshly greased: k = 2..5; seed 002 p. 64)
+                   freshly greased: k = 2..5; the Schaeffler catalogue p. 64)
 viscosity_heating  the bearing runs ΔT = R_th·N_R above the oil temperature given, so   R_th [K/W] >= 0
                    ν -> ν·exp(−b·ΔT) with b = 0.03 1/K (self-consistent in N_R)
 drag_losses        M += c·1e-7·dM³·(n·dM/1000)^p, churning faster than n^(2/3)         c [1] >= 0, p in [0.9, 3]
 run_in             M0 -> M0·(1 + a·exp(−t/τ)), extra friction that decays with t      a [1] >= 0, tau [h]
-preload            Fa -> Fa + F_pre[bearing] before P0, P1 and f1 (seed 002 p. 68)    F_pre [N] per bearing
+preload            Fa -> Fa + F_pre[bearing] before P0, P1 and f1 (the Schaeffler catalogue p. 68)    F_pre [N] per bearing
 ================== =================================================================  =====================
 
 Every bound is physical (an effect adds friction, a preload pushes), so a
@@ -288,7 +288,7 @@ class NoEffect(Candidate):
 
 class SealDrag(Candidate):
     name = "seal_drag"
-    description = "a contact-seal torque per bearing, constant in n (seed 002 p. 64: seal friction comes on top)"
+    description = "a contact-seal torque per bearing, constant in n (the Schaeffler catalogue p. 64: seal friction comes on top)"
     key_regressor = "n"
     required = ("M_seal [N*mm]",)
 
@@ -323,7 +323,7 @@ class SealDrag(Candidate):
 
 class F0Scale(Candidate):
     name = "f0_scale"
-    description = "speed-dependent friction k times the table f0 (oil level, fresh grease; seed 002 p. 64)"
+    description = "speed-dependent friction k times the table f0 (oil level, fresh grease; the Schaeffler catalogue p. 64)"
     key_regressor = "nu*n"
     required = ("k",)
 
@@ -474,7 +474,7 @@ class RunIn(Candidate):
 
 class Preload(Candidate):
     name = "preload"
-    description = "an undeclared axial preload F_pre per bearing added to Fa before P0, P1 and f1 (seed 002 p. 68)"
+    description = "an undeclared axial preload F_pre per bearing added to Fa before P0, P1 and f1 (the Schaeffler catalogue p. 68)"
     key_regressor = "load"
     required = ("F_pre [N]",)
 

@@ -1,13 +1,13 @@
-"""The DP11A lab rig of seed 000: processing a table of readings (tasks 1-3, tables 4 and 5, the comparison).
+"""The DP11A lab rig of the DP11A manual: processing a table of readings (tasks 1-3, tables 4 and 5, the comparison).
 
-Readings: bearing (seed 000 table 3: 1000095, 18, 101), Q [kg], β [deg]
-(inclination of the spindle axis), n [1/min], T [N·mm]. Seed 000 pp. 11-13:
+Readings: bearing (the DP11A manual table 3: 1000095, 18, 101), Q [kg], β [deg]
+(inclination of the spindle axis), n [1/min], T [N·mm]. The DP11A manual pp. 11-13:
 loads Fa = 9.81·Q·cos β, Fr = 9.81·Q·sin β [N]; P0 = max(X0·Fr + Y0·Fa, Fr)
 with X0 = 0.6, Y0 = 0.5 (table 1, radial ball bearing); task 1 μ for each
 speed, task 2 f0 and T_F for each β, task 3 f and T0 for each speed, by the
 closed forms of :mod:`bearingheat.kernels.lab`, each checked against a
 general least-squares solver. The comparison runs the catalogue model of
-seed 002 (:func:`bearingheat.calc.table.calc`) on the same bearings.
+The Schaeffler catalogue (:func:`bearingheat.calc.table.calc`) on the same bearings.
 
 The report, its tables and figures are written by :mod:`bearingheat.io.reports.lab`.
 """
@@ -106,14 +106,14 @@ class LabResult:
     task1: pd.DataFrame | None = None           # bearing, beta, n, mu, mu_lstsq, points
     task2: pd.DataFrame | None = None           # bearing, Q, beta, f0, T_F, (lstsq), f0_catalogue_equivalent
     task3: pd.DataFrame | None = None           # bearing, beta, n, f, T0, (lstsq)
-    comparison: pd.DataFrame | None = None      # per bearing: measured vs seed 002 / seed 000 models
+    comparison: pd.DataFrame | None = None      # per bearing: measured vs the Schaeffler catalogue / the DP11A manual models
     notes: list[str] = field(default_factory=list)
 
 
 def process_lab(table: pd.DataFrame, *, nu: float | None = None, lubrication: str = "grease") -> LabResult:
-    """Run the three tasks of seed 000 on a table of readings (unit headers).
+    """Run the three tasks of the DP11A manual on a table of readings (unit headers).
 
-    ``nu`` [mm²/s] is the viscosity for the seed 002 comparison when the
+    ``nu`` [mm²/s] is the viscosity for the Schaeffler catalogue comparison when the
     table has no ``nu`` column; without either the comparison is skipped.
     """
     r = read_lab_table(table)
@@ -168,7 +168,7 @@ def process_lab(table: pd.DataFrame, *, nu: float | None = None, lubrication: st
             result.task2["f0_seed002_equivalent"] = catalogue_f0_equivalent(
                 result.task2["f0"].to_numpy(), nu_of.loc[keys].to_numpy())
     else:
-        result.notes.append("no viscosity given (column 'nu [mm^2/s]' or --nu): the seed 002 comparison is skipped")
+        result.notes.append("no viscosity given (column 'nu [mm^2/s]' or --nu): the Schaeffler catalogue comparison is skipped")
     comp = []
     for bearing, g in r.groupby("bearing", sort=True):
         entry = {"bearing": bearing, "readings": len(g), "T_mean [N*mm]": g["T"].mean(),
@@ -185,7 +185,7 @@ def process_lab(table: pd.DataFrame, *, nu: float | None = None, lubrication: st
 # The worked example (generated)
 # ---------------------------------------------------------------------------------------------
 
-#: parameters the example was generated with: seed 000 two-term model, f0 (seed 000 sense), f, c
+#: parameters the example was generated with: the DP11A manual two-term model, f0 (the DP11A manual sense), f, c
 EXAMPLE_TRUTH = {"f0": 3e-8, "f": LOAD_COEFFICIENT_RADIAL, "c": LOAD_EXPONENT_RADIAL, "noise": 0.02,
                  "nu": 20.0, "seed": 2016}
 
@@ -193,7 +193,7 @@ EXAMPLE_TRUTH = {"f0": 3e-8, "f": LOAD_COEFFICIENT_RADIAL, "c": LOAD_EXPONENT_RA
 def generate_example(seed: int = EXAMPLE_TRUTH["seed"]) -> pd.DataFrame:
     """The shipped example examples/lab_dp11a_example.csv: GENERATED readings, not measurements.
 
-    Follows the procedure of seed 000: the three bearings of table 3, the
+    Follows the procedure of the DP11A manual: the three bearings of table 3, the
     weights 0.5, 1 and 2 kg, β = 30°, 60°, 90°, four speeds in the rig's
     range (motor 3600-4600 1/min over a 1.5 belt ratio), T from the seed's
     two-term formula with :data:`EXAMPLE_TRUTH` and 2 % noise, rounded to 4

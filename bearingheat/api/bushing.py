@@ -1,4 +1,4 @@
-"""Sizing of self-lubricating DU/DP bushings and thrust washers with units (seed 004).
+"""Sizing of self-lubricating DU/DP bushings and thrust washers with units (the DU/DP bushing handbook).
 
 The unit boundary of :mod:`bearingheat.kernels.bushing`: loads, speeds,
 lengths, temperatures and the admissible K = pV and [p] are pint Quantities,
@@ -26,7 +26,7 @@ _RESULT_UNITS = {"[N]": "N", "[1/min]": "1/min", "[mm]": "mm", "[N/mm^2]": "N/mm
 def _admissible(application, shaft, life, load_type, T, K, p_adm):
     if K is None:
         if None in (shaft, life):
-            raise BushingInputError("give either K, or shaft and life to read K from seed 004 table 25")
+            raise BushingInputError("give either K, or shaft and life to read K from the DU/DP bushing handbook table 25")
         K_table = pv_limit_seed004_table25(application, shaft, float(magnitude(life, "h", "life")))
     else:
         K_table = float(magnitude(K, "N/mm^2*m/s", "K"))

@@ -1,4 +1,4 @@
-"""Coast-down analysis with pint Quantities (seed 003; the seed 002 rolling form): the unit boundary.
+"""Coast-down analysis with pint Quantities (the TMM-7M lab sheet; the Schaeffler catalogue rolling form): the unit boundary.
 
 Times, speeds and rig data come in as Quantities and are converted once to
 the units of :mod:`bearingheat.analysis.coastdown` (t [s], n [1/min],

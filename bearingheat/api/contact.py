@@ -1,10 +1,10 @@
-"""Ball bearing contact with units (seed 001): lengths, angles, forces and speeds as pint Quantities.
+"""Ball bearing contact with units (Zaitsev & Voronkin): lengths, angles, forces and speeds as pint Quantities.
 
 The unit boundary of :mod:`bearingheat.kernels.contact`: every argument is
 converted once to the kernels' catalogue units (mm, N, 1/min, deg), every
 result comes back as a Quantity in a :class:`BallContact`.
 
-Source: seed 001, В.А. Зайцев, В.А. Воронкин, «Расчёт осевых усилий и рабочих
+Source: В.А. Зайцев, В.А. Воронкин, «Расчёт осевых усилий и рабочих
 углов контакта подшипников качения при оценке их качества на стендах»
 (ФГУП «НПП ВНИИЭМ», 2009).
 """

@@ -1,10 +1,10 @@
-"""calc extension ``contact``: the minimum axial load of ball bearings (seed 001) for rows with ball geometry.
+"""calc extension ``contact``: the minimum axial load of ball bearings (Zaitsev & Voronkin) for rows with ball geometry.
 
 Optional calc inputs ``z``, ``Dw [mm]`` and ``dm_pitch [mm]`` (number of
 balls, ball diameter, pitch diameter) with the contact angle ``alpha [deg]``
 (or the nominal angle of the designation, e.g. 40° for 72..-B) give the
 output column ``Fa_min [N]``; a row whose Fa is below it at its speed gets
-a warning: the balls may skid (seed 001, p. 1). The formula is the kernel
+a warning: the balls may skid (Zaitsev & Voronkin, p. 1). The formula is the kernel
 :func:`bearingheat.kernels.contact.minimum_axial_load`.
 """
 from __future__ import annotations
@@ -61,7 +61,7 @@ def extend(frame: pd.DataFrame, results: pd.DataFrame):
     for i in np.flatnonzero(has_geometry & is_ball & ok):
         if np.isnan(alpha[i]):
             problems.append((i, "warning", "Fa_min: give alpha [deg] (the contact angle) to check the minimum "
-                                           "axial load against ball skidding (seed 001)"))
+                                           "axial load against ball skidding (Zaitsev & Voronkin)"))
             continue
         try:
             fa_min[i] = minimum_axial_load(z[i], dw[i], pitch[i], n[i], alpha[i])
@@ -70,5 +70,5 @@ def extend(frame: pd.DataFrame, results: pd.DataFrame):
             continue
         if Fa[i] < fa_min[i]:
             problems.append((i, "warning", f"Fa = {Fa[i]:.4g} N is below the minimum axial load "
-                                           f"{fa_min[i]:.4g} N at {n[i]:g} 1/min: the balls may skid (seed 001)"))
+                                           f"{fa_min[i]:.4g} N at {n[i]:g} 1/min: the balls may skid (Zaitsev & Voronkin)"))
     return pd.DataFrame({"Fa_min": fa_min}, index=frame.index), problems

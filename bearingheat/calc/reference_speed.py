@@ -140,7 +140,7 @@ def _details(frame: pd.DataFrame) -> pd.DataFrame:
         geometry_ok[i] = True
         f0_oil = entry.f0_oil
         if math.isnan(f0_oil):
-            reason[i] = f"n_thr: {entry.label} has no oil-bath f0 in seed 002 (the table prints a dash)"
+            reason[i] = f"n_thr: {entry.label} has no oil-bath f0 in the Schaeffler catalogue (the table prints a dash)"
             continue
         f0[i] = friction.f0_needle(f0_oil, B[i], d[i]) if entry.f0_basis == "B/(33+d)" else f0_oil
         f1_a[i], f1_x[i] = entry.f1_a, entry.f1_x

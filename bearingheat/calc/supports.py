@@ -169,7 +169,7 @@ def bearing_constants(resolved: ResolvedBearing, lubrication: str | None, arrang
         "contact_angle": math.nan if resolved.contact_angle is None else resolved.contact_angle,
         "label": entry.label, "prefix": resolved.prefix,
         "notes": parsed.notes if parsed else (), "error": "", "resolved": True,
-        # a paired row is one support of two bearings (X or O arrangement): its P1 is the pair's (seed 002,
+        # a paired row is one support of two bearings (X or O arrangement): its P1 is the pair's (the Schaeffler catalogue,
         # p. 68) and its M0 is that of both bearings, each of which churns its own lubricant
         "bearings": 2.0 if arrangement == "paired" else 1.0,
         "bore": parsed.bore if parsed and parsed.bore else math.nan,
@@ -182,7 +182,7 @@ def bearing_constants(resolved: ResolvedBearing, lubrication: str | None, arrang
             return out
         f0 = entry.f0_for(lubrication)
         if math.isnan(f0):
-            out["error"] = (f"lubrication: {lubrication!r} has no f0 for {entry.label} (seed 002 prints a dash); "
+            out["error"] = (f"lubrication: {lubrication!r} has no f0 for {entry.label} (the Schaeffler catalogue prints a dash); "
                             "use grease or oil_mist, or give f0")
             return out
         out["f0_table"] = f0
@@ -193,7 +193,7 @@ def bearing_constants(resolved: ResolvedBearing, lubrication: str | None, arrang
         rule = entry.p1_single if arrangement == "single" else entry.p1_paired
         if rule is None:
             out["error"] = (f"arrangement: {arrangement!r} has no P1 rule for {entry.label} "
-                            "(seed 002, p. 68 prints a dash)")
+                            "(the Schaeffler catalogue, p. 68 prints a dash)")
             return out
         out["p1_rule"] = rule
     return out

@@ -1,6 +1,6 @@
-"""Admissible pV and pressure of self-lubricating DU/DP bushings and thrust washers (seed 004).
+"""Admissible pV and pressure of self-lubricating DU/DP bushings and thrust washers (the DU/DP bushing handbook).
 
-Seed 004 works in kgf/cm² and m/s; its tables are stored as typed, in
+The DU/DP bushing handbook works in kgf/cm² and m/s; its tables are stored as typed, in
 ``tables/bushing_pv_limits.csv`` (table 25, K = pV in kgf/cm²·m/s) and
 ``tables/bushing_pressure_limits.csv`` (the admissible specific load [p] in
 kgf/cm², p. 167). The lookups return catalogue units: N/mm²·m/s and N/mm²,
@@ -23,7 +23,7 @@ KGF_PER_CM2 = 9.80665 / 100.0
 
 
 def pv_limit_seed004_table25(application: str, shaft: str, life: float) -> float:
-    """Admissible K = pV [N/mm²·m/s] from seed 004 table 25 (stored in kgf/cm²·m/s).
+    """Admissible K = pV [N/mm²·m/s] from the DU/DP bushing handbook table 25 (stored in kgf/cm²·m/s).
 
     application: thrust_washer, guide, bushing_constant_load,
     bushing_rotating_load, bushing_oscillating; shaft: soft (mild steel, also
@@ -37,28 +37,28 @@ def pv_limit_seed004_table25(application: str, shaft: str, life: float) -> float
     for column, value in (("application", application), ("shaft", shaft)):
         choices = sorted(set(table[column]))
         if value not in choices:
-            raise BushingInputError(f"seed 004 table 25: {column} {value!r} unknown; "
+            raise BushingInputError(f"the DU/DP bushing handbook table 25: {column} {value!r} unknown; "
                                     f"expected one of {', '.join(choices)}")
     lives = sorted(set(table["life"].astype(int)))
     if life not in lives:
-        raise BushingInputError(f"seed 004 table 25: life {life:g} h not tabulated; expected one of "
+        raise BushingInputError(f"the DU/DP bushing handbook table 25: life {life:g} h not tabulated; expected one of "
                                 f"{', '.join(f'{x:g}' for x in lives)} h (or give K directly)")
     row = table[(table["application"] == application) & (table["shaft"] == shaft) & (table["life"] == life)]
     value = float(row["K"].iloc[0])
     if not math.isfinite(value):
-        raise BushingInputError(f"seed 004 table 25: K for {application}, {shaft} shaft, {life:g} h was lost in "
+        raise BushingInputError(f"the DU/DP bushing handbook table 25: K for {application}, {shaft} shaft, {life:g} h was lost in "
                                 "the OCR of the seed; give K directly")
     return value * KGF_PER_CM2
 
 
 def pressure_limit_seed004(load_type: str) -> float:
-    """Admissible specific load [p] [N/mm²] for a load type, seed 004 p. 167 (stored in kgf/cm²).
+    """Admissible specific load [p] [N/mm²] for a load type, the DU/DP bushing handbook p. 167 (stored in kgf/cm²).
 
     >>> round(pressure_limit_seed004("rotating_fixed_load_point"), 3)
     55.408
     """
     table = load_table("bushing_pressure_limits")
     if load_type not in set(table["load_type"]):
-        raise BushingInputError(f"seed 004 [p]: load type {load_type!r} unknown; expected one of "
+        raise BushingInputError(f"the DU/DP bushing handbook [p]: load type {load_type!r} unknown; expected one of "
                                 f"{', '.join(table['load_type'])}")
     return float(table.loc[table["load_type"] == load_type, "p_adm"].iloc[0]) * KGF_PER_CM2

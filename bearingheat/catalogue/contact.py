@@ -1,6 +1,6 @@
 """Static load factors X0, Y0 of single-row angular contact ball bearings against the contact angle.
 
-Seed 000 (SSAU lab manual, 2016), table 1, typed into
+The DP11A manual (SSAU lab manual, 2016), table 1, typed into
 ``tables/static_load_factors.csv``: α = 18°, 20°, 26°, 30°, 36° with X0 = 0.5
 and Y0 = 0.43, 0.42, 0.37, 0.33, 0.28. Between the rows the factors are
 interpolated linearly in α; outside 18°–36° they are refused, never
@@ -29,7 +29,7 @@ _TYPE = "angular_contact_ball"
 
 @functools.lru_cache(maxsize=None)
 def _angular_contact_factors() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Contact angles [deg], X0 and Y0 of the angular contact rows of seed 000 table 1, by angle (read-only)."""
+    """Contact angles [deg], X0 and Y0 of the angular contact rows of the DP11A manual table 1, by angle (read-only)."""
     table = load_table(_TABLE)
     rows = table[table["bearing_type"] == _TYPE].sort_values("contact_angle")
     columns = (rows["contact_angle"].to_numpy(float), rows["X0"].to_numpy(float), rows["Y0"].to_numpy(float))
@@ -39,7 +39,7 @@ def _angular_contact_factors() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 
 def static_load_factor_angles() -> tuple[float, float]:
-    """The range (lowest, highest) of contact angles [deg] that seed 000 table 1 covers.
+    """The range (lowest, highest) of contact angles [deg] that the DP11A manual table 1 covers.
 
     >>> static_load_factor_angles()
     (18.0, 36.0)
@@ -57,7 +57,7 @@ def _interpolate_factor(alpha, column: int, name: str):
     bad = (alpha < lo) | (alpha > hi)  # NaN never counts as bad
     if bad.any():
         flat = int(np.flatnonzero(bad.ravel())[0])
-        message = (f"alpha = {alpha.ravel()[flat]:g} deg is outside the contact angles of seed 000 table 1 "
+        message = (f"alpha = {alpha.ravel()[flat]:g} deg is outside the contact angles of the DP11A manual table 1 "
                    f"({lo:g} to {hi:g} deg); {name} is not extrapolated")
         if bad.ndim == 0:
             raise ContactInputError(message)
@@ -76,7 +76,7 @@ def _interpolate_factor(alpha, column: int, name: str):
 def y0_for_contact_angle(alpha):
     """Axial static load factor Y0 of a single-row angular contact ball bearing [1].
 
-    Linear interpolation in α [deg] between the rows of seed 000, table 1
+    Linear interpolation in α [deg] between the rows of the DP11A manual, table 1
     (α = 18°, 20°, 26°, 30°, 36°: Y0 = 0.43, 0.42, 0.37, 0.33, 0.28); refused
     outside 18°–36°. NaN gives NaN.
 
@@ -89,7 +89,7 @@ def y0_for_contact_angle(alpha):
 def x0_for_contact_angle(alpha):
     """Radial static load factor X0 of a single-row angular contact ball bearing [1] (0.5 in 18°–36°).
 
-    Same interpolation and range as :func:`y0_for_contact_angle` (seed 000, table 1).
+    Same interpolation and range as :func:`y0_for_contact_angle` (the DP11A manual, table 1).
 
     >>> x0_for_contact_angle(20.0)
     0.5

@@ -1,8 +1,8 @@
-"""Bearing designations to rows of the seed 002 coefficient tables.
+"""Bearing designations to rows of the Schaeffler catalogue coefficient tables.
 
 Schaeffler/ISO designations ("6205-2RSR", "NU206-E", "30205-A", "22210-E1",
 "HK2016", "62..-2Z" ...) resolve to a bearing type and a series key of
-``tables/friction_coefficients.csv``. The GOST designations of seed 000
+``tables/friction_coefficients.csv``. The GOST designations of the DP11A manual
 ("1000095", "18", "101") decode to bore, series and type (:func:`decode_gost`).
 
 Each rule of :data:`DESIGNATION_RULES` is a regular expression for the
@@ -33,7 +33,7 @@ __all__ = [
 
 
 
-# Bearing types of the seed 002 tables, with a plain-language label.
+# Bearing types of the Schaeffler catalogue tables, with a plain-language label.
 BEARING_TYPES = {
     "needle_roller": "needle roller bearing",
     "cylindrical_roller_full_complement": "cylindrical roller bearing without cage",
@@ -77,7 +77,7 @@ class Designation:
 def bore_from_code(code: str) -> float:
     """Bore diameter in mm from the two-digit ISO/GOST bore code.
 
-    00 -> 10, 01 -> 12, 02 -> 15, 03 -> 17, otherwise 5 x code (seed 000, p. 4).
+    00 -> 10, 01 -> 12, 02 -> 15, 03 -> 17, otherwise 5 x code (the DP11A manual, p. 4).
 
     >>> bore_from_code("05"), bore_from_code("00"), bore_from_code("03")
     (25.0, 10.0, 17.0)
@@ -272,11 +272,11 @@ def _finish(text, bearing_type, series, prefix, bore, width, suffixes) -> Design
     if bearing_type == "cylindrical_roller" and series in {"2", "3", "22", "23"} and not any(
         s.startswith("E") for s in suffixes
     ):
-        notes.append(f"the seed 002 row for series {series} is for the E design ({series}..-E)")
+        notes.append(f"the Schaeffler catalogue row for series {series} is for the E design ({series}..-E)")
     return Designation(text, bearing_type, series, prefix, bore, width, tuple(suffixes), seal, angle, tuple(notes))
 
 
-# ---- GOST 3189 (seed 000, p. 4) ---------------------------------------------------------------
+# ---- GOST 3189 (the DP11A manual, p. 4) ---------------------------------------------------------------
 
 # fourth digit from the right: bearing type (GOST 3189)
 _GOST_TYPES = {
@@ -298,7 +298,7 @@ _GOST_DIAMETER_SERIES = {
 
 @dataclass(frozen=True)
 class GostCode:
-    """A decoded GOST 3189 designation (seed 000, p. 4)."""
+    """A decoded GOST 3189 designation (the DP11A manual, p. 4)."""
 
     text: str
     bore: float
@@ -379,13 +379,13 @@ def _lab_bearings() -> dict[str, dict]:
 
 
 def _try_gost(text: str) -> Designation | None:
-    """The lab bearings of seed 000 table 3 are GOST numbers; other plain numbers are ISO."""
+    """The lab bearings of the DP11A manual table 3 are GOST numbers; other plain numbers are ISO."""
     lab = _lab_bearings().get(text)
     if lab is None:
         return None
     code = decode_gost(text)
     return Designation(text, lab["bearing_type"], lab["series"], "", code.bore, None, (), "open", None,
-                       (f"GOST {text}: seed 000 table 3, friction row of ISO series {lab['series']}",))
+                       (f"GOST {text}: the DP11A manual table 3, friction row of ISO series {lab['series']}",))
 
 
 # ---- close matches -------------------------------------------------------------------------
@@ -416,5 +416,5 @@ def _unknown_message(text: str, body: str) -> str:
                        key=lambda n: -difflib.SequenceMatcher(None, probe, n).ratio())
     close = list(dict.fromkeys(same_body + difflib.get_close_matches(probe, names, n=5, cutoff=0.5)))[:5]
     hint = f" (close matches: {', '.join(close)})" if close else ""
-    return (f"designation: {text!r} matches no row of the seed 002 tables{hint}; "
+    return (f"designation: {text!r} matches no row of the Schaeffler catalogue tables{hint}; "
             "give type and series explicitly instead")

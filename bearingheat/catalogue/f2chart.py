@@ -1,6 +1,6 @@
 """User-digitised f2 charts for axially loaded cylindrical roller bearings.
 
-Seed 002 (p. 70, figures 3 and 4) gives f2 as curves against the
+The Schaeffler catalogue (p. 70, figures 3 and 4) gives f2 as curves against the
 viscosity-speed figure ν·n·dM, one curve per value of Fa/A. The chart images
 are missing from the seed and no public digitisation is known, so bearingheat
 never ships chart values: the user digitises the chart of their catalogue and

@@ -1,8 +1,8 @@
-"""Table lookups: a bearing type and series to its seed 002 coefficients.
+"""Table lookups: a bearing type and series to its the Schaeffler catalogue coefficients.
 
 :func:`catalogue_entry` returns everything the tables say about one series:
 f0 for both lubrication columns, the f1 rule, the load M1 uses, the P1
-rules (single and paired), kB and the X0/Y0 defaults of seed 000 table 1.
+rules (single and paired), kB and the X0/Y0 defaults of the DP11A manual table 1.
 """
 from __future__ import annotations
 
@@ -22,7 +22,7 @@ __all__ = [
     "p1_rule",
 ]
 
-#: lubrication -> f0 column of the seed 002 tables (first: grease/oil mist, second: oil bath/circulating oil)
+#: lubrication -> f0 column of the Schaeffler catalogue tables (first: grease/oil mist, second: oil bath/circulating oil)
 LUBRICATION_F0_COLUMN = {
     "grease": "f0_grease",
     "oil_mist": "f0_grease",
@@ -37,7 +37,7 @@ _NO_AXIAL_PREFIXES = {"NU", "N", "NN"}
 
 @dataclass(frozen=True)
 class CatalogueEntry:
-    """One row of the seed 002 tables with the rules that go with it."""
+    """One row of the Schaeffler catalogue tables with the rules that go with it."""
 
     bearing_type: str
     series: str
@@ -51,7 +51,7 @@ class CatalogueEntry:
     source: str
     p1_single: str | None   # key of bearingheat.kernels.friction.P1_RULES
     p1_paired: str | None
-    X0: float               # seed 000 table 1 default, NaN where it gives none
+    X0: float               # the DP11A manual table 1 default, NaN where it gives none
     Y0: float
 
     @property
@@ -76,7 +76,7 @@ def _p1_rules() -> dict[tuple[str, str], str]:
 
 @functools.lru_cache(maxsize=None)
 def _static_defaults() -> dict[str, tuple[float, float]]:
-    """Seed 000 table 1: X0 where every row of a type agrees, Y0 where the type has one row.
+    """The DP11A manual table 1: X0 where every row of a type agrees, Y0 where the type has one row.
 
     Angular contact ball bearings get X0 = 0.5; their Y0 depends on the
     contact angle (:func:`bearingheat.catalogue.contact.y0_for_contact_angle`).
@@ -92,7 +92,7 @@ def _static_defaults() -> dict[str, tuple[float, float]]:
 
 @functools.lru_cache(maxsize=None)
 def kb_factor(bearing_type: str, prefix: str, series: str) -> float:
-    """kB of seed 002 p. 70 for a cylindrical roller bearing, NaN where the table has none."""
+    """kB of the Schaeffler catalogue p. 70 for a cylindrical roller bearing, NaN where the table has none."""
     table = load_table("kb_factors")
     hit = table[(table["bearing_type"] == bearing_type) & (table["series"] == series)]
     if prefix:  # NJ and NUP rows of one series print the same kB; an explicit type matches either
@@ -107,7 +107,7 @@ def p1_rule(bearing_type: str, arrangement: str) -> str | None:
 
 @functools.lru_cache(maxsize=None)
 def catalogue_entry(bearing_type: str, series: str) -> CatalogueEntry:
-    """The seed 002 row of ``series`` in the table of ``bearing_type``.
+    """The the Schaeffler catalogue row of ``series`` in the table of ``bearing_type``.
 
     >>> e = catalogue_entry("deep_groove_ball", "62")
     >>> e.f0_grease, e.f0_oil, e.f1_a, e.f1_x, e.f1_basis, e.p1_single
@@ -119,7 +119,7 @@ def catalogue_entry(bearing_type: str, series: str) -> CatalogueEntry:
     row = _coefficient_rows().get((bearing_type, series))
     if row is None:
         choices = ", ".join(known_series()[bearing_type])
-        raise DesignationError(f"series: {series!r} is not in the seed 002 table of {BEARING_TYPES[bearing_type]}s; "
+        raise DesignationError(f"series: {series!r} is not in the Schaeffler catalogue table of {BEARING_TYPES[bearing_type]}s; "
                                f"expected one of {choices}")
     X0, Y0 = _static_defaults().get(bearing_type, (math.nan, math.nan))
     return CatalogueEntry(
@@ -142,7 +142,7 @@ class ResolvedBearing:
 
     @property
     def takes_axial_m2(self) -> bool:
-        """Radial cylindrical roller bearing with ribs that carry Fa: M2 applies (seed 002, p. 69)."""
+        """Radial cylindrical roller bearing with ribs that carry Fa: M2 applies (the Schaeffler catalogue, p. 69)."""
         return self.entry.bearing_type in _CYLINDRICAL and self.prefix not in _NO_AXIAL_PREFIXES
 
     @property

@@ -377,7 +377,7 @@ _BORE = r"(?P<bore>\d{2}|/\d+(?:\.\d+)?)"
 _CARB = re.compile(r"^C\s*(?P<series>\d{2})\s*" + _BORE + r"(?:[\s-]+(?P<suffix>.*))?$")
 _CARB_FULL = re.compile(r"^(?:2?CS[25]?)?K?V(?:/.*)?$")
 
-#: rules for series the seed 002 designation parser does not know: (regex on the body, type, series group)
+#: rules for series the Schaeffler catalogue designation parser does not know: (regex on the body, type, series group)
 _EXTRA_RULES = (
     (re.compile(r"^(?P<series>630|161|617|628|637|638|639)" + _BORE + "$"), "deep_groove_ball"),
     (re.compile(r"^(?P<series>719)" + _BORE + "$"), "angular_contact_ball"),

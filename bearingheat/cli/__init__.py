@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import importlib.metadata
 import sys
 import xml.etree.ElementTree as ElementTree
 import zipfile
@@ -56,6 +57,7 @@ def build_parser() -> argparse.ArgumentParser:
         description="Friction torque, power loss and thermal speed limits of shaft supports.",
         epilog="Run 'bearingheat COMMAND --help' for the columns and units of each command.",
     )
+    parser.add_argument("--version", action="version", version=f"bearingheat {_version()}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
     for name, module_path in COMMANDS.items():
         module = importlib.import_module(module_path)
@@ -66,6 +68,14 @@ def build_parser() -> argparse.ArgumentParser:
         module.add_arguments(cmd)
         cmd.set_defaults(_module=module)
     return parser
+
+
+def _version() -> str:
+    """The installed distribution's version (the package's own where it is not installed)."""
+    try:
+        return importlib.metadata.version("bearingheat")
+    except importlib.metadata.PackageNotFoundError:
+        return "unknown (not installed)"
 
 
 def add_force_argument(parser: argparse.ArgumentParser, what: str = "the output file") -> None:

@@ -1,4 +1,4 @@
-"""``bearingheat bushing``: size a DU/DP self-lubricating bushing or thrust washer by pV (seed 004)."""
+"""``bearingheat bushing``: size a DU/DP self-lubricating bushing or thrust washer by pV (the DU/DP bushing handbook)."""
 from __future__ import annotations
 
 import argparse
@@ -16,32 +16,32 @@ from bearingheat.errors import BearingheatError, OutsideMethodError, UnitError
 from bearingheat.kernels.bushing import oscillating_speed_seed004
 from bearingheat.units import magnitude, parse_quantity, quantity, speed_rpm
 
-HELP = "size a DU/DP self-lubricating bushing or thrust washer by pV and [p] (seed 004)"
+HELP = "size a DU/DP self-lubricating bushing or thrust washer by pV and [p] (the DU/DP bushing handbook)"
 
 DESCRIPTION = """\
 Size a self-lubricating DU/DP bushing (length) or thrust washer (outer
-diameter) by seed 004: l = pi*n*F/(60000*K) from the admissible K = pV,
+diameter) by the DU/DP bushing handbook: l = pi*n*F/(60000*K) from the admissible K = pV,
 checked against the admissible pressure [p]; lengthened from [p] when needed;
 rounded up to the next standard size from --standard.
 
-Values take units: --F 2kN --n 500rpm --d 25mm. Seed 004 works in kgf/cm^2
+Values take units: --F 2kN --n 500rpm --d 25mm. The DU/DP bushing handbook works in kgf/cm^2
 and m/s; 1 kgf/cm^2 = 0.0980665 N/mm^2, and the output shows the conversion.
 
 --application: bushing_constant_load, bushing_rotating_load,
   bushing_oscillating, guide, thrust_washer (d = inner diameter, F axial).
---shaft soft|hardened and --life 1000h|10000h pick K from seed 004 table 25
+--shaft soft|hardened and --life 1000h|10000h pick K from the DU/DP bushing handbook table 25
   (some cells were lost in the seed's OCR: then give --K, e.g. 0.5N/mm^2*m/s).
 --load-type: static (1410 kgf/cm^2), rotating_fixed_load_point (565),
   moving_load_moderate (282), moving_load_severe (141).
 --T 150degC derates K: 1 up to 120 degC, linear to 0.5 at 280 degC
   (range -200 to +280 degC).
 Oscillation: --cycles 30/min --amplitude 90deg instead of --n
-  (n = cycles x amplitude in revolutions, seed 004).
+  (n = cycles x amplitude in revolutions, the DU/DP bushing handbook).
 --f: friction coefficient for the power loss N = f*F*V; default the seed's
   range (0.05-0.1 at 0.05-0.1 m/s, 0.1-0.2 at 0.2-5 m/s).
 --json prints the result as JSON.
 
-Exit codes: 0 sized; 1 the duty lies outside seed 004's method (V below
+Exit codes: 0 sized; 1 the duty lies outside the DU/DP bushing handbook's method (V below
 0.05 m/s, n above 15 000 1/min, T outside -200..280 degC, no standard size
 large enough); 2 unusable input (bad value, unit or name)."""
 
@@ -53,7 +53,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--amplitude", default=None, help="oscillation amplitude, e.g. 90deg")
     parser.add_argument("--d", required=True, help="bore (inner diameter), e.g. 25mm")
     parser.add_argument("--application", default="bushing_constant_load",
-                        help="duty of seed 004 table 25 (default bushing_constant_load)")
+                        help="duty of the DU/DP bushing handbook table 25 (default bushing_constant_load)")
     parser.add_argument("--shaft", default=None, help="soft or hardened (table 25)")
     parser.add_argument("--life", default=None, help="1000h or 10000h (table 25)")
     parser.add_argument("--K", default=None, help="admissible pV instead of table 25, e.g. 0.5N/mm^2*m/s")
@@ -136,7 +136,7 @@ def run(args: argparse.Namespace) -> int:
 def render(r: dict, application: str) -> str:
     """Text report of the sizing steps."""
     k_table = r["K_table [N/mm^2*m/s]"]
-    lines = [f"DU/DP {'thrust washer' if r['kind'] == 'thrust_washer' else 'bushing'} sizing, seed 004 ({application})",
+    lines = [f"DU/DP {'thrust washer' if r['kind'] == 'thrust_washer' else 'bushing'} sizing, the DU/DP bushing handbook ({application})",
              f"  load F = {r['F [N]']:g} N, speed n = {r['n [1/min]']:.4g} 1/min, bore d = {r['d [mm]']:g} mm",
              f"  1. K = pV = {k_table / KGF_PER_CM2:.4g} kgf/cm²·m/s × 0.0980665 = {k_table:.4g} N/mm²·m/s"]
     if r["temperature_factor"] != 1.0:
@@ -166,7 +166,7 @@ def render(r: dict, application: str) -> str:
             lines.append(f"  friction loss N = f·F·V = {r['N_low [W]']:.4g} W (f = {r['f_low']:g})")
         else:
             lines.append(f"  friction loss N = f·F·V = {r['N_low [W]']:.4g} to {r['N_high [W]']:.4g} W "
-                         f"(f = {r['f_low']:g} to {r['f_high']:g}, seed 004)")
+                         f"(f = {r['f_low']:g} to {r['f_high']:g}, the DU/DP bushing handbook)")
     else:
-        lines.append("  friction loss: seed 004 gives no f above 5 m/s; give --f")
+        lines.append("  friction loss: the DU/DP bushing handbook gives no f above 5 m/s; give --f")
     return "\n".join(lines)

@@ -1,4 +1,4 @@
-"""``bearingheat coastdown``: friction coefficient and torque components from a run-down diagram (seed 003)."""
+"""``bearingheat coastdown``: friction coefficient and torque components from a run-down diagram (the TMM-7M lab sheet)."""
 from __future__ import annotations
 
 import argparse
@@ -11,11 +11,11 @@ from bearingheat.io.files import check_outputs
 from bearingheat.io.reports.coastdown import render_report, write_coastdown_outputs
 from bearingheat.units import parse_quantity
 
-HELP = "coast-down (run-down) analysis: reduced friction coefficient and torque components (seed 003)"
+HELP = "coast-down (run-down) analysis: reduced friction coefficient and torque components (the TMM-7M lab sheet)"
 
 DESCRIPTION = """\
 Analyse a run-down diagram n(t) of a rotor after its drive is disconnected
-(seed 003, TMM-7M rig): I*dw/dt = -M, M = f*G*r for a plain bearing.
+(the TMM-7M lab sheet, TMM-7M rig): I*dw/dt = -M, M = f*G*r for a plain bearing.
 
 Input DATA.csv: one column 't [UNIT]' (a time unit, e.g. 't [s]') and one
 column 'n [UNIT]' (a shaft speed: 1/min, rpm, Hz or rad/s), one sample a row,
@@ -32,7 +32,7 @@ Rig parameters with units (defaults: TMM-7M): --I 2.6kg*m^2 --G 1100N --r 25mm.
 Intervals for formula (2): --dn 100rpm (speed steps) or --dt 10s (time steps);
 default 10 equal speed steps. --window: Savitzky-Golay window in samples.
 
-Rolling-bearing spindle (seed 002 M0 + M1 form): --spindle --nu 20mm^2/s
+Rolling-bearing spindle (the Schaeffler catalogue M0 + M1 form): --spindle --nu 20mm^2/s
 --dM 50mm [--bearings 2] [--P 1000N] [--f0 1.7] fits f0 and M1 (and f1 = M1/(P*dM))
 so that f0 can be audited against the catalogue value given by --f0.
 
@@ -61,7 +61,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--out", default=None, metavar="DIR", help="write report.md, coastdown.png, summary.json")
     add_force_argument(parser, "the files in DIR")
     add_csv_arguments(parser)
-    parser.add_argument("--spindle", action="store_true", help="also fit the seed 002 rolling-bearing form")
+    parser.add_argument("--spindle", action="store_true", help="also fit the Schaeffler catalogue rolling-bearing form")
     parser.add_argument("--nu", default=None, help="oil viscosity at operating temperature, e.g. 20mm^2/s")
     parser.add_argument("--dM", default=None, help="bearing mean diameter (d + D)/2, e.g. 50mm")
     parser.add_argument("--bearings", type=int, default=2, help="number of identical bearings (default 2)")

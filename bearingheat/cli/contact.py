@@ -1,4 +1,4 @@
-"""``bearingheat contact``: contact angle, stiffness C* and minimum axial load of a ball bearing (seed 001)."""
+"""``bearingheat contact``: contact angle, stiffness C* and minimum axial load of a ball bearing (Zaitsev & Voronkin)."""
 from __future__ import annotations
 
 import csv
@@ -14,10 +14,10 @@ from bearingheat.errors import BearingheatError, InputError, UnitError
 from bearingheat.io.tables import escape_cell, read_text, sniff_format
 from bearingheat.units import parse_quantity, parse_unit, ureg
 
-HELP = "contact angle from clearance, working angle under Fa, stiffness C*, minimum axial load (seed 001)"
+HELP = "contact angle from clearance, working angle under Fa, stiffness C*, minimum axial load (Zaitsev & Voronkin)"
 
 DESCRIPTION = """\
-Contact of a ball bearing after seed 001 (Zaitsev, Voronkin): the initial contact
+Contact of a ball bearing after Zaitsev & Voronkin (Zaitsev, Voronkin): the initial contact
 angle alpha0 (given, or from the mean radial clearance), the stiffness
 characteristic C*, the working contact angle alpha under the axial load Fa, the
 dimensionless axial displacement xi_a, and the minimum axial load Fa_min against
@@ -125,7 +125,7 @@ def _evaluate(inputs: dict) -> tuple[dict, str | None]:
         fa, fa_min = record["Fa [N]"], record["Fa_min [N]"]
         if fa < fa_min:
             warning = (f"Fa = {fa:.4g} N is below the minimum axial load Fa_min = {fa_min:.4g} N "
-                       f"at n = {record['n [1/min]']:.6g} 1/min (gyroscopic sliding of the balls, seed 001)")
+                       f"at n = {record['n [1/min]']:.6g} 1/min (gyroscopic sliding of the balls, Zaitsev & Voronkin)")
     return record, warning
 
 

@@ -1,4 +1,4 @@
-"""``bearingheat lab``: process DP11A lab rig readings after seed 000 (tasks 1-3, tables 4 and 5)."""
+"""``bearingheat lab``: process DP11A lab rig readings after the DP11A manual (tasks 1-3, tables 4 and 5)."""
 from __future__ import annotations
 
 import argparse
@@ -11,25 +11,25 @@ from bearingheat.io.reports.lab import write_lab_outputs
 from bearingheat.io.tables import read_table
 from bearingheat.units import magnitude, parse_quantity
 
-HELP = "process DP11A lab rig readings (seed 000): mu, f0 and T_F, f and T0, tables 4 and 5, plots"
+HELP = "process DP11A lab rig readings (the DP11A manual): mu, f0 and T_F, f and T0, tables 4 and 5, plots"
 
 DESCRIPTION = """\
-Process friction torque readings of the DP11A rig (seed 000).
+Process friction torque readings of the DP11A rig (the DP11A manual).
 
 Input (CSV or .xlsx), one reading per row:
-  bearing         seed 000 table 3: 1000095, 18 or 101
+  bearing         the DP11A manual table 3: 1000095, 18 or 101
   Q [kg]          weight (0.5, 1, 2 kg on the rig)
   beta [deg]      inclination of the spindle axis, 0 (axial) .. 90 (radial)
   n [1/min]       speed
   T [N*mm]        friction torque (any torque unit)
-  nu [mm^2/s]     optional viscosity for the seed 002 comparison (or --nu)
+  nu [mm^2/s]     optional viscosity for the Schaeffler catalogue comparison (or --nu)
 
-Loads Fa = 9.81*Q*cos(beta), Fr = 9.81*Q*sin(beta), P0 from seed 000 table 1.
+Loads Fa = 9.81*Q*cos(beta), Fr = 9.81*Q*sin(beta), P0 from the DP11A manual table 1.
 Task 1: mu for each speed; task 2: f0 and T_F for each beta (N = n^(2/3));
 task 3: f and T0 for each speed (N = P0^1.55).
 
 Output in --out DIR: report.md (tables 4 and 5 filled, task results, the
-comparison with the catalogue model of seed 002), CSV of each task, PNG plots.
+comparison with the catalogue model of the Schaeffler catalogue), CSV of each task, PNG plots.
 Existing files in DIR are replaced only with --force; each file is written
 atomically.
 Exit codes: 0 done; 2 unusable input or a file fault.
@@ -43,9 +43,9 @@ _KNOWN_FILES = ("readings.csv", "task1_mu.csv", "task2_f0_TF.csv", "task3_f_T0.c
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("input", metavar="READINGS", help="CSV (.csv) or Excel (.xlsx) of readings")
     parser.add_argument("--out", metavar="DIR", required=True, help="folder for report.md, CSVs and plots")
-    parser.add_argument("--nu", metavar="VISCOSITY", help="viscosity for the seed 002 comparison, e.g. 20mm^2/s")
+    parser.add_argument("--nu", metavar="VISCOSITY", help="viscosity for the Schaeffler catalogue comparison, e.g. 20mm^2/s")
     parser.add_argument("--lubrication", default="grease",
-                        help="lubrication of the seed 002 comparison (default grease)")
+                        help="lubrication of the Schaeffler catalogue comparison (default grease)")
     parser.add_argument("--sheet", metavar="NAME", help="sheet of an Excel workbook")
     add_force_argument(parser, "the files in DIR")
     add_csv_arguments(parser)

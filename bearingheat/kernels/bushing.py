@@ -1,6 +1,6 @@
-"""Kernels of self-lubricating DU/DP bushings and thrust washers: pV sizing, life, friction loss (seed 004).
+"""Kernels of self-lubricating DU/DP bushings and thrust washers: pV sizing, life, friction loss (the DU/DP bushing handbook).
 
-Seed 004 works in kgf/cm² and m/s; its formulas were lost in the OCR and are
+The DU/DP bushing handbook works in kgf/cm² and m/s; its formulas were lost in the OCR and are
 rebuilt here from the definitions
 
     p = F / (d·l)               [N/mm²]   (load over the projected area)
@@ -58,21 +58,21 @@ __all__ = [
     "size_thrust_washer_kernel",
 ]
 
-#: Below this sliding speed [m/s] seed 004's sizing method does not apply.
+#: Below this sliding speed [m/s] the DU/DP bushing handbook's sizing method does not apply.
 SPEED_MIN = 0.05
-#: Above this shaft speed [1/min] seed 004's sizing method does not apply.
+#: Above this shaft speed [1/min] the DU/DP bushing handbook's sizing method does not apply.
 N_MAX = 15000.0
 
-#: Fig. 86 of seed 004: pV = 3.6 kgf/cm²·m/s gives 1000 h, pV = 18 gives 200 h.
+#: Fig. 86 of the DU/DP bushing handbook: pV = 3.6 kgf/cm²·m/s gives 1000 h, pV = 18 gives 200 h.
 FIG86_POINTS = ((3.6 * KGF_PER_CM2, 1000.0), (18.0 * KGF_PER_CM2, 200.0))
 #: Slope of lg(life) against lg(pV) through the two points (exactly −1: lg 5 / lg 5).
 FIG86_SLOPE = math.log(FIG86_POINTS[1][1] / FIG86_POINTS[0][1]) / math.log(FIG86_POINTS[1][0] / FIG86_POINTS[0][0])
 
-#: Temperature range of table 25 and the derating (seed 004): valid −200 to +280 °C,
+#: Temperature range of table 25 and the derating (the DU/DP bushing handbook): valid −200 to +280 °C,
 #: full capacity up to +120 °C, about half at +280 °C.
 T_MIN, T_DERATE, T_MAX = -200.0, 120.0, 280.0
 
-#: Default friction coefficients of seed 004 ('Трение подшипников'):
+#: Default friction coefficients of the DU/DP bushing handbook ('Трение подшипников'):
 #: (V from, V to) [m/s] -> (f low, f high).
 FRICTION_BANDS = {
     (0.05, 0.1): (0.05, 0.1),  # low speeds, high specific loads
@@ -100,7 +100,7 @@ def bearing_pressure(F, d, l):
 
 
 def bushing_length_pV_seed004(F, n, K):
-    """Bushing length from the admissible pV, seed 004 step 2: l = π·n·F / (60 000·K) [mm].
+    """Bushing length from the admissible pV, the DU/DP bushing handbook step 2: l = π·n·F / (60 000·K) [mm].
 
     F [N] radial load, n [1/min], K [N/mm²·m/s]. From K = p·V with
     p = F/(d·l) and V = π·d·n/60 000; d cancels. Seed units: l = π·n·F/(600·K)
@@ -113,7 +113,7 @@ def bushing_length_pV_seed004(F, n, K):
 
 
 def bushing_length_pressure_seed004(F, d, p_adm):
-    """Bushing length from the admissible pressure, seed 004 step 3: l = F / ([p]·d) [mm].
+    """Bushing length from the admissible pressure, the DU/DP bushing handbook step 3: l = F / ([p]·d) [mm].
 
     >>> round(bushing_length_pressure_seed004(20000.0, 20.0, 27.65), 2)
     36.17
@@ -122,7 +122,7 @@ def bushing_length_pressure_seed004(F, d, p_adm):
 
 
 def thrust_washer_width_pV_seed004(F, n, K):
-    """Radial width b = (D − d)/2 of a thrust washer from pV, seed 004: b = n·F / (60 000·K) [mm].
+    """Radial width b = (D − d)/2 of a thrust washer from pV, the DU/DP bushing handbook: b = n·F / (60 000·K) [mm].
 
     F [N] axial load, n [1/min], K [N/mm²·m/s]. p = F/(π(D² − d²)/4) on the
     ring and V = π·n·(D + d)/2/60 000 at the mean diameter give
@@ -135,7 +135,7 @@ def thrust_washer_width_pV_seed004(F, n, K):
 
 
 def thrust_washer_outer_diameter_pressure_seed004(F, d, p_adm):
-    """Outer diameter of a thrust washer from [p], seed 004: D = sqrt(d² + 4·F/(π·[p])) [mm].
+    """Outer diameter of a thrust washer from [p], the DU/DP bushing handbook: D = sqrt(d² + 4·F/(π·[p])) [mm].
 
     Seed units: D = sqrt(d² + 400·F/(π·[p])) with F [kgf], [p] [kgf/cm²].
 
@@ -146,7 +146,7 @@ def thrust_washer_outer_diameter_pressure_seed004(F, d, p_adm):
 
 
 def oscillating_speed_seed004(cycles_per_min, amplitude_rev):
-    """Equivalent speed n [1/min] of an oscillating shaft, seed 004 step 2.
+    """Equivalent speed n [1/min] of an oscillating shaft, the DU/DP bushing handbook step 2.
 
     n = cycles per minute × amplitude in fractions of one revolution (as the
     seed says; whether its 'amplitude' is the half or the full swing is not
@@ -165,7 +165,7 @@ def _outside(values, low, high):
 
 
 def life_hours_seed004_fig86(pV, extrapolate=False):
-    """Life [h] of a DU bushing against pV [N/mm²·m/s], seed 004 fig. 86.
+    """Life [h] of a DU bushing against pV [N/mm²·m/s], the DU/DP bushing handbook fig. 86.
 
     A straight line in log-log coordinates through the seed's two points
     (3.6 kgf/cm²·m/s → 1000 h, 18 kgf/cm²·m/s → 200 h): a two-point fit whose
@@ -182,7 +182,7 @@ def life_hours_seed004_fig86(pV, extrapolate=False):
     (pv1, life1), (pv2, _) = FIG86_POINTS
     if not extrapolate and _outside(pV, pv1 * (1 - 1e-12), pv2 * (1 + 1e-12)):
         raise OutsideMethodError(
-            f"pV = {_fmt(pV)} N/mm²*m/s is outside the two-point fit of seed 004 fig. 86 "
+            f"pV = {_fmt(pV)} N/mm²*m/s is outside the two-point fit of the DU/DP bushing handbook fig. 86 "
             f"({pv1:.4g} to {pv2:.4g} N/mm²*m/s, i.e. 3.6 to 18 kgf/cm²*m/s)"
         )
     return life1 * np.power(np.divide(pV, pv1), FIG86_SLOPE) if np.ndim(pV) else \
@@ -198,7 +198,7 @@ def pV_for_life_seed004_fig86(life, extrapolate=False):
     (pv1, life1), (_, life2) = FIG86_POINTS
     if not extrapolate and _outside(life, life2 * (1 - 1e-12), life1 * (1 + 1e-12)):
         raise OutsideMethodError(
-            f"life = {_fmt(life)} h is outside the two-point fit of seed 004 fig. 86 ({life2:g} to {life1:g} h)"
+            f"life = {_fmt(life)} h is outside the two-point fit of the DU/DP bushing handbook fig. 86 ({life2:g} to {life1:g} h)"
         )
     return pv1 * np.power(np.divide(life, life1), 1.0 / FIG86_SLOPE) if np.ndim(life) else \
         float(pv1 * (life / life1) ** (1.0 / FIG86_SLOPE))
@@ -206,7 +206,7 @@ def pV_for_life_seed004_fig86(life, extrapolate=False):
 
 @series_aware
 def temperature_factor_seed004(T):
-    """Derating factor of the admissible pV with temperature T [°C], seed 004.
+    """Derating factor of the admissible pV with temperature T [°C], the DU/DP bushing handbook.
 
     1 from −200 °C to +120 °C, then falling linearly to 0.5 at +280 °C (the
     seed says 'gradually' and 'about half'; linear is our reading).
@@ -217,13 +217,13 @@ def temperature_factor_seed004(T):
     """
     if _outside(T, T_MIN, T_MAX):
         raise OutsideMethodError(
-            f"T = {_fmt(T)} °C is outside the range of seed 004 table 25 ({T_MIN:g} to +{T_MAX:g} °C)"
+            f"T = {_fmt(T)} °C is outside the range of the DU/DP bushing handbook table 25 ({T_MIN:g} to +{T_MAX:g} °C)"
         )
     return 1.0 - 0.5 * np.clip((np.asarray(T, dtype=float) - T_DERATE) / (T_MAX - T_DERATE), 0.0, 1.0)
 
 
 def friction_coefficient_range_seed004(V):
-    """Default friction coefficient range (low, high) of DU at sliding speed V [m/s], seed 004.
+    """Default friction coefficient range (low, high) of DU at sliding speed V [m/s], the DU/DP bushing handbook.
 
     0.05–0.1 at 0.05–0.1 m/s (high loads); 0.1–0.2 at 0.2–5 m/s. Between
     0.1 and 0.2 m/s the seed is silent and the envelope of both bands,
@@ -259,7 +259,7 @@ class PlainBushingLoss(NamedTuple):
     p: Any        # [N/mm²]
     V: Any        # [m/s]
     pV: Any       # [N/mm²·m/s]
-    f_low: Any    # default range of seed 004 at V
+    f_low: Any    # default range of the DU/DP bushing handbook at V
     f_high: Any
     f_used: Any   # f given, else f_high
     power: Any    # N = f·F·V [W]; NaN on error rows
@@ -268,21 +268,21 @@ class PlainBushingLoss(NamedTuple):
 
 
 def plain_bushing_power_loss(d, B, F, n, f=np.nan) -> PlainBushingLoss:
-    """Friction power loss of plain (DU/DP) bushings, row by row, for ``calc`` (seed 004).
+    """Friction power loss of plain (DU/DP) bushings, row by row, for ``calc`` (the DU/DP bushing handbook).
 
     d [mm] bore, B [mm] bushing length, F [N] radial load, n [1/min],
     f [1] friction coefficient (NaN = not given). Returns p = F/(d·B)
-    [N/mm²], V = π·d·n/60 000 [m/s], pV, seed 004's default f range at V,
+    [N/mm²], V = π·d·n/60 000 [m/s], pV, the DU/DP bushing handbook's default f range at V,
     and N = f·F·V [W]. Without f, N uses the high end of the range (a
     conservative estimate) and the row status is 'warning'. Rows with
-    V < 0.05 m/s or n > 15 000 1/min lie outside seed 004's method: status
+    V < 0.05 m/s or n > 15 000 1/min lie outside the DU/DP bushing handbook's method: status
     'error', N = NaN. Inputs broadcast; a Series in gives Series out.
 
     >>> out = plain_bushing_power_loss(np.array([20.0, 20.0]), 20.0, 1000.0, np.array([1000.0, 10.0]))
     >>> out.power.round(2), list(out.status)
     (array([209.44,    nan]), ['warning', 'error'])
     >>> out.message[1]
-    "V = 0.01047 m/s is below 0.05 m/s: outside seed 004's method"
+    "V = 0.01047 m/s is below 0.05 m/s: outside the DU/DP bushing handbook's method"
     """
     series = _first_series((d, B, F, n, f))
     d_a, B_a, F_a, n_a, f_a = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (d, B, F, n, f)))
@@ -305,7 +305,7 @@ def plain_bushing_power_loss(d, B, F, n, f=np.nan) -> PlainBushingLoss:
                 p[k] = V[k] = np.nan
         elif not given[k]:
             status[k] = "warning"
-            message[k] = (f"f not given: N uses f = {f_high[k]:g}, the high end of seed 004's range "
+            message[k] = (f"f not given: N uses f = {f_high[k]:g}, the high end of the DU/DP bushing handbook's range "
                           f"{f_low[k]:g}-{f_high[k]:g} at V = {V[k]:.3g} m/s (conservative)")
     fields = dict(p=p, V=V, pV=p * V, f_low=f_low, f_high=f_high, f_used=f_used, power=power,
                   status=status, message=message)
@@ -338,10 +338,10 @@ def _row_problem(d, B, F, n, f, V) -> tuple[str, bool]:
         (F >= 0, f"F = {F:g} N: expected a radial load >= 0 N"),
         (n >= 0, f"n = {n:g} 1/min: expected a speed >= 0 1/min"),
         (math.isnan(f) or 0 < f < 1, f"f = {f:g}: expected a friction coefficient between 0 and 1"),
-        (n <= N_MAX, f"n = {n:g} 1/min is above {N_MAX:,.0f} 1/min: outside seed 004's method".replace(",", " ")),
-        (V >= SPEED_MIN, f"V = {V:.4g} m/s is below {SPEED_MIN:g} m/s: outside seed 004's method"),
+        (n <= N_MAX, f"n = {n:g} 1/min is above {N_MAX:,.0f} 1/min: outside the DU/DP bushing handbook's method".replace(",", " ")),
+        (V >= SPEED_MIN, f"V = {V:.4g} m/s is below {SPEED_MIN:g} m/s: outside the DU/DP bushing handbook's method"),
         (not math.isnan(f) or V <= 5.0,
-         f"V = {V:.4g} m/s is above 5 m/s: seed 004 gives no friction coefficient there; give f"),
+         f"V = {V:.4g} m/s is above 5 m/s: the DU/DP bushing handbook gives no friction coefficient there; give f"),
     )
     for position, (ok, text) in enumerate(checks):
         if not ok:  # NaN inputs fail every comparison and land here too
@@ -356,7 +356,7 @@ def _check_duty(F, n, d):
             raise BushingInputError(f"{name} = {value:g} {unit}: expected a value {rule} {unit}")
     if n > N_MAX:
         raise OutsideMethodError(
-            f"n = {n:g} 1/min is above 15 000 1/min: outside seed 004's sizing method "
+            f"n = {n:g} 1/min is above 15 000 1/min: outside the DU/DP bushing handbook's sizing method "
             "(the seed allows smaller bearings than calculated there)"
         )
 
@@ -364,7 +364,7 @@ def _check_duty(F, n, d):
 def _check_speed(V):
     if V < SPEED_MIN:
         raise OutsideMethodError(
-            f"V = {V:.4g} m/s is below 0.05 m/s: outside seed 004's sizing method "
+            f"V = {V:.4g} m/s is below 0.05 m/s: outside the DU/DP bushing handbook's sizing method "
             "(the seed allows smaller bearings than calculated there)"
         )
 
@@ -396,7 +396,7 @@ def _loss_and_life(F, V, pV, f):
 
 
 def size_bushing_kernel(F, n, d, K, p_adm, standard_lengths=None, f=None) -> dict[str, Any]:
-    """Length of a cylindrical DU bushing by seed 004 steps 1-4 (catalogue units).
+    """Length of a cylindrical DU bushing by the DU/DP bushing handbook steps 1-4 (catalogue units).
 
     F [N] radial load, n [1/min] (oscillation: see :func:`oscillating_speed_seed004`),
     d [mm] bore, K [N/mm²·m/s] admissible pV (already derated), p_adm [N/mm²]
@@ -429,7 +429,7 @@ def size_bushing_kernel(F, n, d, K, p_adm, standard_lengths=None, f=None) -> dic
 
 
 def size_thrust_washer_kernel(F, n, d, K, p_adm, standard_diameters=None, f=None) -> dict[str, Any]:
-    """Outer diameter of a DU thrust washer by seed 004 (catalogue units).
+    """Outer diameter of a DU thrust washer by the DU/DP bushing handbook (catalogue units).
 
     F [N] axial load, n [1/min], d [mm] inner diameter, K [N/mm²·m/s],
     p_adm [N/mm²], standard_diameters [mm] optional list of outer diameters.

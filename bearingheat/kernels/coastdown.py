@@ -1,11 +1,11 @@
-"""Kernels of the coast-down (run-down) test: seed 003 formulas, the seed 002 rolling form, smoothing, integration.
+"""Kernels of the coast-down (run-down) test: the TMM-7M lab sheet formulas, the Schaeffler catalogue rolling form, smoothing, integration.
 
-Seed 003 (lab work on the TMM-7M rig) finds the *reduced friction coefficient*
+The TMM-7M lab sheet (lab work on the TMM-7M rig) finds the *reduced friction coefficient*
 f of a plain bearing from the run-down diagram n(t) after the motor is
 disconnected. Its formulas were lost in the OCR; they are rebuilt here from
 the equation of motion of the rotor.
 
-Equation of motion (seed 003, driving torque M_d = 0 during the run-down)::
+Equation of motion (the TMM-7M lab sheet, driving torque M_d = 0 during the run-down)::
 
     I·dω/dt = −M_c,   M_c = f·G·r,   ω = π·n/30
 
@@ -19,11 +19,11 @@ and, over an interval where f is taken as constant (formula 2)::
 
 with Δn the speed drop [1/min] over Δt [s].
 
-A rolling-bearing spindle follows the catalogue form of seed 002 instead:
+A rolling-bearing spindle follows the catalogue form of the Schaeffler catalogue instead:
 M = z·(M0(n) + M1), with M0 and M1 from the engine kernels
 (:mod:`bearingheat.kernels.friction`).
 
-Units: t [s], n [1/min], I [kg·m²], G [N], r [mm], torques [N·m] (seed 002
+Units: t [s], n [1/min], I [kg·m²], G [N], r [mm], torques [N·m] (the Schaeffler catalogue
 M0 and M1 in [N·mm]). No units are checked here: :mod:`bearingheat.api.coastdown`
 is the unit boundary; the fits are in :mod:`bearingheat.analysis.coastdown`.
 
@@ -52,23 +52,23 @@ __all__ = [
     "plain_torque",
 ]
 
-RPM_TO_RAD_S = math.pi / 30.0  # ω = π·n/30 (seed 003)
+RPM_TO_RAD_S = math.pi / 30.0  # ω = π·n/30 (the TMM-7M lab sheet)
 
-#: Rig data of the TMM-7M (seed 003, 'technical characteristics'): moment of
+#: Rig data of the TMM-7M (the TMM-7M lab sheet, 'technical characteristics'): moment of
 #: inertia of the rotor [kg·m²], rotor weight [N], journal radius [mm] (Ø 50 mm).
 TMM_7M = {"I": 2.6, "G": 1100.0, "r": 25.0}
 
 
-# --------------------------------------------------------------------------- seed 003 formulas
+# --------------------------------------------------------------------------- the TMM-7M lab sheet formulas
 def reduced_friction_coefficient_seed003_formula1(dn_dt, I, G, r):
-    """Instantaneous reduced friction coefficient, seed 003 formula (1).
+    """Instantaneous reduced friction coefficient, the TMM-7M lab sheet formula (1).
 
     f = −π·I·(dn/dt) / (30·G·r)
 
     dn_dt [1/min per s] slope of the run-down diagram (negative while slowing
     down), I [kg·m²] moment of inertia about the shaft, G [N] rotor weight
     (the journal load), r [mm] journal radius. Derived from I·dω/dt = −f·G·r
-    with ω = π·n/30 (seed 003, p. 'Установка ТММ-7М', equation of motion).
+    with ω = π·n/30 (the TMM-7M lab sheet, p. 'Установка ТММ-7М', equation of motion).
     Valid while the rotor runs down with no driving torque (M_d = 0) and I,
     G, r > 0.
 
@@ -79,7 +79,7 @@ def reduced_friction_coefficient_seed003_formula1(dn_dt, I, G, r):
 
 
 def reduced_friction_coefficient_seed003_formula2(delta_n, delta_t, I, G, r):
-    """Interval-average reduced friction coefficient, seed 003 formula (2).
+    """Interval-average reduced friction coefficient, the TMM-7M lab sheet formula (2).
 
     f = π·I·Δn / (30·G·r·Δt)
 
@@ -97,9 +97,9 @@ def reduced_friction_coefficient_seed003_formula2(delta_n, delta_t, I, G, r):
     return I * RPM_TO_RAD_S * delta_n / (G * r / 1000.0 * delta_t)
 
 
-# --------------------------------------------------------------------------- seed 002 rolling form
+# --------------------------------------------------------------------------- the Schaeffler catalogue rolling form
 def rolling_bearing_M0_seed002(n, nu, dM, f0):
-    """Speed-dependent friction torque M0 [N·mm] of one rolling bearing (seed 002, p. 64).
+    """Speed-dependent friction torque M0 [N·mm] of one rolling bearing (the Schaeffler catalogue, p. 64).
 
     M0 = f0·(ν·n)^(2/3)·dM³·1e-7   for ν·n ≥ 2000
     M0 = f0·160·dM³·1e-7           for ν·n < 2000
@@ -118,7 +118,7 @@ def rolling_bearing_M0_seed002(n, nu, dM, f0):
 
 
 def rolling_bearing_M1_seed002(P, dM, f1):
-    """Load-dependent friction torque M1 = f1·P·dM [N·mm] of one rolling bearing (seed 002, p. 64).
+    """Load-dependent friction torque M1 = f1·P·dM [N·mm] of one rolling bearing (the Schaeffler catalogue, p. 64).
 
     P [N] load that determines the friction torque (P1, or F for roller
     bearings), dM [mm] mean diameter, f1 [1]. The engine kernel
@@ -173,14 +173,14 @@ def savitzky_golay_irregular(t, y, window, order=2):
 def rundown_speed(t, t0, n0, torque: Callable[[np.ndarray], np.ndarray], I, grid_points=4001):
     """Speed n(t) [1/min] of a rotor running down from n0 [1/min] at t0 [s] under torque(ω) [N·m].
 
-    Solves I·dω/dt = −M(ω) (the equation of motion of seed 003) through the
+    Solves I·dω/dt = −M(ω) (the equation of motion of the TMM-7M lab sheet) through the
     time taken to slow down to ω,
     t(ω) = t0 + I·∫_ω^ω0 dw / M(w) (trapezoid rule on ``grid_points`` speeds),
     inverted by interpolation. The rotor stops at ω = 0 and stays there
     (static friction holds it); if M falls to zero at ω* > 0 the speed tends
     to ω*. I [kg·m²]. Returns NaN everywhere when M(ω0) ≤ 0 (no run-down).
 
-    Constant torque gives the straight line of seed 003:
+    Constant torque gives the straight line of the TMM-7M lab sheet:
 
     >>> rundown_speed(np.array([0.0, 5.0, 50.0]), 0.0, 300.0, lambda w: 0.0 * w + 2.6 * np.pi / 30, 2.6)
     array([300., 295., 250.])
@@ -205,7 +205,7 @@ def rundown_speed(t, t0, n0, torque: Callable[[np.ndarray], np.ndarray], I, grid
 def plain_torque(M_c=0.0, c_v=0.0, c_a=0.0):
     """Resisting torque M(ω) = M_c + c_v·ω + c_a·ω² [N·m] as a function of ω [rad/s].
 
-    M_c [N·m] Coulomb (constant) part, the seed 003 M_c = f·G·r; c_v [N·m·s]
+    M_c [N·m] Coulomb (constant) part, the TMM-7M lab sheet M_c = f·G·r; c_v [N·m·s]
     viscous and c_a [N·m·s²] aerodynamic parts, the nested models the
     coast-down fit chooses from. Any ω ≥ 0.
 

@@ -1,9 +1,9 @@
 """Kernels of the ball bearing contact: contact angle from clearance, Hertz contact of the races,
 stiffness characteristic C*, working contact angle under axial load, minimum axial load.
 
-Source: seed 001, В.А. Зайцев, В.А. Воронкин, «Расчёт осевых усилий и рабочих
+Source: В.А. Зайцев, В.А. Воронкин, «Расчёт осевых усилий и рабочих
 углов контакта подшипников качения при оценке их качества на стендах»
-(ФГУП «НПП ВНИИЭМ», 2009). The static load factors X0, Y0 of seed 000, table 1
+(ФГУП «НПП ВНИИЭМ», 2009). The static load factors X0, Y0 of the DP11A manual, table 1
 are looked up in :mod:`bearingheat.catalogue.contact`; the unit-aware
 :func:`~bearingheat.api.contact.ball_bearing_contact` is in :mod:`bearingheat.api.contact`.
 
@@ -79,7 +79,7 @@ KGF = 9.80665
 """Newtons per kilogram-force (standard gravity)."""
 
 HERTZ_COMPLIANCE_CM_KGF = 0.592e-4
-"""Seed 001 constant in c = 0.592e-4·(2K/μπ)·(d_w·Σρ)^(1/3), unit (cm²/kgf)^(2/3).
+"""Zaitsev & Voronkin constant in c = 0.592e-4·(2K/μπ)·(d_w·Σρ)^(1/3), unit (cm²/kgf)^(2/3).
 
 Hertz: δ = (2K/μπ)·(3(1-ν²)/E)^(2/3)·Q^(2/3)·Σρ^(1/3)/2 for two bodies of one
 steel, so δ/d_w = c·(Q/d_w²)^(2/3) with c = (2K/μπ)·k·(d_w·Σρ)^(1/3) and
@@ -91,7 +91,7 @@ HERTZ_COMPLIANCE_MM_N = HERTZ_COMPLIANCE_CM_KGF * (100.0 / KGF) ** (2.0 / 3.0)
 """The same constant in (mm²/N)^(2/3): 1 cm²/kgf = 100 mm² / 9.80665 N (≈ 2.784e-4)."""
 
 GYROSCOPIC_CONSTANT_KGF = 5.75e-12
-"""Seed 001 constant of the minimum axial load, kgf·min²/mm⁴ (d_w, D0 in mm, n in 1/min)."""
+"""Zaitsev & Voronkin constant of the minimum axial load, kgf·min²/mm⁴ (d_w, D0 in mm, n in 1/min)."""
 
 _DEG = math.pi / 180.0
 
@@ -198,7 +198,7 @@ def _check_balls(z):
 # --------------------------------------------------------------------------- initial contact angle
 @_kernel
 def initial_contact_angle(e, r_i, r_o, d_w):
-    """Initial contact angle from the mean radial clearance [deg] (seed 001, p. 1).
+    """Initial contact angle from the mean radial clearance [deg] (Zaitsev & Voronkin, p. 1).
 
     α0 = arccos[1 − e / (2(r_i + r_o − d_w))]
 
@@ -222,7 +222,7 @@ def initial_contact_angle(e, r_i, r_o, d_w):
 
 @_kernel
 def initial_contact_angle_052(e, d_w):
-    """Initial contact angle for groove radii r_i = r_o = 0.52·d_w [deg] (seed 001, p. 1).
+    """Initial contact angle for groove radii r_i = r_o = 0.52·d_w [deg] (Zaitsev & Voronkin, p. 1).
 
     α0 = arccos(1 − 12.5·e/d_w), the case r_i + r_o − d_w = 0.04·d_w of
     :func:`initial_contact_angle`. e, d_w in mm; valid for 0 ≤ e ≤ 0.08·d_w.
@@ -250,7 +250,7 @@ class RaceCurvatures(NamedTuple):
 
 
 def race_curvatures(d_w, d_m, alpha0, r_i, r_o) -> RaceCurvatures:
-    """Curvature sums and auxiliaries of the ball–race contacts (seed 001, p. 2).
+    """Curvature sums and auxiliaries of the ball–race contacts (Zaitsev & Voronkin, p. 2).
 
     With γ = d_w·cos α0 / d_m and the groove conformities f = r/d_w:
 
@@ -320,7 +320,7 @@ def hertz_coefficients(cos_tau) -> HertzCoefficients:
     κ solves F(ρ) = [(κ² + 1)·E(m) − 2K(m)] / [(κ² − 1)·E(m)] with m = 1 − 1/κ²;
     then μ = (2κ²E/π)^(1/3), ν = (2E/(πκ))^(1/3) and 2K/(μπ) is the deflection
     coefficient of the seed (Harris's δ*). The seed reads these from a table
-    (seed 001, p. 3: μν = 1.52, 2K/μπ = 0.63 at cos τ = 0.9287; μν = 1.17,
+    (Zaitsev & Voronkin, p. 3: μν = 1.52, 2K/μπ = 0.63 at cos τ = 0.9287; μν = 1.17,
     0.852 at 0.7111). Valid for 0 ≤ cos τ < 1 (dimensionless).
 
     >>> h = hertz_coefficients(0.9287242)
@@ -345,7 +345,7 @@ def _hertz_coefficients(cos_tau):
 
 @_kernel
 def race_compliance(d_w, sum_rho, deflection):
-    """Compliance c of one ball–race contact [(mm²/N)^(2/3)] (seed 001, p. 2).
+    """Compliance c of one ball–race contact [(mm²/N)^(2/3)] (Zaitsev & Voronkin, p. 2).
 
     c = k·(2K/μπ)·(d_w·Σρ)^(1/3), k = :data:`HERTZ_COMPLIANCE_MM_N` (the seed's
     0.592e-4 (cm²/kgf)^(2/3)); the normal approach is δ = c·d_w·(Q/d_w²)^(2/3).
@@ -360,7 +360,7 @@ def race_compliance(d_w, sum_rho, deflection):
 
 @_kernel
 def stiffness_characteristic(z, d_w, d_m, alpha0, r_i, r_o, *, deflection_coefficients=None):
-    """Stiffness ("force") characteristic C* of the bearing [N] (seed 001, p. 2).
+    """Stiffness ("force") characteristic C* of the bearing [N] (Zaitsev & Voronkin, p. 2).
 
     C* = (ξ / (c_o + c_i))^(3/2)·z·d_w²,  ξ = r_i/d_w + r_o/d_w − 1,
     c from :func:`race_compliance` with Σρ, cos τ from :func:`race_curvatures`
@@ -396,7 +396,7 @@ def _deformation_term(alpha_rad, alpha0_rad):
 
 @_kernel
 def axial_load_at_angle(alpha, alpha0, C_star):
-    """Axial load that turns the contact angle from α0 to α [N] (seed 001, p. 2).
+    """Axial load that turns the contact angle from α0 to α [N] (Zaitsev & Voronkin, p. 2).
 
     Fa = C*·(cos α0 / cos α − 1)^(3/2)·sin α, α ≥ α0 in degrees, C* in N.
 
@@ -413,7 +413,7 @@ def axial_load_at_angle(alpha, alpha0, C_star):
 
 @_kernel
 def axial_displacement_ratio(alpha, alpha0):
-    """Dimensionless axial displacement ξ_a of the rings [1] (seed 001, p. 2).
+    """Dimensionless axial displacement ξ_a of the rings [1] (Zaitsev & Voronkin, p. 2).
 
     tg α = tg α0 + ξ_a / cos α0, so ξ_a = (tg α − tg α0)·cos α0. The axial
     displacement is δ_a = ξ_a·(r_i + r_o − d_w). Angles in degrees.
@@ -428,7 +428,7 @@ def axial_displacement_ratio(alpha, alpha0):
 
 @_kernel
 def axial_displacement(xi_a, r_i, r_o, d_w):
-    """Axial displacement of the rings δ_a = ξ_a·(r_i + r_o − d_w) [mm] (seed 001, p. 2).
+    """Axial displacement of the rings δ_a = ξ_a·(r_i + r_o − d_w) [mm] (Zaitsev & Voronkin, p. 2).
 
     ξ_a from :func:`axial_displacement_ratio` [1]; groove radii r_i, r_o and
     ball diameter d_w [mm]; r_i + r_o − d_w is the distance of the groove
@@ -461,7 +461,7 @@ def _solve_angle(load_ratio_23: float, alpha0_rad: float) -> float:
 
 @_kernel
 def working_contact_angle(Fa, C_star, alpha0):
-    """Working contact angle under the axial load Fa [deg] (seed 001, p. 2), by Brent's bracketing method.
+    """Working contact angle under the axial load Fa [deg] (Zaitsev & Voronkin, p. 2), by Brent's bracketing method.
 
     Solves Fa = C*·(cos α0 / cos α − 1)^(3/2)·sin α for α in [α0, 90°), written
     as (cos α0 / cos α − 1)·sin^(2/3) α = (Fa/C*)^(2/3), which increases
@@ -482,13 +482,13 @@ def working_contact_angle(Fa, C_star, alpha0):
 def _check_series_alpha0(alpha0):
     _check_alpha0(alpha0)
     _refuse(alpha0 == 0,
-            "alpha0 = {a:g} deg: the series method of seed 001 needs alpha0 > 0 "
+            "alpha0 = {a:g} deg: the series method of Zaitsev & Voronkin needs alpha0 > 0 "
             "(no expansion in powers of x at alpha0 = 0); use working_contact_angle", a=alpha0)
 
 
 @_kernel
 def series_coefficients(Fa, C_star, alpha0):
-    """Coefficients a_0..a_4 of f(x) = Σ a_k x^k, α = α0 + x [rad] (seed 001, p. 2).
+    """Coefficients a_0..a_4 of f(x) = Σ a_k x^k, α = α0 + x [rad] (Zaitsev & Voronkin, p. 2).
 
     f(x) = [cos α0 / cos(α0 + x) − 1]·sin^(2/3)(α0 + x) − (Fa/C*)^(2/3);
     a_0 = −(Fa/C*)^(2/3), a_1 = sin^(2/3)α0·tg α0,
@@ -519,7 +519,7 @@ def series_coefficients(Fa, C_star, alpha0):
 
 @_kernel
 def series_start(Fa, C_star, alpha0):
-    """Quadratic start x_0 ≈ α − α0 [rad] (seed 001, p. 2), the root of a_0 + a_1 x + a_2 x² = 0.
+    """Quadratic start x_0 ≈ α − α0 [rad] (Zaitsev & Voronkin, p. 2), the root of a_0 + a_1 x + a_2 x² = 0.
 
     x_0 = (3/2)·sin 2α0 / (6 + cos²α0)·[√(1 + (2/3)·(6 + cos²α0)/sin²α0·(Fa/(C*·sin α0))^(2/3)) − 1]
 
@@ -541,7 +541,7 @@ def series_start(Fa, C_star, alpha0):
 
 @_kernel
 def newton_increment(Fa, C_star, alpha0, x):
-    """Newton correction of x = α − α0 [rad] (seed 001, p. 2): x_{k+1} = x_k + Δx_k.
+    """Newton correction of x = α − α0 [rad] (Zaitsev & Voronkin, p. 2): x_{k+1} = x_k + Δx_k.
 
     Δx_k = [(Fa/Fa_k)^(2/3) − 1] / [tg α_k + (2/3)·ctg α_k + sin α_k/(cos α0 − cos α_k)],
     α_k = α0 + x_k, Fa_k = C*·(cos α0/cos α_k − 1)^(3/2)·sin α_k. The
@@ -579,7 +579,7 @@ def series_iterates(Fa, C_star, alpha0, newton_steps: int = 1) -> list[SeriesIte
     """The seed's iteration table: x_0 from :func:`series_start`, then ``newton_steps`` Newton steps.
 
     Row k holds x_k, α = α0 + x_k [deg], ξ_a at α, the load Fa_k at α and
-    Δ_k = (Fa_k − Fa)/Fa·100 [%] (seed 001, p. 3). Fa, C* in one force unit.
+    Δ_k = (Fa_k − Fa)/Fa·100 [%] (Zaitsev & Voronkin, p. 3). Fa, C* in one force unit.
 
     >>> rows = series_iterates(2.0, 7792.0, 12.0, newton_steps=1)
     >>> [(round(r.x, 7), round(r.load, 3)) for r in rows]    # seed: (0.0433985, 2.029), (0.0430573, 2.001)
@@ -601,7 +601,7 @@ def series_iterates(Fa, C_star, alpha0, newton_steps: int = 1) -> list[SeriesIte
 
 
 def working_contact_angle_series(Fa, C_star, alpha0, newton_steps: int = 2):
-    """Working contact angle by the seed's series start and Newton steps [deg] (seed 001, p. 2).
+    """Working contact angle by the seed's series start and Newton steps [deg] (Zaitsev & Voronkin, p. 2).
 
     Same equation as :func:`working_contact_angle`; α0 > 0 required. The step
     is Newton's method on Fa^(2/3), so it converges quadratically: two steps
@@ -617,7 +617,7 @@ def working_contact_angle_series(Fa, C_star, alpha0, newton_steps: int = 2):
 # --------------------------------------------------------------------------- minimum axial load
 @_kernel
 def minimum_axial_load(z, d_w, d_pitch, n, alpha):
-    """Minimum axial load against gyroscopic sliding of the balls [N] (seed 001, p. 1).
+    """Minimum axial load against gyroscopic sliding of the balls [N] (Zaitsev & Voronkin, p. 1).
 
     Fa_min = 5.75e-12·z·d_w³·D0·n²·sin²α·[1 − (d_w/D0)²·cos²α] kgf, times 9.80665 N/kgf.
 

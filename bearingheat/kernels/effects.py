@@ -2,13 +2,13 @@
 
 Plain floats and numpy arrays in catalogue units: M [N·mm], dM [mm],
 n [1/min], ν [mm²/s], t [h], R_th [K/W], b [1/K]. Each kernel is one term
-added to (or one factor on) the seed 002 model M_R = M0 + M1 (+ M2); the
+added to (or one factor on) the Schaeffler catalogue model M_R = M0 + M1 (+ M2); the
 candidates that fit their parameters to measured torque are in
 :mod:`bearingheat.analysis.effects`.
 
 References
 ----------
-Seed 002: Schaeffler, "Трение и нагрев" (friction and heating), catalogue
+The Schaeffler catalogue: Schaeffler, "Трение и нагрев" (friction and heating), catalogue
 pp. 64-70, after ISO 15312: M0 and its low-speed constant 160 (p. 64); seal
 friction comes on top of M_R and freshly greased bearings show an f0 2 to 5
 times the table (p. 64). ISO 3448: viscosity grades of mineral oils (the
@@ -43,7 +43,7 @@ def seal_drag_torque(M_seal, bearing_code):
 
     M_seal [N·mm] >= 0, one per bearing; bearing_code [-] integer index of
     each row's bearing into M_seal. Valid for contact seals whose torque
-    does not change with speed (the seal torque is added to M_R; seed 002,
+    does not change with speed (the seal torque is added to M_R; the Schaeffler catalogue,
     p. 64: seal friction comes on top of the bearing's).
 
     >>> seal_drag_torque(np.array([5.0, 8.0]), np.array([0, 1, 1]))
@@ -63,7 +63,7 @@ def drag_loss_torque(c, p, dM, n):
     002; p = 2 gives the dM^5·n^2 law of splash losses.
 
     Source: no catalogue formula; a power law in the peripheral speed n·dM
-    that extends the seed 002 M0 (p. 64, M0 ∝ (ν·n)^(2/3)·dM³), its
+    that extends the Schaeffler catalogue M0 (p. 64, M0 ∝ (ν·n)^(2/3)·dM³), its
     exponent fitted to the data.
 
     >>> round(float(drag_loss_torque(1.0, 2.0, 40.0, 3000.0)), 4)
@@ -80,7 +80,7 @@ def run_in_factor(a, tau, t):
         k(t) = 1 + a \\, e^{-t/\\tau}
 
     a [-] >= 0, τ [h] > 0, t [h] >= 0 (running time since greasing or
-    assembly). Seed 002 p. 64: freshly greased bearings show an f0 2 to 5
+    assembly). The Schaeffler catalogue p. 64: freshly greased bearings show an f0 2 to 5
     times the table, so a of 1 to 4 at t = 0, decaying to the table f0.
 
     >>> round(float(run_in_factor(2.0, 10.0, 10.0)), 6)
@@ -96,7 +96,7 @@ def heated_total_torque(R_th, f0, nu, n, dM, M_load, b=VISCOSITY_TEMPERATURE_COE
     exactly: in the regime ν'·n >= 2000 it is M = B + W(κA·e^(−κB))/κ with
     A = f0·(ν n)^(2/3)·dM³·1e-7, κ = (2/3)·b·R_th·n/9550, B = M_load (W the
     Lambert function); where the heated ν'·n falls below 2000 the constant
-    160 of seed 002 p. 64 applies and M0 no longer depends on ν.
+    160 of the Schaeffler catalogue p. 64 applies and M0 no longer depends on ν.
 
     .. math::
         M = M_{load} + f_0 (\\nu' n)^{2/3} d_M^3 10^{-7}, \\quad
@@ -105,7 +105,7 @@ def heated_total_torque(R_th, f0, nu, n, dM, M_load, b=VISCOSITY_TEMPERATURE_COE
     R_th [K/W] >= 0 (0 gives the catalogue model), f0 [-], ν [mm²/s] at the
     oil temperature given, n [1/min] >= 0, dM [mm], M_load = M1 + M2 [N·mm],
     b [1/K] (0.03 for mineral oils near 40-80 °C, ISO 3448 VG grades).
-    Source: M0 and its low-speed constant of seed 002, p. 64; the
+    Source: M0 and its low-speed constant of the Schaeffler catalogue, p. 64; the
     exponential viscosity law with :data:`VISCOSITY_TEMPERATURE_COEFFICIENT`.
 
     >>> round(float(heated_total_torque(0.0, 2.0, 12.0, 3000.0, 38.5, 10.0)), 4)

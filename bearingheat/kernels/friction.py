@@ -1,4 +1,4 @@
-"""Kernels of the catalogue friction model (seed 002, pp. 64-70).
+"""Kernels of the catalogue friction model (the Schaeffler catalogue, pp. 64-70).
 
 Plain floats, numpy arrays or pandas Series in catalogue units:
 d, D, dM [mm]; F, Fr, Fa, P0, P1, C0 [N]; n [1/min]; ν [mm²/s];
@@ -7,8 +7,8 @@ the unit boundary.
 
 References
 ----------
-Seed 002: Schaeffler, "Трение и нагрев" (friction and heating), catalogue
-pp. 64-70, after ISO 15312. Seed 000: SSAU lab manual (2016), table 1.
+The Schaeffler catalogue: Schaeffler, "Трение и нагрев" (friction and heating), catalogue
+pp. 64-70, after ISO 15312. The DP11A manual: SSAU lab manual (2016), table 1.
 """
 from __future__ import annotations
 
@@ -34,15 +34,15 @@ __all__ = [
     "catalogue_friction_torque",
 ]
 
-#: ν·n [mm²/s · 1/min] at which M0 changes formula (seed 002, p. 64).
+#: ν·n [mm²/s · 1/min] at which M0 changes formula (the Schaeffler catalogue, p. 64).
 REGIME_LIMIT = 2000.0
-#: Constant replacing (ν·n)^(2/3) below the limit (seed 002, p. 64).
+#: Constant replacing (ν·n)^(2/3) below the limit (the Schaeffler catalogue, p. 64).
 LOW_REGIME_FACTOR = 160.0
 
 
 @series_aware
 def mean_diameter(d, D):
-    """dM = (d + D)/2 [mm] (seed 002, p. 64).
+    """dM = (d + D)/2 [mm] (the Schaeffler catalogue, p. 64).
 
     >>> mean_diameter(25, 52)
     38.5
@@ -52,7 +52,7 @@ def mean_diameter(d, D):
 
 @series_aware
 def speed_dependent_torque(f0, nu, n, dM):
-    """Speed-dependent friction torque M0 [N·mm] (seed 002, p. 64).
+    """Speed-dependent friction torque M0 [N·mm] (the Schaeffler catalogue, p. 64).
 
     .. math::
         M_0 = f_0 (\\nu n)^{2/3} d_M^3 10^{-7}  \\quad (\\nu n \\ge 2000)
@@ -77,7 +77,7 @@ def speed_dependent_torque(f0, nu, n, dM):
 
 @series_aware
 def load_dependent_torque(f1, load, dM):
-    """Load-dependent friction torque M1 = f1·F·dM or f1·P1·dM [N·mm] (seed 002, p. 64).
+    """Load-dependent friction torque M1 = f1·F·dM or f1·P1·dM [N·mm] (the Schaeffler catalogue, p. 64).
 
     ``load`` is F (Fr of radial, Fa of thrust needle and cylindrical roller
     bearings) or P1 (ball, tapered and spherical roller bearings) in N.
@@ -90,7 +90,7 @@ def load_dependent_torque(f1, load, dM):
 
 @series_aware
 def axial_load_torque(f2, Fa, dM):
-    """Axial-load torque of a radial cylindrical roller bearing M2 = f2·Fa·dM [N·mm] (seed 002, p. 69).
+    """Axial-load torque of a radial cylindrical roller bearing M2 = f2·Fa·dM [N·mm] (the Schaeffler catalogue, p. 69).
 
     >>> axial_load_torque(0.005, 1000.0, 40.0)
     200.0
@@ -100,7 +100,7 @@ def axial_load_torque(f2, Fa, dM):
 
 @series_aware
 def axial_load_parameter(kB, dM):
-    """A = kB·1e-3·dM^2.1 [-] (seed 002, p. 69), the divisor of Fa in the f2 charts.
+    """A = kB·1e-3·dM^2.1 [-] (the Schaeffler catalogue, p. 69), the divisor of Fa in the f2 charts.
 
     >>> round(axial_load_parameter(15, 46.0), 3)  # NJ206-E
     46.546
@@ -110,7 +110,7 @@ def axial_load_parameter(kB, dM):
 
 @series_aware
 def power_loss(MR, n):
-    """Friction power loss N_R = M_R·n/9550 [W] with M_R [N·mm] and n [1/min] (seed 002, p. 64).
+    """Friction power loss N_R = M_R·n/9550 [W] with M_R [N·mm] and n [1/min] (the Schaeffler catalogue, p. 64).
 
     >>> round(power_loss(100.0, 3000.0), 4)
     31.4136
@@ -120,13 +120,13 @@ def power_loss(MR, n):
 
 @series_aware
 def total_torque(M0, M1, M2=0.0):
-    """M_R = M0 + M1 (+ M2 for axially loaded cylindrical roller bearings) [N·mm] (seed 002, pp. 64, 69)."""
+    """M_R = M0 + M1 (+ M2 for axially loaded cylindrical roller bearings) [N·mm] (the Schaeffler catalogue, pp. 64, 69)."""
     return np.asarray(M0, dtype=float) + M1 + M2
 
 
 @series_aware
 def static_equivalent_load(Fr, Fa, X0, Y0):
-    """P0 = max(X0·Fr + Y0·Fa, Fr) [N] (seed 000, p. 5 and table 1).
+    """P0 = max(X0·Fr + Y0·Fa, Fr) [N] (the DP11A manual, p. 5 and table 1).
 
     Where Fa = 0 the result is Fr whatever X0 and Y0 are (X0 <= 1), so a
     NaN Y0 does not spread into rows without axial load.
@@ -144,7 +144,7 @@ def static_equivalent_load(Fr, Fa, X0, Y0):
 
 @series_aware
 def f1_from_load_ratio(a, x, ratio):
-    """f1 = a·ratio^x [-], ratio = P0/C0 or Fa/C0 (seed 002 tables, pp. 66-68); x = 0 gives f1 = a.
+    """f1 = a·ratio^x [-], ratio = P0/C0 or Fa/C0 (the Schaeffler catalogue tables, pp. 66-68); x = 0 gives f1 = a.
 
     >>> round(f1_from_load_ratio(0.0009, 0.5, 0.05), 8)  # 62 series at P0/C0 = 0.05
     0.00020125
@@ -157,7 +157,7 @@ def f1_from_load_ratio(a, x, ratio):
 
 @series_aware
 def f0_needle(value, B, d):
-    """f0 = value·B/(33 + d) for NKI, NK, NAO, RNO, K, HK, BK, HN (seed 002, p. 66).
+    """f0 = value·B/(33 + d) for NKI, NK, NAO, RNO, K, HK, BK, HN (the Schaeffler catalogue, p. 66).
 
     value is 12/18 (NK...), 24/36 (HK, BK) or 30/45 (HN) for grease/oil;
     B and d [mm] are the width and the bore (shaft) diameter.
@@ -168,7 +168,7 @@ def f0_needle(value, B, d):
     return np.asarray(value, dtype=float) * B / (33.0 + np.asarray(d, dtype=float))
 
 
-# ---- P1 rules (seed 002, p. 68) -------------------------------------------------------------
+# ---- P1 rules (the Schaeffler catalogue, p. 68) -------------------------------------------------------------
 
 def _radial_ball(Fr, Fa, Y, e):
     return 3.3 * Fa - 0.1 * Fr
@@ -219,7 +219,7 @@ P1_RULES = {
 
 @series_aware
 def effective_load(rule, Fr, Fa, Y=np.nan, e=np.nan):
-    """P1 [N] by the named rule of seed 002 p. 68, then "if P1 < Fr use Fr".
+    """P1 [N] by the named rule of the Schaeffler catalogue p. 68, then "if P1 < Fr use Fr".
 
     ``rule`` is a key of :data:`P1_RULES` (a string, or an array of strings
     for rows of several types).

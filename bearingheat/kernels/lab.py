@@ -1,6 +1,6 @@
-"""Kernels of the DP11A lab rig of seed 000: loads and the closed forms of the three processing tasks.
+"""Kernels of the DP11A lab rig of the DP11A manual: loads and the closed forms of the three processing tasks.
 
-Seed 000 pp. 11-13:
+The DP11A manual pp. 11-13:
 
 * loads: Fa = 9.81·Q·cos β, Fr = 9.81·Q·sin β [N];
 * task 1, reduced friction coefficient for each speed:
@@ -11,7 +11,7 @@ Seed 000 pp. 11-13:
 
 The closed forms of the seed are implemented as printed and checked against
 a general least-squares solver (:func:`least_squares_line`). Note that the
-seed 000 f0 has no 10^-7 and no viscosity: T0 = f0·dm³·n^(2/3); the seed 002
+The DP11A manual f0 has no 10^-7 and no viscosity: T0 = f0·dm³·n^(2/3); the Schaeffler catalogue
 catalogue f0 of the same bearing is f0·1e7/ν^(2/3) (:func:`catalogue_f0_equivalent`).
 
 Units: Q [kg], β [deg], n [1/min], T [N·mm], P0, C0 [N], d, dm [mm],
@@ -33,12 +33,12 @@ __all__ = [
     "catalogue_f0_equivalent",
 ]
 
-#: g used by seed 000 p. 12 [m/s²]
+#: g used by the DP11A manual p. 12 [m/s²]
 GRAVITY = 9.81
 
 
 def lab_loads(Q, beta):
-    """(Fa, Fr) [N] of a weight Q [kg] on the spindle inclined at β [deg] (seed 000, p. 12).
+    """(Fa, Fr) [N] of a weight Q [kg] on the spindle inclined at β [deg] (the DP11A manual, p. 12).
 
     Fa = 9.81·Q·cos β, Fr = 9.81·Q·sin β; β from 0 (axial) to 90° (radial).
 
@@ -54,7 +54,7 @@ def lab_loads(Q, beta):
 
 
 def reduced_friction_coefficient(T, P0, d):
-    """μ = 2·ΣT·P0/(d·ΣP0²) [-] (seed 000, task 1, item 5); T [N·mm], P0 [N], d [mm].
+    """μ = 2·ΣT·P0/(d·ΣP0²) [-] (the DP11A manual, task 1, item 5); T [N·mm], P0 [N], d [mm].
 
     The least-squares slope of T = μ·P0·d/2 through the origin, over the
     readings of one speed (at least one reading with P0 > 0).
@@ -68,7 +68,7 @@ def reduced_friction_coefficient(T, P0, d):
 
 
 def _closed_form_line(T, N):
-    """Slope and intercept of T = slope·N + intercept by the sums printed in seed 000."""
+    """Slope and intercept of T = slope·N + intercept by the sums printed in the DP11A manual."""
     T = np.asarray(T, dtype=float)
     N = np.asarray(N, dtype=float)
     m = len(T)
@@ -79,7 +79,7 @@ def _closed_form_line(T, N):
 
 
 def speed_fit(T, n, dm):
-    """(f0, T_F) of T = f0·dm³·n^(2/3) + T_F by the closed forms of seed 000 task 2, N = n^(2/3).
+    """(f0, T_F) of T = f0·dm³·n^(2/3) + T_F by the closed forms of the DP11A manual task 2, N = n^(2/3).
 
     f0 in N·mm/(mm³·min^(-2/3)) as the seed defines it (no 1e-7, no ν); T_F [N·mm].
     T [N·mm] and n [1/min] of one weight and inclination, at least two distinct speeds.
@@ -94,10 +94,10 @@ def speed_fit(T, n, dm):
 
 
 def load_fit(T, P0, C0, dm, c=LOAD_EXPONENT_RADIAL):
-    """(f, T0) of T = T0 + f·P0·(P0/C0)^c·dm by the closed forms of seed 000 task 3, N = P0^(1+c).
+    """(f, T0) of T = T0 + f·P0·(P0/C0)^c·dm by the closed forms of the DP11A manual task 3, N = P0^(1+c).
 
     T [N·mm], P0 and C0 [N], dm [mm] of one speed and inclination, at least two
-    distinct loads; c = 0.55 for radial ball bearings (seed 000, table 2).
+    distinct loads; c = 0.55 for radial ball bearings (the DP11A manual, table 2).
 
     >>> P0 = np.array([4.9, 9.81, 19.62])
     >>> f, T0 = load_fit(0.05 + 0.0009 * P0 * (P0 / 2227)**0.55 * 20, P0, 2227.0, 20.0)
@@ -126,10 +126,10 @@ def least_squares_line(x, y, *, through_origin: bool = False) -> tuple[float, fl
 
 
 def catalogue_f0_equivalent(f0_seed000, nu):
-    """Seed 002 f0 equal to a seed 000 f0 at viscosity ν [mm²/s] (ν·n >= 2000): f0·1e7/ν^(2/3).
+    """The Schaeffler catalogue f0 equal to a the DP11A manual f0 at viscosity ν [mm²/s] (ν·n >= 2000): f0·1e7/ν^(2/3).
 
-    Equating T0 = f0·dm³·n^(2/3) (seed 000) with M0 = f0'·(ν·n)^(2/3)·dm³·1e-7
-    (seed 002, p. 64).
+    Equating T0 = f0·dm³·n^(2/3) (the DP11A manual) with M0 = f0'·(ν·n)^(2/3)·dm³·1e-7
+    (the Schaeffler catalogue, p. 64).
 
     >>> round(float(catalogue_f0_equivalent(1e-7, 8.0)), 6)
     0.25

@@ -1,6 +1,6 @@
 """Heat balance kernels of a rolling bearing: heat flow area, heat carried away, friction power, the exact roots.
 
-Seed 002 (p. 63, "Теплоотвод") says the thermally permissible speed comes
+The Schaeffler catalogue (p. 63, "Теплоотвод") says the thermally permissible speed comes
 from the balance between the friction power and the heat carried away; its
 page 72 with the formulas is missing, so the method is the published one of
 the Schaeffler HR 1 catalogue (2006, after ISO 15312 and the draft of
@@ -255,7 +255,7 @@ def _root_five_thirds(a, b):
 
 
 def torque_coefficients(f0, dM):
-    """(c_high, c_low) = (f0·dM³·1e-7, f0·160·dM³·1e-7) [N·mm] from the engine's M0 kernel (seed 002, p. 64).
+    """(c_high, c_low) = (f0·dM³·1e-7, f0·160·dM³·1e-7) [N·mm] from the engine's M0 kernel (the Schaeffler catalogue, p. 64).
 
     M0 = c_high·(ν·n)^(2/3) for ν·n >= 2000 and c_low for ν·n < 2000;
     f0 [-], dM [mm].

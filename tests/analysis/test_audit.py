@@ -259,7 +259,7 @@ def test_hr1_series_pool_their_variants(hr1_audit):
 def test_hr1_series_that_agree(hr1_audit):
     rows, audit = hr1_audit
     groups = audit.groups.set_index("group")
-    # the seed 002 rows of these series reproduce the catalogue's own n_thr within 1.5 % (median)
+    # The Schaeffler catalogue rows of these series reproduce the catalogue's own n_thr within 1.5 % (median)
     for key in ("deep groove ball 62", "deep groove ball 63", "deep groove ball 160", "deep groove ball 64",
                 "cylindrical roller 2", "cylindrical roller 3", "cylindrical roller 22", "cylindrical roller 23",
                 "tapered roller 302", "tapered roller 303", "tapered roller 322", "tapered roller 323",

@@ -1,4 +1,4 @@
-"""Coast-down fits (seed 003 nested models) and the rolling-bearing spindle form (seed 002)."""
+"""Coast-down fits (the TMM-7M lab sheet nested models) and the rolling-bearing spindle form (the Schaeffler catalogue)."""
 from __future__ import annotations
 
 import math
@@ -116,7 +116,7 @@ def test_bad_rig_value_message():
         cd.coastdown_analysis(np.arange(12.0), 100 - np.arange(12.0), 2.6, -1100.0, 25.0)
 
 
-# ----------------------------------------------------------------- rolling-bearing spindle (seed 002)
+# ----------------------------------------------------------------- rolling-bearing spindle (the Schaeffler catalogue)
 def test_spindle_f0_and_f1_recovered():
     torque = spindle_torque(2.0, 25.0, 20.0, 50.0, 2)
     t, n, _ = integrate_rundown(torque, 0.05, 6000.0, 2.0, 3.0, 1, fraction=0.98)
@@ -130,6 +130,6 @@ def test_spindle_f0_and_f1_recovered():
 
 def test_spindle_below_nu_n_2000_is_refused():
     with pytest.raises(CoastdownError, match=re.escape(
-            "spindle coast-down: ν·n reaches only 1000 mm²/s·1/min (< 2000): M0 of seed 002 is constant over "
+            "spindle coast-down: ν·n reaches only 1000 mm²/s·1/min (< 2000): M0 of the Schaeffler catalogue is constant over "
             "the whole run-down and cannot be told apart from M1")):
         cd.spindle_coastdown_fit(np.arange(12.0), 100 - np.arange(12.0), 0.05, 10.0, 50.0)

@@ -1,4 +1,4 @@
-"""The DP11A lab rig of seed 000: processing readings (tasks 1-3, tables 4 and 5), the shipped example."""
+"""The DP11A lab rig of the DP11A manual: processing readings (tasks 1-3, tables 4 and 5), the shipped example."""
 from __future__ import annotations
 
 import re
@@ -54,11 +54,11 @@ def test_catalogue_comparison():
     assert "seed002_MR / measured" in result.comparison.columns
     assert result.notes == []
     no_nu = process_lab(pd.read_csv(EXAMPLE).drop(columns="nu [mm^2/s]"))
-    assert no_nu.notes == ["no viscosity given (column 'nu [mm^2/s]' or --nu): the seed 002 comparison is skipped"]
+    assert no_nu.notes == ["no viscosity given (column 'nu [mm^2/s]' or --nu): the Schaeffler catalogue comparison is skipped"]
 
 
 def test_unknown_bearing():
-    with pytest.raises(LabError, match=re.escape("bearing '6205' is not in seed 000 table 3; expected one of "
+    with pytest.raises(LabError, match=re.escape("bearing '6205' is not in the DP11A manual table 3; expected one of "
                                                  "1000095, 18, 101")):
         process_lab(pd.DataFrame({"bearing": ["6205"], "Q [kg]": [1.0], "beta [deg]": [0.0],
                                   "n [1/min]": [3000.0], "T [N*mm]": [0.1]}))

@@ -1,4 +1,4 @@
-"""Sizing of DU/DP bushings and thrust washers with units (seed 004)."""
+"""Sizing of DU/DP bushings and thrust washers with units (the DU/DP bushing handbook)."""
 from __future__ import annotations
 
 import math

@@ -1,4 +1,4 @@
-"""Ball bearing contact with units (seed 001): unit invariance, the clearance route, unit errors."""
+"""Ball bearing contact with units (Zaitsev & Voronkin): unit invariance, the clearance route, unit errors."""
 import math
 
 import pytest
@@ -8,7 +8,7 @@ from bearingheat.errors import ContactInputError, UnitError
 from bearingheat.kernels.contact import KGF
 from bearingheat.units import ureg
 
-# Seed 001, example: bearing 4-1006095 (5 x 13 x 4 mm; the seed's table swaps D and d).
+# Zaitsev & Voronkin, example: bearing 4-1006095 (5 x 13 x 4 mm; the seed's table swaps D and d).
 Z, DW, DM, ALPHA0, RI, RO = 7, 2.0, 8.7355, 12.0, 1.05, 1.16
 FA_SEED = 2.0 * KGF
 

@@ -1,4 +1,4 @@
-"""calc rows beyond the rolling friction model: plain bushings (seed 004)."""
+"""calc rows beyond the rolling friction model: plain bushings (the DU/DP bushing handbook)."""
 import math
 
 import numpy as np
@@ -19,15 +19,15 @@ def test_plain_bushings_mix_with_rolling_bearings():
         "f_plain": [None, None, 0.08, None]})
     out = calc(table)
     assert list(out["status"]) == ["ok", "warning", "ok", "error"]
-    V = math.pi * 20 * 1000 / 60000                      # m/s, seed 004
+    V = math.pi * 20 * 1000 / 60000                      # m/s, the DU/DP bushing handbook
     assert out.loc[1, "V [m/s]"] == pytest.approx(V, rel=1e-12)
     assert out.loc[1, "p [N/mm^2]"] == pytest.approx(1000 / (20 * 20), rel=1e-12)
     assert out.loc[1, "NR [W]"] == pytest.approx(0.2 * 1000 * V, rel=1e-12)   # high end of 0.1-0.2
     assert out.loc[1, "MR [N*mm]"] == pytest.approx(0.2 * 1000 * 10, rel=1e-12)
-    assert out.loc[1, "message"] == ("f not given: N uses f = 0.2, the high end of seed 004's range 0.1-0.2 at "
+    assert out.loc[1, "message"] == ("f not given: N uses f = 0.2, the high end of the DU/DP bushing handbook's range 0.1-0.2 at "
                                      "V = 1.05 m/s (conservative)")
     assert out.loc[2, "NR [W]"] == pytest.approx(0.08 * 1000 * V, rel=1e-12)
-    assert out.loc[3, "message"] == "V = 0.01047 m/s is below 0.05 m/s: outside seed 004's method"
+    assert out.loc[3, "message"] == "V = 0.01047 m/s is below 0.05 m/s: outside the DU/DP bushing handbook's method"
     assert math.isnan(out.loc[3, "NR [W]"])
     assert np.isnan(out.loc[1, ["f0", "f1", "M0 [N*mm]"]].astype(float)).all()
     assert out.loc[0, "MR [N*mm]"] > 0

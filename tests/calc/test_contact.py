@@ -1,4 +1,4 @@
-"""The calc extension of ball bearings: the minimum axial load Fa_min against ball skidding (seed 001)."""
+"""The calc extension of ball bearings: the minimum axial load Fa_min against ball skidding (Zaitsev & Voronkin)."""
 import pandas as pd
 import pytest
 
@@ -17,10 +17,10 @@ def test_minimum_axial_load_warning():
     assert out.loc[0, "Fa_min [N]"] == pytest.approx(fa_min, rel=1e-12)
     assert out.loc[0, "status"] == "warning"
     assert out.loc[0, "message"] == (f"Fa = 10 N is below the minimum axial load {fa_min:.4g} N at 12000 1/min: "
-                                     "the balls may skid (seed 001)")
+                                     "the balls may skid (Zaitsev & Voronkin)")
     assert out.loc[1, "status"] == "ok"
     assert out.loc[2, "message"] == ("Fa_min: give alpha [deg] (the contact angle) to check the minimum axial load "
-                                     "against ball skidding (seed 001)")
+                                     "against ball skidding (Zaitsev & Voronkin)")
 
 
 def test_no_geometry_no_column():

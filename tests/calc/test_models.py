@@ -17,7 +17,7 @@ TYPES = ("needle_roller, cylindrical_roller_full_complement, cylindrical_roller,
 
 CASES = {
     "unknown designation": (dict(designation="6Z05"), "error",
-        "designation: '6Z05' matches no row of the seed 002 tables (close matches: 6405, 6305, 6205, 6015, 6005); "
+        "designation: '6Z05' matches no row of the Schaeffler catalogue tables (close matches: 6405, 6305, 6205, 6015, 6005); "
         "give type and series explicitly instead"),
     "no designation": (dict(designation=None), "error",
         "designation: missing; give a designation, or type and series"),
@@ -26,17 +26,17 @@ CASES = {
     "unknown type": (dict(designation=None, type="ball", series="62"), "error",
         f"type: 'ball' is not a bearing type; expected one of {TYPES}"),
     "unknown series": (dict(designation=None, type="deep_groove_ball", series="99"), "error",
-        "series: '99' is not in the seed 002 table of deep groove ball bearings; "
+        "series: '99' is not in the Schaeffler catalogue table of deep groove ball bearings; "
         "expected one of 618, 160, 60, 619, 622, 623, 62, 63, 64, 42, 43"),
     "unknown lubrication": (dict(lubrication="oil"), "error",
         "lubrication: 'oil' is not one of grease, oil_mist, oil_bath, circulating_oil"),
     "no lubrication": (dict(lubrication=None), "error",
         "lubrication: missing; expected one of grease, oil_mist, oil_bath, circulating_oil"),
     "oil on a grease-only row": (dict(designation="62205", lubrication="circulating_oil"), "error",
-        "lubrication: 'circulating_oil' has no f0 for deep groove ball bearing series 622 (seed 002 prints a dash); "
+        "lubrication: 'circulating_oil' has no f0 for deep groove ball bearing series 622 (the Schaeffler catalogue prints a dash); "
         "use grease or oil_mist, or give f0"),
     "paired deep groove": (dict(arrangement="paired"), "error",
-        "arrangement: 'paired' has no P1 rule for deep groove ball bearing series 62 (seed 002, p. 68 prints a dash)"),
+        "arrangement: 'paired' has no P1 rule for deep groove ball bearing series 62 (the Schaeffler catalogue, p. 68 prints a dash)"),
     "unknown arrangement": (dict(arrangement="triple"), "error",
         "arrangement: 'triple' is not one of single, paired"),
     "no bore": (dict(designation="62..", d=None), "error", "d [mm]: missing; the bore d gives dM = (d + D)/2"),
@@ -53,46 +53,46 @@ CASES = {
     "negative f0": (dict(f0=-1), "error", "f0: -1 must be >= 0"),
     "negative f1": (dict(f1=-0.1), "error", "f1: -0.1 must be >= 0"),
     "no C0": (dict(C0=None), "error",
-        "C0 [N]: missing; f1 of deep groove ball bearing series 62 depends on P0/C0 (seed 002, pp. 66-68)"),
+        "C0 [N]: missing; f1 of deep groove ball bearing series 62 depends on P0/C0 (the Schaeffler catalogue, pp. 66-68)"),
     "no C0 thrust ball": (dict(designation="51105", D=42, C0=None, Fa=1000), "error",
-        "C0 [N]: missing; f1 of thrust ball bearing series 511 depends on Fa/C0 (seed 002, pp. 66-68)"),
+        "C0 [N]: missing; f1 of thrust ball bearing series 511 depends on Fa/C0 (the Schaeffler catalogue, pp. 66-68)"),
     "zero C0": (dict(C0=0), "error", "C0 [N]: 0 must be > 0"),
     "needle without width": (dict(designation=None, type="needle_roller", series="NK", D=33, B=None), "error",
-        "B [mm]: missing; f0 of needle roller bearing series NK is value*B/(33+d) (seed 002, p. 66)"),
+        "B [mm]: missing; f0 of needle roller bearing series NK is value*B/(33+d) (the Schaeffler catalogue, p. 66)"),
     "negative width": (dict(designation="HK2016", d=None, D=26, B=-2), "error", "B [mm]: -2 must be > 0"),
     "tapered without Y": (dict(designation="30205-A", Fa=500), "error",
         "Y: missing; P1 of tapered roller bearing series 302 under axial load needs the catalogue value Y "
-        "(seed 002, p. 68)"),
+        "(the Schaeffler catalogue, p. 68)"),
     "negative Y": (dict(designation="30205-A", Fa=500, Y=-1), "error", "Y: -1 must be > 0"),
     "spherical without e": (dict(designation="22205-E1", Fa=500, X0=1, Y0=2.8, C0=40000), "error",
         "e: missing; P1 of spherical roller bearing series 222 under axial load needs the catalogue value e "
-        "(seed 002, p. 68)"),
+        "(the Schaeffler catalogue, p. 68)"),
     "spherical without X0, Y0": (dict(designation="22205-E1", Fa=500, e=0.3, C0=40000), "error",
         "X0: missing; P0 of spherical roller bearing series 222 under axial load needs the catalogue value X0 "
-        "(seed 000, table 1 has none for this type); Y0: missing; P0 of spherical roller bearing series 222 under "
-        "axial load needs the catalogue value Y0 (seed 000, table 1 has none for this type)"),
+        "(the DP11A manual, table 1 has none for this type); Y0: missing; P0 of spherical roller bearing series 222 under "
+        "axial load needs the catalogue value Y0 (the DP11A manual, table 1 has none for this type)"),
     "angular contact at 40 deg": (dict(designation="7205-B", Fa=500), "error",
-        "Y0: missing; alpha = 40 deg is outside the contact angles of seed 000 table 1 (18 to 36 deg); "
+        "Y0: missing; alpha = 40 deg is outside the contact angles of the DP11A manual table 1 (18 to 36 deg); "
         "Y0 is not extrapolated; give Y0 from the catalogue"),
     "angular contact without angle": (dict(designation="7205", Fa=500), "error",
         "Y0: missing; P0 of single row angular contact ball bearing series 72 under axial load needs the catalogue "
-        "value Y0 or the contact angle alpha (seed 000, table 1: 18 to 36 deg)"),
+        "value Y0 or the contact angle alpha (the DP11A manual, table 1: 18 to 36 deg)"),
     "axial load on NU": (dict(designation="NU206-E", Fa=500), "error",
         "Fa [N]: 500 on NU cylindrical roller bearing with cage series 2: one ring has no ribs, "
         "the bearing takes no axial load"),
     "axial without radial on NJ": (dict(designation="NJ206-E", Fr=0, Fa=500, f2=0.01), "error",
         "Fa [N]: 500 without radial load on cylindrical roller bearing with cage series 2: axially loaded "
-        "cylindrical roller bearings need Fr > 0 (seed 002, p. 69)"),
+        "cylindrical roller bearings need Fr > 0 (the Schaeffler catalogue, p. 69)"),
     "NJ without f2": (dict(designation="NJ206-E", Fa=500), "error",
         "f2: missing; cylindrical roller bearing with cage series 2 carries Fa, so M2 = f2*Fa*dM needs f2: give f2, "
         "or a digitised chart (--f2-chart); read it at Fa/A = 15.61, nu*n*dM = 1.386e+06 mm^3/(s*min) "
-        "(seed 002, p. 70, figs. 3 and 4)"),
+        "(the Schaeffler catalogue, p. 70, figs. 3 and 4)"),
     "Fa/Fr above 0.4": (dict(designation="NJ206-E", Fr=1000, Fa=500, f2=0.01), "warning",
         "Fa/Fr = 0.5 is above 0.4, the limit for axially loaded cylindrical roller bearings; M2 is uncertain there"),
     "contact seal": (dict(designation="6205-2RSR", lubrication="grease"), "warning",
-        "contact seals: their friction comes on top of the catalogue model (seed 002, p. 64)"),
+        "contact seals: their friction comes on top of the catalogue model (the Schaeffler catalogue, p. 64)"),
     "not the E design": (dict(designation="NU206"), "warning",
-        "the seed 002 row for series 2 is for the E design (2..-E)"),
+        "the Schaeffler catalogue row for series 2 is for the E design (2..-E)"),
 }
 
 
@@ -121,7 +121,7 @@ def test_message(results, case):
 def test_good_row_still_computed(results):
     assert results.loc["good", "status"] == "ok"
     assert results.loc["good", "message"] == ""
-    hand = 2 * 36000 ** (2 / 3) * 38.5 ** 3 * 1e-7 + 0.0009 * (2000 / 7800) ** 0.5 * 2000 * 38.5  # seed 002
+    hand = 2 * 36000 ** (2 / 3) * 38.5 ** 3 * 1e-7 + 0.0009 * (2000 / 7800) ** 0.5 * 2000 * 38.5  # the Schaeffler catalogue
     assert results.loc["good", "MR"] == pytest.approx(hand, rel=1e-12)
 
 

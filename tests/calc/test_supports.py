@@ -26,7 +26,7 @@ def test_table_rows_get_their_catalogue_constants():
     assert s.Fr.tolist() == [1000.0, 0.0, 2000.0, 0.0, 500.0]   # a blank load is 0
     assert s.f0_table[0] == s.f0_table[2] == 2.0
     assert list(s.resolved) == [True, True, True, False, True]
-    assert s.error[3] == ("designation: 'nonsense' matches no row of the seed 002 tables; give type and series "
+    assert s.error[3] == ("designation: 'nonsense' matches no row of the Schaeffler catalogue tables; give type and series "
                           "explicitly instead") and s.error[0] == ""
     assert s.p1_rule[0] == "radial_ball" and s.p1_rule[1] == ""
 

@@ -85,7 +85,7 @@ def test_reference_speed_rows_never_raise_and_give_reasons():
     assert n_thr.attrs["reason"].to_dict() == {
         "a": "n_thr: the thermal method (ISO 15312, DIN 732) does not apply to bearings with contact seals",
         "b": "n_thr: the thermal method (ISO 15312, DIN 732) does not apply to thrust ball bearings",
-        "c": "designation: 'bogus' matches no row of the seed 002 tables; give type and series explicitly instead",
+        "c": "designation: 'bogus' matches no row of the Schaeffler catalogue tables; give type and series explicitly instead",
         "d": "B [mm]: missing; the heat flow area A_r = pi*B*(D+d) needs the width",
         "e": "T [mm]: missing; the heat flow area A_r = pi*T*(D+d) needs the total width",
         "f": "D [mm]: 20 must be larger than d = 25 mm",
@@ -237,7 +237,7 @@ def test_row_problems_are_messages_not_exceptions():
     out = calc(table)
     assert out["status"].tolist() == ["warning", "error", "error", "error"]
     assert out.loc[0, "message"] == (
-        "contact seals: their friction comes on top of the catalogue model (seed 002, p. 64); n_thr: the thermal "
+        "contact seals: their friction comes on top of the catalogue model (the Schaeffler catalogue, p. 64); n_thr: the thermal "
         "method (ISO 15312, DIN 732) does not apply to bearings with contact seals")
     assert "nu100 [mm^2/s]: missing; nu40 alone does not fix the viscosity-temperature line (ASTM D341)" \
         in out.loc[1, "message"]

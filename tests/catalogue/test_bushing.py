@@ -1,4 +1,4 @@
-"""The admissible pV and pressure tables of DU/DP bushings (seed 004): typed from the seed, units, refusals."""
+"""The admissible pV and pressure tables of DU/DP bushings (the DU/DP bushing handbook): typed from the seed, units, refusals."""
 from __future__ import annotations
 
 import math
@@ -31,7 +31,7 @@ def test_table25_reads_back_as_typed_from_seed():
     for (_, row), (application, shaft, life, K) in zip(table.iterrows(), typed):
         assert (row["application"], row["shaft"], row["life"]) == (application, shaft, life)
         assert (math.isnan(row["K"]) if K is None else row["K"] == K)
-        assert row["source"].startswith("seed 004, table 25")
+        assert row["source"].startswith("the DU/DP bushing handbook, table 25")
     assert table_units("bushing_pv_limits")["K"] == "kgf/cm^2*m/s"
 
 
@@ -52,19 +52,19 @@ def test_table_units_convert_with_pint_to_the_kernel_constant():
 
 def test_lost_table_cell_message():
     with pytest.raises(BushingInputError, match=re.escape(
-            "seed 004 table 25: K for guide, hardened shaft, 1000 h was lost in the OCR of the seed; give K directly")):
+            "the DU/DP bushing handbook table 25: K for guide, hardened shaft, 1000 h was lost in the OCR of the seed; give K directly")):
         bu.pv_limit_seed004_table25("guide", "hardened", 1000)
 
 
 def test_unknown_application_message():
     with pytest.raises(BushingInputError, match=re.escape(
-            "seed 004 table 25: application 'sleeve' unknown; expected one of bushing_constant_load, "
+            "the DU/DP bushing handbook table 25: application 'sleeve' unknown; expected one of bushing_constant_load, "
             "bushing_oscillating, bushing_rotating_load, guide, thrust_washer")):
         bu.pv_limit_seed004_table25("sleeve", "soft", 1000)
 
 
 def test_unknown_load_type_message():
     with pytest.raises(BushingInputError, match=re.escape(
-            "seed 004 [p]: load type 'heavy' unknown; expected one of static, rotating_fixed_load_point, "
+            "the DU/DP bushing handbook [p]: load type 'heavy' unknown; expected one of static, rotating_fixed_load_point, "
             "moving_load_moderate, moving_load_severe")):
         bu.pressure_limit_seed004("heavy")

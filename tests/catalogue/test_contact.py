@@ -1,4 +1,4 @@
-"""Static load factors X0, Y0 of angular contact ball bearings against the contact angle (seed 000, table 1)."""
+"""Static load factors X0, Y0 of angular contact ball bearings against the contact angle (the DP11A manual, table 1)."""
 import math
 import re
 
@@ -15,7 +15,7 @@ from bearingheat.errors import ContactInputError
 def test_static_load_factor_table_rows_read_back():
     table = load_table("static_load_factors")
     rows = table[table["bearing_type"] == "angular_contact_ball"]
-    # seed 000, table 1: alpha, X0, Y0
+    # The DP11A manual, table 1: alpha, X0, Y0
     assert rows[["contact_angle", "X0", "Y0"]].values.tolist() == [
         [18, 0.5, 0.43], [20, 0.5, 0.42], [26, 0.5, 0.37], [30, 0.5, 0.33], [36, 0.5, 0.28]]
 
@@ -30,15 +30,15 @@ def test_y0_interpolation():
 
 def test_y0_refused_outside_the_table():
     with pytest.raises(ContactInputError, match=re.escape(
-            "alpha = 14.4658 deg is outside the contact angles of seed 000 table 1 (18 to 36 deg); "
+            "alpha = 14.4658 deg is outside the contact angles of the DP11A manual table 1 (18 to 36 deg); "
             "Y0 is not extrapolated")):
         ct.y0_for_contact_angle(14.4658)
     with pytest.raises(ContactInputError, match=re.escape(
-            "alpha = 40 deg is outside the contact angles of seed 000 table 1 (18 to 36 deg); "
+            "alpha = 40 deg is outside the contact angles of the DP11A manual table 1 (18 to 36 deg); "
             "Y0 is not extrapolated (row b)")) as info:
         ct.y0_for_contact_angle(pd.Series([20.0, 40.0], index=["a", "b"]))
     assert info.value.row == "b"
     with pytest.raises(ContactInputError, match=re.escape(
-            "alpha = 17.9 deg is outside the contact angles of seed 000 table 1 (18 to 36 deg); "
+            "alpha = 17.9 deg is outside the contact angles of the DP11A manual table 1 (18 to 36 deg); "
             "X0 is not extrapolated (element 1)")):
         ct.x0_for_contact_angle(np.array([20.0, 17.9]))

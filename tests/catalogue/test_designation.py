@@ -1,4 +1,4 @@
-"""Designations to bearing types and table rows; GOST numbers of seed 000."""
+"""Designations to bearing types and table rows; GOST numbers of the DP11A manual."""
 import pytest
 
 from bearingheat.catalogue.friction import resolve
@@ -72,7 +72,7 @@ def test_bore_codes():
 
 
 def test_gost_seed_000():
-    """Seed 000 p. 4: digits from the right: bore, diameter series, type, design (2), width series."""
+    """The DP11A manual p. 4: digits from the right: bore, diameter series, type, design (2), width series."""
     g = decode_gost("1000095")
     assert (g.bore, g.diameter_series, g.diameter_series_name, g.type_digit, g.bearing_type, g.design,
             g.width_series) == (5.0, "9", "ultra light", "0", "deep_groove_ball", "00", "1")
@@ -97,11 +97,11 @@ def test_gost_errors():
 def test_unknown_designation_lists_close_matches():
     with pytest.raises(DesignationError) as exc:
         parse_designation("7905")
-    assert str(exc.value) == ("designation: '7905' matches no row of the seed 002 tables (close matches: 6405, 6305, "
+    assert str(exc.value) == ("designation: '7905' matches no row of the Schaeffler catalogue tables (close matches: 6405, 6305, "
                               "6205, 6015, 6005); give type and series explicitly instead")
     with pytest.raises(DesignationError) as exc:
         parse_designation("6208X")
-    assert str(exc.value) == ("designation: '6208X' matches no row of the seed 002 tables (close matches: 6208, 6208-2Z, "
+    assert str(exc.value) == ("designation: '6208X' matches no row of the Schaeffler catalogue tables (close matches: 6208, 6208-2Z, "
                               "608, 6320, 6308); give type and series explicitly instead")
 
 

@@ -1,4 +1,4 @@
-"""Digitised f2 charts: log-log interpolation, never extrapolation (seed 002 p. 69)."""
+"""Digitised f2 charts: log-log interpolation, never extrapolation (the Schaeffler catalogue p. 69)."""
 import math
 from pathlib import Path
 
@@ -114,4 +114,4 @@ def test_chart_needs_kb():
                               D=62, lubrication="circulating_oil", n=3000, nu=20, Fr=5000, Fa=1000)])
     out = compute_supports(rows, f2_chart=synthetic())
     assert out.loc[0, "message"] == ("kB: missing; cylindrical roller bearing without cage series SL0248 has no kB in "
-                                     "seed 002 p. 70, so Fa/A for the f2 chart is unknown; give f2")
+                                     "the Schaeffler catalogue p. 70, so Fa/A for the f2 chart is unknown; give f2")

@@ -1,4 +1,4 @@
-"""The bearings of the DP11A lab rig: seed 000 table 3 (tables/lab_bearings.csv)."""
+"""The bearings of the DP11A lab rig: the DP11A manual table 3 (tables/lab_bearings.csv)."""
 from __future__ import annotations
 
 import re
@@ -15,7 +15,7 @@ def test_lab_bearings_of_table_3():
 
 
 def test_unknown_lab_bearing():
-    with pytest.raises(LabError, match=re.escape("bearing '6205' is not in seed 000 table 3; expected one of "
+    with pytest.raises(LabError, match=re.escape("bearing '6205' is not in the DP11A manual table 3; expected one of "
                                                  "1000095, 18, 101")):
         lab_bearing("6205")
 

@@ -15,7 +15,7 @@ DASH = None
 
 # (bearing_type, series, f0 grease/oil mist, f0 oil bath/circulating, f0 basis, f1 a, f1 x, f1 basis, M1 load)
 SEED_002 = [
-    # needle roller bearings, seed 002 p. 66
+    # needle roller bearings, the Schaeffler catalogue p. 66
     ("needle_roller", "NA48", 3, 5, C, 0.0005, 0, C, "Fr"),
     ("needle_roller", "NA49", 4, 5.5, C, 0.0005, 0, C, "Fr"),
     ("needle_roller", "RNA48", 3, 5, C, 0.0005, 0, C, "Fr"),
@@ -92,7 +92,7 @@ SEED_002 = [
     ("deep_groove_ball", "64", 1.5, 2.3, C, 0.0010, 0.5, P, "P1"),
     ("deep_groove_ball", "42", 2.3, 3.5, C, 0.0010, 0.5, P, "P1"),
     ("deep_groove_ball", "43", 4, 6, C, 0.0010, 0.5, P, "P1"),
-    # angular contact ball bearings, seed 002 p. 68
+    # angular contact ball bearings, the Schaeffler catalogue p. 68
     ("angular_contact_ball", "70", 1.3, 2, C, 0.001, 0.33, P, "P1"),
     ("angular_contact_ball", "718", 1.3, 2, C, 0.001, 0.33, P, "P1"),
     ("angular_contact_ball", "72", 1.3, 2, C, 0.001, 0.33, P, "P1"),
@@ -126,7 +126,7 @@ P1_RULES = [
     ("spherical_roller", "single", "spherical", "1.6*Fa/e if Fa/Fr > e else Fr*(1 + 0.6*(Fa/(e*Fr))^3)"),
 ]
 
-KB = [  # seed 002 p. 70
+KB = [  # the Schaeffler catalogue p. 70
     ("SL1818", "", 4.5), ("SL0148", "", 4.5), ("SL1829", "", 11), ("SL0149", "", 11),
     ("SL1830", "", 17), ("SL1850", "", 17), ("SL1822", "", 20), ("LSL1923", "", 28), ("ZSL1923", "", 28),
     ("SL1923", "", 30),
@@ -135,7 +135,7 @@ KB = [  # seed 002 p. 70
     ("4", "NJ", 22),
 ]
 
-STATIC = [  # seed 000 table 1
+STATIC = [  # the DP11A manual table 1
     ("deep_groove_ball", 0, 0.6, 0.50),
     ("angular_contact_ball", 18, 0.5, 0.43),
     ("angular_contact_ball", 20, 0.5, 0.42),
@@ -144,7 +144,7 @@ STATIC = [  # seed 000 table 1
     ("angular_contact_ball", 36, 0.5, 0.28),
 ]
 
-LAB = [  # seed 000 table 3: designation, d, dm, C0
+LAB = [  # the DP11A manual table 3: designation, d, dm, C0
     ("1000095", 5.0, 9.0, 392), ("18", 8.0, 13.5, 1354), ("101", 12.0, 20.0, 2227),
 ]
 
@@ -166,7 +166,7 @@ def test_friction_coefficients_match_seed_002_row_by_row():
         assert got[4] == expected[4]
         assert _same(got[5], expected[5]) and _same(got[6], expected[6]), got
         assert got[7:] == expected[7:], got
-        assert row.source.startswith("seed 002, pp. 66-67") or row.source.startswith("seed 002, p. 68")
+        assert row.source.startswith("the Schaeffler catalogue, pp. 66-67") or row.source.startswith("the Schaeffler catalogue, p. 68")
 
 
 def test_p1_rules_match_seed_002_p68():

@@ -34,7 +34,7 @@ def test_bushing_outside_method_exit_1(capsys):
     assert main(["bushing", "--F", "2kN", "--n", "20rpm", "--d", "25mm", "--shaft", "soft", "--life", "1000h",
                  "--load-type", "static"]) == 1
     assert capsys.readouterr().err == (
-        "bearingheat bushing: V = 0.02618 m/s is below 0.05 m/s: outside seed 004's sizing method "
+        "bearingheat bushing: V = 0.02618 m/s is below 0.05 m/s: outside the DU/DP bushing handbook's sizing method "
         "(the seed allows smaller bearings than calculated there)\n")
 
 
@@ -42,7 +42,7 @@ def test_bushing_lost_table_value_exit_2(capsys):
     assert main(["bushing", "--F", "2kN", "--n", "500rpm", "--d", "25mm", "--shaft", "hardened", "--life", "10000h",
                  "--load-type", "static"]) == 2
     assert capsys.readouterr().err == (
-        "bearingheat bushing: error: seed 004 table 25: K for bushing_constant_load, hardened shaft, 10000 h "
+        "bearingheat bushing: error: the DU/DP bushing handbook table 25: K for bushing_constant_load, hardened shaft, 10000 h "
         "was lost in the OCR of the seed; give K directly\n")
 
 

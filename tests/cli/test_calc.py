@@ -27,7 +27,7 @@ def test_example_runs_and_keeps_input_columns(tmp_path, capsys):
     assert result["status"].tolist() == ["ok"] * 4 + ["warning", "ok"]
     assert result.loc[4, "message"].startswith('row 6 (id "spindle front (pair)"): n_thr: the heat balance of a '
                                                "bearing pair is not in the sources")
-    # row 1: 6208 in an oil bath, hand calculation after seed 002
+    # row 1: 6208 in an oil bath, hand calculation after the Schaeffler catalogue
     dM, n, nu = 60.0, 1480.0, 40.0
     P0 = max(0.6 * 3200 + 0.5 * 900, 3200)
     M = 2 * (nu * n) ** (2 / 3) * dM ** 3 * 1e-7 + 0.0009 * (P0 / 18000) ** 0.5 * max(3.3 * 900 - 320, 3200) * dM

@@ -1,4 +1,4 @@
-"""``bearingheat contact``: seed 001 example from arguments and from a CSV, exit codes, exact messages."""
+"""``bearingheat contact``: Zaitsev & Voronkin example from arguments and from a CSV, exit codes, exact messages."""
 import json
 import subprocess
 import sys
@@ -54,7 +54,7 @@ def test_warning_below_minimum_axial_load(capsys):
     code, record, err = run_json(capsys, "--alpha0", "12deg", "--Fa", "0.5N", "--n", "30000rpm")
     assert code == 0
     message = ("Fa = 0.5 N is below the minimum axial load Fa_min = 1.019 N at n = 30000 1/min "
-               "(gyroscopic sliding of the balls, seed 001)")
+               "(gyroscopic sliding of the balls, Zaitsev & Voronkin)")
     assert err == f"bearingheat contact: warning: {message}\n"
     assert record["warning"] == message
 
@@ -80,7 +80,7 @@ def test_usage_errors_exit_2(capsys, argv, message):
 
 
 CSV_TEXT = """designation,z,Dw [mm],dm_pitch [mm],ri [mm],ro [mm],alpha0 [deg],Fa [kgf],n [1/min],note
-4-1006095,7,2,8.7355,1.05,1.16,12,2,3000,seed 001 example
+4-1006095,7,2,8.7355,1.05,1.16,12,2,3000,Zaitsev & Voronkin example
 bad grooves,7,2,8.7355,0.9,1.0,12,2,3000,
 no load,7,0.2cm,8.7355,1.05,1.16,12,,,
 """

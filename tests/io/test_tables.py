@@ -165,10 +165,10 @@ def test_row_messages_cite_the_line_of_the_file(tmp_path, capsys):
     assert messages[0] == ""
     assert messages[1] == "row 4 (id \"two\nlines\"): 'abc' is not a number for Fr [kN]"
     assert messages[2] == "row 6: n [rpm]: -10 must be >= 0 (speed magnitude)"
-    assert messages[3] == ('row 7 (id "spindle rear"): designation: \'6Z05\' matches no row of the seed 002 tables '
+    assert messages[3] == ('row 7 (id "spindle rear"): designation: \'6Z05\' matches no row of the Schaeffler catalogue tables '
                            "(close matches: 6405, 6305, 6205, 6015, 6005); give type and series explicitly instead")
     printed = capsys.readouterr().out
-    assert ('error: row 7 (id "spindle rear"): designation: \'6Z05\' matches no row of the seed 002 tables'
+    assert ('error: row 7 (id "spindle rear"): designation: \'6Z05\' matches no row of the Schaeffler catalogue tables'
             in printed)
 
 

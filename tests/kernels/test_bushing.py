@@ -1,4 +1,4 @@
-"""Kernels of DU/DP bushings and thrust washers (seed 004): formulas, life, derating, sizing, power loss."""
+"""Kernels of DU/DP bushings and thrust washers (the DU/DP bushing handbook): formulas, life, derating, sizing, power loss."""
 from __future__ import annotations
 
 import math
@@ -15,7 +15,7 @@ from bearingheat.kernels import bushing as bu
 
 # ----------------------------------------------------------------- formulas from first principles
 def test_sliding_speed_of_the_seed_test_bushing():
-    # seed 004: 15.9 mm bore at 750, 1500, 3000 1/min 'corresponds to 0.625, 1.25 and 2.5 m/s'
+    # The DU/DP bushing handbook: 15.9 mm bore at 750, 1500, 3000 1/min 'corresponds to 0.625, 1.25 and 2.5 m/s'
     np.testing.assert_allclose(bu.sliding_speed(15.9, np.array([750.0, 1500.0, 3000.0])), [0.625, 1.25, 2.5],
                                rtol=1e-3)
 
@@ -66,7 +66,7 @@ def test_life_is_monotone_and_inverts(pv):
 
 def test_life_outside_two_point_fit_message():
     with pytest.raises(OutsideMethodError, match=re.escape(
-            "pV = 0.1 N/mm²*m/s is outside the two-point fit of seed 004 fig. 86 "
+            "pV = 0.1 N/mm²*m/s is outside the two-point fit of the DU/DP bushing handbook fig. 86 "
             "(0.353 to 1.765 N/mm²*m/s, i.e. 3.6 to 18 kgf/cm²*m/s)")):
         bu.life_hours_seed004_fig86(0.1)
     assert bu.life_hours_seed004_fig86(0.1, extrapolate=True) == pytest.approx(3530.4, rel=1e-4)
@@ -81,7 +81,7 @@ def test_temperature_factor_values_and_continuity():
 
 def test_temperature_outside_range_message():
     with pytest.raises(OutsideMethodError, match=re.escape(
-            "T = 300 °C is outside the range of seed 004 table 25 (-200 to +280 °C)")):
+            "T = 300 °C is outside the range of the DU/DP bushing handbook table 25 (-200 to +280 °C)")):
         bu.temperature_factor_seed004(300.0)
 
 
@@ -115,14 +115,14 @@ def test_size_bushing_lengthened_from_pressure():
 
 def test_size_bushing_below_minimum_speed_message():
     with pytest.raises(OutsideMethodError, match=re.escape(
-            "V = 0.02618 m/s is below 0.05 m/s: outside seed 004's sizing method "
+            "V = 0.02618 m/s is below 0.05 m/s: outside the DU/DP bushing handbook's sizing method "
             "(the seed allows smaller bearings than calculated there)")):
         bu.size_bushing_kernel(2000.0, 20.0, 25.0, 0.55, 55.0)
 
 
 def test_size_bushing_above_maximum_speed_message():
     with pytest.raises(OutsideMethodError, match=re.escape(
-            "n = 16000 1/min is above 15 000 1/min: outside seed 004's sizing method "
+            "n = 16000 1/min is above 15 000 1/min: outside the DU/DP bushing handbook's sizing method "
             "(the seed allows smaller bearings than calculated there)")):
         bu.size_bushing_kernel(2000.0, 16000.0, 25.0, 0.55, 55.0)
 
@@ -142,7 +142,7 @@ def test_power_loss_kernel_with_f_given_and_not_given():
     default = bu.plain_bushing_power_loss(20.0, 20.0, 1000.0, 1000.0)
     assert default.power == pytest.approx(0.2 * 1000 * V)
     assert default.status == "warning"
-    assert default.message == ("f not given: N uses f = 0.2, the high end of seed 004's range 0.1-0.2 "
+    assert default.message == ("f not given: N uses f = 0.2, the high end of the DU/DP bushing handbook's range 0.1-0.2 "
                                "at V = 1.05 m/s (conservative)")
 
 
@@ -151,10 +151,10 @@ def test_power_loss_kernel_errors_per_row():
                                       np.array([20000.0, 10.0, 100.0, 4000.0, 1000.0]))
     assert list(out.status) == ["error", "error", "error", "error", "warning"]
     assert list(out.message[:4]) == [
-        "n = 20000 1/min is above 15 000 1/min: outside seed 004's method",
-        "V = 0.01047 m/s is below 0.05 m/s: outside seed 004's method",
+        "n = 20000 1/min is above 15 000 1/min: outside the DU/DP bushing handbook's method",
+        "V = 0.01047 m/s is below 0.05 m/s: outside the DU/DP bushing handbook's method",
         "d = -1 mm: expected a bushing bore > 0 mm",
-        "V = 6.283 m/s is above 5 m/s: seed 004 gives no friction coefficient there; give f",
+        "V = 6.283 m/s is above 5 m/s: the DU/DP bushing handbook gives no friction coefficient there; give f",
     ]
     assert np.isnan(out.power[:4]).all() and np.isnan(out.p[2])
 

@@ -1,4 +1,4 @@
-"""Kernels of the coast-down test: seed 003 formulas, the seed 002 M0 branches, smoothing, run-down integration."""
+"""Kernels of the coast-down test: the TMM-7M lab sheet formulas, the Schaeffler catalogue M0 branches, smoothing, run-down integration."""
 from __future__ import annotations
 
 import math
@@ -14,7 +14,7 @@ from bearingheat.errors import CoastdownError
 from bearingheat.kernels import coastdown as cd
 
 
-# ----------------------------------------------------------------- seed 003 formulas by hand
+# ----------------------------------------------------------------- the TMM-7M lab sheet formulas by hand
 def test_formula2_worked_example_by_hand():
     # TMM-7M: I = 2.6 kg*m^2, G = 1100 N, journal 50 mm; the diagram drops by 100 1/min in 10 s.
     # f = pi*I*dn / (30*G*r*dt) = pi*2.6*100 / (30*1100*0.025*10) = 816.81/8250
@@ -76,7 +76,7 @@ def test_rundown_speed_coulomb_closed_form_and_stop():
     np.testing.assert_allclose(n, np.maximum(600.0 - slope * t, 0.0), atol=1e-9)
 
 
-# ----------------------------------------------------------------- rolling-bearing form (seed 002)
+# ----------------------------------------------------------------- rolling-bearing form (the Schaeffler catalogue)
 def test_M0_branches_meet_near_nu_n_2000():
     # 2000^(2/3) = 158.74: the seed's constant 160 below 2000 is within 0.8 % of the upper branch
     above = cd.rolling_bearing_M0_seed002(100.0, 20.0, 60.0, 1.7)

@@ -1,4 +1,4 @@
-"""Kernels of the ball bearing contact after seed 001 (Zaitsev, Voronkin): seed example, first principles, errors."""
+"""Kernels of the ball bearing contact after Zaitsev & Voronkin (Zaitsev, Voronkin): seed example, first principles, errors."""
 import math
 
 import numpy as np
@@ -12,7 +12,7 @@ from bearingheat.errors import ContactInputError
 from bearingheat.kernels import contact as ct
 from bearingheat.kernels.contact import KGF
 
-# Seed 001, example: bearing 4-1006095 (5 x 13 x 4 mm; the seed's table swaps D and d).
+# Zaitsev & Voronkin, example: bearing 4-1006095 (5 x 13 x 4 mm; the seed's table swaps D and d).
 Z, DW, DM, ALPHA0, RI, RO = 7, 2.0, 8.7355, 12.0, 1.05, 1.16
 D1, d1 = 10.74, 6.731
 SEED_TABLE_DEFLECTION = (0.63, 0.852)  # 2K/(mu*pi) read from a table in the seed
@@ -306,10 +306,10 @@ def test_scalar_array_and_series_agree():
     (lambda: ct.working_contact_angle(1.0, 0.0, 12.0),
      "C_star = 0 N: the stiffness characteristic must be positive"),
     (lambda: ct.series_start(2.0, 7792.0, 0.0),
-     "alpha0 = 0 deg: the series method of seed 001 needs alpha0 > 0 "
+     "alpha0 = 0 deg: the series method of Zaitsev & Voronkin needs alpha0 > 0 "
      "(no expansion in powers of x at alpha0 = 0); use working_contact_angle"),
     (lambda: ct.working_contact_angle_series(2.0, 7792.0, 0.0),
-     "alpha0 = 0 deg: the series method of seed 001 needs alpha0 > 0 "
+     "alpha0 = 0 deg: the series method of Zaitsev & Voronkin needs alpha0 > 0 "
      "(no expansion in powers of x at alpha0 = 0); use working_contact_angle"),
     (lambda: ct.hertz_coefficients(1.0), "cos_tau = 1 must lie in [0, 1)"),
     (lambda: ct.minimum_axial_load(7, 2.0, 8.7355, -3000.0, 12.0),

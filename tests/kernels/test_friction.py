@@ -1,4 +1,4 @@
-"""The catalogue friction model against hand calculations from the seed 002 formulas.
+"""The catalogue friction model against hand calculations from the Schaeffler catalogue formulas.
 
 Each case types the seed's coefficients as literals and works the formulas
 out in plain arithmetic, independently of the kernels.
@@ -16,7 +16,7 @@ from bearingheat.calc.models import compute_supports
 
 
 def m0_hand(f0, nu, n, dM):
-    """seed 002 p. 64"""
+    """The Schaeffler catalogue p. 64"""
     return f0 * ((nu * n) ** (2 / 3) if nu * n >= 2000 else 160) * dM ** 3 * 1e-7
 
 
@@ -77,7 +77,7 @@ def test_all_bearing_types_covered():
 
 
 def test_m2_hand_calculation_nj_bearing():
-    """seed 002 p. 69: M_R = M0 + M1 + M2, M2 = f2*Fa*dM, A = kB*1e-3*dM^2.1 (kB = 15 for NJ2..-E)."""
+    """The Schaeffler catalogue p. 69: M_R = M0 + M1 + M2, M2 = f2*Fa*dM, A = kB*1e-3*dM^2.1 (kB = 15 for NJ2..-E)."""
     row = dict(designation="NJ206-E", d=30, D=62, lubrication="circulating_oil", n=3000, nu=20, Fr=5000, Fa=1000,
                f2=0.004)
     out = compute_supports(pd.DataFrame([row])).iloc[0]

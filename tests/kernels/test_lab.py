@@ -1,4 +1,4 @@
-"""Kernels of the DP11A lab rig (seed 000): loads and the closed forms of tasks 1-3 against a general solver."""
+"""Kernels of the DP11A lab rig (the DP11A manual): loads and the closed forms of tasks 1-3 against a general solver."""
 from __future__ import annotations
 
 import numpy as np

@@ -21,6 +21,7 @@ import pandas as pd
 from bearingheat.analysis.audit import SYSTEMATIC_RULE, ReferenceSpeedAudit
 from bearingheat.io.files import write_outputs
 from bearingheat.io.tables import escape_formulas
+from bearingheat.io.reports import matplotlib_figure
 
 __all__ = ["coefficient_lines", "reference_speed_lines", "write_coefficients", "write_reference_speeds",
            "draw_reference_speeds", "REFERENCE_SPEED_FILES"]
@@ -130,7 +131,7 @@ def draw_reference_speeds(audit: ReferenceSpeedAudit, path, *, dpi: int = FIGURE
     outliers are red crosses labelled with their designation; the band is
     ± the systematic threshold.
     """
-    from matplotlib.figure import Figure
+    Figure = matplotlib_figure()
     from matplotlib.ticker import FixedLocator, NullFormatter, ScalarFormatter
 
     bearings = audit.bearings[np.isfinite(audit.bearings["deviation"].to_numpy(dtype=float))]

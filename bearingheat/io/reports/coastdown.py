@@ -12,13 +12,14 @@ from pathlib import Path
 from bearingheat.analysis.coastdown import CoastdownResult
 from bearingheat.io.files import write_outputs
 from bearingheat.io.json import json_safe
+from bearingheat.io.reports import matplotlib_figure
 
 __all__ = ["plot_coastdown", "render_report", "coastdown_summary", "write_coastdown_outputs"]
 
 
 def plot_coastdown(result: CoastdownResult, path) -> None:
     """n(t) with the constant-f and the chosen fit, and f (or M) against n; PNG at ``path``."""
-    from matplotlib.figure import Figure
+    Figure = matplotlib_figure()
 
     s = result.samples
     use_f = result.G is not None and result.r is not None
@@ -29,7 +30,7 @@ def plot_coastdown(result: CoastdownResult, path) -> None:
     if result.model != "coulomb":
         top.plot(s["t [s]"], s["n_model [1/min]"], "-", label=f"{result.model} (RMSE {result.rmse_after:.3g} 1/min)")
     if result.spindle is not None:
-        top.plot(s["t [s]"], result.spindle.fit.fitted, ":", label="rolling M0+M1 (seed 002)")
+        top.plot(s["t [s]"], result.spindle.fit.fitted, ":", label="rolling M0+M1 (the Schaeffler catalogue)")
     top.set_xlabel("t [s]")
     top.set_ylabel("n [1/min]")
     top.legend(fontsize=8)
@@ -91,7 +92,7 @@ def render_report(result: CoastdownResult, source: str, png: str | None) -> str:
                      f"{row['M [N*m]']:.4g} | {row['f']:.4g} |")
     if result.spindle is not None:
         s = result.spindle
-        lines += ["", "## Rolling-bearing form of seed 002: M = z·(M0 + M1)", "",
+        lines += ["", "## Rolling-bearing form of the Schaeffler catalogue: M = z·(M0 + M1)", "",
                   f"- bearings z = {s.bearings}, ν = {s.nu:g} mm²/s, dM = {s.dM:g} mm",
                   f"- f0 = {_ci(s.fit, 'f0')}", f"- M1 = {_ci(s.fit, 'M1')} N·mm per bearing",
                   f"- RMSE of n(t): {s.fit.rmse:.4g} 1/min"]

@@ -13,6 +13,7 @@ import numpy as np
 
 from bearingheat.analysis.comparison import ModelComparison
 from bearingheat.io.files import write_outputs
+from bearingheat.io.reports import matplotlib_figure
 
 __all__ = ["COMPARISON_FILES", "comparison_lines", "comparison_markdown", "plot_comparison", "write_comparison"]
 
@@ -54,7 +55,7 @@ def comparison_markdown(comparison: ModelComparison) -> str:
 
 def plot_comparison(comparison: ModelComparison, path: Path) -> None:
     """Measured against predicted torque of each model, as published and fitted, on log axes."""
-    from matplotlib.figure import Figure
+    Figure = matplotlib_figure()
 
     fits = list(comparison.fits.values())
     fig = Figure(figsize=(4.2 * len(fits), 4.2))

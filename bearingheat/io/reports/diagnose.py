@@ -17,6 +17,7 @@ import numpy as np
 
 from bearingheat.analysis.diagnose import REGRESSOR_UNITS, Diagnosis, format_value, key_regressor, regressors
 from bearingheat.io.files import write_outputs as write_files
+from bearingheat.io.reports import matplotlib_figure
 
 __all__ = ["plot_residuals", "plot_measured_vs_predicted", "report_markdown", "write_outputs", "summary_lines"]
 
@@ -32,7 +33,7 @@ def _plot_rows(n: int) -> np.ndarray:
 
 def plot_residuals(diagnosis: Diagnosis, path: Path) -> str:
     """Relative residual against the key regressor, before and after; returns the regressor's name."""
-    from matplotlib.figure import Figure
+    Figure = matplotlib_figure()
 
     data = diagnosis.data
     key = key_regressor(diagnosis)
@@ -59,7 +60,7 @@ def plot_residuals(diagnosis: Diagnosis, path: Path) -> str:
 
 def plot_measured_vs_predicted(diagnosis: Diagnosis, path: Path) -> None:
     """Measured against predicted torque on log axes, the catalogue model and the model with the effect."""
-    from matplotlib.figure import Figure
+    Figure = matplotlib_figure()
 
     data = diagnosis.data
     rows = _plot_rows(len(data))

@@ -1,4 +1,4 @@
-"""Report of the DP11A lab rig (seed 000): report.md with tables 4 and 5, the task CSVs and one figure per task.
+"""Report of the DP11A lab rig (the DP11A manual): report.md with tables 4 and 5, the task CSVs and one figure per task.
 
 The figures are drawn with matplotlib's Figure API (no pyplot, no global
 backend); matplotlib is imported when a figure is drawn.
@@ -16,6 +16,7 @@ from bearingheat.analysis.lab import LabResult
 from bearingheat.catalogue.lab import LOAD_EXPONENT_RADIAL, REDUCED_FRICTION_RADIAL
 from bearingheat.io.files import write_outputs
 from bearingheat.io.tables import escape_formulas
+from bearingheat.io.reports import matplotlib_figure
 
 __all__ = ["write_lab_outputs"]
 
@@ -32,7 +33,7 @@ def _write_csv(frame: pd.DataFrame, path: Path) -> None:
 
 
 def _plot_task(path: Path, title: str, xlabel: str, groups) -> None:
-    from matplotlib.figure import Figure
+    Figure = matplotlib_figure()
 
     fig = Figure(figsize=(5.0, 3.6))
     ax = fig.subplots()
@@ -67,7 +68,7 @@ def write_lab_outputs(result: LabResult, out_dir, *, force: bool = False, inputs
     for name, frame in (("readings", r), ("task1_mu", result.task1), ("task2_f0_TF", result.task2),
                         ("task3_f_T0", result.task3), ("comparison", result.comparison)):
         writers[f"{name}.csv"] = partial(_write_csv, frame)
-    lines = ["# DP11A lab rig: processing after seed 000", ""]
+    lines = ["# DP11A lab rig: processing after the DP11A manual", ""]
     lines += [f"- {note}" for note in result.notes] + ([""] if result.notes else [])
     for bearing in sorted(r["bearing"].unique()):
         g = r[r["bearing"] == bearing]
@@ -98,7 +99,7 @@ def write_lab_outputs(result: LabResult, out_dir, *, force: bool = False, inputs
         t2 = result.task2[result.task2["bearing"] == bearing] if not result.task2.empty else result.task2
         if len(t2):
             lines += ["### Task 2: f0 and T_F (T = f0·dm³·n^(2/3) + T_F)", "",
-                      "| Q [kg] | β [deg] | f0 (seed 000) | T_F [N·mm] | f0 as seed 002 f0 |", "|---|---|---|---|---|"]
+                      "| Q [kg] | β [deg] | f0 (the DP11A manual) | T_F [N·mm] | f0 as the Schaeffler catalogue f0 |", "|---|---|---|---|---|"]
             groups2 = []
             for _, row in t2.iterrows():
                 pts = g[(g["Q"] == row["Q"]) & (g["beta"] == row["beta"])]
@@ -125,8 +126,8 @@ def write_lab_outputs(result: LabResult, out_dir, *, force: bool = False, inputs
             lines += _figure(writers, bearing, 3, f"{bearing}: T = T0 + f·(dm/C0^c)·N", "N = P0^(1+c) [N^1.55]",
                              groups3)
     lines += ["## Comparison with the models of the seeds", "",
-              f"Medians over the readings. seed 000: T = μ·P0·d/2 with μ = {REDUCED_FRICTION_RADIAL}; "
-              "seed 002: the catalogue model M_R = M0 + M1 of the same bearing (its ISO series row).", ""]
+              f"Medians over the readings. The DP11A manual: T = μ·P0·d/2 with μ = {REDUCED_FRICTION_RADIAL}; "
+              "the Schaeffler catalogue: the catalogue model M_R = M0 + M1 of the same bearing (its ISO series row).", ""]
     lines += ["| " + " | ".join(result.comparison.columns) + " |", "|---" * len(result.comparison.columns) + "|"]
     for _, row in result.comparison.iterrows():
         lines.append("| " + " | ".join(f"{v:.4g}" if isinstance(v, float) else str(v) for v in row) + " |")

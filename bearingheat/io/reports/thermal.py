@@ -20,6 +20,7 @@ from bearingheat.calc.models import compute_supports
 from bearingheat.calc.table import require_columns, to_catalogue_units
 from bearingheat.calc.thermal import fill_viscosity, heat_balance_rows, heat_flow_curves
 from bearingheat.errors import InputError
+from bearingheat.io.reports import matplotlib_figure
 
 __all__ = ["heat_balance_curves", "draw_heat_balance", "figure_format", "FIGURE_FORMATS"]
 
@@ -81,7 +82,7 @@ def _label(table: pd.DataFrame) -> str:
 def draw_heat_balance(curves: dict, path, format: str | None = None) -> None:  # noqa: A002 (matplotlib's name)
     """Write the two panels of :func:`heat_balance_curves` to a figure file (``format``, else the file's
     ending, :func:`figure_format`)."""
-    from matplotlib.figure import Figure
+    Figure = matplotlib_figure()
 
     fig = Figure(figsize=(9.0, 3.6), dpi=90)
     left, right = fig.subplots(1, 2)

@@ -1,4 +1,4 @@
-"""The figure of the working contact angle against the axial load (seed 001 example bearing)."""
+"""The figure of the working contact angle against the axial load (Zaitsev & Voronkin example bearing)."""
 from bearingheat.io.reports.contact import DEFAULT_PATH, plot_alpha_vs_axial_load
 
 
