@@ -5,6 +5,7 @@ import argparse
 
 from bearingheat.api.coastdown import analyse_coastdown, analyse_spindle_coastdown
 from bearingheat.cli import UsageError, add_csv_arguments, add_force_argument
+from bearingheat.cli.options import add_out_dir
 from bearingheat.errors import BearingheatError, UnitError
 from bearingheat.io.coastdown import read_rundown
 from bearingheat.io.files import check_outputs
@@ -36,7 +37,7 @@ Rolling-bearing spindle (the Schaeffler catalogue M0 + M1 form): --spindle --nu 
 --dM 50mm [--bearings 2] [--P 1000N] [--f0 1.7] fits f0 and M1 (and f1 = M1/(P*dM))
 so that f0 can be audited against the catalogue value given by --f0.
 
---out DIR writes DIR/report.md, DIR/coastdown.png and DIR/summary.json
+--out-dir DIR writes DIR/report.md, DIR/coastdown.png and DIR/summary.json
 (keys include model, 'M_c [N*m]', 'c_v [N*m*s]', 'c_a [N*m*s^2]', f_constant,
 'rmse_before [1/min]', 'rmse_after [1/min]'). Existing files in DIR are
 replaced only with --force; each file is written atomically.
@@ -45,7 +46,7 @@ Exit codes: 0 done; 2 unusable input (missing file or column, bad cell, bad
 unit, too few samples, speed not falling) or a file fault."""
 
 
-#: the files written into --out DIR
+#: the files written into --out-dir DIR
 _FILES = ("coastdown.png", "report.md", "summary.json")
 
 
@@ -58,7 +59,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     intervals = parser.add_mutually_exclusive_group()
     intervals.add_argument("--dn", default=None, help="speed step of the formula (2) intervals, e.g. 100rpm")
     intervals.add_argument("--dt", default=None, help="time step of the formula (2) intervals, e.g. 10s")
-    parser.add_argument("--out", default=None, metavar="DIR", help="write report.md, coastdown.png, summary.json")
+    add_out_dir(parser, "report.md, coastdown.png and summary.json")
     add_force_argument(parser, "the files in DIR")
     add_csv_arguments(parser)
     parser.add_argument("--spindle", action="store_true", help="also fit the Schaeffler catalogue rolling-bearing form")
@@ -77,8 +78,8 @@ def _quantity(text, name):
 
 
 def run(args: argparse.Namespace) -> int:
-    if args.out:
-        check_outputs(args.out, _FILES, force=args.force, inputs=(args.data,), create=False)
+    if args.out_dir:
+        check_outputs(args.out_dir, _FILES, force=args.force, inputs=(args.data,), create=False)
     try:
         t, n = read_rundown(args.data, sep=args.sep, decimal=args.decimal)
     except BearingheatError as exc:
@@ -99,6 +100,6 @@ def run(args: argparse.Namespace) -> int:
     except BearingheatError as exc:
         raise UsageError(str(exc)) from exc
     print(render_report(result, args.data, png=None))
-    if args.out:
-        write_coastdown_outputs(result, args.out, args.data, force=args.force, inputs=(args.data,))
+    if args.out_dir:
+        write_coastdown_outputs(result, args.out_dir, args.data, force=args.force, inputs=(args.data,))
     return 0

@@ -5,6 +5,7 @@ import argparse
 
 from bearingheat.analysis.lab import process_lab
 from bearingheat.cli import UsageError, add_csv_arguments, add_force_argument
+from bearingheat.cli.options import add_out_dir
 from bearingheat.errors import BearingheatError, UnitError
 from bearingheat.io.files import check_outputs
 from bearingheat.io.reports.lab import write_lab_outputs
@@ -28,7 +29,7 @@ Loads Fa = 9.81*Q*cos(beta), Fr = 9.81*Q*sin(beta), P0 from the DP11A manual tab
 Task 1: mu for each speed; task 2: f0 and T_F for each beta (N = n^(2/3));
 task 3: f and T0 for each speed (N = P0^1.55).
 
-Output in --out DIR: report.md (tables 4 and 5 filled, task results, the
+Output in --out-dir DIR: report.md (tables 4 and 5 filled, task results, the
 comparison with the catalogue model of the Schaeffler catalogue), CSV of each task, PNG plots.
 Existing files in DIR are replaced only with --force; each file is written
 atomically.
@@ -42,7 +43,7 @@ _KNOWN_FILES = ("readings.csv", "task1_mu.csv", "task2_f0_TF.csv", "task3_f_T0.c
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("input", metavar="READINGS", help="CSV (.csv) or Excel (.xlsx) of readings")
-    parser.add_argument("--out", metavar="DIR", required=True, help="folder for report.md, CSVs and plots")
+    add_out_dir(parser, "report.md, the CSVs and plots", required=True)
     parser.add_argument("--nu", metavar="VISCOSITY", help="viscosity for the Schaeffler catalogue comparison, e.g. 20mm^2/s")
     parser.add_argument("--lubrication", default="grease",
                         help="lubrication of the Schaeffler catalogue comparison (default grease)")
@@ -63,17 +64,17 @@ def run(args: argparse.Namespace) -> int:
             nu = float(magnitude(viscosity, "mm^2/s", "--nu"))
         except UnitError as exc:
             raise UsageError(f"--nu: {args.nu!r} is not a kinematic viscosity (e.g. 20mm^2/s)") from exc
-    check_outputs(args.out, _KNOWN_FILES, force=args.force, inputs=(args.input,), create=False)
+    check_outputs(args.out_dir, _KNOWN_FILES, force=args.force, inputs=(args.input,), create=False)
     table = read_table(args.input, args.sheet, sep=args.sep, decimal=args.decimal)
     try:
         result = process_lab(table, nu=nu, lubrication=args.lubrication)
     except BearingheatError as exc:
         raise UsageError(str(exc)) from exc
-    files = write_lab_outputs(result, args.out, force=args.force, inputs=(args.input,))
+    files = write_lab_outputs(result, args.out_dir, force=args.force, inputs=(args.input,))
     if not args.quiet:
         print(result.task1.to_string(index=False, float_format=lambda x: f"{x:.4g}"))
         print(result.comparison.to_string(index=False, float_format=lambda x: f"{x:.4g}"))
         for note in result.notes:
             print(f"note: {note}")
-        print(f"{len(files)} files written to {args.out}")
+        print(f"{len(files)} files written to {args.out_dir}")
     return 0

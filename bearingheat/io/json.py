@@ -1,11 +1,13 @@
 """JSON writing helpers shared by the report writers and the command line."""
 from __future__ import annotations
 
+import json
 import math
 
 import numpy as np
+import pandas as pd
 
-__all__ = ["json_safe"]
+__all__ = ["json_safe", "results_json"]
 
 
 def json_safe(value):
@@ -26,3 +28,21 @@ def json_safe(value):
     if isinstance(value, np.integer):
         return int(value)
     return value
+
+
+def results_json(result: pd.DataFrame, duty: pd.DataFrame | None = None) -> str:
+    """calc results as JSON: ``{"results": [one object per row, keyed by the 'name [unit]' headers],
+    "counts": {"ok": .., "warning": .., "error": ..}}`` and ``"duty_cycle"`` where there is one; NaN is null.
+
+    >>> print(results_json(pd.DataFrame({"MR [N*mm]": [1.5, float("nan")], "status": ["ok", "error"]})))
+    {"results": [{"MR [N*mm]": 1.5, "status": "ok"}, {"MR [N*mm]": null, "status": "error"}], "counts": {"ok": 1, "warning": 0, "error": 1}}
+    """
+    def records(frame: pd.DataFrame) -> list:
+        return json_safe([{str(k): (None if v is pd.NA else v) for k, v in row.items()}
+                          for row in frame.astype(object).to_dict(orient="records")])
+
+    counts = result["status"].value_counts()
+    out = {"results": records(result), "counts": {s: int(counts.get(s, 0)) for s in ("ok", "warning", "error")}}
+    if duty is not None:
+        out["duty_cycle"] = records(duty)
+    return json.dumps(out, ensure_ascii=False)

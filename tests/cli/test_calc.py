@@ -149,3 +149,28 @@ def test_a_duty_cycle_gets_its_summary_beside_the_results(tmp_path, capsys):
     (tmp_path / "results.csv").unlink()
     assert main(["calc", str(example), "-o", str(out)]) == 2
     assert "results.duty.csv" in capsys.readouterr().err
+
+
+def test_json_prints_the_results_and_the_counts(capsys):
+    import json
+    from pathlib import Path
+    example = Path(__file__).resolve().parents[2] / "examples" / "gearbox_shaft.csv"
+    assert main(["calc", str(example), "--json"]) == 0
+    printed = json.loads(capsys.readouterr().out)
+    assert printed["counts"] == {"ok": 5, "warning": 1, "error": 0}
+    assert printed["results"][0]["id"] == "input shaft A (locating)"
+    assert printed["results"][0]["MR [N*mm]"] == pytest.approx(138.478171, rel=1e-8)
+    assert printed["results"][4]["n_thr [1/min]"] is None  # NaN is null
+
+
+def test_a_long_table_prints_its_first_rows_and_the_counts(tmp_path, capsys):
+    from pathlib import Path
+    example = Path(__file__).resolve().parents[2] / "examples" / "gearbox_shaft.csv"
+    big = pd.concat([pd.read_csv(example)] * 20, ignore_index=True)
+    source = tmp_path / "big.csv"
+    big.to_csv(source, index=False)
+    assert main(["calc", str(source)]) == 0
+    out = capsys.readouterr().out.splitlines()
+    assert "... 70 more rows; -o FILE writes them all" in out
+    assert "... 20 more rows with messages; -o FILE writes them all" not in out  # 20 warnings: all shown
+    assert out[-1] == "120 supports: 100 ok, 20 warning, 0 error"

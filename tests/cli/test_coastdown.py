@@ -14,7 +14,7 @@ EXAMPLE = REPO / "examples" / "coastdown_example.csv"
 
 def test_coastdown_example_writes_report_png_and_summary(tmp_path, capsys):
     out = tmp_path / "run"
-    assert main(["coastdown", str(EXAMPLE), "--out", str(out), "--dn", "100rpm"]) == 0
+    assert main(["coastdown", str(EXAMPLE), "--out-dir", str(out), "--dn", "100rpm"]) == 0
     stdout = capsys.readouterr().out
     assert "Chosen model: **coulomb_viscous_aero**" in stdout
     summary = json.loads((out / "summary.json").read_text())

@@ -11,20 +11,20 @@ EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "lab_dp11a_example.
 
 
 def test_cli_lab(tmp_path, capsys):
-    assert main(["lab", str(EXAMPLE), "--out", str(tmp_path), "-q"]) == 0
+    assert main(["lab", str(EXAMPLE), "--out-dir", str(tmp_path), "-q"]) == 0
     report = (tmp_path / "report.md").read_text()
     assert "Table 4, β = 30°" in report and "Table 5, Q = 2 kg" in report
     assert (tmp_path / "task2_101.png").read_bytes()[:4] == b"\x89PNG"
 
 
 def test_cli_lab_bad_nu(tmp_path, capsys):
-    assert main(["lab", str(EXAMPLE), "--out", str(tmp_path), "--nu", "20"]) == 2
+    assert main(["lab", str(EXAMPLE), "--out-dir", str(tmp_path), "--nu", "20"]) == 2
     assert capsys.readouterr().err.strip() == (
         "bearingheat lab: error: --nu: '20' has no unit; write it with one, e.g. 20mm")
 
 
 def test_subprocess_lab(tmp_path):
-    done = subprocess.run([sys.executable, "-m", "bearingheat", "lab", str(EXAMPLE), "--out", str(tmp_path),
+    done = subprocess.run([sys.executable, "-m", "bearingheat", "lab", str(EXAMPLE), "--out-dir", str(tmp_path),
                            "--nu", "30cSt"], capture_output=True, text=True, timeout=120)
     assert done.returncode == 0, done.stderr
     assert "files written to" in done.stdout

@@ -135,12 +135,12 @@ def test_template_output(tmp_path, capsys):
 
 def test_lab_report_files_need_force(tmp_path, capsys):
     out = tmp_path / "lab"
-    assert main(["lab", str(LAB), "--out", str(out), "-q"]) == 0
+    assert main(["lab", str(LAB), "--out-dir", str(out), "-q"]) == 0
     report = (out / "report.md").read_bytes()
-    assert main(["lab", str(LAB), "--out", str(out), "-q"]) == 2
+    assert main(["lab", str(LAB), "--out-dir", str(out), "-q"]) == 2
     assert _err(capsys) == (f"bearingheat lab: error: {out}: readings.csv, task1_mu.csv, task2_f0_TF.csv, "
                             "task3_f_T0.csv, comparison.csv, report.md exist; give --force to replace them")
-    assert main(["lab", str(LAB), "--out", str(out), "-q", "--force"]) == 0
+    assert main(["lab", str(LAB), "--out-dir", str(out), "-q", "--force"]) == 0
     assert (out / "report.md").read_bytes() == report and _temps(out) == []
 
 
@@ -148,25 +148,25 @@ def test_lab_report_refuses_a_figure_that_exists(tmp_path, capsys):
     out = tmp_path / "lab"
     out.mkdir()
     (out / "task1_101.png").write_bytes(b"mine")
-    assert main(["lab", str(LAB), "--out", str(out), "-q"]) == 2
+    assert main(["lab", str(LAB), "--out-dir", str(out), "-q"]) == 2
     assert _err(capsys) == f"bearingheat lab: error: {out}: task1_101.png exists; give --force to replace it"
     assert sorted(p.name for p in out.iterdir()) == ["task1_101.png"]
 
 
 def test_coastdown_report_files_need_force(tmp_path, capsys):
     out = tmp_path / "c"
-    assert main(["coastdown", str(COASTDOWN), "--out", str(out)]) == 0
+    assert main(["coastdown", str(COASTDOWN), "--out-dir", str(out)]) == 0
     capsys.readouterr()
-    assert main(["coastdown", str(COASTDOWN), "--out", str(out)]) == 2
+    assert main(["coastdown", str(COASTDOWN), "--out-dir", str(out)]) == 2
     assert _err(capsys) == (f"bearingheat coastdown: error: {out}: coastdown.png, report.md, summary.json exist; "
                             "give --force to replace them")
-    assert main(["coastdown", str(COASTDOWN), "--out", str(out), "--force"]) == 0
+    assert main(["coastdown", str(COASTDOWN), "--out-dir", str(out), "--force"]) == 0
 
 
 def test_coastdown_input_in_the_out_folder(tmp_path, capsys):
     data = tmp_path / "summary.json"
     data.write_bytes(COASTDOWN.read_bytes())
-    assert main(["coastdown", str(data), "--out", str(tmp_path), "--force"]) == 2
+    assert main(["coastdown", str(data), "--out-dir", str(tmp_path), "--force"]) == 2
     assert _err(capsys) == f"bearingheat coastdown: error: {data} is the input file; write the results to another file"
 
 
@@ -175,14 +175,14 @@ def test_audit_and_diagnose_report_files_need_force(tmp_path, capsys):
     source = tmp_path / "m.csv"
     table.to_csv(source, index=False)
     out = tmp_path / "a"
-    assert main(["audit", str(source), "--out", str(out), "-q"]) == 0
-    assert main(["audit", str(source), "--out", str(out), "-q"]) == 2
+    assert main(["audit", str(source), "--out-dir", str(out), "-q"]) == 0
+    assert main(["audit", str(source), "--out-dir", str(out), "-q"]) == 2
     assert _err(capsys) == f"bearingheat audit: error: {out}: coefficients.csv exists; give --force to replace it"
-    assert main(["audit", str(source), "--out", str(out), "-q", "--force"]) == 0
+    assert main(["audit", str(source), "--out-dir", str(out), "-q", "--force"]) == 0
     d = tmp_path / "d"
     d.mkdir()
     (d / "report.md").write_text("mine")
-    assert main(["diagnose", str(source), "--out", str(d), "-q"]) == 2
+    assert main(["diagnose", str(source), "--out-dir", str(d), "-q"]) == 2
     assert _err(capsys) == f"bearingheat diagnose: error: {d}: report.md exists; give --force to replace it"
     assert (d / "report.md").read_text() == "mine"
 
