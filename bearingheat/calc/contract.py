@@ -168,6 +168,9 @@ CONTRACT: tuple[Column, ...] = (
     _in("n_G", "1/min", "limiting speed: n_per is capped at it (warning)", "thermal", template=("1/min", 9)),
     _in("n_thr_catalogue", "1/min", "catalogue n_thr; n_per then uses it instead of the computed one", "thermal",
         template=("1/min", 9)),
+    _in("viscosity_at", "", "where the viscosity of nu40/nu100 or iso_vg is taken: auto (T_op where T_amb and n "
+        "are given, else T_bearing), operating (T_op) or bearing (T_bearing); blank: the table's --viscosity-at, "
+        "default auto", "thermal"),
     _in("n_per_method", "", "how n_per is found: exact (root of the heat balance) or approximation (the "
         "catalogue's formula for f_n); blank: the table's --n-per-method, default exact", "thermal",
         template=("-", 14)),
@@ -216,6 +219,10 @@ CONTRACT: tuple[Column, ...] = (
     _out("n_thr", "1/min", "thermal reference speed (ISO 15312)", "thermal"),
     _out("n_per", "1/min", "thermally permissible speed at T_bearing", "thermal"),
     _out("n_per_method_used", "", "how n_per was found: exact root or catalogue approximation", "thermal"),
+    _out("nu_used", "mm^2/s", "viscosity the friction results (M0, MR, NR) are computed at, where it comes from "
+         "oil data (nu40/nu100 or iso_vg)", "thermal"),
+    _out("nu_at", "", "the temperature nu_used is taken at: T_op (the operating temperature, with T_op and nu_op "
+         "one operating state) or T_bearing (viscosity_at bearing, or T_op has no solution)", "thermal"),
     _out("T_op", "degC", "operating temperature at the speed n", "thermal"),
     _out("nu_op", "mm^2/s", "viscosity at T_op", "thermal"),
     _out("Q_S", "W", "heat carried away through the seat", "thermal"),

@@ -28,7 +28,8 @@ import numpy as np
 import pandas as pd
 
 from bearingheat.calc import contact, thermal
-from bearingheat.calc.thermal import DEFAULT_SPEED_FACTOR_METHOD, SPEED_FACTOR_METHODS
+from bearingheat.calc.thermal import (DEFAULT_SPEED_FACTOR_METHOD, DEFAULT_VISCOSITY_AT, SPEED_FACTOR_METHODS,
+                                     VISCOSITY_AT)
 from bearingheat.calc.contract import (PLAIN_TYPES, input_units, output_header, output_units, parse_header,
                                        range_problems)
 from bearingheat.calc.messages import Labels
@@ -186,7 +187,8 @@ def require_columns(frame: pd.DataFrame) -> None:
 
 def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart | str | None = None,
          units: dict[str, str] | None = None, cell: Callable[[str, int], str] | None = None,
-         effects=None, n_per_method: str = DEFAULT_SPEED_FACTOR_METHOD) -> pd.DataFrame:
+         effects=None, n_per_method: str = DEFAULT_SPEED_FACTOR_METHOD,
+         viscosity_at: str = DEFAULT_VISCOSITY_AT) -> pd.DataFrame:
     """Run the friction model (and its extensions) on a table of supports.
 
     Returns the input columns followed by the result columns. ``model`` is
@@ -240,6 +242,14 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
     n_per_method : str, optional
         How n_per finds its speed factor where the ``n_per_method`` cell is
         blank: 'exact' (default) or 'approximation'.
+    viscosity_at : str, optional
+        Where a viscosity from oil data (``nu40``/``nu100`` or ``iso_vg``)
+        is taken for the friction results of rows whose ``viscosity_at``
+        cell is blank: 'auto' (default: at the solved operating temperature
+        T_op where ``T_amb`` and ``n`` are given, so that MR, NR, T_op and
+        nu_op are one operating state; else at ``T_bearing``), 'operating'
+        (T_op) or 'bearing' (``T_bearing``, the temperature n_per is found
+        for). The columns ``nu_used`` and ``nu_at`` say which was used.
 
     Returns
     -------
@@ -279,11 +289,16 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
         f2_chart = F2Chart.from_csv(f2_chart)
     if n_per_method not in SPEED_FACTOR_METHODS:
         raise InputError(f"n_per_method: {n_per_method!r} is not one of {', '.join(SPEED_FACTOR_METHODS)}")
+    if viscosity_at not in VISCOSITY_AT:
+        raise InputError(f"viscosity_at: {viscosity_at!r} is not one of {', '.join(VISCOSITY_AT)}")
     converted = to_catalogue_units(table, units=units, cell=cell)
     frame = converted.frame
     if n_per_method != DEFAULT_SPEED_FACTOR_METHOD:  # the table's default for blank n_per_method cells
         cells = frame["n_per_method"] if "n_per_method" in frame.columns else pd.Series(None, index=frame.index)
         frame = frame.assign(n_per_method=cells.where(cells.notna(), n_per_method))
+    if viscosity_at != DEFAULT_VISCOSITY_AT:  # the table's default for blank viscosity_at cells
+        cells = frame["viscosity_at"] if "viscosity_at" in frame.columns else pd.Series(None, index=frame.index)
+        frame = frame.assign(viscosity_at=cells.where(cells.notna(), viscosity_at))
     frame, fill_problems, from_table = fill_from_catalogue(frame, converted.labels)
     extra_problems = [p for p in fill_problems if p[1] == "warning"]
     for ext in EXTENSIONS.values():

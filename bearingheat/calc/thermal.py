@@ -66,6 +66,7 @@ __all__ = [
     "DEFAULT_SPEED_FACTOR_METHOD",
     "SpeedFactorMethod",
     "VISCOSITY_AT",
+    "DEFAULT_VISCOSITY_AT",
     "THERMAL_INPUTS",
     "thermal_reference_speed_details",
     "thermal_reference_speed_rows",
@@ -83,10 +84,13 @@ OPERATING_TEMPERATURE_LIMIT = 150.0
 BELOW_AMBIENT_SEARCH = 50.0
 #: where the operating viscosity is taken when it comes from nu40/nu100 or iso_vg
 VISCOSITY_AT = {
-    "auto": "T_bearing where given, otherwise the solved operating temperature T_op",
-    "bearing": "the bearing temperature T_bearing",
+    "auto": ("the solved operating temperature T_op where T_amb and n are given (one operating state: the "
+             "friction results, T_op and nu_op agree), otherwise T_bearing"),
+    "bearing": "the bearing temperature T_bearing (the friction results at the temperature n_per is found for)",
     "operating": "the solved operating temperature T_op at the operating speed n",
 }
+#: the viscosity_at of rows whose cell is blank
+DEFAULT_VISCOSITY_AT = "auto"
 
 
 #: input columns that only the heat balance reads (B and C0 belong to the friction model as well)
@@ -160,11 +164,16 @@ def fill_viscosity(frame: pd.DataFrame, *, viscosity_at: str = "auto",
                    t_limit: float = OPERATING_TEMPERATURE_LIMIT):
     """Fill an empty ``nu`` from ``nu40``/``nu100`` or ``iso_vg`` (catalogue units); returns (frame, problems).
 
-    Where ``viscosity_at`` is 'auto' the viscosity is taken at ``T_bearing``
-    when the row gives it, otherwise at the operating temperature T_op
-    solved at the operating speed (``n``, ``T_amb``). A ``nu`` the user
-    gives is never replaced. The Walther constants stay in the hidden
-    columns ``_walther_A`` and ``_walther_B`` for the heat balance.
+    ``viscosity_at`` (a key of :data:`VISCOSITY_AT`) is the temperature of
+    rows whose ``viscosity_at`` cell is blank. 'auto' takes the viscosity at
+    the operating temperature T_op solved at the operating speed where the
+    row gives ``T_amb`` and ``n`` (falling back to ``T_bearing`` where T_op
+    has no solution: the heat balance's message says why), otherwise at
+    ``T_bearing``;
+    'bearing' at ``T_bearing``; 'operating' at T_op. A ``nu`` the user gives
+    is never replaced. The Walther constants stay in the hidden columns
+    ``_walther_A`` and ``_walther_B`` for the heat balance; ``_nu_at`` says
+    where each row's ``nu`` comes from ('given', 'T_bearing', 'T_op').
     """
     if viscosity_at not in VISCOSITY_AT:
         raise HeatBalanceError(f"viscosity_at: {viscosity_at!r} is not one of {', '.join(VISCOSITY_AT)}")
@@ -174,30 +183,42 @@ def fill_viscosity(frame: pd.DataFrame, *, viscosity_at: str = "auto",
     frame["_walther_B"] = B
     if np.isnan(A).all():
         return frame, problems
+    modes = _row_choices(frame, "viscosity_at", viscosity_at, VISCOSITY_AT, problems)
     nu = number_column(frame, "nu")
     need = np.isnan(nu) & ~np.isnan(A)
     T_bearing = number_column(frame, "T_bearing")
-    at_bearing = need & ~np.isnan(T_bearing) & (viscosity_at in ("auto", "bearing"))
-    at_operating = need & ~at_bearing & (viscosity_at in ("auto", "operating"))
-    with np.errstate(invalid="ignore", over="ignore"):
-        nu = np.where(at_bearing, walther_viscosity(A, B, T_bearing), nu)
-    source = np.where(at_bearing, "T_bearing", np.where(~np.isnan(number_column(frame, "nu")), "given", ""))
-    if viscosity_at == "bearing":
-        for i in np.flatnonzero(need & np.isnan(T_bearing)):
-            problems.append((int(i), "error", "T_bearing [degC]: missing; the viscosity is to be taken at the "
-                                              "bearing temperature"))
+    solvable = ~np.isnan(number_column(frame, "T_amb")) & ~np.isnan(number_column(frame, "n"))
+    # auto: T_op where it can be solved; without T_bearing, T_op is the only way (its refusals name what is missing)
+    at_operating = need & ((modes == "operating") | ((modes == "auto") & (solvable | np.isnan(T_bearing))))
+    at_bearing = need & ~at_operating & np.isin(modes, ("auto", "bearing")) & ~np.isnan(T_bearing)
+    for i in np.flatnonzero(need & (modes == "bearing") & np.isnan(T_bearing)):
+        problems.append((int(i), "error", "T_bearing [degC]: missing; the viscosity is to be taken at the "
+                                          "bearing temperature"))
+    source = np.where(~np.isnan(nu), "given", "")
     if at_operating.any():
-        T_op = _solve_operating_temperature(frame, A, B, at_operating, t_limit, problems)
+        # auto rows with T_bearing fall back to it where T_op has no solution: their refusals become warnings
+        fallback = at_operating & (modes == "auto") & ~np.isnan(T_bearing)
+        unsolved: list[tuple[int, str, str]] = []
+        T_op = _solve_operating_temperature(frame, A, B, at_operating, t_limit, problems, unsolved)
+        # a row falling back to T_bearing says so in nu_at; the heat balance tells why T_op has no solution
+        problems += [(i, "error", f"nu [mm^2/s]: cannot be taken at T_op; {why}; give T_bearing")
+                     for i, _, why in unsolved if not fallback[i]]
         with np.errstate(invalid="ignore", over="ignore"):
             nu = np.where(at_operating, walther_viscosity(A, B, T_op), nu)
         source = np.where(at_operating & ~np.isnan(T_op), "T_op", source)
+        at_bearing |= fallback & np.isnan(T_op)
+    with np.errstate(invalid="ignore", over="ignore"):
+        nu = np.where(at_bearing, walther_viscosity(A, B, T_bearing), nu)
+    source = np.where(at_bearing, "T_bearing", source)
     frame["nu"] = nu
-    frame["_nu_source"] = source
+    frame["_nu_at"] = source
     return frame, problems
 
 
-def _solve_operating_temperature(frame, A, B, rows, t_limit, problems):
-    """T_op of the selected rows before the friction pass (f0, M1, M2 do not depend on ν)."""
+def _solve_operating_temperature(frame, A, B, rows, t_limit, problems, unsolved):
+    """T_op of the selected rows before the friction pass (f0, M1, M2 do not depend on ν); ``unsolved`` gets
+    (row, 'error', why T_op has no solution) for the rows it cannot solve, ``problems`` row errors for a
+    missing T_amb or n."""
     T_op = np.full(len(frame), np.nan)
     T_amb = number_column(frame, "T_amb")
     n = number_column(frame, "n")
@@ -222,10 +243,9 @@ def _solve_operating_temperature(frame, A, B, rows, t_limit, problems):
         if failed[i]:
             continue  # the friction pass reports the row's own error
         if reasons[i]:
-            problems.append((int(i), "error", f"nu [mm^2/s]: cannot be taken at T_op; {reasons[i]}; give T_bearing"))
+            unsolved.append((int(i), "error", reasons[i]))
         elif status[i] != 0:
-            problems.append((int(i), "error", f"nu [mm^2/s]: cannot be taken at T_op; "
-                                              f"{_no_equilibrium_text(status[i], T_amb[i], t_limit)}"))
+            unsolved.append((int(i), "error", _no_equilibrium_text(status[i], T_amb[i], t_limit)))
         else:
             T_op[i] = T[i]
     return T_op
@@ -346,14 +366,18 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
     return pd.DataFrame({c: columns[c] for c in ordered}, index=frame.index), problems
 
 
-def _row_methods(frame: pd.DataFrame, default: str, problems: list) -> np.ndarray:
-    """The n_per method of every row: its ``n_per_method`` cell, else ``default``; unknown names are row errors."""
-    names = np.array([v or default for v in text_column(frame, "n_per_method")], dtype=object)
-    for i in np.flatnonzero(~np.isin(names, list(SPEED_FACTOR_METHODS))):
-        problems.append((int(i), "error", f"n_per_method: {names[i]!r} is not one of "
-                                          f"{', '.join(SPEED_FACTOR_METHODS)}"))
+def _row_choices(frame: pd.DataFrame, column: str, default: str, choices, problems: list) -> np.ndarray:
+    """Every row's ``column`` cell, else ``default``; a name not in ``choices`` is a row error (and the default)."""
+    names = np.array([v or default for v in text_column(frame, column)], dtype=object)
+    for i in np.flatnonzero(~np.isin(names, list(choices))):
+        problems.append((int(i), "error", f"{column}: {names[i]!r} is not one of {', '.join(choices)}"))
         names[i] = default
     return names
+
+
+def _row_methods(frame: pd.DataFrame, default: str, problems: list) -> np.ndarray:
+    """The n_per method of every row: its ``n_per_method`` cell, else ``default``; unknown names are row errors."""
+    return _row_choices(frame, "n_per_method", default, SPEED_FACTOR_METHODS, problems)
 
 
 def _assumed_oil_outlet(frame: pd.DataFrame, usable: np.ndarray, problems: list) -> None:
@@ -406,6 +430,7 @@ SPEED_FACTOR_METHODS: dict[str, SpeedFactorMethod] = {m.name: m for m in (
 #: the method of rows whose n_per_method cell is blank
 DEFAULT_SPEED_FACTOR_METHOD = "exact"
 register_choices("n_per_method", lambda: tuple(SPEED_FACTOR_METHODS))
+register_choices("viscosity_at", lambda: tuple(VISCOSITY_AT))
 
 
 def _permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue, T_bearing, T_amb, Q_S, Q_L, Q_E,
@@ -431,7 +456,12 @@ def _permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue, T_b
     if not rows.any():
         return out
     dM = friction.mean_diameter(number_column(frame, "d"), number_column(frame, "D"))
-    nu = number_column(frame, "nu")
+    # n_per is the speed at which the bearing reaches T_bearing: its oil has the viscosity of T_bearing there,
+    # whatever temperature the friction results are reported at (a viscosity the user gives is used as it is)
+    A, B = _walther_columns(frame)[:2]
+    with np.errstate(invalid="ignore", over="ignore"):
+        nu = np.where(~np.isnan(A) & ~np.isnan(T_bearing), walther_viscosity(A, B, T_bearing),
+                      number_column(frame, "nu"))
     f0 = results["f0"].to_numpy(dtype=float)
     load_torque = results["M1"].to_numpy(dtype=float) + np.nan_to_num(results["M2"].to_numpy(dtype=float))
     power = FrictionPower(frame, results)
@@ -473,15 +503,20 @@ def _generic_speed(power: FrictionPower, nu: np.ndarray, Q: np.ndarray) -> np.nd
 # ---- the calc extension ``thermal`` ----------------------------------------------------------------
 
 def prepare(frame: pd.DataFrame):
-    """Fill ``nu`` from nu40/nu100 or iso_vg (at T_bearing, else at T_op); returns (frame, problems)."""
-    return fill_viscosity(frame, viscosity_at="auto", t_limit=OPERATING_TEMPERATURE_LIMIT)
+    """Fill ``nu`` from nu40/nu100 or iso_vg (at the row's ``viscosity_at``: T_op by default where it can be
+    solved, else T_bearing); returns (frame, problems)."""
+    return fill_viscosity(frame, viscosity_at=DEFAULT_VISCOSITY_AT, t_limit=OPERATING_TEMPERATURE_LIMIT)
 
 
 def extend(frame: pd.DataFrame, results: pd.DataFrame):
-    """The heat balance columns of every row whose friction succeeded; returns (columns, problems)."""
+    """The heat balance columns of every row whose friction succeeded, and where the viscosity of the friction
+    results comes from (``nu_used``, ``nu_at``) when it was filled from oil data; returns (columns, problems)."""
     columns, problems = heat_balance_rows(frame, results, method=DEFAULT_SPEED_FACTOR_METHOD,
                                           t_limit=OPERATING_TEMPERATURE_LIMIT)
     columns.index = frame.index
+    if "_nu_at" in frame.columns:
+        columns.insert(0, "nu_at", np.where(frame["_nu_at"].to_numpy() == "", "-", frame["_nu_at"].to_numpy()))
+        columns.insert(0, "nu_used", number_column(frame, "nu"))
     return columns, problems
 
 

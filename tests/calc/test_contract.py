@@ -22,7 +22,7 @@ def test_thermal_columns_are_temperatures_and_differences():
     assert units["T_amb"] == units["T_bearing"] == "degC"
     assert units["dT_oil"] == "delta_degC"      # a header in degC is refused for a difference
     assert set(contract.output_units(owner="thermal")) == {"n_thr", "n_per", "n_per_method_used", "T_op", "nu_op",
-                                                            "Q_S", "Q_L"}
+                                                            "Q_S", "Q_L", "nu_used", "nu_at"}
 
 
 def test_output_headers():

@@ -137,7 +137,8 @@ def test_f_n_is_one_at_the_reference_conditions():
 
 def test_extension_is_registered():
     assert EXTENSIONS["thermal"].prepare is prepare and EXTENSIONS["thermal"].extend is extend
-    assert set(output_units(owner="thermal")) == {"n_thr", "n_per", "n_per_method_used", "T_op", "nu_op", "Q_S", "Q_L"}
+    assert set(output_units(owner="thermal")) == {"n_thr", "n_per", "n_per_method_used", "T_op", "nu_op", "Q_S", "Q_L",
+                                                "nu_used", "nu_at"}
     assert input_units()["dT_oil"] == "delta_degC" and input_units()["T_amb"] == "degC"
 
 

@@ -1,0 +1,66 @@
+"""One operating state: calc reports MR and NR at T_op, and agrees with heat_balance + friction_torque."""
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import pytest
+
+import bearingheat as bh
+from bearingheat.units import ureg
+
+u = ureg()
+
+
+def table(**cells):
+    row = {"designation": "6205", "d [mm]": 25, "D [mm]": 52, "B [mm]": 15, "C0 [kN]": 7.8,
+           "lubrication": "oil_bath", "n [rpm]": 3000, "Fr [kN]": 2.0, "nu40 [mm^2/s]": 68, "nu100 [mm^2/s]": 8.6,
+           "T_amb [degC]": 20, "T_bearing [degC]": 80}
+    return pd.DataFrame([{**row, **cells}])
+
+
+def test_calc_reports_the_friction_at_the_operating_temperature():
+    out = bh.calc(table())
+    assert out["nu_at"].tolist() == ["T_op"]
+    assert out["nu_used [mm^2/s]"].iat[0] == pytest.approx(out["nu_op [mm^2/s]"].iat[0], rel=1e-9)
+    # the catalogue model by hand at nu_op: M0 = f0 (nu n)^(2/3) dM^3 1e-7 with f0 = 2 (series 62, oil bath)
+    nu = out["nu_op [mm^2/s]"].iat[0]
+    assert out["M0 [N*mm]"].iat[0] == pytest.approx(2.0 * (nu * 3000) ** (2 / 3) * 38.5 ** 3 * 1e-7, rel=1e-9)
+
+
+def test_the_two_python_routes_give_the_same_numbers():
+    out = bh.calc(table())
+    balance = bh.heat_balance("6205", d=25 * u.mm, D=52 * u.mm, B=15 * u.mm, C0=7.8 * u.kN, n=3000 * u.rpm,
+                              Fr=2 * u.kN, nu40=68 * u("mm^2/s"), nu100=8.6 * u("mm^2/s"),
+                              T_ambient=u.Quantity(20, "degC"), T_bearing=u.Quantity(80, "degC"))
+    assert balance.T_op.to("degC").magnitude == pytest.approx(out["T_op [degC]"].iat[0], rel=1e-9)
+    friction = bh.friction_torque("6205", n=3000 * u.rpm, nu=balance.nu_op, lubrication="oil_bath", d=25 * u.mm,
+                                  D=52 * u.mm, C0=7.8 * u.kN, Fr=2 * u.kN)
+    assert friction.MR.to("N*mm").magnitude == pytest.approx(out["MR [N*mm]"].iat[0], rel=1e-9)
+    assert friction.NR.to("W").magnitude == pytest.approx(out["NR [W]"].iat[0], rel=1e-9)
+    # the heat balance's own N_R is at the operating state too; it is the exact power M*2*pi*n/60, calc's NR the
+    # catalogue's M*n/9550 (30000/pi = 9549.3): 0.007 % apart
+    assert balance.N_R.to("W").magnitude == pytest.approx(out["NR [W]"].iat[0] * 9550 / (30000 / np.pi), rel=1e-9)
+    # n_per is the speed at which the bearing reaches T_bearing: the same on both routes
+    assert balance.n_per.to("1/min").magnitude == pytest.approx(out["n_per [1/min]"].iat[0], rel=1e-9)
+
+
+def test_viscosity_at_bearing_keeps_the_former_state():
+    out = bh.calc(table(), viscosity_at="bearing")
+    assert out["nu_at"].tolist() == ["T_bearing"]
+    nu_80 = bh.oil_viscosity(u.Quantity(80, "degC"), nu40=68 * u("mm^2/s"), nu100=8.6 * u("mm^2/s"))
+    assert out["nu_used [mm^2/s]"].iat[0] == pytest.approx(np.asarray(nu_80.magnitude).item(), rel=1e-9)
+    at_op = bh.calc(table())
+    # cooler oil at T_op (the bearing runs below 80 degC): thicker, more friction; n_per is unchanged
+    assert at_op["MR [N*mm]"].iat[0] > out["MR [N*mm]"].iat[0]
+    assert at_op["n_per [1/min]"].iat[0] == out["n_per [1/min]"].iat[0]
+    per_row = bh.calc(table(viscosity_at="bearing"))
+    assert per_row["nu_at"].tolist() == ["T_bearing"]
+
+
+def test_a_bad_viscosity_at_is_named():
+    with pytest.raises(bh.InputError) as info:
+        bh.calc(table(), viscosity_at="oil")
+    assert str(info.value) == "viscosity_at: 'oil' is not one of auto, bearing, operating"
+    out = bh.calc(table(viscosity_at="oil"))
+    assert out["status"].tolist() == ["error"]
+    assert out["message"].iat[0].startswith("viscosity_at: 'oil' is not one of auto, bearing, operating")
