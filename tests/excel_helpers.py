@@ -9,6 +9,7 @@ from pathlib import Path
 
 import openpyxl
 import pandas as pd
+import pytest
 from openpyxl.chart import BarChart, Reference
 from openpyxl.comments import Comment
 from openpyxl.formatting.rule import CellIsRule
@@ -17,6 +18,7 @@ from openpyxl.workbook.defined_name import DefinedName
 from openpyxl.worksheet.datavalidation import DataValidation
 
 from bearingheat.calc.table import calc
+from bearingheat.io.excel.libreoffice import soffice
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLE_CSV = ROOT / "examples" / "gearbox_shaft.csv"
@@ -166,3 +168,13 @@ def vba_workbook(path):
     os.replace(path.with_suffix(".xlsx"), path)
     add_zip_part(path, "xl/vbaProject.bin", b"\xd0\xcf\x11\xe0 macro bytes")
     return path
+
+
+def require_soffice():
+    """Skip without LibreOffice, with the reason; under CI=true fail instead (.ci/run installs it)."""
+    if soffice() is not None:
+        return
+    if os.environ.get("CI") == "true":
+        pytest.fail("CI=true but LibreOffice (soffice) is not installed; .ci/run installs libreoffice-calc-nogui")
+    pytest.skip("LibreOffice (soffice) is not installed: the live formulas cannot be recalculated "
+                "(apt-get install libreoffice-calc-nogui)")

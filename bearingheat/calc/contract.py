@@ -64,6 +64,7 @@ OWNERS = {
     "contact": "ball contact (minimum axial load)",
     "plain": "plain bushings (type plain_bushing)",
     "skf": "the SKF model (model skf: SKF General Catalogue 6000, SKF Rolling bearings 10000/3)",
+    "uncertainty": "95 % bands from the scatter of f0 and f1 (calc --coefficients, or the columns below)",
     "duty": "duty cycles (several operating cases of one support; bearingheat.duty_cycle)",
 }
 #: support types that are not rolling bearings
@@ -192,6 +193,9 @@ CONTRACT: tuple[Column, ...] = (
         template=("1", 6)),
     _in("d_s", "mm", "SKF model: seal counterface diameter (required for contact seals)", "skf",
         template=("mm", 8)),
+    _in("f0_rel_unc", "1", "relative half-width of the 95 % interval of f0 (0.1: +-10 %); gives the bands "
+        "MR_low, MR_high, ...", "uncertainty"),
+    _in("f1_rel_unc", "1", "relative half-width of the 95 % interval of f1", "uncertainty"),
     _in("support", "", "the physical bearing a row is a case of (rows of one support form its duty cycle)", "duty",
         template=("-", 16)),
     _in("case", "", "name of the operating case, e.g. 'full load'", "duty", template=("-", 12)),
@@ -211,6 +215,10 @@ CONTRACT: tuple[Column, ...] = (
     _out("M1", "N*mm", "load-dependent friction torque"),
     _out("M2", "N*mm", "axial-load torque of cylindrical roller bearings"),
     _out("MR", "N*mm", "total friction torque (of the pair where arrangement is paired)"),
+    *(_out(f"{name}_{edge}", unit, f"{'lower' if edge == 'low' else 'upper'} end of the 95 % band of {name}",
+           "uncertainty")
+      for name, unit in (("MR", "N*mm"), ("NR", "W"), ("n_thr", "1/min"), ("n_per", "1/min"), ("T_op", "degC"))
+      for edge in ("low", "high")),
     _out("NR", "W", "friction power loss (of the pair where arrangement is paired)"),
     _out("Fa_over_A", "1", "Fa/A, to read f2 off the chart (rows with M2)", shown="Fa/A"),
     _out("nu_n_dM", "mm^3/(s*min)", "nu*n*dM, to read f2 off the chart (rows with M2)", shown="nu*n*dM"),
@@ -273,6 +281,8 @@ RANGES: dict[str, tuple[tuple[float, float] | None, tuple[float, float] | None]]
     "z": ((1.0, 1000.0), None),
     "Dw": ((-_INF, 1e4), None),
     "dm_pitch": ((-_INF, 1e5), None),
+    "f0_rel_unc": ((0.0, 1.0), (0.0, 0.5)),      # a half-width above 50 % is usually a percent typed as 1
+    "f1_rel_unc": ((0.0, 1.0), (0.0, 0.5)),
     "f_plain": ((0.0, 1.0), None),
 }
 CONTRACT = tuple(dataclasses.replace(c, valid=RANGES[c.name][0], plausible=RANGES[c.name][1])

@@ -50,7 +50,9 @@ def has_duty_cycle(table: pd.DataFrame) -> bool:
 
 def _shares(frame: pd.DataFrame, supports: np.ndarray, cases: list[str]) -> tuple[np.ndarray, np.ndarray | None]:
     """Each row's time share (and its duration [h] where durations are given), checked per support."""
-    has_share, has_duration = "time_share" in frame.columns, "duration" in frame.columns
+    # a column left all blank (a template's unused one) counts as absent
+    has_share, has_duration = (name in frame.columns and not np.isnan(number_column(frame, name)).all()
+                               for name in ("time_share", "duration"))
     if has_share == has_duration:
         raise DutyCycleError("a duty cycle needs one of the columns 'time_share' (fractions summing to 1 per "
                              "support) or 'duration [h]'" + (", not both" if has_share else ""))

@@ -16,25 +16,30 @@ from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.catalogue.contact import y0_for_contact_angle
 from bearingheat.kernels import friction
 
-__all__ = ["RESULTS", "EXCEL_FORMULAS", "P1_EXCEL", "evaluate_catalogue_model"]
+__all__ = ["RESULTS", "EXCEL_FORMULAS", "P1_EXCEL", "F0_EXCEL", "F1_EXCEL", "evaluate_catalogue_model"]
 
 #: the results of the catalogue model, in the order calc writes them
 RESULTS = ("f0", "f1", "P0", "P1", "M0", "M1", "M2", "MR", "NR")
 
-#: live Excel formulas of the model's results (seed 002, pp. 64-69) in catalogue units. The placeholders are
+#: live Excel formulas of the model's results (the Schaeffler catalogue, pp. 64-69) in catalogue units. The placeholders are
 #: cell references or numbers: {f0}, {f1}, {f2}, {M0}, {M1}, {M2}, {MR} on the results sheet, {n}, {nu}, {Fa}
 #: and {load} (Fr, Fa or the P1 cell) scaled from the user's units, {dM} = ((d + D)/2), {bearings} '' or '2*'
 #: (a paired row: M0 of both bearings).
 EXCEL_FORMULAS = {
     "M0": f"={{bearings}}{{f0}}*IF({{nu}}*{{n}}>={friction.REGIME_LIMIT:g},({{nu}}*{{n}})^(2/3),{friction.LOW_REGIME_FACTOR:g})"
           "*{dM}^3*1E-07",
+    "P0": "=IF({Fa}>0,MAX(IFERROR({X0}*{Fr}+{Y0}*{Fa},{Fr}),{Fr}),{Fr})",  # fmax: no X0, Y0 gives Fr
     "P1": "=MAX({p1_rule},{Fr})",
     "M1": "={f1}*{load}*{dM}",
     "M2": "={f2}*{Fa}*{dM}",
     "MR": "={M0}+{M1}+{M2}",
     "NR": "={MR}*{n}/9550",
 }
-#: P1 rule of seed 002 p. 68 -> Excel expression before the "P1 >= Fr" rule (names as in friction.P1_RULES)
+#: f0 by its basis (the Schaeffler catalogue, p. 66): {value} is the table value for the row's lubrication, {B} and {d} in mm
+F0_EXCEL = {"constant": "{value}", "B/(33+d)": "{value}*{B}/(33+{d})"}
+#: f1 = a*ratio^x by its basis (the Schaeffler catalogue, pp. 66-68); x = 0 is the constant a
+F1_EXCEL = {"constant": "{a}", "P0/C0": "{a}*({P0}/{C0})^{x}", "Fa/C0": "{a}*({Fa}/{C0})^{x}"}
+#: P1 rule of the Schaeffler catalogue p. 68 -> Excel expression before the "P1 >= Fr" rule (names as in friction.P1_RULES)
 P1_EXCEL = {
     "radial_ball": "3.3*{Fa}-0.1*{Fr}",
     "angular_single": "{Fa}-0.1*{Fr}",
@@ -48,7 +53,7 @@ P1_EXCEL = {
 
 
 def evaluate_catalogue_model(s: SupportArrays, labels: Labels, f2_chart: F2Chart | None = None):
-    """The catalogue model (seed 002, pp. 64-70) on support arrays: checks, then the kernels.
+    """The catalogue model (the Schaeffler catalogue, pp. 64-70) on support arrays: checks, then the kernels.
 
     ``s`` holds the inputs (NaN for 'not given') and the row constants of
     :func:`bearingheat.calc.supports.bearing_constants`, as per-row arrays
@@ -78,7 +83,7 @@ def evaluate_catalogue_model(s: SupportArrays, labels: Labels, f2_chart: F2Chart
         return at(s.label, i)
 
     d, D, n, nu, Fr, Fa = s.d, s.D, s.n, s.nu, s.Fr, s.Fa
-    # --- geometry and operating point (seed 002, p. 64: units and ranges of the formulas)
+    # --- geometry and operating point (the Schaeffler catalogue, p. 64: units and ranges of the formulas)
     missing("d", lambda i: "the bore d gives dM = (d + D)/2", np.isnan(d))
     bad_value("d", "must be > 0", d <= 0)
     missing("D", lambda i: "the outside diameter D gives dM = (d + D)/2", np.isnan(D))
@@ -97,7 +102,7 @@ def evaluate_catalogue_model(s: SupportArrays, labels: Labels, f2_chart: F2Chart
     # --- f0: user value, or the table column of the lubrication (needle formulas need B)
     f0_given = ~np.isnan(s.f0)
     needle_formula = np.equal(s.f0_basis, "B/(33+d)") & ~f0_given
-    missing("B", lambda i: f"f0 of {label(i)} is value*B/(33+d) (seed 002, p. 66)", needle_formula & np.isnan(s.B))
+    missing("B", lambda i: f"f0 of {label(i)} is value*B/(33+d) (the Schaeffler catalogue, p. 66)", needle_formula & np.isnan(s.B))
     bad_value("B", "must be > 0", s.B <= 0)
     f0 = np.where(f0_given, s.f0, s.f0_table)
     if np.any(needle_formula):
@@ -108,7 +113,7 @@ def evaluate_catalogue_model(s: SupportArrays, labels: Labels, f2_chart: F2Chart
     f1_basis = s.f1_basis
     needs_c0 = (f1_basis > 0) & ~f1_given
     missing("C0", lambda i: f"f1 of {label(i)} depends on "
-                            f"{'P0/C0' if at(f1_basis, i) == 1 else 'Fa/C0'} (seed 002, pp. 66-68)",
+                            f"{'P0/C0' if at(f1_basis, i) == 1 else 'Fa/C0'} (the Schaeffler catalogue, pp. 66-68)",
             needs_c0 & np.isnan(s.C0))
     bad_value("C0", "must be > 0", s.C0 <= 0)
     X0 = np.broadcast_to(np.where(np.isnan(s.X0), s.X0_table, s.X0), shape)
@@ -118,18 +123,18 @@ def evaluate_catalogue_model(s: SupportArrays, labels: Labels, f2_chart: F2Chart
     angular = np.equal(s.bearing_type, "angular_contact_ball")
     for col, values in (("X0", X0), ("Y0", Y0)):
         missing(col, lambda i, c=col: f"P0 of {label(i)} under axial load needs the catalogue value {c}"
-                                      + (" or the contact angle alpha (seed 000, table 1: 18 to 36 deg)"
-                                         if at(angular, i) else " (seed 000, table 1 has none for this type)"),
+                                      + (" or the contact angle alpha (the DP11A manual, table 1: 18 to 36 deg)"
+                                         if at(angular, i) else " (the DP11A manual, table 1 has none for this type)"),
                 needs_p0 & np.isnan(values) & ~angle_reported)
     P0 = friction.static_equivalent_load(Fr, Fa, X0, Y0)
 
-    # --- P1 rules (seed 002, p. 68): tapered needs Y, spherical needs e
+    # --- P1 rules (the Schaeffler catalogue, p. 68): tapered needs Y, spherical needs e
     rules = s.p1_rule
     is_p1 = np.equal(s.m1_load, "P1") & np.not_equal(rules, "")
     for col, rule_names in (("Y", ("tapered_single", "tapered_paired")), ("e", ("spherical",))):
         wanted = np.isin(np.asarray(rules, dtype=str), rule_names) & (Fa > 0)
         missing(col, lambda i, c=col: f"P1 of {label(i)} under axial load needs the catalogue value {c} "
-                                      "(seed 002, p. 68)", wanted & np.isnan(getattr(s, col)))
+                                      "(the Schaeffler catalogue, p. 68)", wanted & np.isnan(getattr(s, col)))
         bad_value(col, "must be > 0", getattr(s, col) <= 0)
     if np.ndim(rules) == 0:
         P1 = (friction.effective_load(rules, Fr, Fa, s.Y, s.e) if is_p1 else np.full(shape, np.nan))
@@ -144,14 +149,14 @@ def evaluate_catalogue_model(s: SupportArrays, labels: Labels, f2_chart: F2Chart
     ratio = np.where(f1_basis == 1, P0 / s.C0, np.where(f1_basis == 2, Fa / s.C0, 1.0))
     f1 = np.where(f1_given, s.f1, friction.f1_from_load_ratio(s.f1_a, s.f1_x, ratio))
 
-    # --- axial load on cylindrical roller bearings (seed 002, p. 69)
+    # --- axial load on cylindrical roller bearings (the Schaeffler catalogue, p. 69)
     add(s.no_axial & (Fa > 0), "error",
         lambda i: f"{labels.name('Fa', i)}: {value_of('Fa', i)} on {at(s.prefix, i)} {label(i)}: "
                   "one ring has no ribs, the bearing takes no axial load")
     m2_rows = np.broadcast_to(s.m2 & (Fa > 0), shape)
     add(m2_rows & (Fr <= 0), "error",
         lambda i: f"{labels.name('Fa', i)}: {value_of('Fa', i)} without radial load on {label(i)}: "
-                  "axially loaded cylindrical roller bearings need Fr > 0 (seed 002, p. 69)")
+                  "axially loaded cylindrical roller bearings need Fr > 0 (the Schaeffler catalogue, p. 69)")
     fa_fr = Fa / Fr
     add(m2_rows & (Fr > 0) & (fa_fr > 0.4), "warning",
         lambda i: f"Fa/Fr = {at(fa_fr, i):.3g} is above 0.4, the limit for axially loaded cylindrical roller "
@@ -168,7 +173,7 @@ def evaluate_catalogue_model(s: SupportArrays, labels: Labels, f2_chart: F2Chart
         need_f2 = m2_rows & np.isnan(f2)
         if f2_chart is not None and need_f2.any():
             no_kb = need_f2 & np.isnan(s.kB)
-            missing("kB", lambda i: f"{label(i)} has no kB in seed 002 p. 70, so Fa/A for the f2 chart is "
+            missing("kB", lambda i: f"{label(i)} has no kB in the Schaeffler catalogue p. 70, so Fa/A for the f2 chart is "
                                     "unknown; give f2", no_kb)
             rows = np.flatnonzero(need_f2 & ~no_kb)
             chart_f2, reasons = f2_chart.lookup(Fa_over_A[rows], nu_n_dM[rows])
@@ -181,9 +186,9 @@ def evaluate_catalogue_model(s: SupportArrays, labels: Labels, f2_chart: F2Chart
             add(need_f2, "error",
                 lambda i: f"f2: missing; {label(i)} carries Fa, so M2 = f2*Fa*dM needs f2: give f2, or a "
                           f"digitised chart (--f2-chart); read it at Fa/A = {Fa_over_A[i]:.4g}, "
-                          f"nu*n*dM = {nu_n_dM[i]:.4g} mm^3/(s*min) (seed 002, p. 70, figs. 3 and 4)")
+                          f"nu*n*dM = {nu_n_dM[i]:.4g} mm^3/(s*min) (the Schaeffler catalogue, p. 70, figs. 3 and 4)")
     add(np.equal(s.seal, "contact"), "warning",
-        lambda i: "contact seals: their friction comes on top of the catalogue model (seed 002, p. 64)")
+        lambda i: "contact seals: their friction comes on top of the catalogue model (the Schaeffler catalogue, p. 64)")
 
     M0 = s.bearings * friction.speed_dependent_torque(f0, nu, n, dM)  # a pair: both bearings (see supports)
     M1 = friction.load_dependent_torque(f1, load, dM)
@@ -197,7 +202,7 @@ def evaluate_catalogue_model(s: SupportArrays, labels: Labels, f2_chart: F2Chart
 
 
 def _angular_contact_y0(s, Y0, add, shape):
-    """Y0 of single row angular contact ball bearings from the contact angle (seed 000, table 1)."""
+    """Y0 of single row angular contact ball bearings from the contact angle (the DP11A manual, table 1)."""
     rows = np.broadcast_to(np.equal(s.bearing_type, "angular_contact_ball") & np.isnan(s.Y0)
                            & (s.Fa > 0), shape)
     reported = np.zeros(shape, dtype=bool)

@@ -44,10 +44,13 @@ def _resolve_rows(frame: pd.DataFrame):
     return out
 
 
-def thermal_reference_speed_details(frame: pd.DataFrame) -> pd.DataFrame:
+def thermal_reference_speed_details(frame: pd.DataFrame, *, f0_scale=1.0, f1_scale=1.0) -> pd.DataFrame:
     """Thermal reference speed of every row with the quantities behind it (see :func:`_details`); each distinct
-    combination of the :data:`REFERENCE_KEYS` columns is computed once."""
+    combination of the :data:`REFERENCE_KEYS` columns is computed once. ``f0_scale`` and ``f1_scale`` (per row
+    or one number) scale the table coefficients, for the uncertainty bands."""
     keys = [c for c in REFERENCE_KEYS if c in frame.columns]
+    if np.ndim(f0_scale) or np.ndim(f1_scale) or f0_scale != 1.0 or f1_scale != 1.0:
+        return _details(frame, f0_scale, f1_scale)
     if not keys or len(frame) < 2:
         return _details(frame)
     codes = frame[keys].groupby(keys, dropna=False, sort=False).ngroup().to_numpy()
@@ -60,7 +63,7 @@ def thermal_reference_speed_details(frame: pd.DataFrame) -> pd.DataFrame:
     return out
 
 
-def _details(frame: pd.DataFrame) -> pd.DataFrame:
+def _details(frame: pd.DataFrame, f0_scale=1.0, f1_scale=1.0) -> pd.DataFrame:
     """Thermal reference speed of every row with the quantities behind it.
 
     ``frame`` is in catalogue units with columns ``designation`` (or
@@ -164,8 +167,9 @@ def _details(frame: pd.DataFrame) -> pd.DataFrame:
         nu_ref[rows] = ref.nu
     dM = friction.mean_diameter(d, D)
     P1 = load_ratio * C0
+    f0 = f0 * f0_scale
     with np.errstate(invalid="ignore"):
-        f1 = friction.f1_from_load_ratio(f1_a, f1_x, load_ratio)
+        f1 = friction.f1_from_load_ratio(f1_a, f1_x, load_ratio) * f1_scale
         M1 = friction.load_dependent_torque(f1, P1, dM)
         c_high, c_low = torque_coefficients(f0, dM)
         x, _, _, low = balance_root(c_high, c_low, M1, nu_ref, q_r * A_r, 1.0)

@@ -35,6 +35,7 @@ from bearingheat.calc.contract import (PLAIN_TYPES, input_units, output_header, 
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.supports import number_column, per_distinct, text_column
 from bearingheat.calc.fill import fill_from_catalogue
+from bearingheat.calc.uncertainty import fill_from_coefficients, has_uncertainty, uncertainty_bands
 from bearingheat.catalogue.bearings import CATALOGUE
 from bearingheat.calc.models import (DEFAULT_MODEL, M2_REPORT_UNITS, MODEL_REPORT_UNITS, PLAIN_REPORT_UNITS,
                                     RESULT_UNITS, compute_supports)
@@ -188,7 +189,8 @@ def require_columns(frame: pd.DataFrame) -> None:
 def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart | str | None = None,
          units: dict[str, str] | None = None, cell: Callable[[str, int], str] | None = None,
          effects=None, n_per_method: str = DEFAULT_SPEED_FACTOR_METHOD,
-         viscosity_at: str = DEFAULT_VISCOSITY_AT) -> pd.DataFrame:
+         viscosity_at: str = DEFAULT_VISCOSITY_AT, coefficients: pd.DataFrame | str | None = None,
+         uncertainty: str = "linearised") -> pd.DataFrame:
     """Run the friction model (and its extensions) on a table of supports.
 
     Returns the input columns followed by the result columns. ``model`` is
@@ -242,6 +244,15 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
     n_per_method : str, optional
         How n_per finds its speed factor where the ``n_per_method`` cell is
         blank: 'exact' (default) or 'approximation'.
+    coefficients : pandas.DataFrame or str, optional
+        The ``coefficients.csv`` of ``bearingheat audit`` (or its path):
+        the relative half-widths of the fitted f0 and f1 intervals become
+        the ``f0_rel_unc`` and ``f1_rel_unc`` of rows with that designation
+        where the table leaves them blank.
+    uncertainty : str, optional
+        How rows with ``f0_rel_unc`` or ``f1_rel_unc`` get their 95 % bands
+        ``MR_low``, ``MR_high``, ... (:mod:`bearingheat.calc.uncertainty`):
+        'linearised' (default) or 'sampled'.
     viscosity_at : str, optional
         Where a viscosity from oil data (``nu40``/``nu100`` or ``iso_vg``)
         is taken for the friction results of rows whose ``viscosity_at``
@@ -325,7 +336,19 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
             columns, problems = ext.extend(frame, results)
         _add_messages(results, [(i, level, m, False) for i, level, m in problems])
         extension_columns.append((columns, output_units(owner=ext.owner)))
-    return _assemble(table, results, extension_columns)
+    out = _assemble(table, results, extension_columns)
+    if coefficients is not None:
+        table = fill_from_coefficients(table, pd.read_csv(coefficients) if isinstance(coefficients, str)
+                                       else coefficients)
+        frame = to_catalogue_units(table, units=units, cell=cell).frame
+    if has_uncertainty(table):
+        def again(perturbed: pd.DataFrame) -> pd.DataFrame:
+            return calc(perturbed, model=model, f2_chart=f2_chart, units=units, effects=effects,
+                        n_per_method=n_per_method, viscosity_at=viscosity_at)
+        bands = uncertainty_bands(table, out, frame.reset_index(drop=True).set_axis(out.index), again,
+                                  method=uncertainty)
+        out = pd.concat([out.drop(columns=["status", "message"]), bands, out[["status", "message"]]], axis=1)
+    return out
 
 
 def _implausible_relations(frame: pd.DataFrame, labels: Labels, from_table: dict[str, np.ndarray]

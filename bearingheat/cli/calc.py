@@ -8,16 +8,21 @@ from pathlib import Path
 
 from bearingheat.analysis.diagnose import FittedEffect
 from bearingheat.calc.contract import help_text
+from bearingheat.calc.duty import duty_cycle, has_duty_cycle
 from bearingheat.calc.models import DEFAULT_MODEL, MODELS
-from bearingheat.calc.thermal import DEFAULT_SPEED_FACTOR_METHOD, SPEED_FACTOR_METHODS
+from bearingheat.calc.thermal import (DEFAULT_SPEED_FACTOR_METHOD, DEFAULT_VISCOSITY_AT, SPEED_FACTOR_METHODS,
+                                     VISCOSITY_AT)
 from bearingheat.cli import UsageError, add_csv_arguments, add_force_argument
 from bearingheat.errors import ExcelError, F2ChartError, InputError
+from bearingheat.cli.options import add_json
 from bearingheat.io.console import Progress, print_summary
+from bearingheat.io.json import results_json
+from bearingheat.io.excel.printing import export_pdf, pdf_output
 from bearingheat.io.excel.reader import EXCEL_SUFFIXES
 from bearingheat.io.excel.workbook import calc_workbook
 from bearingheat.io.excel.writer import write_results_workbook
 from bearingheat.io.files import safe_output, workbook_lock
-from bearingheat.io.tables import calc_csv, write_csv
+from bearingheat.io.tables import calc_csv, check_table_suffix, write_csv, write_table
 
 HELP = "friction torque, power loss (and thermal speeds) of supports in a CSV or Excel table"
 
@@ -53,9 +58,12 @@ or a file fault (cannot read or write, disk full, damaged workbook).
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("input", metavar="INPUT", help="CSV (.csv) or Excel workbook (.xlsx) of supports")
-    parser.add_argument("-o", "--output", metavar="OUTPUT",
-                        help="where to write the results (.csv or .xlsx); without it a table is printed")
+    parser.add_argument("input", metavar="INPUT",
+                        help="table of supports: CSV (.csv), Parquet (.parquet), Arrow/Feather (.arrow, .feather) or "
+                             "an Excel workbook (.xlsx)")
+    parser.add_argument("-o", "--output", metavar="FILE",
+                        help="file to write (.csv, .parquet, .arrow, .feather or .xlsx); without it the results are "
+                             "printed")
     parser.add_argument("--f2-chart", metavar="CSV",
                         help="digitised f2 chart (docs/friction.md gives the format)")
     parser.add_argument("--effects", metavar="SUMMARY_JSON",
@@ -64,17 +72,29 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--in-place", action="store_true",
                         help="Excel: write the results sheet into the input workbook (atomic)")
     parser.add_argument("--formulas", action="store_true",
-                        help="Excel: write live formulas for M0, M1, M2, MR and NR")
+                        help="Excel: write live formulas for f0, f1, P0, P1, M0, M1, M2, MR and NR, and a live "
+                             "check that marks the other results once an input changes")
+    parser.add_argument("--pdf", action="store_true",
+                        help="Excel: also print the results sheet to a PDF beside the workbook (OUTPUT.pdf; "
+                             "needs LibreOffice)")
     parser.add_argument("--n-per-method", choices=list(SPEED_FACTOR_METHODS), default=DEFAULT_SPEED_FACTOR_METHOD,
                         help="how n_per is found where a row's n_per_method is blank: the exact root of the heat "
                              "balance or the catalogue approximation (default exact); the column n_per_method_used "
                              "says which was used")
+    parser.add_argument("--viscosity-at", choices=list(VISCOSITY_AT), default=DEFAULT_VISCOSITY_AT,
+                        help="where a viscosity from nu40/nu100 or iso_vg is taken for the friction results of rows "
+                             "whose viscosity_at is blank: auto (T_op where T_amb and n are given, else T_bearing; "
+                             "default), operating (T_op) or bearing (T_bearing); nu_used and nu_at say which")
+    parser.add_argument("--coefficients", metavar="CSV",
+                        help="the coefficients.csv of 'bearingheat audit': its 95-percent intervals of f0 and f1 give "
+                             "the rows of those designations the bands MR_low, MR_high, n_per_low, ...")
     parser.add_argument("--model", choices=sorted(MODELS), default=DEFAULT_MODEL,
                         help=f"friction model of rows whose 'model' cell is blank (default {DEFAULT_MODEL})")
     add_force_argument(parser, "OUTPUT")
     parser.add_argument("--no-csv-escape", action="store_true",
                         help="CSV output: write text starting with =, +, -, @ as it is (no leading apostrophe)")
     add_csv_arguments(parser)
+    add_json(parser)
     parser.add_argument("-q", "--quiet", action="store_true", help="print nothing")
 
 
@@ -91,7 +111,20 @@ def _output(args: argparse.Namespace, source: Path) -> Path | None:
     """The real file -o names, checked before any work: exists (needs --force), is the input, read-only ..."""
     if not args.output:
         return None
+    try:
+        check_table_suffix(args.output, also=EXCEL_SUFFIXES)
+    except InputError as exc:
+        raise UsageError(str(exc)) from exc
     return safe_output(args.output, force=args.force, inputs=(source,))
+
+
+def _pdf(args: argparse.Namespace, workbook: Path | None, source: Path) -> Path | None:
+    """The PDF of --pdf beside the results workbook, checked before any work (None without --pdf)."""
+    if not getattr(args, "pdf", False):
+        return None
+    if workbook is None or workbook.suffix.lower() not in EXCEL_SUFFIXES:
+        raise UsageError("--pdf prints the results sheet of a workbook: give -o OUTPUT.xlsx (or --in-place)")
+    return pdf_output(workbook, force=args.force, inputs=(source,))
 
 
 def run(args: argparse.Namespace) -> int:
@@ -103,18 +136,33 @@ def run(args: argparse.Namespace) -> int:
     if args.in_place or args.formulas or args.sheet:
         raise UsageError("--in-place, --formulas and --sheet apply to Excel workbooks only")
     target = _output(args, source)
+    pdf = _pdf(args, target, source)
     try:
         result = calc_csv(source, sep=args.sep, decimal=args.decimal, model=args.model, f2_chart=args.f2_chart,
-                          n_per_method=args.n_per_method, effects=_load_effects(args.effects))
+                          n_per_method=args.n_per_method, effects=_load_effects(args.effects),
+                          viscosity_at=args.viscosity_at, coefficients=args.coefficients)
+        duty = duty_cycle(result) if has_duty_cycle(result) else None
+        if duty is not None and target is not None and target.suffix.lower() not in EXCEL_SUFFIXES:
+            # the summary per support beside the results: <name>.duty.csv
+            duty_target = safe_output(target.with_name(f"{target.stem}.duty{target.suffix}"), force=args.force,
+                                      inputs=(source,))
+            write_table(duty, duty_target, escape=not args.no_csv_escape)
         if target is not None:
             if target.suffix.lower() in EXCEL_SUFFIXES:
-                write_results_workbook(result, target)
+                write_results_workbook(result, target, source, duty)
+                if pdf is not None:
+                    export_pdf(target, "Results", pdf)
             else:
-                write_csv(result, target, escape=not args.no_csv_escape)
+                write_table(result, target, escape=not args.no_csv_escape)
     except (InputError, F2ChartError) as exc:  # ExcelError is an InputError
         raise UsageError(str(exc)) from exc
-    if not args.quiet:
+    if args.json:
+        print(results_json(result, duty))
+    elif not args.quiet:
         print_summary(result, args.output)
+        if duty is not None:
+            print("\nduty cycle (time-weighted per support):")
+            print(duty.to_string(index=False))
     return 1 if (result["status"] == "error").any() else 0
 
 
@@ -130,9 +178,11 @@ def run_calc_workbook(args: argparse.Namespace) -> int:
     if args.output and os.path.exists(args.output) and os.path.samefile(args.output, source):
         raise UsageError(f"-o {args.output} is the input workbook; use --in-place to write into it")
     target = _output(args, source)
+    pdf = _pdf(args, source if args.in_place else target, source)
     csv_target = target if target is not None and target.suffix.lower() == ".csv" else None
     progress = Progress(enabled=not args.quiet)
     options = dict(sheet=args.sheet, formulas=args.formulas, model=args.model, n_per_method=args.n_per_method,
+                   viscosity_at=args.viscosity_at,
                    f2_chart=args.f2_chart, effects=_load_effects(args.effects), progress=progress)
     try:
         if args.in_place:
@@ -143,14 +193,25 @@ def run_calc_workbook(args: argparse.Namespace) -> int:
             run = calc_workbook(source, None if csv_target is not None else target, **options)
         if csv_target is not None:
             write_csv(run.result, csv_target, escape=not args.no_csv_escape)
+            if run.duty is not None:  # the summary per support beside the results: <name>.duty.csv
+                write_csv(run.duty, safe_output(csv_target.with_name(f"{csv_target.stem}.duty.csv"),
+                                                force=args.force, inputs=(source,)),
+                          escape=not args.no_csv_escape)
+        if pdf is not None:
+            export_pdf(real if args.in_place else target, run.results_sheet, pdf)
     except ExcelError as exc:
         raise UsageError(str(exc)) from exc
-    if not args.quiet:
+    if args.json:
+        print(results_json(run.result))
+    elif not args.quiet:
         where = None
         output = args.input if args.in_place else args.output
         if output is not None:
             where = f"{output}" + (f", sheet {run.results_sheet!r}" if run.results_sheet else "")
         print_summary(run.result, where)
+        if run.duty is not None:
+            print("\nduty cycle (time-weighted per support):")
+            print(run.duty.to_string(index=False))
         for note in run.notes:
             print(f"note: {note}", file=sys.stderr)
         if run.dropped:

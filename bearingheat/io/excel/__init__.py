@@ -6,10 +6,13 @@
 - :mod:`.package`: ``--in-place`` as a surgical edit of the OPC package (only the results sheet is
   written; :mod:`.sheetxml` renders it, :mod:`.stylesheet` appends its styles, :mod:`.ownership`
   marks it as bearingheat's)
+- :mod:`.sheets`: what calc writes for an input sheet: the results sheet and its companions
 - :mod:`.formulas`: the live Excel formulas of ``calc --formulas``
+- :mod:`.freshness`: the hidden copy of the inputs and the live check that marks stale results
+- :mod:`.printing`: the printed results sheet (30 supports a page, titles) and its PDF
 - :mod:`.safety`: what a rewrite would lose, and a fingerprint to prove what it kept
 - :mod:`.style`, :mod:`.template`: the named cell styles and the designer's template
-- :mod:`.libreoffice`: headless LibreOffice (recalculation, screenshots)
+- :mod:`.libreoffice`: headless LibreOffice (recalculation, PDF, screenshots)
 """
 from bearingheat.io.excel.reader import SheetInfo, read_supports, with_units
 from bearingheat.io.excel.workbook import WorkbookRun, calc_workbook

@@ -30,8 +30,9 @@ from __future__ import annotations
 import re
 from collections.abc import Collection, Iterable, Mapping
 
-__all__ = ["RESULTS_MARK", "INPUT_MARK", "MAX_SHEET_NAME", "mark_value", "sheet_of_mark", "read_marks",
-           "choose_results_sheet", "candidate_names", "sheet_ref"]
+__all__ = ["RESULTS_MARK", "INPUT_MARK", "COMPANION_MARKS", "MAX_SHEET_NAME", "mark_value", "sheet_of_mark",
+           "read_marks", "read_companions", "choose_results_sheet", "choose_companion_sheet", "candidate_names",
+           "sheet_ref"]
 
 RESULTS_MARK = "_bearingheat_results_"
 INPUT_MARK = "_bearingheat_input_"
@@ -39,6 +40,11 @@ INPUT_MARK = "_bearingheat_input_"
 MAX_SHEET_NAME = 31
 _WHOLE_SHEET = "$1:$1048576"
 _MARK_NAME = re.compile(rf"^({RESULTS_MARK}|{INPUT_MARK})(\d+)$", re.IGNORECASE)
+#: the further sheets a results sheet may have, by role: the hidden copy of the inputs it was computed from
+#: (``calc --formulas``, :mod:`.freshness`) and the summary of a duty cycle; marked like the results sheet,
+#: ``_bearingheat_snapshot_<k>`` and ``_bearingheat_duty_<k>`` of pair k
+COMPANION_MARKS = {"snapshot": "_bearingheat_snapshot_", "duty": "_bearingheat_duty_"}
+_COMPANION_NAME = re.compile(r"^_bearingheat_(snapshot|duty)_(\d+)$", re.IGNORECASE)
 
 
 def sheet_ref(sheet: str) -> str:
@@ -85,16 +91,49 @@ def read_marks(names: Iterable[tuple[str, str | None]]) -> dict[int, tuple[str |
     return {k: (v[0], v[1]) for k, v in sorted(marks.items())}
 
 
-def candidate_names(base: str) -> Iterable[str]:
+def read_companions(names: Iterable[tuple[str, str | None]]) -> dict[int, dict[str, str | None]]:
+    """{k: {role: sheet}} of the companion marks (:data:`COMPANION_MARKS`) among (defined name, value) pairs.
+
+    >>> read_companions([("_bearingheat_snapshot_1", "'Calc inputs'!$1:$1048576"), ("other", "A1")])
+    {1: {'snapshot': 'Calc inputs'}}
+    """
+    out: dict[int, dict[str, str | None]] = {}
+    for name, value in names:
+        match = _COMPANION_NAME.match(name or "")
+        if match is not None:
+            out.setdefault(int(match.group(2)), {})[match.group(1).lower()] = sheet_of_mark(value)
+    return out
+
+
+def choose_companion_sheet(sheets: list[str], current: str | None, base: str, taken: Collection[str] = ()
+                           ) -> tuple[str, bool]:
+    """(name, replace it?) of a companion sheet: the sheet its mark names (``current``) where it still exists,
+    else the first free name of ``base`` (not in ``sheets`` nor ``taken``, compared without case).
+
+    >>> choose_companion_sheet(["Supports", "Duty cycle"], None, "Duty cycle", ["Results"])
+    ('Duty cycle (2)', False)
+    """
+    present = {s.casefold(): s for s in sheets}
+    if current is not None and current.casefold() in present:
+        return present[current.casefold()], True
+    used = set(present) | {t.casefold() for t in taken}
+    tail = next((t for t in (" calc inputs", " duty cycle", " results") if base.endswith(t)), "")
+    return next(n for n in candidate_names(base, tail) if n.casefold() not in used), False
+
+
+def candidate_names(base: str, tail: str | None = None) -> Iterable[str]:
     """``base``, then ``base (2)``, ``base (3)`` ... each at most 31 characters; a ``<sheet> results`` base keeps
-    its word 'results' and gives up characters of the sheet name instead.
+    its word 'results' (or another ``tail``) and gives up characters of the sheet name instead.
 
     >>> [name for name, _ in zip(candidate_names("Results"), range(3))]
     ['Results', 'Results (2)', 'Results (3)']
     >>> [name for name, _ in zip(candidate_names("Gearbox G-17 intermedia results"), range(2))]
     ['Gearbox G-17 intermedia results', 'Gearbox G-17 interm results (2)']
     """
-    stem, tail = (base[:-len(" results")], " results") if base.endswith(" results") else (base, "")
+    if tail is None:
+        tail = " results" if base.endswith(" results") else ""
+    stem = base[:-len(tail)] if tail and base.endswith(tail) else base
+    tail = tail if base.endswith(tail) else ""
     yield stem[:MAX_SHEET_NAME - len(tail)] + tail
     k = 2
     while True:

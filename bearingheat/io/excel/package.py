@@ -1,16 +1,21 @@
-"""``calc --in-place`` as a surgical edit of the workbook's OPC package: only the results sheet is written.
+"""``calc --in-place`` as a surgical edit of the workbook's OPC package: only bearingheat's sheets are written.
 
 An .xlsx or .xlsm file is a ZIP package of parts (ECMA-376 Part 2, OPC).
-:func:`write_results_in_place` adds or replaces one worksheet part, the
-results sheet, and changes only what registers it:
+:func:`write_results_in_place` adds or replaces the worksheet part of the
+results sheet, and of its companions where there are any (the hidden copy
+of the inputs of ``--formulas``, the duty cycle summary:
+:class:`bearingheat.io.excel.sheets.CellsSheet`, :class:`~bearingheat.io.excel.sheets.TableSheet`),
+and changes only what registers them:
 
-- ``xl/workbook.xml``: its ``<sheet>`` entry, the two hidden defined names
-  that mark it as bearingheat's (:mod:`.ownership`), and
+- ``xl/workbook.xml``: their ``<sheet>`` entries, the hidden defined names
+  that mark them as bearingheat's (:mod:`.ownership`), the print titles of
+  the results sheet (``_xlnm.Print_Titles``, where it has none), and
   ``calcPr fullCalcOnLoad="1"`` so that Excel and LibreOffice recalculate
   formulas (the live formulas, and the designer's formulas that read the
   results) when the file is opened;
 - ``xl/_rels/workbook.xml.rels`` and ``[Content_Types].xml`` for a new sheet;
-- ``xl/styles.xml``: bearingheat's cell formats appended
+- ``xl/styles.xml``: bearingheat's cell formats, number formats and the
+  differential formats of its conditional formats appended
   (:mod:`.stylesheet`), nothing renumbered;
 - ``xl/calcChain.xml`` only when a replaced results sheet had formulas in it.
 
@@ -42,9 +47,11 @@ from urllib.parse import unquote
 from lxml import etree
 
 from bearingheat.errors import ExcelError, WorkbookContentError
-from bearingheat.io.excel.ownership import (INPUT_MARK, RESULTS_MARK, choose_results_sheet, mark_value,
-                                            read_marks)
-from bearingheat.io.excel.sheetxml import DEFAULT_MARGINS, results_sheet_xml
+from bearingheat.io.excel.ownership import (COMPANION_MARKS, INPUT_MARK, RESULTS_MARK, choose_companion_sheet,
+                                            choose_results_sheet, mark_value, read_companions, read_marks,
+                                            sheet_ref)
+from bearingheat.io.excel.printing import is_bearingheat_header
+from bearingheat.io.excel.sheetxml import results_sheet_xml
 from bearingheat.io.excel.stylesheet import StyleSheet
 from bearingheat.io.files import WorkbookLock, atomic_write
 
@@ -189,12 +196,14 @@ def open_package(path) -> Package:
 
 @dataclass
 class InPlaceResult:
-    """What :func:`write_results_in_place` did: the results sheet, whether it replaced one, and notes."""
+    """What :func:`write_results_in_place` did: the results sheet, whether it replaced one, notes, the parts
+    written and the companion sheets by role."""
 
     sheet: str
     replaced: bool
     notes: list[str]
     changed_parts: list[str]
+    companions: dict[str, str] = field(default_factory=dict)
 
 
 @dataclass
@@ -250,10 +259,13 @@ class _Workbook:
         return [(n.get("name", ""), n.text or "") for n in names.iter(_M + "definedName")
                 if n.get("localSheetId") is None]
 
-    def set_marks(self, k: int, results: str, source: str, stale: list[int]) -> None:
-        """Write the marks of pair ``k`` (results sheet, input sheet); drop the marks of pairs in ``stale``."""
+    def set_marks(self, k: int, results: str, source: str, stale: list[int],
+                  companions: dict[str, str] | None = None) -> None:
+        """Write the marks of pair ``k`` (results sheet, input sheet, companion sheets by role); drop the marks
+        of pairs in ``stale``."""
         names = self.child("definedNames", create=True)
         wanted = {f"{RESULTS_MARK}{k}": mark_value(results), f"{INPUT_MARK}{k}": mark_value(source)}
+        wanted.update({f"{COMPANION_MARKS[role]}{k}": mark_value(sheet) for role, sheet in (companions or {}).items()})
         drop = {f"{m}{j}".lower() for j in stale for m in (RESULTS_MARK, INPUT_MARK)}
         for element in list(names.iter(_M + "definedName")):
             if element.get("localSheetId") is not None:
@@ -272,6 +284,17 @@ class _Workbook:
             element = etree.SubElement(names, _M + "definedName", {"name": name, "hidden": "1"})
             element.text = value
             self.changed = True
+
+    def print_titles(self, sheet: _Sheet, value: str) -> None:
+        """Give ``sheet`` print titles (``_xlnm.Print_Titles``) unless it has some."""
+        index = str(self.sheets.index(sheet))
+        names = self.child("definedNames", create=True)
+        for element in names.iter(_M + "definedName"):
+            if element.get("name", "").lower() == "_xlnm.print_titles" and element.get("localSheetId") == index:
+                return
+        element = etree.SubElement(names, _M + "definedName", {"name": "_xlnm.Print_Titles", "localSheetId": index})
+        element.text = value
+        self.changed = True
 
     def full_calc_on_load(self) -> None:
         calc = self.child("calcPr", create=True)
@@ -303,11 +326,11 @@ class _Workbook:
                 self.rels_changed = True
                 return
 
-    def add_sheet(self, name: str, part: str) -> _Sheet:
+    def add_sheet(self, name: str, part: str, hidden: bool = False) -> _Sheet:
         rid = self.add_relationship("worksheet", part)
         sheet_id = 1 + max([s.sheet_id for s in self.sheets] + [0])
-        element = etree.SubElement(self.sheets_element, _M + "sheet",
-                                   {"name": name, "sheetId": str(sheet_id), _R + "id": rid})
+        attributes = {"name": name, "sheetId": str(sheet_id)} | ({"state": "hidden"} if hidden else {})
+        element = etree.SubElement(self.sheets_element, _M + "sheet", {**attributes, _R + "id": rid})
         self.changed = True
         sheet = _Sheet(name, sheet_id, rid, part, element)
         self.sheets.append(sheet)
@@ -334,18 +357,27 @@ class _ContentTypes:
                 self.changed = True
 
 
-def _new_sheet_part(package: Package, workbook_part: str) -> str:
+def _new_sheet_part(package: Package, workbook_part: str, reserved=()) -> str:
     folder = posixpath.join(posixpath.dirname(workbook_part), "worksheets")
-    taken = {n.lower() for n in package.names()}
+    taken = {n.lower() for n in package.names()} | {n.lower() for n in reserved}
     k = 1
     while posixpath.join(folder, f"sheet{k}.xml").lower() in taken:
         k += 1
     return posixpath.join(folder, f"sheet{k}.xml")
 
 
-def _kept_setup(package: Package, sheet: _Sheet, input_sheet: str) -> tuple[str, str]:
-    """(print setup and protection XML, sheetPr children) of a results sheet about to be replaced, or a refusal
-    naming what it holds that the replacement would lose."""
+def _element_text(element: etree._Element) -> str:
+    """An element of a worksheet as text for the new worksheet part, without the declarations of the two
+    namespaces that part's root declares itself (so a second run writes the same bytes)."""
+    text = etree.tostring(element, encoding="unicode", with_tail=False)
+    return re.sub(rf'\s+xmlns(:r)?="({re.escape(MAIN)}|{re.escape(REL)})"',
+                  lambda m: m.group(0) if (m.group(1) == ":r") != (m.group(2) == REL) else "", text, count=2)
+
+
+def _kept_setup(package: Package, sheet: _Sheet, input_sheet: str) -> dict[str, str]:
+    """The print setup and protection XML of a sheet of bearingheat's about to be replaced, by element name
+    (and sheetPr's pageSetUpPr), without the page header bearingheat wrote (it is written anew); or a refusal
+    naming what the sheet holds that the replacement would lose."""
     lost = []
     for relationship in package.relationships(sheet.part):
         kind = relationship.get("Type", "").rsplit("/", 1)[-1]
@@ -359,16 +391,17 @@ def _kept_setup(package: Package, sheet: _Sheet, input_sheet: str) -> tuple[str,
                                     "or delete the sheet, then run again")
     data = package.read(sheet.part)
     if data is None:
-        return "", ""
+        return {}
     root = _parse(data, sheet.part, package.path)
-    kept = {etree.QName(child).localname: etree.tostring(child, encoding="unicode", with_tail=False)
+    kept = {etree.QName(child).localname: _element_text(child)
             for child in root if isinstance(child.tag, str) and etree.QName(child).localname in _KEPT_SHEET_ELEMENTS}
-    if kept:
-        kept.setdefault("pageMargins", DEFAULT_MARGINS)
-    setup = "".join(kept[name] for name in _KEPT_SHEET_ELEMENTS if name in kept)
+    if "headerFooter" in kept and is_bearingheat_header(kept["headerFooter"]):
+        del kept["headerFooter"]
     sheet_pr = root.find(_M + "sheetPr")
     setup_pr = sheet_pr.find(_M + "pageSetUpPr") if sheet_pr is not None else None
-    return setup, etree.tostring(setup_pr, encoding="unicode", with_tail=False) if setup_pr is not None else ""
+    if setup_pr is not None and setup_pr.attrib:  # an empty one says nothing (openpyxl writes one)
+        kept["pageSetUpPr"] = _element_text(setup_pr)
+    return kept
 
 
 def _drop_from_calc_chain(data: bytes, sheet_id: int, where: str, path) -> bytes | None:
@@ -392,9 +425,28 @@ def _drop_from_calc_chain(data: bytes, sheet_id: int, where: str, path) -> bytes
     return _xml(root) if any(s != sheet_id for s in effective) else None
 
 
+def _drop_sheet_from_chain(package: Package, workbook: _Workbook, types: _ContentTypes, sheet: _Sheet,
+                           changes: dict[str, bytes], removed: set[str]) -> None:
+    """The calc chain without the formula cells of a sheet that is written anew."""
+    chain = workbook.relationship("calcChain")
+    if chain is None:
+        return
+    data = changes.get(chain[1], package.read(chain[1]))
+    if data is None:
+        return
+    new = _drop_from_calc_chain(data, sheet.sheet_id, chain[1], package.path)
+    if new is None:
+        removed.add(package.find(chain[1]))
+        changes.pop(chain[1], None)
+        workbook.remove_relationship(chain[0])
+        types.remove(chain[1])
+    elif new is not data:
+        changes[chain[1]] = new
+
+
 def write_results_in_place(package: Package, input_sheet: str, table, *, lock: WorkbookLock,
-                           units: dict[str, str] | None = None, formulas: dict | None = None,
-                           progress=None, placeholders=()) -> InPlaceResult:
+                           units: dict[str, str] | None = None, formulas=None, progress=None, placeholders=(),
+                           rules=(), print_setup=None, companions=(), hidden_columns=()) -> InPlaceResult:
     """Write ``table`` as the results sheet of ``input_sheet`` into the workbook of ``package``.
 
     The results sheet that bearingheat marked for ``input_sheet`` is replaced
@@ -405,16 +457,38 @@ def write_results_in_place(package: Package, input_sheet: str, table, *, lock: W
     (then a note says so); ``placeholders`` are sheets that hold nothing of
     the designer's and may be filled although unmarked (the template's empty
     'Results' sheet, :func:`bearingheat.io.excel.template.is_placeholder`).
+    ``companions`` (objects with ``role``, ``base`` name, ``hidden`` and
+    ``render(styles) -> bytes``: :mod:`bearingheat.io.excel.sheets`) are
+    written the same way: the sheet
+    their mark names is replaced, else one is added after the last sheet.
+    ``formulas`` is a dict of (column, row position) -> formula, or a
+    callable that gives it from the companions' names by role (the status
+    formulas name the inputs' copy). ``rules`` are conditional formats,
+    ``print_setup`` a :class:`bearingheat.io.excel.printing.PrintSetup`,
+    ``hidden_columns`` the results sheet's collapsed columns.
     ``lock`` (:func:`bearingheat.io.files.workbook_lock`) is checked just
     before the file is replaced. Returns an :class:`InPlaceResult`.
     """
     workbook = _Workbook(package)
     marks = read_marks(workbook.names())
+    owned = read_companions(workbook.names())
     present = {s.name.casefold() for s in workbook.sheets}
     name, replace, note = choose_results_sheet([s.name for s in workbook.sheets], marks, input_sheet,
                                                placeholders=placeholders)
+    current = next((k for k, (results, source) in marks.items()
+                    if results is not None and results.casefold() == name.casefold() and source == input_sheet), None)
+    stale = [k for k, (results, _) in marks.items() if results is None or results.casefold() not in present]
+    if current is None:  # a results sheet the designer deleted: its pair (and its companions) is taken again
+        current = next((k for k in stale if marks[k][1] == input_sheet), None)
+    k = current if current is not None else 1 + max(list(marks) + list(owned) + [0])
+    chosen: dict[str, tuple[str, bool]] = {}
+    for companion in companions:
+        chosen[companion.role] = choose_companion_sheet(
+            [s.name for s in workbook.sheets], owned.get(k, {}).get(companion.role), companion.base,
+            [name, input_sheet] + [n for n, _ in chosen.values()])
     protection = workbook.child("workbookProtection")
-    if not replace and protection is not None and protection.get("lockStructure") in ("1", "true"):
+    adds = not replace or any(not again for _, again in chosen.values())
+    if adds and protection is not None and protection.get("lockStructure") in ("1", "true"):
         raise _refuse(package.path, "the workbook's structure is protected (Review > Protect Workbook), so no sheet "
                                     "may be added to it")
     changes: dict[str, bytes] = {}
@@ -423,33 +497,40 @@ def write_results_in_place(package: Package, input_sheet: str, table, *, lock: W
     styles_rel = workbook.relationship("styles")
     styles_part = styles_rel[1] if styles_rel else posixpath.join(posixpath.dirname(workbook.part), "styles.xml")
     styles = StyleSheet(package.read(styles_part) if styles_rel else None)
-    page_setup = sheet_pr = ""
+    kept: dict[str, str] = {}
     if replace:
         sheet = next(s for s in workbook.sheets if s.name == name)
-        page_setup, sheet_pr = _kept_setup(package, sheet, input_sheet)
+        kept = _kept_setup(package, sheet, input_sheet)
         if package.find(sheet.part) is None:  # a sheet entry whose part is missing: the part is written anew
             types.override(sheet.part, WORKSHEET_TYPE)
-        chain = workbook.relationship("calcChain")
-        if chain is not None and package.read(chain[1]) is not None:
-            data = package.read(chain[1])
-            new = _drop_from_calc_chain(data, sheet.sheet_id, chain[1], package.path)
-            if new is None:
-                removed.add(package.find(chain[1]))
-                workbook.remove_relationship(chain[0])
-                types.remove(chain[1])
-            elif new is not data:
-                changes[chain[1]] = new
+        _drop_sheet_from_chain(package, workbook, types, sheet, changes, removed)
     else:
         sheet = workbook.add_sheet(name, _new_sheet_part(package, workbook.part))
         types.override(sheet.part, WORKSHEET_TYPE)
-    xml = results_sheet_xml(table, styles.index, units=units, formulas=formulas, page_setup=page_setup,
-                            sheet_pr=sheet_pr, progress=progress, title=name)
-    changes[sheet.part] = xml
-    current = next((k for k, (results, source) in marks.items()
-                    if results is not None and results.casefold() == name.casefold() and source == input_sheet), None)
-    stale = [k for k, (results, _) in marks.items() if results is None or results.casefold() not in present]
-    k = current if current is not None else 1 + max(list(marks) + [0])
-    workbook.set_marks(k, name, input_sheet, stale)
+    names = {role: sheet_name for role, (sheet_name, _) in chosen.items()}
+    for companion in companions:
+        companion_name, again = chosen[companion.role]
+        if again:
+            part = next(s for s in workbook.sheets if s.name == companion_name)
+            _kept_setup(package, part, input_sheet)  # refused when the designer gave it charts, notes ...
+            if package.find(part.part) is None:
+                types.override(part.part, WORKSHEET_TYPE)
+            _drop_sheet_from_chain(package, workbook, types, part, changes, removed)
+            if companion.hidden and part.element.get("state") != "hidden":
+                part.element.set("state", "hidden")
+                workbook.changed = True
+        else:
+            part = workbook.add_sheet(companion_name, _new_sheet_part(package, workbook.part, [sheet.part, *changes]),
+                                      hidden=companion.hidden)
+            types.override(part.part, WORKSHEET_TYPE)
+        changes[part.part] = companion.render(styles)
+    cell_formulas = formulas(names) if callable(formulas) else formulas
+    changes[sheet.part] = results_sheet_xml(table, styles.index, units=units, formulas=cell_formulas, kept=kept,
+                                            print_setup=print_setup, rules=rules, dxf_index=styles.dxf,
+                                            progress=progress, title=name, hidden_columns=hidden_columns)
+    workbook.set_marks(k, name, input_sheet, [j for j in stale if j != k], names)
+    if print_setup is not None:
+        workbook.print_titles(sheet, print_setup.print_titles(sheet_ref(name)))
     workbook.full_calc_on_load()
     if styles.changed:
         changes[styles_part] = styles.to_bytes()
@@ -463,7 +544,7 @@ def write_results_in_place(package: Package, input_sheet: str, table, *, lock: W
     if types.changed:
         changes[types.name] = _xml(types.root)
     written = _write(package, changes, removed, lock)
-    return InPlaceResult(name, replace, [note] if note else [], written)
+    return InPlaceResult(name, replace, [note] if note else [], written, names)
 
 
 def _zip_info(info: zipfile.ZipInfo, compress_type: int | None = None) -> zipfile.ZipInfo:

@@ -28,7 +28,7 @@ from openpyxl.utils import get_column_letter
 from bearingheat.io.excel import style as st
 from bearingheat.io.excel.writer import sheet_layout
 
-__all__ = ["results_sheet_xml", "xstring", "TAB_COLOR", "DEFAULT_MARGINS"]
+__all__ = ["results_sheet_xml", "cells_sheet_xml", "xstring", "TAB_COLOR", "DEFAULT_MARGINS"]
 
 TAB_COLOR = "FF44546A"
 _HEAD = ('<?xml version="1.0" encoding="UTF-8" standalone="yes"?>\n'
@@ -83,26 +83,41 @@ def _cell(ref: str, value, style: int, quote_style: Callable[[], int]) -> str:
     return f'<c r="{ref}" s="{style}" t="inlineStr"><is><t{space}>{xstring(text)}</t></is></c>'
 
 
+#: the worksheet elements after sheetData that a results sheet may have, in CT_Worksheet order
+_AFTER_DATA = ("sheetProtection", "conditionalFormatting", "printOptions", "pageMargins", "pageSetup", "headerFooter",
+               "rowBreaks")
+
+
 def results_sheet_xml(table: pd.DataFrame, style_index: Callable[..., int], *, units: dict[str, str] | None = None,
-                      formulas: dict[tuple[str, int], str] | None = None, page_setup: str = "",
-                      sheet_pr: str = "", progress=None, title: str = "Results") -> bytes:
+                      formulas: dict[tuple[str, int], str] | None = None, kept: dict[str, str] | None = None,
+                      print_setup=None, rules=(), dxf_index: Callable[[str], int] | None = None,
+                      progress=None, title: str = "Results", hidden_columns=()) -> bytes:
     """The worksheet part of a results sheet.
 
-    ``style_index(name, quote=False)`` gives the cellXfs index of a named
-    style of :mod:`bearingheat.io.excel.style`
+    ``style_index(name, quote=False, number_format=None)`` gives the cellXfs
+    index of a named style of :mod:`bearingheat.io.excel.style`
     (:meth:`bearingheat.io.excel.stylesheet.StyleSheet.index`).
-    ``formulas`` maps (column, row position) to formula text ('=...').
-    ``page_setup`` is the print setup XML kept from the sheet this one
-    replaces (printOptions, pageMargins, pageSetup, headerFooter), ``sheet_pr``
-    extra children of sheetPr (pageSetUpPr). ``progress``: an object with
-    start, update, finish.
+    ``formulas`` maps (column, row position) to formula text ('=...'); a
+    status formula keeps the colour of calc's status. ``kept`` holds the
+    print setup and protection XML of the sheet this one replaces by element
+    name (sheetProtection, printOptions, pageMargins, pageSetup,
+    headerFooter, pageSetUpPr); ``print_setup`` (a
+    :class:`bearingheat.io.excel.printing.PrintSetup`) fills in what is not
+    kept. ``rules`` are conditional formats
+    (:class:`bearingheat.io.excel.freshness.ConditionalRule`), ``dxf_index``
+    gives their differential formats' indices. ``hidden_columns`` are grouped
+    and collapsed. ``progress``: an object with start, update, finish.
     """
     formulas = formulas or {}
+    kept = dict(kept or {})
     layout = sheet_layout(table, units)
     n_cols, n_rows = len(layout.headers), len(table)
     letters = [get_column_letter(c) for c in range(1, n_cols + 1)]
-    styles = {name: style_index(name) for name in set(layout.styles) | set(st.STATUS.values())
-              | {st.FORMULA, st.RESULT, st.HEADER_RESULT, st.UNITS_RESULT}}
+    column_styles = [style_index(name, number_format=fmt) if fmt else style_index(name)
+                     for name, fmt in zip(layout.styles, layout.formats)]
+    formula_styles = [style_index(st.FORMULA, number_format=layout.formula_format(c)) for c in range(n_cols)]
+    styles = {name: style_index(name) for name in set(st.STATUS.values()) | {st.RESULT, st.HEADER_RESULT,
+                                                                                st.UNITS_RESULT}}
     quoted: dict[str, int] = {}
 
     def quote_of(name: str) -> Callable[[], int]:
@@ -114,48 +129,83 @@ def results_sheet_xml(table: pd.DataFrame, style_index: Callable[..., int], *, u
 
     columns = list(table.columns)
     status_col = columns.index("status") if "status" in columns else None
-    formula_cols = {columns.index(header): header for header, _ in formulas}
+    formula_cols = {columns.index(header): header for header in {header for header, _ in formulas}}
     last = f"{letters[-1]}{n_rows + 2}" if n_cols else "A1"
-    parts = [_HEAD, f'<sheetPr><tabColor rgb="{TAB_COLOR}"/>{sheet_pr}</sheetPr>', f'<dimension ref="A1:{last}"/>',
-             '<sheetViews><sheetView workbookViewId="0"><pane ySplit="2" topLeftCell="A3" activePane="bottomLeft" '
-             'state="frozen"/><selection pane="bottomLeft" activeCell="A3" sqref="A3"/></sheetView></sheetViews>',
-             '<sheetFormatPr defaultRowHeight="15"/>']
+    setup = dict(print_setup.xml()) if print_setup is not None else {}
+    if "pageSetup" in kept:  # the designer's page setup: fit to pages only where it says so
+        setup["pageSetUpPr"] = ""
+    setup.update(kept)
+    page_pr = setup.pop("pageSetUpPr", "")
+    parts = [_HEAD, f'<sheetPr><tabColor rgb="{TAB_COLOR}"/>{page_pr}</sheetPr>', f'<dimension ref="A1:{last}"/>',
+             '<sheetViews><sheetView workbookViewId="0"><pane ySplit="2" topLeftCell="A3" '
+             'activePane="bottomLeft" state="frozen"/><selection pane="bottomLeft" activeCell="A3" sqref="A3"/>'
+             '</sheetView></sheetViews>',
+             '<sheetFormatPr defaultRowHeight="15"' + (' outlineLevelCol="1"/>' if hidden_columns else "/>")]
+    hidden = {columns.index(header) + 1 for header in hidden_columns}
     if n_cols:
-        parts.append("<cols>" + "".join(f'<col min="{c}" max="{c}" width="{w:g}" customWidth="1"/>'
+        parts.append("<cols>" + "".join(f'<col min="{c}" max="{c}" width="{w:g}" customWidth="1"'
+                                        + (' hidden="1" outlineLevel="1"/>' if c in hidden else "/>")
                                         for c, w in enumerate(layout.widths, start=1)) + "</cols>")
     parts.append("<sheetData>")
     header_style, units_style = styles[st.HEADER_RESULT], styles[st.UNITS_RESULT]
     for row, texts, style in ((1, layout.headers, header_style), (2, layout.units, units_style)):
         name = st.HEADER_RESULT if row == 1 else st.UNITS_RESULT
-        cells = "".join(_cell(f"{letters[c]}{row}", texts[c], style, quote_of(name)) for c in range(n_cols))
-        parts.append(f'<row r="{row}">{cells}</row>')
+        title_cells = "".join(_cell(f"{letters[c]}{row}", texts[c], style, quote_of(name)) for c in range(n_cols))
+        parts.append(f'<row r="{row}">{title_cells}</row>')
     if progress is not None:
         progress.start(n_rows, f"writing {title}")
-    column_styles = [styles[name] for name in layout.styles]
     column_quotes = [quote_of(name) for name in layout.styles]
     for position in range(n_rows):
         row = position + 3
         cells = []
         for c in range(n_cols):
             ref = f"{letters[c]}{row}"
-            if c in formula_cols and (formula_cols[c], position) in formulas:
-                text = formulas[(formula_cols[c], position)].removeprefix("=")
-                cells.append(f'<c r="{ref}" s="{styles[st.FORMULA]}"><f>{escape(text)}</f></c>')
-                continue
             value = layout.values[c][position]
             if isinstance(value, (float, np.floating)) and math.isnan(value):
                 value = None
+            if c in formula_cols and (formula_cols[c], position) in formulas:
+                text = formulas[(formula_cols[c], position)].removeprefix("=")
+                style = styles[st.STATUS.get(str(value), st.RESULT)] if c == status_col else formula_styles[c]
+                cells.append(f'<c r="{ref}" s="{style}"><f>{escape(text)}</f></c>')
+                continue
             if c == status_col:
                 name = st.STATUS.get(str(value), st.RESULT)
                 cells.append(_cell(ref, value, styles[name], quote_of(name)))
             else:
                 cells.append(_cell(ref, value, column_styles[c], column_quotes[c]))
-        parts.append(f'<row r="{row}">{"".join(cells)}</row>')
+        height = layout.heights.get(position)
+        size = f' ht="{height:g}" customHeight="1"' if height else ""
+        parts.append(f'<row r="{row}"{size}>{"".join(cells)}</row>')
         if progress is not None and position % 500 == 0:
             progress.update(position)
     if progress is not None:
         progress.finish()
     parts.append("</sheetData>")
-    parts.append(page_setup or DEFAULT_MARGINS)
+    if rules:
+        if dxf_index is None:
+            raise ValueError("results_sheet_xml: conditional formats need dxf_index")
+        setup["conditionalFormatting"] = "".join(
+            f'<conditionalFormatting sqref="{rule.sqref}"><cfRule type="expression" dxfId="{dxf_index(rule.dxf)}" '
+            f'priority="{k}"><formula>{escape(rule.formula)}</formula></cfRule></conditionalFormatting>'
+            for k, rule in enumerate(rules, start=1))
+    setup.setdefault("pageMargins", DEFAULT_MARGINS)
+    parts.extend(setup[name] for name in _AFTER_DATA if setup.get(name))
+    parts.append("</worksheet>")
+    return "".join(parts).encode("utf-8")
+
+
+def cells_sheet_xml(cells: list[tuple[int, int, object]], style: int, quote_style: Callable[[], int]) -> bytes:
+    """The worksheet part of a sheet of plain cells (row, column index, value), e.g. the hidden copy of the
+    inputs of :mod:`bearingheat.io.excel.freshness`: numbers, booleans and text (text always as text)."""
+    by_row: dict[int, list[tuple[int, object]]] = {}
+    for row, col, value in cells:
+        by_row.setdefault(row, []).append((col, value))
+    parts = [_HEAD, '<sheetData>']
+    for row in sorted(by_row):
+        entries = "".join(_cell(f"{get_column_letter(col)}{row}", value, style, quote_style)
+                          for col, value in sorted(by_row[row], key=lambda item: item[0]))
+        parts.append(f'<row r="{row}">{entries}</row>')
+    parts.append("</sheetData>")
+    parts.append(DEFAULT_MARGINS)
     parts.append("</worksheet>")
     return "".join(parts).encode("utf-8")

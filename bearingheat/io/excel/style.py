@@ -10,7 +10,8 @@ from __future__ import annotations
 from openpyxl.styles import Alignment, Border, Font, NamedStyle, PatternFill, Side
 
 __all__ = ["STYLE_NAMES", "register_styles", "INPUT", "UNITS", "HEADER_INPUT", "HEADER_OPTIONAL",
-           "HEADER_RESULT", "UNITS_RESULT", "RESULT", "RESULT_NUMBER", "FORMULA", "STATUS"]
+           "HEADER_RESULT", "UNITS_RESULT", "RESULT", "RESULT_NUMBER", "FORMULA", "MESSAGE", "STATUS", "THREE_DIGITS",
+           "NUMBER_FORMATS", "number_format", "DIFFERENTIAL", "STALE", "RECALCULATE"]
 
 _THIN = Side(style="thin", color="BFBFBF")
 _BOX = Border(left=_THIN, right=_THIN, top=_THIN, bottom=_THIN)
@@ -24,9 +25,35 @@ UNITS_RESULT = "bearingheat result units"
 RESULT = "bearingheat result"
 RESULT_NUMBER = "bearingheat result number"
 FORMULA = "bearingheat formula"
+#: the message column: its text wraps
+MESSAGE = "bearingheat message"
 #: status value -> style of its cell
 STATUS = {"ok": "bearingheat status ok", "warning": "bearingheat status warning",
           "error": "bearingheat status error"}
+
+#: at least three significant digits and no more decimals than that (138, 21.5, 7.11, 0.35)
+THREE_DIGITS = "[>=100]0;[>=10]0.0;0.00"
+#: number format of a result column by its unit: speeds and loads as integers, torques and powers to three
+#: significant digits, temperatures and viscosities to one decimal; coefficients (unit 1) stay General
+NUMBER_FORMATS = {"1/min": "0", "N": "0", "N*mm": THREE_DIGITS, "W": THREE_DIGITS, "W*h": THREE_DIGITS,
+                  "degC": "0.0", "delta_degC": "0.0", "mm^2/s": "0.0", "mm": "0.0", "mm^3/(s*min)": "0",
+                  "h": "0.0"}
+
+
+def number_format(unit: str) -> str:
+    """The number format of a result column of unit ``unit`` ('0.00' for units without their own).
+
+    >>> number_format("1/min"), number_format("N*mm"), number_format("m/s")
+    ('0', '[>=100]0;[>=10]0.0;0.00', '0.00')
+    """
+    return NUMBER_FORMATS.get(unit, "0.00")
+
+
+#: differential formats of the conditional formats (dxf): results a changed input made stale are struck through
+#: in grey; the status that asks for a recalculation is bold orange
+STALE = "stale"
+RECALCULATE = "recalculate"
+DIFFERENTIAL = {STALE: Font(strike=True, color="808080"), RECALCULATE: Font(bold=True, color="C65911")}
 
 
 def _definitions() -> list[NamedStyle]:
@@ -53,6 +80,7 @@ def _definitions() -> list[NamedStyle]:
         style(RESULT, fill="EDEDED"),
         style(RESULT_NUMBER, fill="EDEDED", number_format="0.00"),
         style(FORMULA, fill="E2EFDA", number_format="0.00"),
+        style(MESSAGE, fill="EDEDED", wrap=True),
         style(STATUS["ok"], fill="EDEDED", font=Font(name="Calibri", size=11, color="375623")),
         style(STATUS["warning"], fill="EDEDED", font=Font(name="Calibri", size=11, bold=True, color="C65911")),
         style(STATUS["error"], fill="EDEDED", font=Font(name="Calibri", size=11, bold=True, color="C00000")),

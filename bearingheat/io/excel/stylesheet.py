@@ -7,8 +7,11 @@ and borders, and the named cell styles ("bearingheat result", ...) that the
 designer sees in Excel's style gallery. Existing entries keep their index
 (ECMA-376 Part 1, 18.8: ``cellXfs``, ``cellStyleXfs``, ``fonts``, ``fills``,
 ``borders``, ``cellStyles``); an entry equal to one already there is reused,
-so a second run adds nothing. The number formats used are built in
-(``General`` = 0, ``0.00`` = 2), so ``numFmts`` is not touched.
+so a second run adds nothing. A number format that is not built in
+(``General`` = 0, ``0`` = 1, ``0.00`` = 2, ``0.0`` is not) is found in
+``numFmts`` or appended with the next free id (164 and up); the
+differential formats of the conditional formats (``dxfs``) are found or
+appended the same way.
 """
 from __future__ import annotations
 
@@ -24,6 +27,8 @@ _M = f"{{{MAIN_NS}}}"
 _ORDER = ("numFmts", "fonts", "fills", "borders", "cellStyleXfs", "cellXfs", "cellStyles", "dxfs", "tableStyles",
           "colors", "extLst")
 _BUILTIN_FORMATS = {"General": 0, "0": 1, "0.00": 2}
+#: the first id of a custom number format (ids below are built in)
+_FIRST_CUSTOM_FORMAT = 164
 #: a styles part for a workbook that has none: the defaults Excel expects at index 0 (and fill 1)
 MINIMAL_STYLES = (
     f'<?xml version="1.0" encoding="UTF-8" standalone="yes"?>\n<styleSheet xmlns="{MAIN_NS}">'
@@ -105,7 +110,8 @@ class StyleSheet:
         self.original = data
         self.root = etree.fromstring(data if data is not None else MINIMAL_STYLES, _PARSER)
         self.changed = data is None
-        self._cache: dict[tuple[str, bool], int] = {}
+        self._cache: dict[tuple[str, bool, str | None], int] = {}
+        self._dxf_cache: dict[str, int] = {}
         self._definitions = {s.name: s for s in st._definitions()}
 
     def _collection(self, name: str) -> etree._Element:
@@ -153,11 +159,42 @@ class StyleSheet:
         self.changed = True
         return index
 
-    def index(self, name: str, quote: bool = False) -> int:
+    def number_format_id(self, code: str) -> int:
+        """The id of number format ``code``: built in, found in numFmts, or appended with the next free id."""
+        if code in _BUILTIN_FORMATS:
+            return _BUILTIN_FORMATS[code]
+        formats = self._collection("numFmts")
+        used = [_FIRST_CUSTOM_FORMAT - 1]
+        for element in formats:
+            if not isinstance(element.tag, str):
+                continue
+            if element.get("formatCode") == code:
+                return int(element.get("numFmtId"))
+            used.append(int(element.get("numFmtId", "0")))
+        number = max(used) + 1
+        formats.append(_el("numFmt", {"numFmtId": number, "formatCode": code}))
+        formats.set("count", str(len([c for c in formats if isinstance(c.tag, str)])))
+        self.changed = True
+        return number
+
+    def dxf(self, name: str) -> int:
+        """The dxfs index of bearingheat's differential format ``name``
+        (:data:`bearingheat.io.excel.style.DIFFERENTIAL`)."""
+        if name not in self._dxf_cache:
+            font = st.DIFFERENTIAL[name]
+            color = _argb(getattr(font.color, "rgb", None)) if font.color is not None else None
+            element = _el("dxf", None, _el("font", None, _el("b") if font.b else None,
+                                           _el("strike") if font.strike else None,
+                                           _el("color", {"rgb": color}) if color else None))
+            self._dxf_cache[name] = self._find_or_append("dxfs", element)
+        return self._dxf_cache[name]
+
+    def index(self, name: str, quote: bool = False, number_format: str | None = None) -> int:
         """The cellXfs index of bearingheat's named style ``name`` (``quote``: with Excel's quote prefix, so
-        text such as '=A1' stays text when the cell is edited)."""
-        if (name, quote) in self._cache:
-            return self._cache[(name, quote)]
+        text such as '=A1' stays text when the cell is edited; ``number_format``: another number format than
+        the style's own)."""
+        if (name, quote, number_format) in self._cache:
+            return self._cache[(name, quote, number_format)]
         definition = self._definitions[name]
         font = self._find_or_append("fonts", _font(definition.font), minimum=1, defaults=(
             f'<font xmlns="{MAIN_NS}"><sz val="11"/><name val="Calibri"/></font>'.encode(),))
@@ -166,20 +203,22 @@ class StyleSheet:
             f'<fill xmlns="{MAIN_NS}"><patternFill patternType="gray125"/></fill>'.encode()))
         border = self._find_or_append("borders", _border(definition.border), minimum=1, defaults=(
             f'<border xmlns="{MAIN_NS}"><left/><right/><top/><bottom/><diagonal/></border>'.encode(),))
-        number_format = _BUILTIN_FORMATS.get(definition.number_format, 0)
-        attrib = {"numFmtId": number_format, "fontId": font, "fillId": fill, "borderId": border,
+        style_format = _BUILTIN_FORMATS.get(definition.number_format, 0)
+        attrib = {"numFmtId": style_format, "fontId": font, "fillId": fill, "borderId": border,
                   "applyNumberFormat": 1, "applyFont": 1, "applyFill": 1, "applyBorder": 1}
         alignment = _alignment(definition.alignment)
         if alignment is not None:
             attrib["applyAlignment"] = 1
         style_xf = self._named_style(name, attrib, alignment)
         cell_attrib = dict(attrib, xfId=style_xf)
+        if number_format is not None:
+            cell_attrib["numFmtId"] = self.number_format_id(number_format)
         if quote:
             cell_attrib["quotePrefix"] = 1
         index = self._find_or_append("cellXfs", _el("xf", cell_attrib, _alignment(definition.alignment)),
                                      minimum=1, defaults=(
             f'<xf xmlns="{MAIN_NS}" numFmtId="0" fontId="0" fillId="0" borderId="0" xfId="0"/>'.encode(),))
-        self._cache[(name, quote)] = index
+        self._cache[(name, quote, number_format)] = index
         return index
 
     def to_bytes(self) -> bytes:

@@ -31,7 +31,9 @@ from openpyxl.worksheet.datavalidation import DataValidation
 from bearingheat.calc import contract
 from bearingheat.calc.contract import parse_header
 from bearingheat.calc.models import RESULT_UNITS
+from bearingheat.catalogue.bearings import designations
 from bearingheat.io.excel import style as st
+from bearingheat.io.excel.printing import PAGE_MARGINS
 from bearingheat.io.excel.reader import stored_cells
 
 __all__ = ["TEMPLATE_COLUMNS", "LISTS", "PLACEHOLDER", "is_placeholder", "build_template", "build_example",
@@ -40,17 +42,25 @@ __all__ = ["TEMPLATE_COLUMNS", "LISTS", "PLACEHOLDER", "is_placeholder", "build_
 #: (name, unit, required, width, what a designer types) in sheet order, from the column contract; Fr in column F
 TEMPLATE_COLUMNS = [(c.name, c.template[0], c.required, c.template[1], c.meaning)
                     for c in contract.template_columns()]
-#: the drop-down lists: (contract column, title on the hidden Lists sheet), in the Lists sheet's column order
-LISTS = (("type", "bearing type"), ("lubrication", "lubrication"), ("arrangement", "arrangement"),
-         ("n_per_method", "n_per method"))
+#: titles of the lists on the hidden Lists sheet where they differ from the column's name
+_LIST_TITLES = {"type": "bearing type", "n_per_method": "n_per method"}
+#: the drop-down lists: (contract column, title on the hidden Lists sheet, values), in the Lists sheet's column
+#: order: the designations of the bearing table, then every template column whose values the contract lists
+LISTS = (("designation", "designation", designations()),) + tuple(
+    (name, _LIST_TITLES.get(name, name), contract.choices(name)) for name, *_rest in TEMPLATE_COLUMNS
+    if contract.choices(name))
+#: only the designation list takes other values too (a designation with suffixes, or of another catalogue)
+_OPEN_LISTS = ("designation",)
 #: rows of the Supports sheet that carry the drop-down lists and the input style (row 3 onwards)
 LIST_ROWS = 10000
 #: the two example rows of the template (taken from examples/gearbox_shaft.csv)
 TEMPLATE_EXAMPLES = [
     {"id": "example: input shaft A", "designation": "6208", "d": 40, "D": 80, "n": 1480, "Fr": 3.2, "Fa": 0.9,
-     "nu": 40, "lubrication": "oil_bath", "arrangement": "single", "B": 18, "C0": 18},
+     "nu": 40, "lubrication": "oil_bath", "arrangement": "single", "B": 18, "C0": 18, "T_amb": 20,
+     "T_bearing": 70, "n_G": 20000},
     {"id": "example: output shaft A", "designation": "30208-A", "d": 40, "D": 80, "n": 310, "Fr": 6.0, "Fa": 2.4,
-     "nu": 40, "lubrication": "oil_bath", "arrangement": "single", "B": 18, "C0": 66, "Y": 1.6},
+     "nu": 40, "lubrication": "oil_bath", "arrangement": "single", "B": 18, "C0": 66, "Y": 1.6, "T": 19.75,
+     "T_amb": 20, "T_bearing": 70, "n_G": 9000},
 ]
 #: the text of the template's empty Results sheet (:func:`is_placeholder`)
 PLACEHOLDER = "bearingheat calc fills this sheet"
@@ -66,24 +76,43 @@ _INSTRUCTIONS = [
     ("2. Units are in row 2 and you may change them: type kN, N, lbf or kgf for loads; 1/min, rpm, U/min, "
      "min^-1 or Hz for speed; mm or in for lengths; mm^2/s or cSt for viscosity. The numbers below are read "
      "in the unit you type.", "text"),
-    ("3. Pick lubrication, arrangement and (if you give no designation) the bearing type from the drop-down "
-     "lists.", "text"),
+    (f"3. Pick the designation (the {len(designations())} bearings of the bearing table, Schaeffler HR 1, 2006), "
+     "the lubrication, the arrangement, the model and (if you give no designation) the bearing type from the "
+     "drop-down lists. T_amb and T_bearing (and an oil: iso_vg, or nu40 and nu100) give the heat balance: "
+     "n_thr, n_per and the operating temperature T_op.", "text"),
     ("4. Save the workbook and run:   bearingheat calc THIS.xlsx -o RESULTS.xlsx", "code"),
     ("   The results appear on the sheet 'Results' of RESULTS.xlsx, one row per support, with a status "
-     "(ok, warning, error) and a message that names the cell to fix, e.g. Supports!F7.", "text"),
-    ("   Add --formulas to get live Excel formulas for P1, M0, M1, M2, MR and NR: change n, Fr, Fa or nu "
-     "in 'Supports' and the results follow. f0, f1 and f2 stay fixed values from the tables.", "text"),
+     "(ok, warning, error) and a message that names the cell to fix, e.g. Supports!F7. The sheet prints on "
+     "landscape pages of 30 supports with the header rows and the id columns on every page; --pdf also "
+     "writes RESULTS.pdf (with LibreOffice).", "text"),
     ("   --in-place writes the 'Results' sheet into this workbook instead (everything else is kept; "
      "workbooks with charts, images or pivot tables are refused).", "text"),
     ("   From Python: bearingheat.io.excel.calc_workbook('THIS.xlsx', 'RESULTS.xlsx')", "code"),
+    ("Which results are live (--formulas)", "title"),
+    ("   bearingheat calc THIS.xlsx -o RESULTS.xlsx --formulas", "code"),
+    ("Live formulas: f0, f1, P0, P1, M0, M1, M2, MR and NR, and the helper columns f2, dM, n, nu, Fr and Fa (the "
+     "operating point in catalogue units). Change n, Fr, Fa, nu, d, D, B, C0, X0, Y0, Y, e, the lubrication "
+     "or an f0, f1 or f2 you typed on 'Supports' and they follow at once.", "text"),
+    ("Values: n_thr, n_per, T_op, nu_op, Q_S and Q_L (roots of the heat balance) and every other column of an "
+     "extension. The workbook keeps a hidden copy of the inputs calc read (sheet 'Calc inputs'): as soon as an "
+     "input differs, the status says 'recalculate with bearingheat' and these values are struck through.",
+     "text"),
+    ("A change the formulas cannot follow (designation, type, series, arrangement, model, contact angle; any "
+     "change of a row whose viscosity calc took from the oil's curve or whose f2 it read off the chart) "
+     "strikes every result of the row: 'recalculate with bearingheat (every result)'. Running calc again "
+     "clears the marks.", "text"),
     ("Columns", "title"),
 ]
 _AFTER_COLUMNS = [
     ("Results", "title"),
-    ("f0, f1: friction coefficients from the tables of seed 002 (Schaeffler, pp. 64-70). P1: equivalent load "
-     "of M1. M0: speed-dependent torque; M1: load-dependent torque; M2: axial-load torque of cylindrical "
-     "roller bearings; MR = M0 + M1 + M2 [N*mm]; NR = MR*n/9550: friction power loss [W].", "text"),
-    ("Further input columns of the calc extensions (e.g. T [mm], T_amb [degC] of the heat balance) may be "
+    ("f0, f1: friction coefficients from the tables of the Schaeffler rolling bearing catalogue, chapter "
+     "'Friction and increases in temperature', pp. 64-70. P0: static equivalent load; P1: equivalent load of "
+     "M1. M0: speed-dependent torque; M1: load-dependent torque; M2: axial-load torque of cylindrical roller "
+     "bearings; MR = M0 + M1 + M2 [N*mm]; NR = MR*n/9550: friction power loss [W].", "text"),
+    ("n_thr: thermal reference speed (ISO 15312); n_per: thermally permissible speed at T_bearing; T_op and "
+     "nu_op: operating temperature and viscosity at the speed n; Q_S, Q_L: heat carried away through the seat "
+     "and by the circulating oil (Schaeffler HR 1, 2006).", "text"),
+    ("Further input columns of the calc extensions (e.g. z, Dw and dm_pitch of the ball contact check) may be "
      "added after the last column: type the name in row 1 and the unit in row 2.", "text"),
     ("Full documentation: docs/excel.md of the bearingheat package.", "text"),
 ]
@@ -91,18 +120,27 @@ _AFTER_COLUMNS = [
 
 def _lists_sheet(workbook) -> None:
     ws = workbook.create_sheet("Lists")
-    for col, (name, title) in enumerate(LISTS, start=1):
+    for col, (_name, title, values) in enumerate(LISTS, start=1):
         ws.cell(1, col, title)
-        for row, value in enumerate(contract.choices(name), start=2):
+        for row, value in enumerate(values, start=2):
             ws.cell(row, col, value)
     ws.sheet_state = "hidden"
 
 
-def _list_validation(letter: str, source: str, what: str, choices: list[str]):
-    dv = DataValidation(type="list", formula1=source, allow_blank=True, showErrorMessage=True,
-                        showInputMessage=True, errorTitle=f"Not a {what}",
-                        error=f"Pick a {what} from the list: {', '.join(choices)[:200]}",
-                        promptTitle=what, prompt=f"Pick a {what} from the list")
+def _list_validation(letter: str, source: str, what: str, choices, name: str):
+    if name in _OPEN_LISTS:  # a warning the designer may pass: calc reads designations with suffixes too
+        dv = DataValidation(type="list", formula1=source, allow_blank=True, showErrorMessage=True,
+                            errorStyle="warning", showInputMessage=True, errorTitle=f"Not in the {what} list",
+                            error=f"Not one of the {len(choices)} designations of the bearing table (Schaeffler "
+                                  "HR 1, 2006). Suffixes (6208-2Z) are read; another bearing needs d, D, B and C0 "
+                                  "typed in. Keep it?",
+                            promptTitle=what, prompt="Pick a designation or type one (suffixes such as -2Z are "
+                                                     "read too)")
+    else:
+        dv = DataValidation(type="list", formula1=source, allow_blank=True, showErrorMessage=True,
+                            showInputMessage=True, errorTitle=f"Not a {what}",
+                            error=f"Pick a {what} from the list: {', '.join(choices)[:200]}",
+                            promptTitle=what, prompt=f"Pick a {what} from the list")
     dv.add(f"{letter}3:{letter}{LIST_ROWS + 2}")
     return dv
 
@@ -135,24 +173,27 @@ def _supports_sheet(workbook, rows: list[dict], units: dict[str, str] | None = N
             if name in values and values[name] is not None:
                 ws.cell(row, col, values[name])
     ws.freeze_panes = "C3"
-    lists_column = {name: get_column_letter(col) for col, (name, _title) in enumerate(LISTS, start=1)}
-    for name, title in sorted(LISTS, key=lambda item: list(letters).index(item[0])):  # in sheet order
-        values = list(contract.choices(name))
-        source = f"Lists!${lists_column[name]}$2:${lists_column[name]}${len(values) + 1}"
-        ws.add_data_validation(_list_validation(letters[name], source, title, values))
+    lists_column = {name: get_column_letter(col) for col, (name, *_rest) in enumerate(LISTS, start=1)}
+    for name, title, choices in sorted(LISTS, key=lambda item: list(letters).index(item[0])):  # in sheet order
+        source = f"Lists!${lists_column[name]}$2:${lists_column[name]}${len(choices) + 1}"
+        ws.add_data_validation(_list_validation(letters[name], source, title, choices, name))
     ws.sheet_properties.tabColor = "FFD966"
 
 
 def _results_sheet(workbook) -> None:
     ws = workbook.create_sheet("Results")
     headers = [("row", "-"), ("id", "-"), ("designation", "-")]
-    headers += [(name, unit) for name, unit in RESULT_UNITS.items()] + [("status", "-"), ("message", "-")]
+    headers += [(name, unit) for name, unit in RESULT_UNITS.items()]
+    headers += [(name, unit or "-") for name, unit in contract.output_units(owner="thermal").items()]
+    headers += [("status", "-"), ("message", "-")]
     for col, (name, unit) in enumerate(headers, start=1):
         ws.cell(1, col, name).style = st.HEADER_RESULT
         ws.cell(2, col, unit).style = st.UNITS_RESULT
         ws.column_dimensions[get_column_letter(col)].width = 80 if name == "message" else (
             24 if name in ("id", "designation") else 11)
     ws.cell(3, 1, PLACEHOLDER).style = st.RESULT
+    for side, inches in PAGE_MARGINS.items():  # the margins of the printed results (calc keeps a sheet's margins)
+        setattr(ws.page_margins, side, inches)
     ws.freeze_panes = "A3"
     ws.sheet_properties.tabColor = "44546A"
 

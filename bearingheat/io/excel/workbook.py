@@ -26,21 +26,27 @@ import numpy as np
 import pandas as pd
 from openpyxl.workbook.defined_name import DefinedName
 
+from bearingheat.calc.contract import columns
+from bearingheat.calc.duty import duty_cycle, has_duty_cycle
 from bearingheat.calc.models import DEFAULT_MODEL
 from bearingheat.calc.table import calc
-from bearingheat.calc.thermal import DEFAULT_SPEED_FACTOR_METHOD
+from bearingheat.calc.thermal import DEFAULT_SPEED_FACTOR_METHOD, DEFAULT_VISCOSITY_AT
 from bearingheat.errors import ExcelError, F2ChartError, InputError, WorkbookContentError
-from bearingheat.io.excel.formulas import live_formulas
-from bearingheat.io.excel.ownership import INPUT_MARK, RESULTS_MARK, choose_results_sheet, mark_value, read_marks
+from bearingheat.io.excel.ownership import (COMPANION_MARKS, INPUT_MARK, RESULTS_MARK, choose_companion_sheet,
+                                            choose_results_sheet, mark_value, read_companions, read_marks)
 from bearingheat.io.excel.package import Package, open_package, write_results_in_place
 from bearingheat.io.excel.reader import EXCEL_SUFFIXES, SheetInfo, contract_name, open_workbook, read_sheet
 from bearingheat.io.excel.safety import unsupported_content
 from bearingheat.io.excel.template import is_placeholder
-from bearingheat.io.excel.writer import atomic_save, fill_sheet, install_sheet, result_table
+from bearingheat.io.excel.sheets import results_sheets
+from bearingheat.io.excel.writer import atomic_save, fill_sheet, install_sheet
 from bearingheat.io.files import safe_output, workbook_lock
 from bearingheat.io.tables import write_csv
 
 __all__ = ["calc_workbook", "WorkbookRun"]
+
+#: the input columns of a duty cycle (support, case, time_share, duration)
+DUTY_COLUMNS = columns(owner="duty")
 
 
 def _mark_uncached(result: pd.DataFrame, info: SheetInfo) -> None:
@@ -56,6 +62,23 @@ def _mark_uncached(result: pd.DataFrame, info: SheetInfo) -> None:
         result.at[row, "message"] = f"{text}; {current}" if current else text
         result.at[row, "status"] = "error"
         result.loc[row, numeric] = np.nan
+
+
+def _duty_cycle(result: pd.DataFrame, info: SheetInfo) -> pd.DataFrame | None:
+    """The duty cycle summary of a sheet whose ``support`` column holds supports (None without one).
+
+    The template has the columns of a duty cycle whether a designer uses
+    them or not: an empty one counts as absent. The units of the units row
+    go into the headers, as calc's functions read them.
+    """
+    empty = [header for name in DUTY_COLUMNS if (header := info.headers.get(name)) in result.columns
+             and result[header].isna().all()]
+    result = result.drop(columns=empty)
+    if not has_duty_cycle(result):
+        return None
+    named = {header: f"{header} [{unit}]" for header, unit in info.units.items()
+             if unit not in ("", "-", "1") and "[" not in header and header in result.columns}
+    return duty_cycle(result.rename(columns=named))
 
 
 def _input_error(exc: Exception, info: SheetInfo) -> ExcelError:
@@ -75,7 +98,11 @@ class WorkbookRun:
     """What :func:`calc_workbook` did: the results, where they went, what was left out, what to tell the user.
 
     ``notes`` are sentences for the user, e.g. that a sheet of theirs named
-    'Results' was kept and the results went to 'Results (2)'.
+    'Results' was kept and the results went to 'Results (2)'; ``companions``
+    the further sheets written by role ('snapshot': the hidden copy of the
+    inputs of ``formulas=True``, 'duty': the duty cycle summary); ``duty``
+    the duty cycle summary of a table with a ``support`` column
+    (:func:`bearingheat.calc.duty.duty_cycle`), None without one.
     """
 
     result: pd.DataFrame
@@ -84,12 +111,17 @@ class WorkbookRun:
     results_sheet: str | None
     dropped: list[str]
     notes: list[str] = field(default_factory=list)
+    companions: dict[str, str] = field(default_factory=dict)
+    duty: pd.DataFrame | None = None
 
 
-def _mark_results_sheet(workbook, input_sheet: str, placeholders: list[str]) -> tuple[str, str | None]:
-    """(results sheet name, note) for an openpyxl workbook (the -o copy), with its ownership marks set."""
+def _mark_results_sheet(workbook, input_sheet: str, placeholders: list[str], roles: dict[str, str]
+                        ) -> tuple[str, str | None, dict[str, str]]:
+    """(results sheet name, note, companion sheets by role) for an openpyxl workbook (the -o copy), with their
+    ownership marks set; ``roles`` maps the companions' roles to the names they take when new."""
     names = workbook.defined_names
-    marks = read_marks((name, defined.attr_text) for name, defined in names.items())
+    pairs = [(name, defined.attr_text) for name, defined in names.items()]
+    marks, owned = read_marks(pairs), read_companions(pairs)
     name, _, note = choose_results_sheet(workbook.sheetnames, marks, input_sheet, placeholders=placeholders)
     present = {s.casefold() for s in workbook.sheetnames} | {name.casefold()}
     k = next((k for k, (results, source) in marks.items()
@@ -98,16 +130,22 @@ def _mark_results_sheet(workbook, input_sheet: str, placeholders: list[str]) -> 
         if results is None or results.casefold() not in present:
             for prefix in (RESULTS_MARK, INPUT_MARK):
                 names.pop(f"{prefix}{j}", None)
-    k = k if k is not None else 1 + max(list(marks) + [0])
-    for prefix, sheet in ((RESULTS_MARK, name), (INPUT_MARK, input_sheet)):
+    k = k if k is not None else 1 + max(list(marks) + list(owned) + [0])
+    companions: dict[str, str] = {}
+    for role, base in roles.items():
+        companions[role], _ = choose_companion_sheet(workbook.sheetnames, owned.get(k, {}).get(role), base,
+                                                     [name, input_sheet, *companions.values()])
+    marked = [(RESULTS_MARK, name), (INPUT_MARK, input_sheet)]
+    marked += [(COMPANION_MARKS[role], sheet) for role, sheet in companions.items()]
+    for prefix, sheet in marked:
         names[f"{prefix}{k}"] = DefinedName(f"{prefix}{k}", attr_text=mark_value(sheet), hidden=True)
-    return name, note
+    return name, note, companions
 
 
 def calc_workbook(path, output=None, *, sheet: str | None = None, in_place: bool = False, formulas: bool = False,
                   model: str = DEFAULT_MODEL, n_per_method: str = DEFAULT_SPEED_FACTOR_METHOD, f2_chart=None,
                   effects=None, keep_vba: bool = True,
-                  progress=None) -> WorkbookRun:
+                  progress=None, viscosity_at: str = DEFAULT_VISCOSITY_AT) -> WorkbookRun:
     """Run calc on a sheet of supports and write a results sheet.
 
     ``output`` (a new .xlsx/.xlsm) gets a copy of the workbook plus the
@@ -155,11 +193,11 @@ def calc_workbook(path, output=None, *, sheet: str | None = None, in_place: bool
                     "-o OUTPUT.xlsx instead")
         return _run(source, target, package, lock, sheet=sheet, formulas=formulas, model=model,
                     n_per_method=n_per_method, f2_chart=f2_chart, effects=effects, keep_vba=keep_vba,
-                    progress=progress)
+                    progress=progress, viscosity_at=viscosity_at)
 
 
 def _run(source: Path, target: Path | None, package: Package | None, lock, *, sheet, formulas, model, n_per_method,
-         f2_chart, effects, keep_vba, progress) -> WorkbookRun:
+         f2_chart, effects, keep_vba, progress, viscosity_at=DEFAULT_VISCOSITY_AT) -> WorkbookRun:
     """Read, calc and write (the checks of :func:`calc_workbook` done; ``package`` and ``lock`` for in-place)."""
     in_place = package is not None
     writes_workbook = target is not None and target.suffix.lower() in EXCEL_SUFFIXES
@@ -170,33 +208,40 @@ def _run(source: Path, target: Path | None, package: Package | None, lock, *, sh
         raise ExcelError(f"sheet {info.sheet!r}: no supports under the header (row {info.header_row})")
     try:
         result = calc(table, model=model, n_per_method=n_per_method, units=info.units, cell=info.cell,
-                      f2_chart=f2_chart, effects=effects)
+                      f2_chart=f2_chart, effects=effects, viscosity_at=viscosity_at)
     except F2ChartError as exc:
         raise ExcelError(str(exc)) from exc
     except InputError as exc:
         raise _input_error(exc, info) from exc
     _mark_uncached(result, info)
+    duty = _duty_cycle(result, info)
     dropped: list[str] = []
     notes: list[str] = []
+    companions: dict[str, str] = {}
     results_sheet = None
     if target is not None and target.suffix.lower() == ".csv":
         write_csv(result, target)
     elif writes_workbook:
-        out_table = result_table(result, table, info)
-        formula_text = None
-        if formulas:
-            out_table, formula_text = live_formulas(out_table, table, info, result)
+        sheets = results_sheets(source, workbook, table, info, result, formulas=formulas, model=model, duty=duty)
         placeholders = [ws.title for ws in workbook.worksheets if is_placeholder(ws)]
         if in_place:
-            done = write_results_in_place(package, info.sheet, out_table, lock=lock, units={"row": "-"},
-                                          formulas=formula_text, progress=progress, placeholders=placeholders)
-            results_sheet, notes = done.sheet, done.notes
+            done = write_results_in_place(package, info.sheet, sheets.table, lock=lock, units={"row": "-"},
+                                          formulas=sheets.formulas, progress=progress, placeholders=placeholders,
+                                          rules=sheets.rules, print_setup=sheets.print_setup,
+                                          companions=sheets.companions, hidden_columns=sheets.hidden_columns)
+            results_sheet, notes, companions = done.sheet, done.notes, done.companions
         else:
             dropped = unsupported_content(source, workbook, keep_vba=vba)
-            results_sheet, note = _mark_results_sheet(workbook, info.sheet, placeholders)
+            results_sheet, note, companions = _mark_results_sheet(workbook, info.sheet, placeholders,
+                                                                  {c.role: c.base for c in sheets.companions})
             notes = [note] if note else []
             ws = install_sheet(workbook, results_sheet, after=info.sheet)
-            fill_sheet(ws, out_table, units={"row": "-"}, formulas=formula_text, progress=progress)
+            fill_sheet(ws, sheets.table, units={"row": "-"}, formulas=sheets.formulas(companions), progress=progress,
+                       rules=sheets.rules, print_setup=sheets.print_setup, hidden_columns=sheets.hidden_columns)
             ws.sheet_properties.tabColor = "44546A"
+            after = results_sheet
+            for companion in sheets.companions:
+                companion.fill(install_sheet(workbook, companions[companion.role], after=after))
+                after = companions[companion.role]
             atomic_save(workbook, target)
-    return WorkbookRun(result, info, target, results_sheet, dropped, notes)
+    return WorkbookRun(result, info, target, results_sheet, dropped, notes, companions, duty)

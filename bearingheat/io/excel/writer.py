@@ -22,6 +22,7 @@ import numpy as np
 import pandas as pd
 from openpyxl import Workbook
 from openpyxl.cell.cell import Cell
+from openpyxl.formatting.rule import FormulaRule
 from openpyxl.utils import get_column_letter
 
 from bearingheat.calc.contract import input_units, parse_header
@@ -29,6 +30,8 @@ from bearingheat.errors import ExcelError, InputError
 from bearingheat.io.excel import style as st
 from bearingheat.io.excel.reader import (DEFAULT_SHEET, EXCEL_SUFFIXES, RESULTS_SHEET, SheetInfo, contract_name,
                                          open_workbook)
+from bearingheat.io.excel.printing import PrintSetup
+from bearingheat.io.excel.style import number_format
 from bearingheat.io.excel.safety import refuse_lossy_rewrite
 from bearingheat.io.files import atomic_write
 
@@ -52,8 +55,34 @@ def results_sheet_name(input_sheet: str) -> str:
 
 
 def _column_style(unit: str) -> str:
-    """Numbers with a unit get two decimals; coefficients (unit 1) and text stay as they are."""
+    """Numbers with a unit get the number format of the unit; coefficients (unit 1) and text stay as they are."""
     return st.RESULT if unit in ("-", "", "1") else st.RESULT_NUMBER
+
+
+def _column_format(unit: str, is_input: bool) -> str | None:
+    """The number format of a column (:func:`bearingheat.io.excel.style.number_format`), None: the style's own."""
+    return None if is_input or unit in ("-", "", "1") else number_format(unit)
+
+
+#: the width of the message column (its text wraps), and about how many characters fill one of its lines
+MESSAGE_WIDTH = 60
+_MESSAGE_LINE = 66
+#: the height of one line of text [pt]
+LINE_HEIGHT = 15.0
+
+
+def message_heights(messages) -> dict[int, float]:
+    """Row position -> height [pt] of the rows whose message takes more than one line of the message column.
+
+    >>> message_heights(["", "short", "x" * 140])
+    {2: 45.0}
+    """
+    out = {}
+    for position, text in enumerate(messages):
+        lines = math.ceil(len(text) / _MESSAGE_LINE) if isinstance(text, str) else 1
+        if lines > 1:
+            out[position] = LINE_HEIGHT * lines
+    return out
 
 
 def _cell_value(value):
@@ -72,7 +101,8 @@ def _cell_value(value):
 
 @dataclass
 class SheetLayout:
-    """What a results sheet shows, column by column: header, unit, style name, values and width."""
+    """What a results sheet shows, column by column: header, unit, style name, number format (None: the
+    style's; formula cells: General), values and width; and the heights of rows with a long message."""
 
     headers: list[str]
     units: list[str]
@@ -80,12 +110,18 @@ class SheetLayout:
     values: list[np.ndarray]
     widths: list[float]
     input_columns: list[bool]
+    formats: list[str | None]
+    heights: dict[int, float]
+
+    def formula_format(self, column: int) -> str:
+        """The number format of a formula cell of ``column`` (coefficients and text: General)."""
+        return self.formats[column] or "General"
 
 
 def sheet_layout(table: pd.DataFrame, units: dict[str, str] | None = None,
                  input_columns: set[str] = frozenset()) -> SheetLayout:
     """The header row, units row, cell style and width of every column of ``table`` (values as objects)."""
-    headers, unit_row, styles, magnitudes, widths, inputs = [], [], [], [], [], []
+    headers, unit_row, styles, magnitudes, widths, inputs, formats = [], [], [], [], [], [], []
     for header in table.columns:
         column = table[header]
         name, unit = split_header(header, column, units)
@@ -94,23 +130,31 @@ def sheet_layout(table: pd.DataFrame, units: dict[str, str] | None = None,
         if str(column.dtype).startswith("pint["):
             column = pd.Series(column.pint.magnitude, index=column.index)
         inputs.append(header in input_columns)
-        styles.append(st.INPUT if header in input_columns else _column_style(unit))
+        styles.append(st.INPUT if header in input_columns else
+                      st.MESSAGE if name == "message" else _column_style(unit))
+        formats.append(_column_format(unit, header in input_columns))
         values = column.to_numpy(dtype=object)
         magnitudes.append(values)
         sample = [len(str(v)) for v in values[:200] if isinstance(v, str)]
-        width = min(max([len(str(name)), len(str(unit)), 8] + sample) + 2, 40)
-        widths.append(80 if name == "message" else width)
-    return SheetLayout(headers, unit_row, styles, magnitudes, widths, inputs)
+        width = min(max([len(str(name)), len(str(unit)), 6] + sample) + 2, 40)
+        widths.append(MESSAGE_WIDTH if name == "message" else width)
+    heights = message_heights(table["message"]) if "message" in table.columns else {}
+    return SheetLayout(headers, unit_row, styles, magnitudes, widths, inputs, formats, heights)
 
 
 def fill_sheet(ws, table: pd.DataFrame, *, units: dict[str, str] | None = None,
                 input_columns: set[str] = frozenset(), formulas: dict[tuple[str, int], str] | None = None,
-                progress=None) -> None:
+                progress=None, rules=(), print_setup=None, hidden_columns=()) -> None:
     """Header row, units row, one row per table row; named styles; frozen panes and widths.
 
     Text values are written as text, also when they begin with '=' (they
-    never become formulas); only ``formulas`` are formulas. ``progress`` is
-    an object with start, update and finish
+    never become formulas); only ``formulas`` are formulas (a status formula
+    keeps the colour of calc's status). ``rules`` are conditional formats
+    (:class:`bearingheat.io.excel.freshness.ConditionalRule`),
+    ``print_setup`` a :class:`bearingheat.io.excel.printing.PrintSetup`;
+    ``hidden_columns`` are grouped and collapsed (the helper columns of the
+    formulas: a designer opens them with the outline's + button).
+    ``progress`` is an object with start, update and finish
     (:class:`bearingheat.io.console.Progress`), or None.
     """
     register = st.register_styles
@@ -125,22 +169,23 @@ def fill_sheet(ws, table: pd.DataFrame, *, units: dict[str, str] | None = None,
         ws.cell(2, col).style = st.UNITS if is_input else st.UNITS_RESULT
         ws.column_dimensions[get_column_letter(col)].width = layout.widths[col - 1]
     status_col = list(table.columns).index("status") if "status" in table.columns else None
-    formula_cols = {}
-    for (header, position) in formulas:
-        formula_cols.setdefault(header, list(table.columns).index(header))
+    columns = list(table.columns)
+    formula_cols = {header: columns.index(header) for header in {header for header, _ in formulas}}
     if progress is not None:
         progress.start(len(table), f"writing {ws.title}")
     n_cols = len(headers)
-    style_arrays = _style_arrays(ws, set(styles) | set(st.STATUS.values()) | {st.FORMULA, st.RESULT})
-    column_styles = [style_arrays[name] for name in styles]
-    status_styles = {status: style_arrays[name] for status, name in st.STATUS.items()}
-    formula_style = style_arrays[st.FORMULA]
+    keys = {(name, fmt) for name, fmt in zip(styles, layout.formats)} | {(name, None) for name in st.STATUS.values()} \
+        | {(st.FORMULA, layout.formula_format(c)) for c in range(n_cols)} | {(st.RESULT, None)}
+    style_arrays = _style_arrays(ws, keys)
+    column_styles = [style_arrays[key] for key in zip(styles, layout.formats)]
+    status_styles = {status: style_arrays[(name, None)] for status, name in st.STATUS.items()}
+    formula_styles = {c: style_arrays[(st.FORMULA, layout.formula_format(c))] for c in range(n_cols)}
     for position in range(len(table)):
         row = []
         for c in range(n_cols):
             cell = Cell(ws, value=_cell_value(magnitudes[c][position]))
             if c == status_col:
-                cell._style = copy(status_styles.get(str(cell.value), style_arrays[st.RESULT]))
+                cell._style = copy(status_styles.get(str(cell.value), style_arrays[(st.RESULT, None)]))
             else:
                 cell._style = copy(column_styles[c])
             if cell.data_type == "f":  # text that begins with '=': text, as it was in the input
@@ -151,22 +196,37 @@ def fill_sheet(ws, table: pd.DataFrame, *, units: dict[str, str] | None = None,
             text = formulas.get((header, position))
             if text is not None:
                 row[c].value = text
-                row[c]._style = copy(formula_style)
+                if c != status_col:
+                    row[c]._style = copy(formula_styles[c])
         ws.append(row)
         if progress is not None and position % 500 == 0:
             progress.update(position)
     if progress is not None:
         progress.finish()
     ws.freeze_panes = "A3"
+    for position, height in layout.heights.items():
+        ws.row_dimensions[position + 3].height = height
+    for header in hidden_columns:
+        dimension = ws.column_dimensions[get_column_letter(list(table.columns).index(header) + 1)]
+        dimension.outline_level, dimension.hidden = 1, True
+    if hidden_columns:
+        ws.sheet_format.outlineLevelCol = 1
+    for rule in rules:
+        ws.conditional_formatting.add(rule.sqref, FormulaRule(formula=[rule.formula],
+                                                              font=copy(st.DIFFERENTIAL[rule.dxf])))
+    if print_setup is not None:
+        print_setup.apply(ws)
 
 
-def _style_arrays(ws, names) -> dict:
-    """Named style -> the style array of a cell that has it (copied onto many cells at once)."""
+def _style_arrays(ws, keys) -> dict:
+    """(named style, number format or None) -> the style array of a cell that has it (copied onto many cells)."""
     arrays = {}
-    for name in names:
+    for name, fmt in keys:
         probe = Cell(ws)
         probe.style = name
-        arrays[name] = probe._style
+        if fmt is not None:
+            probe.number_format = fmt
+        arrays[(name, fmt)] = probe._style
     return arrays
 
 
@@ -197,11 +257,13 @@ def split_header(header: str, values: pd.Series | None = None, units: dict[str, 
 
 
 def result_table(result: pd.DataFrame, table: pd.DataFrame, info: SheetInfo) -> pd.DataFrame:
-    """The columns of the results sheet: the input row, id/designation, then every result column."""
+    """The columns of the results sheet: the input row, id/designation (support, case, type and series where
+    the sheet gives them), then every result column."""
     out = pd.DataFrame({"row": pd.Series(info.rows, dtype="int64", index=result.index)})
     for header in table.columns:
         name = contract_name(header)
-        if name in ("id", "designation") or (name in ("type", "series") and table[header].notna().any()):
+        if name in ("id", "designation") or (name in ("support", "case", "type", "series")
+                                             and table[header].notna().any()):
             out[header] = result[header]
     for header in result.columns:
         if header not in table.columns or contract_name(header) in ("f0", "f1"):
@@ -261,8 +323,10 @@ def write_results(results: pd.DataFrame, path, *, sheet: str = RESULTS_SHEET, un
     return path
 
 
-def write_results_workbook(result: pd.DataFrame, path) -> Path:
-    """Results of a CSV calc as a new workbook: one 'Results' sheet, input columns styled as inputs.
+def write_results_workbook(result: pd.DataFrame, path, source=None, duty: pd.DataFrame | None = None) -> Path:
+    """Results of a CSV calc as a new workbook: one 'Results' sheet, input columns styled as inputs, printed
+    with the name of the CSV ``source`` in the page header (:class:`bearingheat.io.excel.printing.PrintSetup`);
+    a duty cycle summary (:func:`bearingheat.calc.duty.duty_cycle`) as the sheet 'Duty cycle'.
 
     Raises :class:`ExcelError` unless ``path`` ends in .xlsx.
     """
@@ -276,7 +340,14 @@ def write_results_workbook(result: pd.DataFrame, path) -> Path:
     workbook = Workbook()
     ws = workbook.active
     ws.title = RESULTS_SHEET
-    fill_sheet(ws, result, input_columns=set(inputs))
+    titles = max([list(result.columns).index(h) + 1 for h in ("id", "designation") if h in result.columns] + [1])
+    setup = PrintSetup.of(Path(source).name if source is not None else path.name, "", supports=len(result),
+                          title_columns=titles)
+    fill_sheet(ws, result, input_columns=set(inputs), print_setup=setup)
+    if duty is not None:
+        summary = workbook.create_sheet("Duty cycle")
+        fill_sheet(summary, duty)
+        summary.sheet_properties.tabColor = "44546A"
     atomic_save(workbook, path)
     return path
 

@@ -113,9 +113,21 @@ def test_a_second_run_adds_no_style_and_keeps_the_workbook_part(tmp_path):
     path = make_workbook(tmp_path / "book.xlsx")
     calc_workbook(path, in_place=True)
     styles, workbook = part(path, "xl/styles.xml"), part(path, "xl/workbook.xml")
+    calc_workbook(path, in_place=True)
+    assert part(path, "xl/styles.xml") == styles and part(path, "xl/workbook.xml") == workbook
+    # --formulas adds the hidden copy of the inputs and the formats of the live check, once
+    calc_workbook(path, in_place=True, formulas=True)
+    styles, workbook, parts = part(path, "xl/styles.xml"), part(path, "xl/workbook.xml"), names(path)
+    assert b'name="Calc inputs" sheetId="3" state="hidden" r:id="rId5"/>' in workbook
+    assert b'<definedName name="_xlnm.Print_Titles" localSheetId="1">Results!$A:$C,Results!$1:$2</definedName>' \
+        in workbook
+    assert b'<definedName name="_bearingheat_snapshot_1" hidden="1">\'Calc inputs\'!$1:$1048576</definedName>' \
+        in workbook
+    assert b'<dxfs count="2"><dxf><font><strike/><color rgb="FF808080"/></font></dxf>' in styles
     calc_workbook(path, in_place=True, formulas=True)
     calc_workbook(path, in_place=True)
     assert part(path, "xl/styles.xml") == styles and part(path, "xl/workbook.xml") == workbook
+    assert names(path) == parts
     names_ = openpyxl.load_workbook(path).named_styles
     assert "bearingheat result" in names_ and "bearingheat status ok" in names_
 

@@ -6,6 +6,8 @@ import openpyxl
 import pandas as pd
 from excel_helpers import EXAMPLE_CSV, EXAMPLE_XLSX, TEMPLATE_XLSX
 
+from bearingheat.calc.contract import template_columns
+from bearingheat.catalogue.bearings import designations
 from bearingheat.catalogue.designation import BEARING_TYPES
 from bearingheat.io.excel.reader import read_supports
 from bearingheat.io.excel.safety import workbook_fingerprint
@@ -51,18 +53,45 @@ def test_template_drop_down_lists():
                    for dv in workbook["Supports"].data_validations.dataValidation}
     letters = {name: openpyxl.utils.get_column_letter(i) for i, (name, *_r) in enumerate(TEMPLATE_COLUMNS, 1)}
     expected = {"lubrication": ["grease", "oil_mist", "oil_bath", "circulating_oil"],
-                "arrangement": ["single", "paired"], "type": list(BEARING_TYPES)}
+                "arrangement": ["single", "paired"], "type": list(BEARING_TYPES), "model": ["schaeffler", "skf"],
+                "n_per_method": ["exact", "approximation"], "designation": list(designations())}
     for name, choices in expected.items():
         dv = validations[letters[name]]
         assert dv.type == "list" and str(dv.sqref) == f"{letters[name]}3:{letters[name]}10002"
         source = dv.formula1.split("!")[1].replace("$", "")
         assert [c.value for row in lists[source] for c in row] == choices
+        # a designation outside the table (6208-2Z, another catalogue) is a warning the designer may pass
+        assert dv.errorStyle == ("warning" if name == "designation" else None)
+    assert len(expected["designation"]) == 1034 and "6208" in expected["designation"]
+
+
+def test_template_has_the_heat_balance_and_model_columns_of_the_contract():
+    names = [name for name, *_rest in TEMPLATE_COLUMNS]
+    assert names == [c.name for c in template_columns()]
+    for name in ("T", "T_amb", "T_bearing", "V_oil", "dT_oil", "Q_E", "iso_vg", "nu40", "nu100", "VI", "n_G",
+                 "n_per_method", "model"):
+        assert name in names, name
+    ws = openpyxl.load_workbook(TEMPLATE_XLSX)["Supports"]
+    units = dict(zip([c.value for c in ws[1]], [c.value for c in ws[2]]))
+    assert (units["T_amb"], units["T_bearing"], units["dT_oil"], units["V_oil"]) == ("degC", "degC", "K", "l/min")
+
+
+def test_instructions_say_which_results_are_live():
+    ws = openpyxl.load_workbook(TEMPLATE_XLSX)["Instructions"]
+    text = " ".join(str(c.value) for row in ws.iter_rows() for c in row if c.value)
+    assert "Live formulas: f0, f1, P0, P1, M0, M1, M2, MR and NR" in text
+    assert "Values: n_thr, n_per, T_op, nu_op, Q_S and Q_L" in text
+    assert "'recalculate with bearingheat'" in text and "'recalculate with bearingheat (every result)'" in text
 
 
 def test_template_examples_calculate():
     run = calc_workbook(TEMPLATE_XLSX)
     assert run.result["designation"].tolist() == ["6208", "30208-A"]
     assert (run.result["status"] != "error").all()
+    # the heat balance of the examples' T_amb and T_bearing (the gearbox example's first and third support)
+    gearbox = calc_workbook(EXAMPLE_XLSX).result
+    np.testing.assert_allclose(run.result["n_per [1/min]"], gearbox["n_per [1/min]"].iloc[[0, 2]], rtol=1e-12)
+    np.testing.assert_allclose(run.result["T_op [degC]"], gearbox["T_op [degC]"].iloc[[0, 2]], rtol=1e-12)
 
 
 def test_example_holds_the_gearbox_csv():

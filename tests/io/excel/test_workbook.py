@@ -44,7 +44,7 @@ def test_cell_of_a_column_the_sheet_lacks(tmp_path):
     assert result.loc[0, "status"] == "error"
     assert result.loc[0, "message"] == ("Supports row 3 d [mm]: missing; the bore d gives dM = (d + D)/2; "
                                         "Supports row 3 C0 [N]: missing; f1 of deep groove ball bearing series 62 "
-                                        "depends on P0/C0 (seed 002, pp. 66-68)")
+                                        "depends on P0/C0 (the Schaeffler catalogue, pp. 66-68)")
 
 
 def test_formula_without_saved_value_gets_a_message(tmp_path):

@@ -1,0 +1,165 @@
+"""Never a stale number: the inputs each results row was computed from, and a live check against them.
+
+With ``calc --formulas`` the workbook keeps a hidden copy of the input
+cells calc read (the *inputs snapshot* sheet, e.g. ``Calc inputs``, laid out
+cell for cell like the input sheet). The status cell of every results row
+is a formula that compares the row's input cells with that copy:
+
+- all inputs as computed: the status calc gave (ok, warning, error);
+- an input changed: ``recalculate with bearingheat`` (:data:`NOTE`), and a
+  conditional format strikes through the results that are values, not
+  formulas (n_thr, n_per, T_op, nu_op, Q_S, Q_L and every other column of
+  an extension): they came from a root or a table and do not follow;
+- an input changed that the row's live formulas do not follow (the
+  designation, type, series, arrangement, model, contact angle; any input
+  of a row whose formulas use a value of the operating point, such as a
+  viscosity from the oil's curve or an f2 read off the chart):
+  ``recalculate with bearingheat (every result)`` (:data:`NOTE_EVERY`), and
+  every result of the row is struck through.
+
+Running calc again writes a new copy, so the marks go. The label column
+``id`` is not compared. Text is compared without case, as Excel's ``<>``
+does (calc reads the lubrication as typed, so a change of case alone
+would not be caught).
+
+>>> check = FreshnessCheck("Supports", [3], {"n": "E", "designation": "B"}, ["ok"],
+...                        [frozenset({"designation"})], [])
+>>> print(check.status_formulas("Calc inputs")[0].replace("),", "),\\n"))
+=IF(OR(Supports!B3<>'Calc inputs'!B3),
+"recalculate with bearingheat (every result)",IF(OR(Supports!E3<>'Calc inputs'!E3),
+"recalculate with bearingheat","ok"))
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from openpyxl.utils import get_column_letter
+
+from bearingheat.io.excel import style as st
+from bearingheat.io.excel.ownership import sheet_ref
+
+__all__ = ["NOTE", "NOTE_EVERY", "FreshnessCheck", "ConditionalRule", "snapshot_base", "freshness_check",
+           "conditional_rules"]
+
+NOTE = "recalculate with bearingheat"
+NOTE_EVERY = "recalculate with bearingheat (every result)"
+#: columns of a results sheet that are never struck through: the row, the label, the status and its message
+_NOT_RESULTS = ("row", "id", "status", "message")
+#: text that holds as long as the formulas do (the load of M1 follows the bearing type and arrangement)
+_WITH_THE_FORMULAS = ("M1 load",)
+
+
+def snapshot_base(input_sheet: str) -> str:
+    """The name of the inputs snapshot of ``input_sheet``: 'Calc inputs', or '<sheet> calc inputs'."""
+    return "Calc inputs" if input_sheet == "Supports" else f"{input_sheet[:19]} calc inputs"
+
+
+@dataclass(frozen=True)
+class ConditionalRule:
+    """A conditional format: the cells (``sqref``), the formula (relative to the first cell) and the
+    differential format's name (:data:`bearingheat.io.excel.style.DIFFERENTIAL`)."""
+
+    sqref: str
+    formula: str
+    dxf: str
+
+
+@dataclass
+class FreshnessCheck:
+    """The live check of one results sheet.
+
+    ``rows`` are the input sheet's rows of the results rows, ``letters`` the
+    compared input columns (contract name -> column letter), ``statuses``
+    calc's status of each row, ``every`` per row the inputs whose change
+    makes every result stale (None: any input), ``snapshot`` the cells of
+    the copy as (row, column index, value).
+    """
+
+    input_sheet: str
+    rows: list[int]
+    letters: dict[str, str]
+    statuses: list[str]
+    every: list[frozenset[str] | None]
+    snapshot: list[tuple[int, int, object]]
+
+    def status_formulas(self, snapshot_sheet: str) -> list[str]:
+        """The formula of every status cell, comparing the input sheet with ``snapshot_sheet``."""
+        here, copy = sheet_ref(self.input_sheet), sheet_ref(snapshot_sheet)
+        names = sorted(self.letters, key=lambda n: (len(self.letters[n]), self.letters[n]))
+        out = []
+        for row, status, every in zip(self.rows, self.statuses, self.every):
+            def differ(group, r=row):
+                return ",".join(f"{here}!{self.letters[n]}{r}<>{copy}!{self.letters[n]}{r}" for n in group)
+            strict = names if every is None else [n for n in names if n in every]
+            rest = [n for n in names if n not in strict]
+            text = '"' + str(status).replace('"', '""') + '"'
+            if rest:
+                text = f'IF(OR({differ(rest)}),"{NOTE}",{text})'
+            if strict:
+                text = f'IF(OR({differ(strict)}),"{NOTE_EVERY}",{text})'
+            out.append("=" + text)
+        return out
+
+
+def freshness_check(ws, table, info, statuses, every) -> FreshnessCheck:
+    """The check of the rows of ``info`` (:class:`bearingheat.io.excel.reader.SheetInfo`) read from the
+    openpyxl worksheet ``ws``: the copy holds the cells as stored (formula cells: the value calc read), and
+    the header and units rows."""
+    letters = {name: info.letters[header] for name, header in info.headers.items() if name != "id"}
+    snapshot = []
+    cells = ws._cells
+    for name, header in info.headers.items():
+        col = _column_index(info.letters[header])
+        for title_row in (info.header_row, info.units_row):
+            if title_row is not None and (title_row, col) in cells:
+                snapshot.append((title_row, col, cells[(title_row, col)].value))
+        if name == "id":
+            continue
+        for position, row in enumerate(info.rows):
+            cell = cells.get((row, col))
+            value = None if cell is None else cell.value
+            if (cell is not None and cell.data_type == "f") or not isinstance(value, (str, int, float, bool,
+                                                                                         type(None))):
+                value = table[header].iloc[position]  # a formula cell: the value the spreadsheet saved
+            if value is not None and not (isinstance(value, float) and value != value):
+                snapshot.append((row, col, value))
+    return FreshnessCheck(info.sheet, list(info.rows), letters, [str(s) for s in statuses], list(every), snapshot)
+
+
+def _column_index(letter: str) -> int:
+    index = 0
+    for char in letter:
+        index = index * 26 + ord(char.upper()) - 64
+    return index
+
+
+def conditional_rules(columns: list[str], live_columns: list[str], n_rows: int) -> list[ConditionalRule]:
+    """The conditional formats of a results sheet with a live check (``columns`` its headers in order, data
+    in rows 3 to n_rows + 2): values (and the copies of inputs such as the designation) struck on
+    :data:`NOTE`, formulas on :data:`NOTE_EVERY`, the status coloured."""
+    if "status" not in columns or not n_rows:
+        return []
+    status = get_column_letter(columns.index("status") + 1)
+    last = n_rows + 2
+    note = f'LEFT(${status}3,{len(NOTE)})="{NOTE}"'
+
+    def sqref(headers):
+        letters = [columns.index(h) + 1 for h in headers]
+        spans, start = [], None
+        for k, col in enumerate(letters):
+            start = col if start is None else start
+            if k + 1 == len(letters) or letters[k + 1] != col + 1:
+                spans.append(f"{get_column_letter(start)}3:{get_column_letter(col)}{last}")
+                start = None
+        return " ".join(spans)
+
+    results = [h for h in columns if h not in _NOT_RESULTS]  # the copies of inputs (designation ...) too
+    live = [h for h in results if h in live_columns or h in _WITH_THE_FORMULAS]
+    values = [h for h in results if h not in live]
+    rules = []
+    if values:
+        rules.append(ConditionalRule(sqref(values), note, st.STALE))
+    if live:
+        rules.append(ConditionalRule(sqref(live), f'${status}3="{NOTE_EVERY}"', st.STALE))
+    rules.append(ConditionalRule(f"{status}3:{status}{last}", note, st.RECALCULATE))
+    return rules

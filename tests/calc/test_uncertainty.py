@@ -1,0 +1,81 @@
+"""Uncertainty bands of f0 and f1 carried to MR, NR, n_thr, n_per and T_op."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+
+import bearingheat as bh
+from bearingheat.analysis.audit import audit_coefficients
+from synthetic_torque import measured_set
+
+DEMO = Path(__file__).resolve().parents[2] / "examples" / "gearbox_shaft.csv"
+
+
+@pytest.fixture(scope="module")
+def demo():
+    return pd.read_csv(DEMO).assign(f0_rel_unc=0.2, f1_rel_unc=0.1)
+
+
+def test_the_torque_band_is_the_hand_quadrature(demo):
+    out = bh.calc(demo)
+    # MR = M0 + M1 (+ M2) is linear in f0 and f1: half-width sqrt((0.2 M0)^2 + (0.1 M1)^2)
+    half = np.sqrt((0.2 * out["M0 [N*mm]"]) ** 2 + (0.1 * out["M1 [N*mm]"]) ** 2)
+    np.testing.assert_allclose(out["MR_high [N*mm]"] - out["MR [N*mm]"], half, rtol=1e-9)
+    np.testing.assert_allclose(out["MR [N*mm]"] - out["MR_low [N*mm]"], half, rtol=1e-9)
+    np.testing.assert_allclose(out["NR_high [W]"] / out["MR_high [N*mm]"], out["NR [W]"] / out["MR [N*mm]"],
+                               rtol=1e-12)
+
+
+def test_linearised_and_sampled_bands_agree():
+    # small uncertainties, where the linearisation holds (n_per goes as about f0^-0.6: a 20 % secant is
+    # 15 % off the sampled band)
+    demo = pd.read_csv(DEMO).assign(f0_rel_unc=0.05, f1_rel_unc=0.03)
+    linear = bh.calc(demo)
+    sampled = bh.calc(demo, uncertainty="sampled")
+    for name in ("MR [N*mm]", "n_per [1/min]", "T_op [degC]", "n_thr [1/min]"):
+        stem, unit = name.split(" ")
+        width_l = (linear[f"{stem}_high {unit}"] - linear[f"{stem}_low {unit}"]).to_numpy()
+        width_s = (sampled[f"{stem}_high {unit}"] - sampled[f"{stem}_low {unit}"]).to_numpy()
+        finite = np.isfinite(width_l)
+        # 400 draws: the percentiles scatter a few percent; the linearisation is a secant
+        np.testing.assert_allclose(width_s[finite], width_l[finite], rtol=0.12, err_msg=name)
+
+
+def test_bands_are_ordered_and_a_higher_f0_never_raises_n_per(demo):
+    out = bh.calc(demo)
+    for stem, unit in (("MR", "[N*mm]"), ("n_per", "[1/min]"), ("n_thr", "[1/min]"), ("T_op", "[degC]")):
+        rows = np.isfinite(out[f"{stem} {unit}"])
+        assert (out.loc[rows, f"{stem}_low {unit}"] <= out.loc[rows, f"{stem} {unit}"]).all()
+        assert (out.loc[rows, f"{stem} {unit}"] <= out.loc[rows, f"{stem}_high {unit}"]).all()
+    base = pd.read_csv(DEMO).head(1)
+    n_per = [bh.calc(base.assign(f0=f0))["n_per [1/min]"].iat[0] for f0 in (1.0, 1.5, 2.0, 3.0, 4.0)]
+    assert all(a >= b for a, b in zip(n_per, n_per[1:]))
+
+
+def test_a_negative_uncertainty_is_a_row_error(demo):
+    out = bh.calc(demo.assign(f0_rel_unc=[0.2, -0.1, 0.2, 0.2, 0.2, 0.2]))
+    assert out["status"].iat[1] == "error"
+    assert out["message"].iat[1] == "f0_rel_unc: -0.1 is outside the valid range 0 to 1"
+    assert np.isnan(out["MR_low [N*mm]"].iat[1]) and np.isfinite(out["MR_low [N*mm]"].iat[0])
+
+
+def test_an_audits_intervals_give_the_bands(tmp_path):
+    table, _, _ = measured_set("none", 5, designations=["6205", "6208"])
+    coefficients = audit_coefficients(table)
+    path = tmp_path / "coefficients.csv"
+    coefficients.to_csv(path, index=False)
+    supports = pd.DataFrame({"designation": ["6205", "6208", "6310"], "lubrication": "oil_bath",
+                             "n [rpm]": 3000, "Fr [kN]": 1.0, "nu [mm^2/s]": 12})
+    out = bh.calc(supports, coefficients=str(path))
+    f0 = coefficients[(coefficients["bearing"] == "6205") & (coefficients["coefficient"] == "f0")].iloc[0]
+    u0 = (f0["ci_high"] - f0["ci_low"]) / 2 / f0["fitted"]
+    assert 0 < u0 < 0.2
+    assert out["MR_high [N*mm]"].iat[0] > out["MR [N*mm]"].iat[0]
+    assert np.isnan(out["MR_high [N*mm]"].iat[2])  # the 6310 was not audited: no band
+    half = out["MR_high [N*mm]"].iat[0] - out["MR [N*mm]"].iat[0]
+    f1 = coefficients[(coefficients["bearing"] == "6205") & coefficients["coefficient"].isin(["f1", "f1_a"])].iloc[0]
+    u1 = (f1["ci_high"] - f1["ci_low"]) / 2 / f1["fitted"]
+    assert half == pytest.approx(np.hypot(u0 * out["M0 [N*mm]"].iat[0], u1 * out["M1 [N*mm]"].iat[0]), rel=1e-9)
