@@ -24,6 +24,7 @@ import pandas as pd
 from bearingheat.api._checks import check_ranges, where
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.contract import column
+from bearingheat.calc.fill import fill_arrays
 from bearingheat.calc.models import DEFAULT_MODEL, EXTRA_INPUTS, MODEL_REPORT_UNITS, get_model
 from bearingheat.calc.supports import build_support_arrays
 from bearingheat.catalogue.f2chart import F2Chart
@@ -186,11 +187,14 @@ def friction_torque(bearing: str | None = None, *, n, nu, lubrication: str | Non
         On cylindrical roller bearings it is refused where a ring has no
         ribs (NU, N, NN) and where Fr is 0; above Fa/Fr = 0.4 a warning.
     d : pint.Quantity [length], optional
-        Bore; defaults to the bore code of the designation. Valid > 0 and up
-        to 1e5 mm; outside 0.5 to 5000 mm a warning.
-    D : pint.Quantity [length]
-        Outside diameter (required: dM = (d + D)/2). Valid > d and up to
-        1e5 mm; outside 1 to 6000 mm a warning.
+        Bore; defaults to the bearing table (Schaeffler HR 1, 2006), else the
+        bore code of the designation. Valid > 0 and up to 1e5 mm; outside
+        0.5 to 5000 mm a warning.
+    D : pint.Quantity [length], optional
+        Outside diameter (dM = (d + D)/2); defaults to the bearing table, as
+        do B, C0, Y, e and Y0 (a value given that differs from the table's
+        is a warning); required for a designation the table does not know.
+        Valid > d and up to 1e5 mm; outside 1 to 6000 mm a warning.
     B : pint.Quantity [length], optional
         Width, for the f0 formula of needle roller bearings; defaults to the
         width of drawn cups (HK2016). Valid > 0 and up to 1e5 mm; outside
@@ -290,6 +294,11 @@ def friction_torque(bearing: str | None = None, *, n, nu, lubrication: str | Non
     index = next((v.index for v in inputs.values() if isinstance(v, pd.Series)), None)
     arrays = {k: (v.to_numpy(dtype=float) if isinstance(v, pd.Series) else np.asarray(v, dtype=float))
               for k, v in inputs.items()}
+    # blank dimensions, ratings and factors from the bearing table (Schaeffler HR 1, 2006)
+    typed = {k for k, v in {"d": d, "D": D, "B": B, "C0": C0, "Y": Y, "e": e, "Y0": Y0}.items() if v is not None}
+    arrays, fill_notes, unknown = fill_arrays(bearing, arrays, typed)
+    if unknown is not None and D is None:
+        raise FrictionInputError(f"{unknown}; or give d, D (and C0)")
     shape = np.broadcast_shapes(*(v.shape for v in arrays.values()))
     given = {"n": n, "nu": nu, "Fr": Fr, "Fa": Fa, "C0": C0, "alpha": alpha, "d": d, "D": D, "B": B, "Y": Y,
              "e": e, "X0": X0, "Y0": Y0, "f0": f0, "f1": f1, "f2": f2}
@@ -311,7 +320,7 @@ def friction_torque(bearing: str | None = None, *, n, nu, lubrication: str | Non
         i = int(np.flatnonzero(first.mask)[0])
         raise FrictionInputError(first.message(i) + where(i, shape))
     messages = range_warnings + [p.message(int(np.flatnonzero(p.mask)[0])) for p in problems]
-    messages += list(supports.notes[0])
+    messages += list(supports.notes[0]) + fill_notes
     for name in ("MR", "NR"):
         bad = ~np.isfinite(results[name])
         if bad.any():

@@ -14,6 +14,8 @@ import numpy as np
 import pandas as pd
 
 from bearingheat.api._checks import check_ranges
+from bearingheat.calc.fill import fill_from_catalogue
+from bearingheat.calc.messages import Labels
 from bearingheat.calc.models import compute_supports
 from bearingheat.calc.thermal import (OPERATING_TEMPERATURE_LIMIT, SPEED_FACTOR_METHODS, VISCOSITY_AT,
                                       fill_viscosity, heat_balance_rows, thermal_reference_speed_rows)
@@ -115,7 +117,7 @@ _API_COLUMNS = {
 }
 
 
-def heat_balance(designation: str | None = None, *, d, D, n=None, C0=None, B=None, T=None, Fr=None, Fa=None,
+def heat_balance(designation: str | None = None, *, d=None, D=None, n=None, C0=None, B=None, T=None, Fr=None, Fa=None,
                  lubrication: str = "oil_bath", nu=None, nu40=None, nu100=None, iso_vg=None, viscosity_index=None,
                  T_ambient=None, T_bearing=None, k_q=None, V_oil=None, dT_oil=None, Q_E=None, n_G=None,
                  n_thr_catalogue=None, viscosity_at: str = "auto", method: str = "exact",
@@ -144,9 +146,12 @@ def heat_balance(designation: str | None = None, *, d, D, n=None, C0=None, B=Non
     designation : str, optional
         Bearing designation such as ``"6205"`` or ``"30205-A"``; or give
         ``bearing_type`` and ``series``.
-    d : pint.Quantity [length]
-        Bore; valid up to 1e5 mm (outside 0.5 to 5000 mm a warning).
-    D : pint.Quantity [length]
+    d : pint.Quantity [length], optional
+        Bore; valid up to 1e5 mm (outside 0.5 to 5000 mm a warning). Not
+        given: from the bearing table (Schaeffler HR 1, 2006), as are D, B,
+        T, C0 and n_G; a value given that differs from the table's is a
+        warning.
+    D : pint.Quantity [length], optional
         Outside diameter; valid up to 1e5 mm (outside 1 to 6000 mm a warning).
     n : pint.Quantity [1/min], optional
         Operating speed (1/min, rpm, Hz); needed for T_op, n_per and N_R.
@@ -276,6 +281,7 @@ def heat_balance(designation: str | None = None, *, d, D, n=None, C0=None, B=Non
         frame["type"] = bearing_type
         frame["series"] = series
     frame["lubrication"] = lubrication
+    frame, fill_problems, _ = fill_from_catalogue(frame, Labels())  # blank d, D, B, T, C0 ... from the bearing table
     limit = OPERATING_TEMPERATURE_LIMIT
     if t_limit is not None:
         limit = float(celsius(t_limit, "t_limit"))
@@ -284,7 +290,7 @@ def heat_balance(designation: str | None = None, *, d, D, n=None, C0=None, B=Non
         raise HeatBalanceError("nu: missing; give nu, or nu40 and nu100, or iso_vg")
     results = compute_supports(frame)
     extra, more = heat_balance_rows(frame, results, method=method, t_limit=limit)
-    problems = problems + more
+    problems = fill_problems + problems + more
     status = results["status"].tolist()
     messages = [[m] if m else [] for m in results["message"]]
     for position in range(size) if range_warnings else ():

@@ -21,7 +21,7 @@ from bearingheat.calc.supports import number_column, text_column
 from bearingheat.catalogue.bearings import CATALOGUE, BearingData, bearing, disagreeing
 from bearingheat.errors import DesignationError
 
-__all__ = ["FILLED", "fill_from_catalogue", "catalogue_values"]
+__all__ = ["FILLED", "fill_from_catalogue", "fill_arrays", "catalogue_values"]
 
 #: the columns the bearing table fills (catalogue units: mm, N, 1, 1/min)
 FILLED = ("d", "D", "B", "T", "C0", "e", "Y", "Y0", "n_G")
@@ -88,3 +88,26 @@ def fill_from_catalogue(frame: pd.DataFrame, labels: Labels
 def _unit(name: str) -> str:
     unit = {"C0": "N", "n_G": "1/min"}.get(name, "mm" if name in ("d", "D", "B", "T") else "")
     return f"{unit} " if unit else ""
+
+
+def fill_arrays(designation: str | None, arrays: dict[str, np.ndarray], given: set[str]
+                ) -> tuple[dict[str, np.ndarray], list[str], str | None]:
+    """The unit-aware API's fill of one bearing: ``arrays`` (catalogue units) with the :data:`FILLED` entries
+    that are not in ``given`` taken from the bearing table; the warnings where a given value differs from the
+    catalogue's; and the lookup's error message where the table does not know the designation (else None)."""
+    if not designation:
+        return arrays, [], None
+    values, errors = catalogue_values([designation])
+    out, notes = dict(arrays), []
+    for name in FILLED:
+        if name not in arrays:
+            continue
+        catalogue = values[name][0]
+        if name not in given:
+            if not np.isnan(catalogue):
+                out[name] = np.asarray(catalogue)
+        elif disagreeing(name, np.asarray(arrays[name], dtype=float), np.asarray(catalogue)).any():
+            shown = np.ravel(arrays[name])[0]
+            notes.append(f"{name}: {shown:g} {_unit(name)}differs from {catalogue:g} {_unit(name)}of {designation} in "
+                         f"the bearing table ({CATALOGUE}); the value given is used")
+    return out, notes, errors[0]
