@@ -79,3 +79,15 @@ def test_an_audits_intervals_give_the_bands(tmp_path):
     f1 = coefficients[(coefficients["bearing"] == "6205") & coefficients["coefficient"].isin(["f1", "f1_a"])].iloc[0]
     u1 = (f1["ci_high"] - f1["ci_low"]) / 2 / f1["fitted"]
     assert half == pytest.approx(np.hypot(u0 * out["M0 [N*mm]"].iat[0], u1 * out["M1 [N*mm]"].iat[0]), rel=1e-9)
+
+
+def test_the_command_line_takes_the_audits_coefficients(tmp_path):
+    from bearingheat.cli import main
+    table, _, _ = measured_set("none", 5, designations=["6205"])
+    audit_coefficients(table).to_csv(tmp_path / "coefficients.csv", index=False)
+    pd.DataFrame({"designation": ["6205"], "lubrication": ["oil_bath"], "n [rpm]": [3000], "Fr [kN]": [1.0],
+                  "nu [mm^2/s]": [12]}).to_csv(tmp_path / "in.csv", index=False)
+    assert main(["calc", str(tmp_path / "in.csv"), "--coefficients", str(tmp_path / "coefficients.csv"), "-o",
+                 str(tmp_path / "out.csv"), "-q"]) == 0
+    out = pd.read_csv(tmp_path / "out.csv")
+    assert out["MR_low [N*mm]"].iat[0] < out["MR [N*mm]"].iat[0] < out["MR_high [N*mm]"].iat[0]
