@@ -11,6 +11,7 @@ import pandas as pd
 
 from bearingheat.analysis.comparison import side_by_side
 from bearingheat.calc import contract
+from bearingheat.io.reports.figures import write_doc_figures
 
 project = "bearingheat"
 author = "bearingheat developers"
@@ -21,7 +22,6 @@ myst_heading_anchors = 3
 exclude_patterns = ["_build", "_generated"]
 html_static_path = ["_static"]
 html_theme = "alabaster"
-suppress_warnings = ["myst.xref_missing"]
 autodoc_member_order = "bysource"
 autodoc_typehints = "description"
 napoleon_numpy_docstring = True
@@ -44,3 +44,6 @@ def _write_if_changed(path: Path, text: str) -> None:
 _demo = pd.read_csv(Path(__file__).parent.parent / "examples" / "gearbox_shaft_skf.csv")
 _write_if_changed(_generated / "skf_side_by_side.md",
                   side_by_side(_demo).to_markdown(index=False, floatfmt=".4g") + "\n")
+
+# the pictures of friction.md, bushing.md and coastdown.md, drawn from the package's own calculations
+write_doc_figures(_generated, Path(__file__).parent.parent / "examples")

@@ -72,11 +72,15 @@ def heat_balance_curves(table: pd.DataFrame, points: int = 200) -> dict:
 
 
 def _label(table: pd.DataFrame) -> str:
+    """'id (designation)', or whichever of the two the row has, else 'the support'."""
+    found = []
     for name in ("id", "designation"):
         hits = [c for c in table.columns if str(c).split("[")[0].strip() == name]
-        if hits:
-            return str(table[hits[0]].iloc[0])
-    return "support"
+        if hits and str(table[hits[0]].iloc[0]).strip() not in ("", "nan", "None"):
+            found.append(str(table[hits[0]].iloc[0]).strip())
+    if len(found) == 2 and found[0] != found[1]:
+        return f"{found[0]} ({found[1]})"
+    return found[0] if found else "the support"
 
 
 def draw_heat_balance(curves: dict, path, format: str | None = None) -> None:  # noqa: A002 (matplotlib's name)
@@ -92,6 +96,10 @@ def draw_heat_balance(curves: dict, path, format: str | None = None) -> None:  #
         left.plot([curves["n_cross"]], [curves["carried_vs_speed"][0]], "o", color="black")
         left.annotate(f"{curves['n_cross']:.0f} 1/min", (curves["n_cross"], curves["carried_vs_speed"][0]),
                       textcoords="offset points", xytext=(6, -14))
+    if not math.isnan(curves["n"]):
+        margin = (f"; n_per/n = {curves['n_cross'] / curves['n']:.2f}"
+                  if not math.isnan(curves["n_cross"]) and curves["n"] > 0 else "")
+        left.axvline(curves["n"], color="tab:red", lw=1.0, ls=":", label=f"operating n = {curves['n']:.0f} 1/min{margin}")
     left.set_xlabel("speed n [1/min]")
     left.set_ylabel("heat flow [W]")
     left.set_title(f"at {curves['theta']:.1f} °C", fontsize=10)
@@ -105,6 +113,6 @@ def draw_heat_balance(curves: dict, path, format: str | None = None) -> None:  #
     right.set_xlabel("bearing temperature [°C]")
     right.set_title(f"at n = {curves['n']:.0f} 1/min", fontsize=10)
     right.legend(fontsize=8, loc="upper left")
-    fig.suptitle(f"Heat balance of {curves['label']}", fontsize=11)
+    fig.suptitle(f"Heat balance: {curves['label']}", fontsize=11)
     fig.tight_layout()
-    fig.savefig(path, format=format or figure_format(path))
+    fig.savefig(path, format=format or figure_format(path), dpi=150)
