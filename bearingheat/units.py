@@ -31,6 +31,7 @@ __all__ = [
     "parse_quantity",
     "convert_column",
     "celsius",
+    "quantity_parts",
 ]
 
 TWO_PI = 2.0 * math.pi
@@ -340,3 +341,18 @@ def celsius(value: Any, name: str):
     if isinstance(mag, pd.Series):
         return mag.astype(float)
     return np.asarray(mag, dtype=float) if np.ndim(mag) else float(mag)
+
+
+def quantity_parts(value: Any) -> tuple[np.ndarray, str]:
+    """(magnitudes as a flat float array, unit text) of a Quantity, pint-pandas Series or plain number ('' unit).
+
+    >>> quantity_parts(ureg().Quantity([1.0, 2.0], "N*mm"))
+    (array([1., 2.]), 'N*mm')
+    """
+    if _is_pint_series(value):
+        value = value.pint.quantity
+    if isinstance(value, pint.Quantity):
+        return np.ravel(np.asarray(value.magnitude, dtype=float)), f"{value.units:~C}".replace("·", "*")
+    if isinstance(value, pd.Series):
+        return value.to_numpy(dtype=float).ravel(), ""
+    return np.ravel(np.asarray(value, dtype=float)), ""

@@ -1,9 +1,22 @@
 """The unit boundary for Python callers: pint Quantities in, results of Quantities out.
 
+Argument and result names are those of the column contract
+(:mod:`bearingheat.calc.contract`): ``designation``, ``T_amb``, ``VI``,
+``MR``, ``NR``. The friction and heat-balance results are frozen
+dataclasses (:class:`~bearingheat.api.results.Result`) with one value per
+operating point, ``status`` and ``messages`` per point, ``to_frame()`` (the
+headers of ``calc``), a short ``repr`` and an HTML view in notebooks.
+
 Error policy (the same for every function here): input that cannot be used
 at all (an unknown designation or model, a plain number where a Quantity is
-needed, a unit of the wrong dimension) raises a
-:class:`~bearingheat.errors.BearingheatError` subclass naming the argument.
+needed, a unit of the wrong dimension, a number outside its valid range)
+raises a :class:`~bearingheat.errors.BearingheatError` subclass naming the
+argument (and the index of an array). A point that can be computed but
+deserves a look (a number outside its plausible range, a value that differs
+from the bearing table, a contact seal) gets status 'warning' and its
+message; the heat balance gives a point it cannot solve (no equilibrium, a
+method that does not apply) status 'error' and NaN, and the other points
+their values.
 """
 from bearingheat.api.bearings import BearingData, bearing, bearing_table, designations
 from bearingheat.api.bushing import size_bushing, size_thrust_washer

@@ -12,7 +12,7 @@ import numpy as np
 from bearingheat.calc.contract import range_problems
 from bearingheat.errors import BearingheatError
 
-__all__ = ["check_ranges", "where"]
+__all__ = ["check_ranges", "point_warnings", "where"]
 
 
 def where(i: int, shape: tuple) -> str:
@@ -35,3 +35,21 @@ def check_ranges(arrays: dict[str, np.ndarray], shape: tuple, error: type[Bearin
             raise error(message + where(i, shape))
         warnings += [message + where(i, shape) for i, message in found[:1]]
     return warnings
+
+
+def point_warnings(arrays: dict[str, np.ndarray], shape: tuple, error: type[BearingheatError]) -> list[list[str]]:
+    """:func:`check_ranges` per operating point: raise for unusable numbers, and return each point's plausibility
+    warnings (a list per point of the flattened broadcast shape)."""
+    size = int(np.prod(shape)) if shape else 1
+    out: list[list[str]] = [[] for _ in range(size)]
+    check_ranges(arrays, shape, error)  # the refusals
+    for name, values in arrays.items():
+        flat = np.broadcast_to(values, shape).ravel() if shape else np.asarray(values, dtype=float).reshape(1)
+        _, found = range_problems(name, flat, lambda i, v=flat, n=name: f"{n}: {v[i]:g}")
+        for i, message in found:
+            if np.ndim(values) == 0:  # one value for every point
+                for point in out:
+                    point.append(message)
+                break
+            out[i].append(message)
+    return out

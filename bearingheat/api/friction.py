@@ -5,7 +5,7 @@
 >>> r = friction_torque("6205", d=25 * u.mm, D=52 * u.mm, C0=7.8 * u.kN, lubrication="oil_bath",
 ...                     n=3000 * u.rpm, Fr=2 * u.kN, nu=12 * u("mm^2/s"))
 >>> print(f"MR = {r.MR.to('N*mm').magnitude:.3f} N*mm, NR = {r.NR.to('W').magnitude:.3f} W, {r.status}")
-MR = 47.535 N*mm, NR = 14.932 W, ok
+MR = 47.535 N*mm, NR = 14.932 W, ['ok']
 
 Scalars, numpy arrays and pint-pandas Series all work; arrays broadcast
 against each other (one bearing, many operating points) and a Series in
@@ -21,7 +21,8 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from bearingheat.api._checks import check_ranges, where
+from bearingheat.api._checks import point_warnings, where
+from bearingheat.api.results import Result
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.contract import column
 from bearingheat.calc.fill import fill_arrays
@@ -36,8 +37,8 @@ __all__ = ["FrictionResult", "friction_torque"]
 
 
 
-@dataclass
-class FrictionResult:
+@dataclass(frozen=True, repr=False)
+class FrictionResult(Result):
     """Results of the catalogue friction model as Quantities, as :func:`friction_torque` returns them.
 
     The model is the one of the Schaeffler rolling bearing catalogue (Russian
@@ -75,12 +76,13 @@ class FrictionResult:
     nu_n_dM : pint.Quantity [mm³/(s·min)]
         The viscosity-speed figure ν·n·dM of the f2 chart where M2 applies,
         NaN elsewhere.
-    status : str
-        'ok', or 'warning' when ``messages`` is not empty.
+    status : list of str
+        Per operating point: 'ok', or 'warning' where the point has messages.
     messages : list of str
-        The warnings: implausible magnitudes (probably a unit mix-up), a
-        contact seal whose friction is not in the model, a cylindrical
-        roller bearing above Fa/Fr = 0.4, notes on the designation.
+        Per operating point, joined by '; ': implausible magnitudes
+        (probably a unit mix-up), a contact seal whose friction is not in the
+        model, a cylindrical roller bearing above Fa/Fr = 0.4, notes on the
+        designation, values that differ from the bearing table.
     bearing_type : str
         The bearing type of the coefficient tables, e.g. 'deep_groove_ball'.
     series : str
@@ -115,8 +117,8 @@ class FrictionResult:
     NR: Any
     Fa_over_A: Any
     nu_n_dM: Any
-    status: str = "ok"
-    messages: list[str] = field(default_factory=list)
+    status: list[str] = field(default_factory=lambda: ["ok"])
+    messages: list[str] = field(default_factory=lambda: [""])
     bearing_type: str = ""
     series: str = ""
     model_results: dict = field(default_factory=dict)
@@ -140,7 +142,7 @@ def _optional(value, unit: str, name: str):
     return math.nan if value is None else magnitude(value, unit, name)
 
 
-def friction_torque(bearing: str | None = None, *, n, nu, lubrication: str | None = None, Fr=None, Fa=None,
+def friction_torque(designation: str | None = None, *, n, nu, lubrication: str | None = None, Fr=None, Fa=None,
                     d=None, D=None, B=None, C0=None, bearing_type: str | None = None, series: str | None = None,
                     arrangement: str = "single", Y=None, e=None, X0=None, Y0=None, alpha=None,
                     f0=None, f1=None, f2=None, f2_chart: F2Chart | None = None,
@@ -165,7 +167,7 @@ def friction_torque(bearing: str | None = None, *, n, nu, lubrication: str | Non
 
     Parameters
     ----------
-    bearing : str, optional
+    designation : str, optional
         Designation such as ``"6205-2Z"`` or ``"NU206-E"``
         (:func:`~bearingheat.catalogue.designation.parse_designation`); or
         leave it out and give ``bearing_type`` and ``series`` for an explicit
@@ -275,7 +277,11 @@ def friction_torque(bearing: str | None = None, *, n, nu, lubrication: str | Non
     >>> r = friction_torque("6205", d=25 * u.mm, D=52 * u.mm, C0=7.8 * u.kN, lubrication="oil_bath",
     ...                     n=[1000, 3000] * u.rpm, Fr=2 * u.kN, nu=12 * u("mm^2/s"))
     >>> r.MR.to("N*mm").magnitude.round(3), r.status
-    (array([41.074, 47.535]), 'ok')
+    (array([41.074, 47.535]), ['ok', 'ok'])
+    >>> r.to_frame()[["MR [N*mm]", "NR [W]", "status"]].round(3)
+       MR [N*mm]  NR [W] status
+    0     41.074   4.301     ok
+    1     47.535  14.932     ok
     """
     friction_model = get_model(model)
     inputs = {
@@ -296,21 +302,21 @@ def friction_torque(bearing: str | None = None, *, n, nu, lubrication: str | Non
               for k, v in inputs.items()}
     # blank dimensions, ratings and factors from the bearing table (Schaeffler HR 1, 2006)
     typed = {k for k, v in {"d": d, "D": D, "B": B, "C0": C0, "Y": Y, "e": e, "Y0": Y0}.items() if v is not None}
-    arrays, fill_notes, unknown = fill_arrays(bearing, arrays, typed)
+    arrays, fill_notes, unknown = fill_arrays(designation, arrays, typed)
     if unknown is not None and D is None:
         raise FrictionInputError(f"{unknown}; or give d, D (and C0)")
     shape = np.broadcast_shapes(*(v.shape for v in arrays.values()))
     given = {"n": n, "nu": nu, "Fr": Fr, "Fa": Fa, "C0": C0, "alpha": alpha, "d": d, "D": D, "B": B, "Y": Y,
              "e": e, "X0": X0, "Y0": Y0, "f0": f0, "f1": f1, "f2": f2}
-    range_warnings = check_ranges({k: arrays[k] for k, v in given.items() if v is not None}, shape, FrictionInputError)
+    per_point = point_warnings({k: arrays[k] for k, v in given.items() if v is not None}, shape, FrictionInputError)
     # arrays become one row axis; scalars stay scalars (no copies of constants)
     flat = {k: (v if v.ndim == 0 else np.broadcast_to(v, shape).ravel()) for k, v in arrays.items()}
-    keys = pd.DataFrame({"designation": [bearing], "type": [bearing_type], "series": [series],
+    keys = pd.DataFrame({"designation": [designation], "type": [bearing_type], "series": [series],
                          "lubrication": [lubrication], "arrangement": [arrangement]})
     supports = build_support_arrays(keys, flat)
     if supports.error and friction_model.catalogue_keys:
         raise FrictionInputError(str(supports.error))
-    supports.extra = {"designation": bearing, "type": bearing_type, "series": series, "lubrication": lubrication,
+    supports.extra = {"designation": designation, "type": bearing_type, "series": series, "lubrication": lubrication,
                       **_model_inputs(model_inputs or {}, friction_model.inputs)}
     with np.errstate(all="ignore"):
         results, problems = friction_model.evaluate(supports, Labels(), f2_chart)
@@ -319,8 +325,11 @@ def friction_torque(bearing: str | None = None, *, n, nu, lubrication: str | Non
         first = errors[0]
         i = int(np.flatnonzero(first.mask)[0])
         raise FrictionInputError(first.message(i) + where(i, shape))
-    messages = range_warnings + [p.message(int(np.flatnonzero(p.mask)[0])) for p in problems]
-    messages += list(supports.notes[0]) + fill_notes
+    for problem in problems:  # warnings of the points they concern
+        for i in np.flatnonzero(np.broadcast_to(problem.mask, (len(per_point),))):
+            per_point[i].append(problem.message(int(i)))
+    for point in per_point:  # notes on the bearing: every point
+        point.extend(list(supports.notes[0]) + fill_notes)
     for name in ("MR", "NR"):
         bad = ~np.isfinite(results[name])
         if bad.any():
@@ -341,7 +350,7 @@ def friction_torque(bearing: str | None = None, *, n, nu, lubrication: str | Non
         f0=out("f0", None), f1=out("f1", None), P0=out("P0", "N"), P1=out("P1", "N"),
         M0=out("M0", "N*mm"), M1=out("M1", "N*mm"), M2=out("M2", "N*mm"), MR=out("MR", "N*mm"),
         NR=out("NR", "W"), Fa_over_A=out("Fa_over_A", None), nu_n_dM=out("nu_n_dM", "mm^3/(s*min)"),
-        status="warning" if messages else "ok", messages=messages,
+        status=["warning" if m else "ok" for m in per_point], messages=["; ".join(m) for m in per_point],
         bearing_type=str(supports.bearing_type), series=str(supports.series),
         model_results={name: out(name, None if unit in ("", "1") else unit) for name, unit in MODEL_REPORT_UNITS.items()
                        if name in results and name in friction_model.outputs},

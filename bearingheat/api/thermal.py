@@ -14,6 +14,7 @@ import numpy as np
 import pandas as pd
 
 from bearingheat.api._checks import check_ranges
+from bearingheat.api.results import Result
 from bearingheat.calc.fill import fill_from_catalogue
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.models import compute_supports
@@ -26,8 +27,8 @@ from bearingheat.units import celsius, magnitude, quantity
 __all__ = ["HeatBalanceResult", "heat_balance", "thermal_reference_speed"]
 
 
-@dataclass
-class HeatBalanceResult:
+@dataclass(frozen=True, repr=False)
+class HeatBalanceResult(Result):
     """Heat balance of one bearing or of many operating points, as Quantities.
 
     The values are pint Quantities of the shape of the broadcast arguments
@@ -43,10 +44,10 @@ class HeatBalanceResult:
         apply or neither B nor T is given.
     n_per : pint.Quantity [1/min]
         Thermally permissible speed n_θr·f_n at ``T_bearing`` (needs
-        T_bearing and T_ambient), capped at n_G where that is given.
+        T_bearing and T_amb), capped at n_G where that is given.
     T_op : pint.Quantity [degC]
         Operating temperature at the speed n, where the friction heat and
-        the heat carried away balance (needs T_ambient).
+        the heat carried away balance (needs T_amb).
     nu_op : pint.Quantity [mm²/s]
         Oil viscosity at T_op (from nu40/nu100 or iso_vg, or the given nu).
     Q_S : pint.Quantity [W]
@@ -55,7 +56,7 @@ class HeatBalanceResult:
     Q_L : pint.Quantity [W]
         Heat carried away by circulating oil, at the same temperature
         (0 without V_oil).
-    N_R : pint.Quantity [W]
+    NR : pint.Quantity [W]
         Friction power at the operating point, (π·n/30)·1e-3·M_R.
     status : list of str
         Per operating point: 'ok', 'warning' or 'error'.
@@ -72,8 +73,8 @@ class HeatBalanceResult:
     >>> import pint
     >>> u = pint.get_application_registry()
     >>> r = heat_balance("6205", d=25 * u.mm, D=52 * u.mm, B=15 * u.mm, C0=7.8 * u.kN, n=3000 * u.rpm,
-    ...                  Fr=2 * u.kN, nu=12 * u("mm^2/s"), T_ambient=u.Quantity(20, "degC"))
-    >>> round(r.T_op.to("degC").magnitude, 1), round(r.N_R.to("W").magnitude, 2), r.n_per.magnitude
+    ...                  Fr=2 * u.kN, nu=12 * u("mm^2/s"), T_amb=u.Quantity(20, "degC"))
+    >>> round(r.T_op.to("degC").magnitude, 1), round(r.NR.to("W").magnitude, 2), r.n_per.magnitude
     (32.9, 14.93, nan)
     """
 
@@ -83,7 +84,7 @@ class HeatBalanceResult:
     nu_op: object
     Q_S: object
     Q_L: object
-    N_R: object
+    NR: object
     status: list
     messages: list
 
@@ -110,24 +111,24 @@ _API_COLUMNS = {
     # argument -> (frame column, catalogue unit)
     "d": ("d", "mm"), "D": ("D", "mm"), "B": ("B", "mm"), "T": ("T", "mm"), "C0": ("C0", "N"),
     "n": ("n", "1/min"), "Fr": ("Fr", "N"), "Fa": ("Fa", "N"), "nu": ("nu", "mm^2/s"),
-    "T_ambient": ("T_amb", "degC"), "T_bearing": ("T_bearing", "degC"), "k_q": ("k_q", "W/(mm^2*K)"),
+    "T_amb": ("T_amb", "degC"), "T_bearing": ("T_bearing", "degC"), "k_q": ("k_q", "W/(mm^2*K)"),
     "V_oil": ("V_oil", "l/min"), "dT_oil": ("dT_oil", "delta_degC"), "Q_E": ("Q_E", "W"),
     "nu40": ("nu40", "mm^2/s"), "nu100": ("nu100", "mm^2/s"), "iso_vg": ("iso_vg", "1"),
-    "viscosity_index": ("VI", "1"), "n_G": ("n_G", "1/min"), "n_thr_catalogue": ("n_thr_catalogue", "1/min"),
+    "VI": ("VI", "1"), "n_G": ("n_G", "1/min"), "n_thr_catalogue": ("n_thr_catalogue", "1/min"),
 }
 
 
 def heat_balance(designation: str | None = None, *, d=None, D=None, n=None, C0=None, B=None, T=None, Fr=None, Fa=None,
-                 lubrication: str = "oil_bath", nu=None, nu40=None, nu100=None, iso_vg=None, viscosity_index=None,
-                 T_ambient=None, T_bearing=None, k_q=None, V_oil=None, dT_oil=None, Q_E=None, n_G=None,
+                 lubrication: str = "oil_bath", nu=None, nu40=None, nu100=None, iso_vg=None, VI=None,
+                 T_amb=None, T_bearing=None, k_q=None, V_oil=None, dT_oil=None, Q_E=None, n_G=None,
                  n_thr_catalogue=None, viscosity_at: str = "auto", method: str = "exact",
                  t_limit=None, bearing_type: str | None = None, series: str | None = None) -> HeatBalanceResult:
     """Thermal reference speed, permissible speed and operating temperature of a bearing (Quantities).
 
-    The heat balance N_R + Q_E = Q_S + Q_L of the Schaeffler catalogue HR 1
+    The heat balance NR + Q_E = Q_S + Q_L of the Schaeffler catalogue HR 1
     "Rolling bearings" (edition June 2006), after ISO 15312 (thermal
     reference speed) and the draft of DIN 732 (thermally permissible speed);
-    the friction N_R is the model of :func:`friction_torque` (Schaeffler
+    the friction NR is the model of :func:`friction_torque` (Schaeffler
     rolling bearing catalogue, chapter «Трение и нагрев», Friction and
     increases in temperature). Viscosity against temperature follows
     ASTM D341 (Walther), ISO 3448 grades and ASTM D2270.
@@ -135,7 +136,7 @@ def heat_balance(designation: str | None = None, *, d=None, D=None, n=None, C0=N
     Every dimensional argument is a pint Quantity (arrays and pint-pandas
     Series broadcast: one bearing, many operating points). Temperatures are
     absolute (degC, K); ``dT_oil`` is a difference (K, delta_degC);
-    ``iso_vg`` and ``viscosity_index`` are plain numbers. A number outside
+    ``iso_vg`` and ``VI`` are plain numbers. A number outside
     its valid range raises; one outside its plausible range is a warning in
     ``messages``. A row the friction model or the balance cannot compute
     (a missing n, a negative load, an unknown designation, no equilibrium)
@@ -154,7 +155,7 @@ def heat_balance(designation: str | None = None, *, d=None, D=None, n=None, C0=N
     D : pint.Quantity [length], optional
         Outside diameter; valid up to 1e5 mm (outside 1 to 6000 mm a warning).
     n : pint.Quantity [1/min], optional
-        Operating speed (1/min, rpm, Hz); needed for T_op, n_per and N_R.
+        Operating speed (1/min, rpm, Hz); needed for T_op, n_per and NR.
         Valid up to 1e7 1/min (above 2e5 1/min a warning).
     C0 : pint.Quantity [force], optional
         Basic static load rating; needed for n_thr (reference load
@@ -181,10 +182,10 @@ def heat_balance(designation: str | None = None, *, d=None, D=None, n=None, C0=N
     iso_vg : float, optional
         ISO 3448 viscosity grade (2 to 3200) instead of nu40/nu100; valid
         1 to 10 000.
-    viscosity_index : float, optional
+    VI : float, optional
         Viscosity index of the ISO VG oil (ASTM D2270; default 95); valid
         -100 to 400.
-    T_ambient : pint.Quantity [temperature], optional
+    T_amb : pint.Quantity [temperature], optional
         Ambient temperature; needed for T_op, nu_op, Q_S, Q_L and n_per.
         Valid -60 to 200 °C.
     T_bearing : pint.Quantity [temperature], optional
@@ -195,7 +196,7 @@ def heat_balance(designation: str | None = None, *, d=None, D=None, n=None, C0=N
     V_oil : pint.Quantity [l/min], optional
         Circulating oil flow; valid 0 to 1e4 l/min.
     dT_oil : pint.Quantity [temperature difference], optional
-        Oil temperature rise; default T_bearing − T_ambient (oil fed at
+        Oil temperature rise; default T_bearing − T_amb (oil fed at
         ambient). Valid 0 to 200 K.
     Q_E : pint.Quantity [power], optional
         External heat flowing into the bearing (negative: cooling); default 0.
@@ -223,7 +224,7 @@ def heat_balance(designation: str | None = None, *, d=None, D=None, n=None, C0=N
     Returns
     -------
     HeatBalanceResult
-        n_thr, n_per [1/min], T_op [degC], nu_op [mm²/s], Q_S, Q_L, N_R [W],
+        n_thr, n_per [1/min], T_op [degC], nu_op [mm²/s], Q_S, Q_L, NR [W],
         and per operating point ``status`` and ``messages``.
 
     Raises
@@ -244,7 +245,7 @@ def heat_balance(designation: str | None = None, *, d=None, D=None, n=None, C0=N
     >>> u = pint.get_application_registry()
     >>> r = heat_balance("6205", d=25 * u.mm, D=52 * u.mm, B=15 * u.mm, C0=7.8 * u.kN, n=3000 * u.rpm,
     ...                  Fr=2 * u.kN, nu40=68 * u("mm^2/s"), nu100=8.6 * u("mm^2/s"),
-    ...                  T_ambient=u.Quantity(20, "degC"), T_bearing=u.Quantity(70, "degC"))
+    ...                  T_amb=u.Quantity(20, "degC"), T_bearing=u.Quantity(70, "degC"))
     >>> round(r.n_thr.to("1/min").magnitude), round(r.n_per.to("1/min").magnitude), r.status
     (14416, 8053, ['ok'])
     >>> round(r.T_op.to("degC").magnitude, 1), round(r.nu_op.to("mm^2/s").magnitude, 1)
@@ -255,8 +256,8 @@ def heat_balance(designation: str | None = None, *, d=None, D=None, n=None, C0=N
     if viscosity_at not in VISCOSITY_AT:
         raise HeatBalanceError(f"viscosity_at: {viscosity_at!r} is not one of {', '.join(VISCOSITY_AT)}")
     args = {"d": d, "D": D, "B": B, "T": T, "C0": C0, "n": n, "Fr": Fr, "Fa": Fa, "nu": nu,
-            "T_ambient": T_ambient, "T_bearing": T_bearing, "k_q": k_q, "V_oil": V_oil, "dT_oil": dT_oil,
-            "Q_E": Q_E, "nu40": nu40, "nu100": nu100, "iso_vg": iso_vg, "viscosity_index": viscosity_index,
+            "T_amb": T_amb, "T_bearing": T_bearing, "k_q": k_q, "V_oil": V_oil, "dT_oil": dT_oil,
+            "Q_E": Q_E, "nu40": nu40, "nu100": nu100, "iso_vg": iso_vg, "VI": VI,
             "n_G": n_G, "n_thr_catalogue": n_thr_catalogue}
     columns = {}
     index = None
@@ -316,7 +317,7 @@ def heat_balance(designation: str | None = None, *, d=None, D=None, n=None, C0=N
     N_R_q = (quantity(pd.Series(N_R, index=index), "W") if index is not None
              else quantity(N_R.reshape(shape) if shape else float(N_R[0]), "W"))
     return HeatBalanceResult(n_thr=out("n_thr", "1/min"), n_per=out("n_per", "1/min"), T_op=out("T_op", "degC"),
-                             nu_op=out("nu_op", "mm^2/s"), Q_S=out("Q_S", "W"), Q_L=out("Q_L", "W"), N_R=N_R_q,
+                             nu_op=out("nu_op", "mm^2/s"), Q_S=out("Q_S", "W"), Q_L=out("Q_L", "W"), NR=N_R_q,
                              status=status, messages=["; ".join(m) for m in messages])
 
 

@@ -37,7 +37,7 @@ def test_thermal_reference_speed_error_message():
 
 def base_case(**overrides):
     args = dict(d=25 * u.mm, D=52 * u.mm, B=15 * u.mm, C0=7.8 * u.kN, n=3000 * u.rpm, Fr=2 * u.kN,
-                nu40=68 * u("mm^2/s"), nu100=8.6 * u("mm^2/s"), T_ambient=u.Quantity(20, "degC"),
+                nu40=68 * u("mm^2/s"), nu100=8.6 * u("mm^2/s"), T_amb=u.Quantity(20, "degC"),
                 T_bearing=u.Quantity(70, "degC"))
     args.update(overrides)
     return heat_balance("6205", **args)
@@ -95,7 +95,7 @@ def test_runaway_is_reported():
 
 def test_temperature_units_are_invariant():
     a = base_case()
-    b = base_case(T_ambient=u.Quantity(293.15, "K"), T_bearing=u.Quantity(158, "degF"), n=50 * u.Hz)
+    b = base_case(T_amb=u.Quantity(293.15, "K"), T_bearing=u.Quantity(158, "degF"), n=50 * u.Hz)
     assert a.T_op.to("degC").magnitude == pytest.approx(b.T_op.to("degC").magnitude, rel=1e-9)
     assert a.n_per.magnitude == pytest.approx(b.n_per.magnitude, rel=1e-9)
 
@@ -114,7 +114,7 @@ def test_viscosity_at_operating_temperature_option():
     at_operating = base_case(viscosity_at="operating")
     # the bearing settles at about 40 degC < 70 degC: thicker oil, more friction at the operating state;
     # n_per is the speed at which the bearing reaches T_bearing, so its oil has the viscosity of T_bearing either way
-    assert at_operating.N_R.magnitude > at_bearing.N_R.magnitude
+    assert at_operating.NR.magnitude > at_bearing.NR.magnitude
     assert at_operating.n_per.magnitude == at_bearing.n_per.magnitude
     with pytest.raises(ValueError, match=re.escape("viscosity_at: 'oil' is not one of auto, bearing, operating")):
         base_case(viscosity_at="oil")
@@ -130,13 +130,13 @@ def test_limiting_speed_caps_n_per_with_a_warning():
 
 def test_method_does_not_apply_to_contact_seals_and_thrust_ball_bearings():
     sealed = heat_balance("6205-2RSR", d=25 * u.mm, D=52 * u.mm, B=15 * u.mm, C0=7.8 * u.kN, n=3000 * u.rpm,
-                          Fr=2 * u.kN, nu=20 * u("mm^2/s"), T_ambient=u.Quantity(20, "degC"),
+                          Fr=2 * u.kN, nu=20 * u("mm^2/s"), T_amb=u.Quantity(20, "degC"),
                           T_bearing=u.Quantity(70, "degC"))
     assert math.isnan(sealed.n_per.magnitude) and math.isnan(sealed.T_op.magnitude)
     assert ("n_thr: the thermal method (ISO 15312, DIN 732) does not apply to bearings with contact seals"
             in sealed.messages[0])
     thrust = heat_balance("51105", d=25 * u.mm, D=42 * u.mm, B=11 * u.mm, C0=28.5 * u.kN, n=1000 * u.rpm,
-                          Fa=1 * u.kN, nu=20 * u("mm^2/s"), T_ambient=u.Quantity(20, "degC"),
+                          Fa=1 * u.kN, nu=20 * u("mm^2/s"), T_amb=u.Quantity(20, "degC"),
                           T_bearing=u.Quantity(70, "degC"))
     assert math.isnan(thrust.n_per.magnitude)
     assert "does not apply to thrust ball bearings" in thrust.messages[0]
