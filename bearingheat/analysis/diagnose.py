@@ -83,7 +83,7 @@ SIGNIFICANCE_RULE = (
     f"(b) its grouped {{k}}-fold cross-validated relative RMSE is at least {MIN_CV_IMPROVEMENT:.0%} below that "
     f"of 'none', and (c) a one-sided paired t-test of the held-out squared relative errors, averaged per "
     f"group, gives p < {MAX_P_VALUE:g}. Among significant candidates whose held-out error is within "
-    f"{CV_TIE:.0%} of the best, the lowest BIC wins. No significant candidate: the answer is 'none'."
+    f"{CV_TIE:.0%} of the best, the lowest BIC wins; with no significant candidate the answer is 'none'."
 )
 MIN_ROWS = 20
 
@@ -332,6 +332,17 @@ class Diagnosis:
     def chosen(self) -> CandidateScore:
         return self.scores[self.effect]
 
+    def selection(self) -> str:
+        """What the rule chose, in one sentence."""
+        significant = [name for name, s in self.scores.items() if s.significant]
+        if self.effect == "none":
+            return "No candidate is significant: the answer is 'none'."
+        others = [name for name in significant if name != self.effect]
+        tied = f"; also significant: {', '.join(others)}" if others else ""
+        chosen = self.chosen
+        return (f"Chosen: '{self.effect}' (ΔBIC {chosen.delta_bic:.1f}, held-out gain {chosen.cv_improvement:.1%}, "
+                f"p = {chosen.p_value:.2g}){tied}.")
+
     def summary(self) -> dict:
         none, chosen = self.scores["none"], self.chosen
         return {
@@ -348,6 +359,7 @@ class Diagnosis:
             "bearings": list(self.data.bearing_names),
             "folds": self.k, "groups": int(len(np.unique(self.groups))),
             "selection_rule": SIGNIFICANCE_RULE.format(k=self.k),
+            "selection": self.selection(),
             "residual_structure": self.structure,
             "candidates": {name: score.as_json() for name, score in self.scores.items()},
         }

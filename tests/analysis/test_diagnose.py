@@ -123,3 +123,13 @@ def test_real_published_running_torque_is_too_little_to_diagnose():
     with pytest.raises(DiagnoseError, match=re.escape(
             "diagnose needs at least 20 usable rows of measured torque; got 2")):
         diagnose_table(table)
+
+
+def test_the_selection_text_says_what_was_chosen():
+    from diagnose_cases import CASES, CONTROLS, run_case
+    effect, seed, bearings = next(c for c in CASES if c[0] == "seal_drag")
+    chosen = run_case(effect, seed, bearings)[2]
+    assert chosen.summary()["selection"].startswith("Chosen: 'seal_drag' (ΔBIC ")
+    assert "the answer is 'none'." not in chosen.summary()["selection"]
+    control = run_case(*CONTROLS[0])[2]
+    assert control.summary()["selection"] == "No candidate is significant: the answer is 'none'."

@@ -119,7 +119,7 @@ def report_markdown(diagnosis: Diagnosis, summary: dict, key: str) -> str:
         lines.append(f"| {name} | {params} | {format_value(c['rmse'])} | {format_value(c['cv_rmse'])} | {format_value(c['cv_rel_rmse'], 3)} "
                      f"| {format_value(c['delta_bic'], 4)} | {gain} | {format_value(c['p_value'], 2)} | "
                      f"{'yes' if c['significant'] else 'no'} |")
-    lines += ["", "Selection rule: " + summary["selection_rule"], "",
+    lines += ["", "Selection rule: " + summary["selection_rule"], "", summary["selection"], "",
               "## Plots", "",
               f"![residuals against {key}](residuals.png)", "",
               "![measured against predicted](measured_vs_predicted.png)", ""]
@@ -150,7 +150,7 @@ def write_outputs(diagnosis: Diagnosis, out_dir, *, force: bool = False, inputs=
 
 def summary_lines(summary: dict, out_dir) -> list[str]:
     """The outcome in a few lines for the console: the effect, the error before and after, where the report is."""
-    lines = [f"effect: {summary['effect']}  parameters: {summary['parameters']}",
+    lines = [f"effect: {summary['effect']}  parameters: {format_value(summary['parameters']) or '(none)'}",
              f"RMSE {summary['rmse_before']:.4g} -> {summary['rmse_after']:.4g} N*mm "
              f"(held-out {summary['cv_rmse_before']:.4g} -> {summary['cv_rmse_after']:.4g}); "
              f"MAPE {summary['mape_before']:.3g} -> {summary['mape_after']:.3g} %"]
