@@ -175,8 +175,9 @@ def compare_models(measured: MeasuredData, models: tuple[str, ...] = (DEFAULT_MO
         excluded.extend(messages)
     rows = np.flatnonzero(usable)
     if len(rows) < MIN_ROWS:
+        first = f"; the first left out: {excluded[0]}" if excluded else ""
         raise DiagnoseError(f"the model comparison needs at least {MIN_ROWS} rows usable in every model "
-                            f"({', '.join(models)}); got {len(rows)}")
+                            f"({', '.join(models)}); got {len(rows)}{first}")
     M = measured.M[rows]
     frame = measured.frame.iloc[rows]
     keys = [pd.factorize(pd.Series(bearing_keys(frame), dtype=object))[0]]

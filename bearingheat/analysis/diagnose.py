@@ -38,6 +38,7 @@ from scipy import stats
 
 from bearingheat.analysis.effects import CANDIDATES, EFFECT_NAMES, ModelData, bearing_keys, catalogue_arrays
 from bearingheat.calc.contract import parse_header
+from bearingheat.calc.fill import fill_from_catalogue
 from bearingheat.calc.models import compute_supports
 from bearingheat.calc.supports import SupportArrays
 from bearingheat.calc.table import to_catalogue_units
@@ -160,7 +161,11 @@ def read_measurements(table: pd.DataFrame) -> MeasuredData:
         converted = to_catalogue_units(table.drop(columns=measured_headers))
     except InputError as exc:
         raise DiagnoseError(str(exc)) from exc
-    frame = converted.frame
+    # blank dimensions and ratings from the bearing table, as calc fills them
+    frame, fill_problems, _ = fill_from_catalogue(converted.frame, converted.labels)
+    for position, level, message in fill_problems:
+        if level == "error":
+            row_errors[position].append(f"row {position + 1}: {message}")
     have = set(frame.columns)
     if "designation" not in have and not {"type", "series"} <= have:
         raise DiagnoseError("missing column: 'designation' (or 'type' and 'series')")
