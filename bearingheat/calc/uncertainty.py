@@ -64,11 +64,12 @@ def coefficient_uncertainties(coefficients: pd.DataFrame) -> dict[str, dict[str,
         raise InputError(f"coefficients: missing column(s) {', '.join(sorted(missing))}; expected the "
                          "coefficients.csv of 'bearingheat audit'")
     out: dict[str, dict[str, float]] = {}
-    for row in coefficients.itertuples(index=False):  # one row per bearing and coefficient: a short table
-        name = {"f0": "f0_rel_unc", "f1": "f1_rel_unc", "f1_a": "f1_rel_unc"}.get(str(row.coefficient))
-        if name is None or not np.isfinite(row.fitted) or row.fitted == 0:
-            continue
-        out.setdefault(str(row.bearing), {})[name] = float((row.ci_high - row.ci_low) / 2.0 / abs(row.fitted))
+    fitted, low, high = (pd.to_numeric(coefficients[c], errors="coerce").to_numpy(dtype=float)
+                         for c in ("fitted", "ci_low", "ci_high"))
+    names = coefficients["coefficient"].astype(str).map({"f0": "f0_rel_unc", "f1": "f1_rel_unc", "f1_a": "f1_rel_unc"})
+    for i in np.flatnonzero(names.notna().to_numpy() & np.isfinite(fitted) & (fitted != 0)):  # a short table
+        out.setdefault(str(coefficients["bearing"].iat[i]), {})[str(names.iat[i])] = \
+            float((high[i] - low[i]) / 2.0 / abs(fitted[i]))
     return out
 
 
