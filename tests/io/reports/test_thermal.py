@@ -21,10 +21,11 @@ def test_plot_curves_cross_at_n_per_and_T_op(tmp_path):
     assert np.all(np.diff(curves["friction_vs_temperature"]) < 0)
 
 
-def test_docs_image_of_the_heat_balance(root):
-    """Regenerates docs/_static/thermal_heat_balance.png (the figure of docs/thermal.md)."""
+def test_the_heat_balance_figure_is_written(tmp_path):
+    """The figure of docs/thermal.md and the README (committed there from `bearingheat plot examples/gearbox_shaft.csv
+    --row 0`); drawn here into a temporary folder, never over the committed one."""
     table = supports(**{"nu40 [mm^2/s]": [68, 68], "nu100 [mm^2/s]": [8.6, 8.6], "T_amb [degC]": [20, 20],
                         "T_bearing [degC]": [70, 70]}).iloc[[0]]
-    target = root / "docs" / "_static" / "thermal_heat_balance.png"
+    target = tmp_path / "thermal_heat_balance.png"
     draw_heat_balance(heat_balance_curves(table), target)
     assert target.stat().st_size < 100_000
