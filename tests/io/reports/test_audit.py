@@ -27,9 +27,10 @@ def test_lines_list_the_flagged_groups_first(hr1_audit):
     assert lines[-1].startswith("systematic: ")
 
 
-def test_docs_image_of_the_hr1_audit(root, hr1_audit, tmp_path):
-    """Regenerates docs/_static/audit_reference_speeds.png (the figure of docs/measured.md)."""
-    target = root / "docs" / "_static" / "audit_reference_speeds.png"
+def test_docs_image_of_the_hr1_audit(hr1_audit, tmp_path):
+    """The figure of docs/measured.md (committed as docs/_static/audit_reference_speeds.png), drawn into a
+    temporary folder: tests never write into the repository."""
+    target = tmp_path / "audit_reference_speeds.png"
     draw_reference_speeds(hr1_audit, target, dpi=100)
     with Image.open(target) as image:
         assert image.size == (1100, 1220)
