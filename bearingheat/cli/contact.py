@@ -35,14 +35,14 @@ One bearing from arguments (every length, angle, force and speed with its unit):
   --Fa       axial load (N, kN, kgf); default 0 N, which gives alpha = alpha0
   --n        inner-ring speed (1/min, rpm, Hz, rad/s); needed for Fa_min
 
-Several bearings from a CSV file (--csv FILE), one bearing a row. Header cells are
+Several bearings from a CSV file (the TABLE argument), one bearing a row. Header cells are
 'name [unit]' with any unit of the right dimension; unknown columns are ignored:
 
   z, Dw [mm], dm_pitch [mm], ri [mm], ro [mm], alpha0 [deg] or clearance [mm],
   optional Fa [N], n [1/min] and designation (a text label).
 
-Output: 'key: value' lines (one bearing) or CSV (--csv); --json prints one JSON
-object (one bearing) or a list of objects (--csv). Keys: alpha0 [deg], Fa [N],
+Output: 'key: value' lines (one bearing) or CSV (a TABLE); --json prints one JSON
+object (one bearing) or a list of objects (a TABLE). Keys: alpha0 [deg], Fa [N],
 alpha [deg], xi_a, delta_a [mm], C_star [N], sum_rho_i [1/mm], sum_rho_o [1/mm],
 cos_tau_i, cos_tau_o, 2K/(mu*pi)_i, 2K/(mu*pi)_o, and with n: n [1/min], Fa_min [N]
 (at alpha0, the seed's rule) and Fa_min at alpha [N] (at the working angle).
@@ -74,20 +74,21 @@ def add_arguments(parser) -> None:
         example = {"count": "7", "length": "2mm", "angle": "12deg", "force": "2kgf", "speed": "3000rpm"}[kind]
         parser.add_argument(f"--{option}", metavar="N" if kind == "count" else "VALUE",
                             help=f"{kind}, e.g. {example}")
-    parser.add_argument("--csv", metavar="FILE", help="CSV file with one bearing a row (see above)")
+    parser.add_argument("input", metavar="TABLE", nargs="?",
+                        help="CSV file with one bearing a row (see above); without it one bearing from the options")
     parser.add_argument("--json", action="store_true", help="print JSON instead of text")
 
 
 def run(args) -> int:
-    if args.csv is not None:
+    if args.input is not None:
         given = [f"--{option}" for option in _FIELDS if getattr(args, option) is not None]
         if given:
-            raise UsageError(f"--csv takes the bearings from the file; drop {', '.join(given)}")
-        return _run_csv(args.csv, args.json)
+            raise UsageError(f"TABLE gives the bearings; drop {', '.join(given)}")
+        return _run_csv(args.input, args.json)
 
     missing = [f"--{option}" for option in _REQUIRED if getattr(args, option) is None]
     if missing:
-        raise UsageError(f"missing {', '.join(missing)} (or give --csv FILE)")
+        raise UsageError(f"missing {', '.join(missing)} (or give a TABLE of bearings)")
     if (args.alpha0 is None) == (args.clearance is None):
         raise UsageError("give exactly one of --alpha0 (e.g. 12deg) or --clearance (e.g. 0.01mm)")
     try:

@@ -62,7 +62,7 @@ def test_warning_below_minimum_axial_load(capsys):
 @pytest.mark.parametrize("argv, message", [
     ([*GEOMETRY, "--alpha0", "12deg", "--clearance", "0.01mm"],
      "give exactly one of --alpha0 (e.g. 12deg) or --clearance (e.g. 0.01mm)"),
-    (["--z", "7", "--dw", "2mm", "--alpha0", "12deg"], "missing --dm, --ri, --ro (or give --csv FILE)"),
+    (["--z", "7", "--dw", "2mm", "--alpha0", "12deg"], "missing --dm, --ri, --ro (or give a TABLE of bearings)"),
     ([*GEOMETRY[:2], "--dw", "2", *GEOMETRY[4:], "--alpha0", "12deg"],
      "--dw: '2' has no unit; write it with one, e.g. 2mm"),
     (["--z", "7", "--dw", "2mm", "--dm", "8.7355mm", "--ri", "0.9mm", "--ro", "1.0mm", "--alpha0", "12deg"],
@@ -71,8 +71,8 @@ def test_warning_below_minimum_axial_load(capsys):
     ([*GEOMETRY, "--alpha0", "12deg", "--Fa", "2kg"],
      "Fa: 2 kilogram is a mass, not a force; for kilogram-force write 2 kgf"),
     (["--z", "seven", *GEOMETRY[2:], "--alpha0", "12deg"], "--z: 'seven' is not a number"),
-    (["--csv", "x.csv", "--z", "7"], "--csv takes the bearings from the file; drop --z"),
-    (["--csv", "/nonexistent/bearings.csv"], "no such file: /nonexistent/bearings.csv"),
+    (["x.csv", "--z", "7"], "TABLE gives the bearings; drop --z"),
+    (["/nonexistent/bearings.csv"], "no such file: /nonexistent/bearings.csv"),
 ])
 def test_usage_errors_exit_2(capsys, argv, message):
     assert main(["contact", *argv]) == 2
@@ -89,7 +89,7 @@ no load,7,0.2cm,8.7355,1.05,1.16,12,,,
 def test_csv_rows_and_errors(tmp_path, capsys):
     path = tmp_path / "bearings.csv"
     path.write_text(CSV_TEXT, encoding="utf-8")
-    assert main(["contact", "--csv", str(path), "--json"]) == 1
+    assert main(["contact", str(path), "--json"]) == 1
     captured = capsys.readouterr()
     records = json.loads(captured.out)
     assert [r["row"] for r in records] == [1, 2, 3]
@@ -108,7 +108,7 @@ def test_csv_units_from_header_and_csv_output(tmp_path, capsys):
     path = tmp_path / "bearings.csv"
     path.write_text("z,Dw [um],dm_pitch [cm],ri [mm],ro [mm],clearance [um],Fa [N]\n"
                     "7,2000,0.87355,1.05,1.16,9.178008,19.6133\n", encoding="utf-8")
-    assert main(["contact", "--csv", str(path)]) == 0
+    assert main(["contact", str(path)]) == 0
     lines = capsys.readouterr().out.splitlines()
     header, row = lines[0].split(","), lines[1].split(",")
     values = dict(zip(header, row))
@@ -130,7 +130,7 @@ def test_csv_units_from_header_and_csv_output(tmp_path, capsys):
 def test_csv_unusable_exit_2(tmp_path, capsys, text, message):
     path = tmp_path / "bearings.csv"
     path.write_text(text, encoding="utf-8")
-    assert main(["contact", "--csv", str(path)]) == 2
+    assert main(["contact", str(path)]) == 2
     assert capsys.readouterr().err == f"bearingheat contact: error: {path}: {message}\n"
 
 
