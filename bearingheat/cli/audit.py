@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import argparse
+import json
 import sys
 from pathlib import Path
 
@@ -11,7 +12,8 @@ from bearingheat.analysis.audit import (REFERENCE_SPEED_COLUMNS, audit_coefficie
 from bearingheat.calc.contract import parse_header
 from bearingheat.calc.models import DEFAULT_MODEL, MODELS
 from bearingheat.cli import UsageError, add_csv_arguments
-from bearingheat.cli.options import add_force, add_out_dir, add_quiet
+from bearingheat.cli.options import add_force, add_json, add_out_dir, add_quiet
+from bearingheat.io.json import json_safe
 from bearingheat.errors import AuditError, DiagnoseError
 from bearingheat.io.files import check_outputs
 from bearingheat.io.reports.comparison import COMPARISON_FILES, comparison_lines, write_comparison
@@ -74,6 +76,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--sheet", metavar="NAME", help="sheet of an Excel workbook")
     add_force(parser, "the files in DIR")
     add_csv_arguments(parser)
+    add_json(parser)
     add_quiet(parser)
 
 
@@ -84,7 +87,8 @@ def run(args: argparse.Namespace) -> int:
         raise UsageError(f"--folds: {args.folds} must be >= 2")
     out_dir = Path(args.out_dir) if args.out_dir else None
     models = model_names(args.model)
-    say = (lambda text: None) if args.quiet else (lambda text: sys.stdout.write(text + "\n"))
+    say = (lambda text: None) if args.quiet or args.json else (lambda text: sys.stdout.write(text + "\n"))
+    printed: dict = {}
     flagged = False
     speed_names = [args.speed_column] if args.speed_column else list(REFERENCE_SPEED_COLUMNS)
     jobs = []
@@ -114,6 +118,7 @@ def run(args: argparse.Namespace) -> int:
                 for line in coefficient_lines(result):
                     say(line)
                 flagged |= bool((result["flag"] != "").any() or (result["status"] != "ok").any())
+                printed["coefficients"] = result.to_dict(orient="records")
                 if out_dir:
                     write_coefficients(result, out_dir, force=True, inputs=inputs)  # checked above
             elif kind == "models":
@@ -124,6 +129,7 @@ def run(args: argparse.Namespace) -> int:
                 for line in comparison_lines(comparison):
                     say(line)
                 flagged |= bool(comparison.excluded)
+                printed["model_comparison"] = comparison.summary()
                 if out_dir:
                     write_comparison(comparison, out_dir, force=True, inputs=inputs)  # checked above
             else:
@@ -131,8 +137,11 @@ def run(args: argparse.Namespace) -> int:
                 for line in reference_speed_lines(speeds):
                     say(line)
                 flagged |= bool(len(speeds.flagged))
+                printed["reference_speed_groups"] = speeds.groups.to_dict(orient="records")
                 if out_dir:
                     write_reference_speeds(speeds, out_dir, force=True, inputs=inputs)  # checked above
     except AuditError as exc:
         raise UsageError(str(exc)) from exc
+    if args.json:
+        print(json.dumps(json_safe(printed), ensure_ascii=False, default=str))
     return 1 if flagged else 0

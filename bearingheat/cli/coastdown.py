@@ -2,14 +2,15 @@
 from __future__ import annotations
 
 import argparse
+import json
 
 from bearingheat.api.coastdown import analyse_coastdown, analyse_spindle_coastdown
 from bearingheat.cli import UsageError, add_csv_arguments, add_force_argument
-from bearingheat.cli.options import add_out_dir
+from bearingheat.cli.options import add_json, add_out_dir
 from bearingheat.errors import BearingheatError, UnitError
 from bearingheat.io.coastdown import read_rundown
 from bearingheat.io.files import check_outputs
-from bearingheat.io.reports.coastdown import render_report, write_coastdown_outputs
+from bearingheat.io.reports.coastdown import coastdown_summary, render_report, write_coastdown_outputs
 from bearingheat.units import parse_quantity
 
 HELP = "coast-down (run-down) analysis: reduced friction coefficient and torque components (the TMM-7M lab sheet)"
@@ -60,6 +61,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     intervals.add_argument("--dn", default=None, help="speed step of the formula (2) intervals, e.g. 100rpm")
     intervals.add_argument("--dt", default=None, help="time step of the formula (2) intervals, e.g. 10s")
     add_out_dir(parser, "report.md, coastdown.png and summary.json")
+    add_json(parser)
     add_force_argument(parser, "the files in DIR")
     add_csv_arguments(parser)
     parser.add_argument("--spindle", action="store_true", help="also fit the Schaeffler catalogue rolling-bearing form")
@@ -99,7 +101,10 @@ def run(args: argparse.Namespace) -> int:
                 f0_catalogue=args.f0)
     except BearingheatError as exc:
         raise UsageError(str(exc)) from exc
-    print(render_report(result, args.data, png=None))
+    if args.json:
+        print(json.dumps(coastdown_summary(result), ensure_ascii=False))
+    else:
+        print(render_report(result, args.data, png=None))
     if args.out_dir:
         write_coastdown_outputs(result, args.out_dir, args.data, force=args.force, inputs=(args.data,))
     return 0

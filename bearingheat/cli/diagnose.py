@@ -2,12 +2,14 @@
 from __future__ import annotations
 
 import argparse
+import json
 
 from bearingheat.analysis.comparison import ALL_MODELS, compare_models, model_names
 from bearingheat.analysis.diagnose import diagnose_measurements, read_measurements
 from bearingheat.calc.models import DEFAULT_MODEL, MODELS
 from bearingheat.cli import UsageError, add_csv_arguments
-from bearingheat.cli.options import add_force, add_out_dir, add_quiet
+from bearingheat.cli.options import add_force, add_json, add_out_dir, add_quiet
+from bearingheat.io.json import json_safe
 from bearingheat.errors import DiagnoseError
 from bearingheat.io.files import check_outputs
 from bearingheat.io.reports.comparison import COMPARISON_FILES, comparison_lines, write_comparison
@@ -64,6 +66,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--sheet", metavar="NAME", help="sheet of an Excel workbook")
     add_force(parser, "the files in DIR")
     add_csv_arguments(parser)
+    add_json(parser)
     add_quiet(parser)
 
 
@@ -83,16 +86,21 @@ def run(args: argparse.Namespace) -> int:
         diagnosis = diagnose_measurements(measured, k=args.folds, seed=args.seed) if search else None
     except DiagnoseError as exc:
         raise UsageError(str(exc)) from exc
+    printed: dict = {}
     if comparison is not None:
         write_comparison(comparison, args.out_dir, force=args.force, inputs=(args.input,))
         excluded = len(comparison.excluded)
-        if not args.quiet:
+        printed["model_comparison"] = comparison.summary()
+        if not args.quiet and not args.json:
             for line in comparison_lines(comparison):
                 print(line)
     if diagnosis is not None:
         summary = write_outputs(diagnosis, args.out_dir, force=args.force, inputs=(args.input,))
         excluded = summary["n_excluded"]
-        if not args.quiet:
+        printed["diagnosis"] = summary
+        if not args.quiet and not args.json:
             for line in summary_lines(summary, args.out_dir):
                 print(line)
+    if args.json:
+        print(json.dumps(json_safe(printed), ensure_ascii=False))
     return 1 if excluded else 0

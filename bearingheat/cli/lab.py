@@ -2,10 +2,12 @@
 from __future__ import annotations
 
 import argparse
+import json
 
 from bearingheat.analysis.lab import process_lab
 from bearingheat.cli import UsageError, add_csv_arguments, add_force_argument
-from bearingheat.cli.options import add_out_dir
+from bearingheat.cli.options import add_json, add_out_dir
+from bearingheat.io.json import json_safe
 from bearingheat.errors import BearingheatError, UnitError
 from bearingheat.io.files import check_outputs
 from bearingheat.io.reports.lab import write_lab_outputs
@@ -44,6 +46,7 @@ _KNOWN_FILES = ("readings.csv", "task1_mu.csv", "task2_f0_TF.csv", "task3_f_T0.c
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("input", metavar="READINGS", help="CSV (.csv) or Excel (.xlsx) of readings")
     add_out_dir(parser, "report.md, the CSVs and plots", required=True)
+    add_json(parser)
     parser.add_argument("--nu", metavar="VISCOSITY", help="viscosity for the Schaeffler catalogue comparison, e.g. 20mm^2/s")
     parser.add_argument("--lubrication", default="grease",
                         help="lubrication of the Schaeffler catalogue comparison (default grease)")
@@ -71,7 +74,12 @@ def run(args: argparse.Namespace) -> int:
     except BearingheatError as exc:
         raise UsageError(str(exc)) from exc
     files = write_lab_outputs(result, args.out_dir, force=args.force, inputs=(args.input,))
-    if not args.quiet:
+    if args.json:
+        print(json.dumps(json_safe({"task1": result.task1.to_dict(orient="records"),
+                                    "comparison": result.comparison.to_dict(orient="records"),
+                                    "notes": list(result.notes), "files": [str(f) for f in files]}),
+                         ensure_ascii=False))
+    elif not args.quiet:
         print(result.task1.to_string(index=False, float_format=lambda x: f"{x:.4g}"))
         print(result.comparison.to_string(index=False, float_format=lambda x: f"{x:.4g}"))
         for note in result.notes:

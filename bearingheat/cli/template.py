@@ -4,15 +4,16 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from bearingheat.cli import UsageError, add_force_argument
+from bearingheat.cli import UsageError
+from bearingheat.cli.options import add_force, add_output, add_quiet
 from bearingheat.io.excel.template import build_template
 from bearingheat.io.files import atomic_write, safe_output
 
 HELP = "write an Excel template (.xlsx) to fill in with shaft supports"
 
 DESCRIPTION = """\
-Write a workbook a designer fills in without reading docs, then runs
-'bearingheat calc OUT.xlsx -o RESULTS.xlsx' on.
+Write a workbook a designer fills in without reading docs (-o FILE.xlsx), then
+runs 'bearingheat calc FILE.xlsx -o RESULTS.xlsx' on.
 
 Sheets: Supports (header row, editable units row: kN, lbf, 1/min, rpm, Hz ...;
 drop-down lists for lubrication, arrangement and bearing type; two example
@@ -25,9 +26,9 @@ Exit codes: 0 written; 2 the file exists (without --force) or is not .xlsx.
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("output", metavar="OUT.xlsx", help="where to write the template")
-    add_force_argument(parser, "OUT.xlsx")
-    parser.add_argument("-q", "--quiet", action="store_true", help="print nothing")
+    add_output(parser, ".xlsx", required=True)
+    add_force(parser, "FILE")
+    add_quiet(parser)
 
 
 def run(args: argparse.Namespace) -> int:

@@ -121,13 +121,13 @@ def test_plot_output_needs_force(tmp_path, capsys):
 def test_template_output(tmp_path, capsys):
     target = tmp_path / "t.xlsx"
     target.write_bytes(b"old")
-    assert main(["template", str(target)]) == 2
+    assert main(["template", "-o", str(target)]) == 2
     assert _err(capsys) == f"bearingheat template: error: {target} exists; give --force to replace it"
     os.chmod(target, 0o444)
-    assert main(["template", str(target), "--force"]) == 2
+    assert main(["template", "-o", str(target), "--force"]) == 2
     assert _err(capsys) == f"bearingheat template: error: {target} is read-only; make it writable or write to another file"
     os.chmod(target, 0o644)
-    assert main(["template", str(target), "--force", "-q"]) == 0
+    assert main(["template", "-o", str(target), "--force", "-q"]) == 0
     assert openpyxl.load_workbook(target).sheetnames[0] == "Supports"
 
 
@@ -339,8 +339,8 @@ def test_contact_csv_semicolons_decimal_commas_and_escaped_text(tmp_path, capsys
     euro = tmp_path / "euro.csv"
     euro.write_text("designation;z;Dw [um];dm_pitch [cm];ri [mm];ro [mm];clearance [um];Fa [N]\n"
                     "=cmd;7;2000;0,87355;1,05;1,16;9,178008;19,6133\n")
-    assert main(["contact", "--csv", str(comma)]) == 0
+    assert main(["contact", str(comma)]) == 0
     first = capsys.readouterr().out
-    assert main(["contact", "--csv", str(euro)]) == 0
+    assert main(["contact", str(euro)]) == 0
     assert capsys.readouterr().out == first
     assert first.splitlines()[1].startswith("1,'=cmd,")
