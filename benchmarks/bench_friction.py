@@ -137,7 +137,7 @@ def main(points: int = 1_000_000, repeats: int = 3, loop_sample: int = 30_000) -
     for (des, dims, extras), idx in work:
         axial = des not in ("NU206-E", "NA4905")
         unit_args.append(dict(
-            bearing=des, d=dims["d"] * u.mm, D=dims["D"] * u.mm, C0=dims["C0"] * u.N, lubrication="oil_bath",
+            designation=des, d=dims["d"] * u.mm, D=dims["D"] * u.mm, C0=dims["C0"] * u.N, lubrication="oil_bath",
             n=n[idx] * u.rpm, nu=nu[idx] * u("mm^2/s"), Fr=Fr[idx] * u.N,
             Fa=(Fa[idx] if axial else 0.0) * u.N,
             **{k: (v * u.deg if k == "alpha" else v) for k, v in extras.items()}))
