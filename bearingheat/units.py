@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import math
 import re
+import threading
 from typing import Any
 
 import numpy as np
@@ -39,9 +40,24 @@ TWO_PI = 2.0 * math.pi
 
 
 
+_LOADING = threading.Lock()
+_LOADED: set[int] = set()
+
+
 def ureg() -> pint.UnitRegistry:
-    """The application registry, looked up at call time (never cached)."""
-    return pint.get_application_registry()
+    """The application registry, looked up at call time (never cached).
+
+    pint loads its definitions at the registry's first use; threads that
+    first use it at the same moment (a Dask worker's threads) can see it half
+    loaded ("'mm' is not defined"), so the first call of each registry loads
+    it under a lock.
+    """
+    registry = pint.get_application_registry()
+    if id(registry) not in _LOADED:
+        with _LOADING:
+            registry.parse_units("mm")  # loads the definitions once
+            _LOADED.add(id(registry))
+    return registry
 
 
 # Spellings found in engineers' sheets that pint does not read, or reads as

@@ -61,9 +61,10 @@ def numpy_torque(f0, f1, load, dM, nu, n):
 
 
 def _peak_run(code: str) -> tuple[float, float]:
-    """(wall time [s], peak resident memory [MB]) of ``python -c code`` in a fresh process (it reports its own
-    peak, ``ru_maxrss`` in kB on Linux)."""
-    report = "\nimport resource; print('PEAK', resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)"
+    """(wall time [s], peak resident memory [MB]) of ``python -c code`` in a fresh process: it reports its own
+    high-water mark VmHWM [kB] from /proc (ru_maxrss would count the parent's memory at the fork)."""
+    report = ("\nprint('PEAK', next(line.split()[1] for line in open('/proc/self/status') "
+              "if line.startswith('VmHWM')))")
     start = time.perf_counter()
     done = subprocess.run([sys.executable, "-c", code + report], check=True, capture_output=True, text=True)
     elapsed = time.perf_counter() - start

@@ -12,7 +12,7 @@ import numpy as np
 from bearingheat.calc.contract import range_problems
 from bearingheat.errors import BearingheatError
 
-__all__ = ["check_ranges", "point_warnings", "where"]
+__all__ = ["check_ranges", "point_warnings", "point_status", "where"]
 
 
 def where(i: int, shape: tuple) -> str:
@@ -37,19 +37,33 @@ def check_ranges(arrays: dict[str, np.ndarray], shape: tuple, error: type[Bearin
     return warnings
 
 
-def point_warnings(arrays: dict[str, np.ndarray], shape: tuple, error: type[BearingheatError]) -> list[list[str]]:
-    """:func:`check_ranges` per operating point: raise for unusable numbers, and return each point's plausibility
-    warnings (a list per point of the flattened broadcast shape)."""
-    size = int(np.prod(shape)) if shape else 1
-    out: list[list[str]] = [[] for _ in range(size)]
+def point_warnings(arrays: dict[str, np.ndarray], shape: tuple, error: type[BearingheatError]
+                   ) -> tuple[list[str], dict[int, list[str]]]:
+    """:func:`check_ranges` per operating point: raise for unusable numbers; return the plausibility warnings of
+    scalar arguments (every point's) and, for array arguments, those of the points that have them."""
+    every: list[str] = []
+    some: dict[int, list[str]] = {}
     check_ranges(arrays, shape, error)  # the refusals
     for name, values in arrays.items():
         flat = np.broadcast_to(values, shape).ravel() if shape else np.asarray(values, dtype=float).reshape(1)
-        _, found = range_problems(name, flat, lambda i, v=flat, n=name: f"{n}: {v[i]:g}")
+        scalar = np.ndim(values) == 0
+        _, found = range_problems(name, flat[:1] if scalar else flat,
+                                  lambda i, v=flat, n=name: f"{n}: {v[i]:g}")
         for i, message in found:
-            if np.ndim(values) == 0:  # one value for every point
-                for point in out:
-                    point.append(message)
-                break
-            out[i].append(message)
-    return out
+            if scalar:
+                every.append(message)
+            else:
+                some.setdefault(i, []).append(message)
+    return every, some
+
+
+def point_status(size: int, every: list[str], some: dict[int, list[str]]) -> tuple[list[str], list[str]]:
+    """Per-point 'ok' | 'warning' and messages joined by '; ': the ``every`` messages on each point, then a point's
+    own; strings are built once for the common text and only for the points with their own messages."""
+    common = "; ".join(every)
+    status = np.full(size, "warning" if every else "ok", dtype=object)
+    messages = np.full(size, common, dtype=object)
+    for i, own in some.items():
+        status[i] = "warning"
+        messages[i] = "; ".join(([common] if common else []) + own)
+    return status.tolist(), messages.tolist()

@@ -21,7 +21,7 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from bearingheat.api._checks import point_warnings, where
+from bearingheat.api._checks import point_status, point_warnings, where
 from bearingheat.api.results import Result
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.contract import column
@@ -308,7 +308,7 @@ def friction_torque(designation: str | None = None, *, n, nu, lubrication: str |
     shape = np.broadcast_shapes(*(v.shape for v in arrays.values()))
     given = {"n": n, "nu": nu, "Fr": Fr, "Fa": Fa, "C0": C0, "alpha": alpha, "d": d, "D": D, "B": B, "Y": Y,
              "e": e, "X0": X0, "Y0": Y0, "f0": f0, "f1": f1, "f2": f2}
-    per_point = point_warnings({k: arrays[k] for k, v in given.items() if v is not None}, shape, FrictionInputError)
+    every, some = point_warnings({k: arrays[k] for k, v in given.items() if v is not None}, shape, FrictionInputError)
     # arrays become one row axis; scalars stay scalars (no copies of constants)
     flat = {k: (v if v.ndim == 0 else np.broadcast_to(v, shape).ravel()) for k, v in arrays.items()}
     keys = pd.DataFrame({"designation": [designation], "type": [bearing_type], "series": [series],
@@ -325,11 +325,12 @@ def friction_torque(designation: str | None = None, *, n, nu, lubrication: str |
         first = errors[0]
         i = int(np.flatnonzero(first.mask)[0])
         raise FrictionInputError(first.message(i) + where(i, shape))
+    size = int(np.prod(shape)) if shape else 1
     for problem in problems:  # warnings of the points they concern
-        for i in np.flatnonzero(np.broadcast_to(problem.mask, (len(per_point),))):
-            per_point[i].append(problem.message(int(i)))
-    for point in per_point:  # notes on the bearing: every point
-        point.extend(list(supports.notes[0]) + fill_notes)
+        for i in np.flatnonzero(np.broadcast_to(problem.mask, (size,))):
+            some.setdefault(int(i), []).append(problem.message(int(i)))
+    every = every + list(supports.notes[0]) + fill_notes  # notes on the bearing: every point
+    status, messages = point_status(size, every, some)
     for name in ("MR", "NR"):
         bad = ~np.isfinite(results[name])
         if bad.any():
@@ -350,7 +351,7 @@ def friction_torque(designation: str | None = None, *, n, nu, lubrication: str |
         f0=out("f0", None), f1=out("f1", None), P0=out("P0", "N"), P1=out("P1", "N"),
         M0=out("M0", "N*mm"), M1=out("M1", "N*mm"), M2=out("M2", "N*mm"), MR=out("MR", "N*mm"),
         NR=out("NR", "W"), Fa_over_A=out("Fa_over_A", None), nu_n_dM=out("nu_n_dM", "mm^3/(s*min)"),
-        status=["warning" if m else "ok" for m in per_point], messages=["; ".join(m) for m in per_point],
+        status=status, messages=messages,
         bearing_type=str(supports.bearing_type), series=str(supports.series),
         model_results={name: out(name, None if unit in ("", "1") else unit) for name, unit in MODEL_REPORT_UNITS.items()
                        if name in results and name in friction_model.outputs},

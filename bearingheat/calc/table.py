@@ -34,6 +34,7 @@ from bearingheat.calc.contract import (PLAIN_TYPES, input_units, output_header, 
                                        range_problems)
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.supports import number_column, per_distinct, text_column
+from bearingheat.calc.distributed import calc_dask, is_dask_frame
 from bearingheat.calc.fill import fill_from_catalogue
 from bearingheat.calc.uncertainty import fill_from_coefficients, has_uncertainty, uncertainty_bands
 from bearingheat.catalogue.bearings import CATALOGUE
@@ -296,6 +297,10 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
     0     47.535  14.932     ok
     1     81.217  12.757     ok
     """
+    if is_dask_frame(table):  # lazily, partition by partition (bearingheat.calc.distributed)
+        return calc_dask(table, calc, model=model, f2_chart=f2_chart, units=units, effects=effects,
+                         n_per_method=n_per_method, viscosity_at=viscosity_at, coefficients=coefficients,
+                         uncertainty=uncertainty)
     if isinstance(f2_chart, str):
         f2_chart = F2Chart.from_csv(f2_chart)
     if n_per_method not in SPEED_FACTOR_METHODS:
