@@ -41,9 +41,10 @@ def test_wheel_ships_every_table(tmp_path):
         assert f"bearingheat/tables/{table.name}" in names
 
 
-@pytest.mark.integration
-def test_wheel_installs_into_a_fresh_venv_and_runs_the_demo(tmp_path):
-    """The built wheel (not the editable checkout) holds every subpackage and table the demo needs."""
+def _wheel_in_fresh_venv(tmp_path, prepare=None) -> tuple[Path, Path, Path]:
+    """(wheel, python of a fresh venv with the wheel installed, its site-packages); ``prepare(site)`` runs
+    before the install. The dependencies come from this interpreter's site-packages (a path entry, so its
+    editable finder of bearingheat is not activated); bearingheat itself only from the wheel."""
     import sysconfig
     import venv
 
@@ -52,21 +53,28 @@ def test_wheel_installs_into_a_fresh_venv_and_runs_the_demo(tmp_path):
                           env={**os.environ, "PIP_NO_INPUT": "1"})
     assert proc.returncode == 0, proc.stderr
     wheel = next((tmp_path / "dist").glob("bearingheat-*.whl"))
+    env_dir = tmp_path / "venv"
+    venv.EnvBuilder(with_pip=False).create(env_dir)
+    python = env_dir / "bin" / "python"
+    site = Path(subprocess.run([str(python), "-c", "import sysconfig; print(sysconfig.get_paths()['purelib'])"],
+                               capture_output=True, text=True, check=True).stdout.strip())
+    (site / "dependencies.pth").write_text(sysconfig.get_paths()["purelib"] + "\n")
+    if prepare is not None:
+        prepare(site)
+    install = subprocess.run([sys.executable, "-m", "pip", "install", "--no-deps", "--no-index", "-q", "--target",
+                              str(site), str(wheel)], capture_output=True, text=True, check=False)
+    assert install.returncode == 0, install.stderr
+    return wheel, python, site
+
+
+@pytest.mark.integration
+def test_wheel_installs_into_a_fresh_venv_and_runs_the_demo(tmp_path):
+    """The built wheel (not the editable checkout) holds every subpackage and table the demo needs."""
+    wheel, python, site = _wheel_in_fresh_venv(tmp_path)
     names = set(zipfile.ZipFile(wheel).namelist())
     for package in sorted(p.parent for p in (ROOT / "bearingheat").rglob("__init__.py")):
         relative = package.relative_to(ROOT).as_posix()
         assert f"{relative}/__init__.py" in names, relative
-    env_dir = tmp_path / "venv"
-    venv.EnvBuilder(with_pip=False).create(env_dir)
-    python = env_dir / "bin" / "python"
-    site = subprocess.run([str(python), "-c", "import sysconfig; print(sysconfig.get_paths()['purelib'])"],
-                          capture_output=True, text=True, check=True).stdout.strip()
-    # the dependencies come from this interpreter's site-packages (a path entry, so its editable finder
-    # of bearingheat is not activated); bearingheat itself only from the wheel
-    (Path(site) / "dependencies.pth").write_text(sysconfig.get_paths()["purelib"] + "\n")
-    install = subprocess.run([sys.executable, "-m", "pip", "install", "--no-deps", "--no-index", "-q", "--target",
-                              site, str(wheel)], capture_output=True, text=True, check=False)
-    assert install.returncode == 0, install.stderr
     out = tmp_path / "results.csv"
     run = subprocess.run([str(python), "-m", "bearingheat", "calc", str(ROOT / "examples" / "gearbox_shaft.csv"),
                           "-o", str(out)], capture_output=True, text=True, cwd=tmp_path, check=False)
@@ -74,7 +82,7 @@ def test_wheel_installs_into_a_fresh_venv_and_runs_the_demo(tmp_path):
     assert "6 supports: 5 ok, 1 warning, 0 error" in run.stdout
     where = subprocess.run([str(python), "-c", "import bearingheat; print(bearingheat.__file__)"],
                            capture_output=True, text=True, cwd=tmp_path, check=True).stdout
-    assert where.startswith(site)
+    assert where.startswith(str(site))
 
 
 @pytest.mark.integration
@@ -103,26 +111,12 @@ def test_wheel_and_sdist_contents(tmp_path):
 
 @pytest.mark.integration
 def test_the_core_runs_without_matplotlib_and_plots_name_the_extra(tmp_path):
-    import sysconfig
-    import venv
+    def hide_matplotlib(site: Path) -> None:
+        # matplotlib is not installed in this environment: its package is shadowed by one that cannot be imported
+        (site / "matplotlib").mkdir()
+        (site / "matplotlib" / "__init__.py").write_text("raise ImportError(\"No module named 'matplotlib'\")\n")
 
-    proc = subprocess.run([sys.executable, "-m", "pip", "wheel", "--no-deps", "-q", "-w", str(tmp_path / "dist"),
-                           str(ROOT)], capture_output=True, text=True, check=False,
-                          env={**os.environ, "PIP_NO_INPUT": "1"})
-    assert proc.returncode == 0, proc.stderr
-    env_dir = tmp_path / "venv"
-    venv.EnvBuilder(with_pip=False).create(env_dir)
-    python = env_dir / "bin" / "python"
-    site = Path(subprocess.run([str(python), "-c", "import sysconfig; print(sysconfig.get_paths()['purelib'])"],
-                               capture_output=True, text=True, check=True).stdout.strip())
-    (site / "dependencies.pth").write_text(sysconfig.get_paths()["purelib"] + "\n")
-    # matplotlib is not installed in this environment: its package is shadowed by one that cannot be imported
-    (site / "matplotlib").mkdir()
-    (site / "matplotlib" / "__init__.py").write_text("raise ImportError(\"No module named 'matplotlib'\")\n")
-    install = subprocess.run([sys.executable, "-m", "pip", "install", "--no-deps", "--no-index", "-q", "--target",
-                              str(site), str(next((tmp_path / "dist").glob("*.whl")))], capture_output=True, text=True,
-                             check=False)
-    assert install.returncode == 0, install.stderr
+    _, python, _ = _wheel_in_fresh_venv(tmp_path, hide_matplotlib)
     demo = str(ROOT / "examples" / "gearbox_shaft.csv")
     calc = subprocess.run([str(python), "-m", "bearingheat", "calc", demo, "-q"], capture_output=True, text=True,
                           cwd=tmp_path, check=False)
