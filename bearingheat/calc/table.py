@@ -345,7 +345,8 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
     if coefficients is not None:
         table = fill_from_coefficients(table, pd.read_csv(coefficients) if isinstance(coefficients, str)
                                        else coefficients)
-        frame = to_catalogue_units(table, units=units, cell=cell).frame
+        again = to_catalogue_units(table, units=units, cell=cell)
+        frame = fill_from_catalogue(again.frame, again.labels)[0]  # the uncertainty columns, the same fill
     if has_uncertainty(table):
         def again(perturbed: pd.DataFrame) -> pd.DataFrame:
             return calc(perturbed, model=model, f2_chart=f2_chart, units=units, effects=effects,
