@@ -362,8 +362,10 @@ def celsius(value: Any, name: str):
 def quantity_parts(value: Any) -> tuple[np.ndarray, str]:
     """(magnitudes as a flat float array, unit text) of a Quantity, pint-pandas Series or plain number ('' unit).
 
-    >>> quantity_parts(ureg().Quantity([1.0, 2.0], "N*mm"))
-    (array([1., 2.]), 'N*mm')
+    >>> quantity_parts(ureg().Quantity([1.0, 2.0], "W"))
+    (array([1., 2.]), 'W')
+    >>> quantity_parts(3.5)
+    (array([3.5]), '')
     """
     if _is_pint_series(value):
         value = value.pint.quantity
