@@ -1,6 +1,5 @@
 """The unit-aware friction API: the same answer in any unit, scalar = array = Series, clear unit errors."""
 import math
-import re
 
 import numpy as np
 import pandas as pd

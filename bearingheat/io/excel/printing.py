@@ -122,7 +122,7 @@ class PrintSetup:
         footer = "".join(escape.get(c, c) for c in FOOTER)
         return {
             "pageMargins": "<pageMargins " + " ".join(f'{k}="{v:g}"' for k, v in PAGE_MARGINS.items()) + "/>",
-            "pageSetup": f'<pageSetup paperSize="9" orientation="landscape" fitToWidth="1" '
+            "pageSetup": '<pageSetup paperSize="9" orientation="landscape" fitToWidth="1" '
                          'fitToHeight="0"/>',
             "headerFooter": f"<headerFooter><oddHeader>{header}</oddHeader><oddFooter>{footer}</oddFooter>"
                             "</headerFooter>",
