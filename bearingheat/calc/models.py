@@ -17,6 +17,8 @@ bearingheat.errors.ModelError: model: 'palmgren' is not one of schaeffler, skf
 """
 from __future__ import annotations
 
+from collections import defaultdict
+
 from dataclasses import dataclass
 from typing import Callable
 
@@ -161,8 +163,9 @@ def get_model(name: str) -> FrictionModel:
 def _row_models(frame: pd.DataFrame, default: str) -> tuple[np.ndarray, list[str]]:
     """The model name of every row (the ``model`` column, else ``default``) and the rows' errors."""
     names = np.array([v or default for v in text_column(frame, "model")], dtype=object)
-    errors = ["" if name in MODELS else f"model: {name!r} is not one of {', '.join(MODELS)}" for name in names]
-    return names, errors
+    known = {name: "" if name in MODELS else f"model: {name!r} is not one of {', '.join(MODELS)}"
+             for name in set(names.tolist())}
+    return names, [known[name] for name in names.tolist()]
 
 
 def _scatter(results: dict, part: dict, rows: np.ndarray, size: int) -> None:
@@ -216,25 +219,20 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
     supports = support_arrays_of(frame)
     names, model_errors = _row_models(frame, model)
     plain = supports.plain
-    catalogue_rows = np.array([MODELS[m].catalogue_keys if m in MODELS else True for m in names], dtype=bool)
-    row_errors: list[list[str]] = [[] for _ in range(n_rows)]
-    for i in range(n_rows):
-        own = supports.error[i] if np.ndim(supports.error) else supports.error
-        text = model_errors[i] or (own if catalogue_rows[i] else "")
-        if text and not plain[i]:
-            row_errors[i].append(text)
+    uses_catalogue = {name: MODELS[name].catalogue_keys if name in MODELS else True for name in set(names.tolist())}
+    catalogue_rows = pd.Series(names, dtype=object).map(uses_catalogue).to_numpy(dtype=bool)
+    model_error = np.array(model_errors, dtype=object)
+    own = np.broadcast_to(np.asarray(supports.error, dtype=object), (n_rows,))
+    text = np.where(model_error != "", model_error, np.where(catalogue_rows, own, ""))
+    # rows with messages only: error and warning lists keyed by row position
+    row_errors: defaultdict[int, list[str]] = defaultdict(list)
+    for i in np.flatnonzero((text != "") & (text != None) & ~plain):  # noqa: E711 (element-wise on an object array)
+        row_errors[int(i)].append(text[i])
     # a row whose bearing did not resolve has its error already; rows of a model with its own tables report theirs
-    resolved = (np.broadcast_to(supports.resolved, (n_rows,)) | ~catalogue_rows) & \
-        np.array([not e for e in model_errors])
+    resolved = (np.broadcast_to(supports.resolved, (n_rows,)) | ~catalogue_rows) & (model_error == "")
 
     results, problems = evaluate_models(supports, names, labels, f2_chart)
-    for i, notes in enumerate(supports.notes if len(supports.notes) == n_rows else supports.notes * n_rows):
-        if notes:
-            mask = np.zeros(n_rows, dtype=bool)
-            mask[i] = True
-            problems.append(Problem(mask, "warning", lambda j, text="; ".join(notes): text))
-
-    warnings_by_row: list[list[str]] = [[] for _ in range(n_rows)]
+    warnings_by_row: defaultdict[int, list[str]] = defaultdict(list)
     if plain.any():
         plain_rows(frame, plain, results, row_errors, warnings_by_row)
     for problem in problems:
@@ -244,19 +242,20 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
                     row_errors[i].append(problem.message(i))
             else:
                 warnings_by_row[i].append(problem.message(i))
+    notes_of = supports.notes if len(supports.notes) == n_rows else supports.notes * n_rows
+    for i, notes in enumerate(notes_of):  # the notes of a designation, after the model's warnings
+        if notes and not plain[i]:
+            warnings_by_row[i].append("; ".join(notes))
     out = pd.DataFrame({col: results[col] for col in RESULT_UNITS}, index=frame.index)
-    status, message = [], []
-    for i in range(n_rows):
-        if row_errors[i]:
-            status.append("error")
-            message.append("; ".join(row_errors[i]))
-        elif warnings_by_row[i]:
-            status.append("warning")
-            message.append("; ".join(warnings_by_row[i]))
-        else:
-            status.append("ok")
-            message.append("")
-    failed = np.array([s == "error" for s in status], dtype=bool)
+    status = np.full(n_rows, "ok", dtype=object)
+    message = np.full(n_rows, "", dtype=object)
+    for i, texts in warnings_by_row.items():
+        if texts:
+            status[i], message[i] = "warning", "; ".join(texts)
+    for i, texts in row_errors.items():  # an error replaces the row's warnings
+        if texts:
+            status[i], message[i] = "error", "; ".join(texts)
+    failed = status == "error"
     out.loc[failed, list(RESULT_UNITS)] = np.nan
     if "nu_n_dM" in results and np.any(~np.isnan(results["nu_n_dM"]) & ~failed):
         for col in M2_REPORT_UNITS:

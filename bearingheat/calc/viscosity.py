@@ -32,8 +32,12 @@ def viscosity_model_rows(frame: pd.DataFrame):
     nu40, nu100, grade, VI = (number_column(frame, name) for name in ("nu40", "nu100", "iso_vg", "VI"))
     VI_used = np.where(np.isnan(VI), DEFAULT_VISCOSITY_INDEX, VI)
     grade_nu40 = iso_vg_nu40(grade)
-    with np.errstate(invalid="ignore"):
-        grade_nu100 = nu100_from_viscosity_index(grade_nu40, VI_used)
+    grade_nu100 = np.full(n_rows, np.nan)
+    graded = np.flatnonzero(~np.isnan(grade_nu40))
+    if len(graded):  # ASTM D2270 once per distinct (grade, VI) pair
+        pairs, where = np.unique(np.column_stack([grade_nu40[graded], VI_used[graded]]), axis=0, return_inverse=True)
+        with np.errstate(invalid="ignore"):
+            grade_nu100[graded] = nu100_from_viscosity_index(pairs[:, 0], pairs[:, 1])[where.ravel()]
     has40, has100, has_grade = ~np.isnan(nu40), ~np.isnan(nu100), ~np.isnan(grade)
     A = np.full(n_rows, np.nan)
     B = np.full(n_rows, np.nan)
