@@ -125,6 +125,11 @@ class SupportArrays:
 def per_distinct(values: pd.Series, convert: Callable) -> np.ndarray:
     """``convert(value)`` of every cell as an object array, computed once per distinct value (NaN, None and
     pandas' missing values are one value: ``convert(None)``)."""
+    arrow = getattr(values.array, "__arrow_array__", None)
+    if arrow is not None and getattr(arrow(), "num_chunks", 1) > 16:
+        # pandas factorizes an Arrow array chunk by chunk: a column concatenated from many frames holds one
+        # chunk per frame (10^6 rows in 4*10^4 chunks: 0.16 s a column), as Python objects 0.015 s
+        values = pd.Series(values.to_numpy(dtype=object), index=values.index)
     codes, uniques = pd.factorize(values, use_na_sentinel=True)
     converted = np.array([convert(v) for v in uniques] + [convert(None)], dtype=object)
     return converted[codes]  # code -1 (missing) takes the last entry

@@ -21,6 +21,7 @@ value; the other rows are still computed. Input that cannot be used at all
 from __future__ import annotations
 
 import math
+from collections import defaultdict
 from dataclasses import dataclass, field
 from typing import Callable
 
@@ -70,17 +71,31 @@ EXTENSIONS: dict[str, Extension] = {e.owner: e for e in (
 
 @dataclass
 class ConvertedTable:
-    """A table's contract columns in catalogue units, how messages name them, and the cells' own problems."""
+    """A table's contract columns in catalogue units, how messages name them, and the cells' own problems.
+
+    ``errors_by_row`` and ``warnings_by_row`` hold the messages of the rows that have them only (row
+    position -> messages in column order); ``row_errors`` and ``row_warnings`` are the same as one list
+    per row.
+    """
 
     frame: pd.DataFrame            # contract names, catalogue units
     labels: Labels
-    row_errors: list[list[str]]
-    row_warnings: list[list[str]] = field(default_factory=list)
+    errors_by_row: dict[int, list[str]] = field(default_factory=dict)
+    warnings_by_row: dict[int, list[str]] = field(default_factory=dict)
+
+    @property
+    def row_errors(self) -> list[list[str]]:
+        return [self.errors_by_row.get(i, []) for i in range(len(self.frame))]
+
+    @property
+    def row_warnings(self) -> list[list[str]]:
+        return [self.warnings_by_row.get(i, []) for i in range(len(self.frame))]
 
 
 def _convert_column(values: pd.Series, header: str, unit_text: str | None, target: str,
                     cell: Callable[[str, int], str] | None, name: str,
-                    errors: list[list[str]], warnings: list[list[str]]) -> tuple[np.ndarray, float]:
+                    errors: defaultdict[int, list[str]], warnings: defaultdict[int, list[str]]
+                    ) -> tuple[np.ndarray, float]:
     """Numbers of one column in the catalogue unit, and the catalogue units per user unit (NaN for an
     absolute temperature, which has no single factor). Cells that are no numbers, logical values,
     non-finite numbers and numbers outside the contract's valid range become row errors; numbers outside
@@ -102,9 +117,9 @@ def _convert_column(values: pd.Series, header: str, unit_text: str | None, targe
     blank = per_distinct(values.iloc[missing], _blank).astype(bool) if len(missing) else np.zeros(0, dtype=bool)
     for i in missing[~blank | logical[missing]]:  # cells that are no numbers; blank cells are not given
         if logical[i]:
-            errors[i].append(f"{where(i)}{raw[i]!r} is a logical value, not a number for {header}")
+            errors[int(i)].append(f"{where(i)}{raw[i]!r} is a logical value, not a number for {header}")
         elif not _blank(raw[i]):
-            errors[i].append(f"{where(i)}{raw[i]!r} is not a number for {header}")
+            errors[int(i)].append(f"{where(i)}{raw[i]!r} is not a number for {header}")
     try:
         converted, factor = convert_column(numeric, unit_text, target, name=name, header=header)
     except UnitError as exc:
@@ -144,8 +159,8 @@ def to_catalogue_units(table: pd.DataFrame, *, units: dict[str, str] | None = No
     a unit in the header itself wins.
     """
     known = input_units()
-    errors: list[list[str]] = [[] for _ in range(len(table))]
-    warnings: list[list[str]] = [[] for _ in range(len(table))]
+    errors: defaultdict[int, list[str]] = defaultdict(list)  # only the rows that have messages
+    warnings: defaultdict[int, list[str]] = defaultdict(list)
     columns: dict[str, np.ndarray | list] = {}
     headers: dict[str, tuple[str, float]] = {}
     for header in table.columns:
@@ -165,7 +180,7 @@ def to_catalogue_units(table: pd.DataFrame, *, units: dict[str, str] | None = No
                                                 warnings)
         headers[name] = (display, factor)
     frame = pd.DataFrame(columns, index=table.index)
-    return ConvertedTable(frame, Labels(headers, cell), errors, warnings)
+    return ConvertedTable(frame, Labels(headers, cell), dict(errors), dict(warnings))
 
 
 def require_columns(frame: pd.DataFrame) -> None:
@@ -327,9 +342,9 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
     results.index = table.index
     # the cell's own fault leads, before the model's message; an unknown designation without dimensions (why the
     # model's inputs are missing) leads before that
-    _add_messages(results, [(i, "error", m, True) for i, errors in _flagged(converted.row_errors)
+    _add_messages(results, [(i, "error", m, True) for i, errors in _flagged(converted.errors_by_row)
                             for m in reversed(errors)]
-                  + [(i, "warning", m, False) for i, warnings in _flagged(converted.row_warnings) for m in warnings]
+                  + [(i, "warning", m, False) for i, warnings in _flagged(converted.warnings_by_row) for m in warnings]
                   + [(i, level, m, True) for i, level, m in fill_problems if level == "error"]
                   + [(i, level, m, False) for i, level, m in
                      extra_problems + _implausible_relations(frame, converted.labels, from_table)])
@@ -393,9 +408,9 @@ def _implausible_relations(frame: pd.DataFrame, labels: Labels, from_table: dict
     return problems
 
 
-def _flagged(row_messages: list[list[str]]):
-    """(position, messages) of the rows that have messages."""
-    return ((i, messages) for i, messages in enumerate(row_messages) if messages)
+def _flagged(row_messages: dict[int, list[str]]):
+    """(position, messages) of the rows that have messages, in row order."""
+    return ((i, row_messages[i]) for i in sorted(row_messages) if row_messages[i])
 
 
 def _add_messages(results: pd.DataFrame, items: list[tuple[int, str, str, bool]]) -> None:

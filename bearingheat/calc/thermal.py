@@ -53,7 +53,7 @@ from bearingheat.catalogue.thermal import THERMAL_KINDS
 from bearingheat.errors import HeatBalanceError
 from bearingheat.kernels import friction
 from bearingheat.kernels.thermal import (APPROXIMATION_RANGE, OIL_HEAT_CAPACITY_FLOW, balance_speed,
-                                         default_heat_transfer_coefficient, oil_heat_flow, operating_temperature,
+                                         default_heat_transfer_coefficient, oil_heat_flow,
                                          permissible_speed_factor, seat_heat_flow,
                                          speed_factor_catalogue_approximation, speed_factor_coefficients)
 from bearingheat.kernels.roots import bracketed_root
@@ -82,6 +82,8 @@ __all__ = [
 OPERATING_TEMPERATURE_LIMIT = 150.0
 #: the search for the operating temperature starts this far below the ambient temperature [K]
 BELOW_AMBIENT_SEARCH = 50.0
+#: the search range is scanned in this many steps (about 8 K each) for the lowest equilibrium
+OPERATING_TEMPERATURE_CELLS = 24
 #: where the operating viscosity is taken when it comes from nu40/nu100 or iso_vg
 VISCOSITY_AT = {
     "auto": ("the solved operating temperature T_op where T_amb and n are given (one operating state: the "
@@ -156,8 +158,49 @@ def _operating_point(frame, results, nu_at, Q_S, Q_L, Q_E, T_amb, t_limit):
 
     T_low = T_amb - BELOW_AMBIENT_SEARCH
     T_high = np.full(len(frame), float(t_limit))
-    T_op, status = operating_temperature(balance, T_low, T_high)
+    T_op, status = lowest_operating_temperature(balance, T_low, T_high)
     return T_op, status, balance
+
+
+def lowest_operating_temperature(balance, T_low, T_high, *, cells: int = OPERATING_TEMPERATURE_CELLS):
+    """The lowest temperature in [T_low, T_high] where the bearing stops heating up, for all rows at once.
+
+    ``balance(T)`` is N_R + Q_E − Q_S − Q_L [W] per row (positive while the
+    bearing heats up). The range is scanned at ``cells + 1`` evenly spaced
+    temperatures (one array call each, every row together) for the first
+    step from heating (> 0) to not heating (<= 0); that step is refined by
+    :func:`~bearingheat.kernels.roots.bracketed_root`. Returns (T, status)
+    as :func:`~bearingheat.kernels.thermal.operating_temperature`: 0 for an
+    equilibrium, 1 where the bearing still heats up at T_high (runaway), -1
+    where it no longer heats up at T_low, 2 where the balance is NaN at an
+    end. Two roots closer together than one cell may both be missed; one
+    root is never missed.
+
+    >>> T, status = lowest_operating_temperature(
+    ...     lambda T: -(T - 40.0) * (T - 90.0) * (T - 120.0), np.array([0.0, 0.0]), np.array([150.0, 30.0]))
+    >>> np.round(T, 9).tolist(), status.tolist()
+    ([40.0, nan], [0, 1])
+    """
+    T_low = np.asarray(T_low, dtype=float)
+    T_high = np.asarray(T_high, dtype=float)
+    grid = T_low + np.linspace(0.0, 1.0, cells + 1)[:, None] * (T_high - T_low)
+    with np.errstate(invalid="ignore", over="ignore"):
+        values = np.array([np.asarray(balance(T), dtype=float) for T in grid])  # a loop over the grid, not rows
+    heating = values > 0
+    crossing = heating[:-1] & ~heating[1:] & ~np.isnan(values[1:])
+    found = crossing.any(axis=0)
+    first = np.argmax(crossing, axis=0)
+    rows = np.arange(grid.shape[1])
+    f_low, f_high = values[0], values[-1]
+    at_low = ~found & (f_low == 0) & ~(f_high > 0)  # in balance already at T_low
+    status = np.where(found | at_low, 0, np.where(f_high > 0, 1, np.where(f_low < 0, -1, 2)))  # 2: NaN inside
+    status = np.where(np.isnan(f_low) | np.isnan(f_high), 2, status)
+    low = np.where(found, grid[first, rows], T_low)
+    high = np.where(found, grid[first + 1, rows], T_low)
+    with np.errstate(invalid="ignore", over="ignore"):
+        T, _ = bracketed_root(balance, low, high, rtol=1e-14)
+    T = np.where(at_low, T_low, T)
+    return np.where(status == 0, T, np.nan), status
 
 
 def fill_viscosity(frame: pd.DataFrame, *, viscosity_at: str = "auto",

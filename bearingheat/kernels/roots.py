@@ -53,7 +53,13 @@ def bracketed_root(func: Callable[[np.ndarray], np.ndarray], low, high, *, rtol:
             break
         with np.errstate(invalid="ignore", divide="ignore"):
             c = np.where(fb != fa, b - fb * (b - a) / (fb - fa), 0.5 * (a + b))
-        c = np.where((c <= np.fmin(a, b)) | (c >= np.fmax(a, b)) | ~np.isfinite(c), 0.5 * (a + b), c)
+        # a secant step onto (or past) an end would not narrow the bracket: where an end is already the root to
+        # within rounding, the secant keeps landing on it and the other end crept up on it by halving (46
+        # steps of the heat balance); a step of half the tolerance inside the end closes the bracket at once
+        tol = 0.5 * rtol * np.fmax(np.abs(a), np.abs(b))
+        inner_low, inner_high = np.fmin(a, b) + tol, np.fmax(a, b) - tol
+        c = np.where(~np.isfinite(c) | (inner_low >= inner_high), 0.5 * (a + b),
+                     np.minimum(np.maximum(c, inner_low), inner_high))
         fc = np.full(a.shape, np.nan)
         fc[active] = np.asarray(func(np.where(active, c, a)), dtype=float)[active]
         exact = active & (fc == 0)
