@@ -21,6 +21,7 @@ demo: $(STAMP)
 
 test: $(STAMP)
 	$(VENV)/bin/lint-imports --no-cache
+	$(VENV)/bin/mypy bearingheat
 	$(PY) -m pytest -q
 
 docs: $(STAMP)

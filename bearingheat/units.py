@@ -245,7 +245,7 @@ def quantity(mag: Any, unit: str):
             out = mag.astype(float)
             out.attrs["unit"] = unit
             return out
-        return mag.astype(f"pint[{unit}]")
+        return mag.astype(f"pint[{unit}]")  # type: ignore[call-overload]  # pint-pandas dtype by name
     if unit == "degC":
         return u.Quantity(mag, u.degC)
     return u.Quantity(mag, unit)

@@ -94,6 +94,9 @@ def test_wheel_and_sdist_contents(tmp_path):
     names = set(wheel.namelist())
     version = __import__("bearingheat").__version__
     assert any(n.endswith(".dist-info/licenses/LICENSE") for n in names)
+    assert "bearingheat/py.typed" in names  # PEP 561: type checkers use the package's own hints
+    packages = {p.parent.relative_to(ROOT).as_posix() for p in (ROOT / "bearingheat").rglob("__init__.py")}
+    assert {f"{package}/__init__.py" for package in packages} <= names
     assert not any(n.startswith(("tests/", ".venv/", "docs/", "benchmarks/")) for n in names)
     for table in (ROOT / "tables").glob("*.csv"):
         assert f"bearingheat/tables/{table.name}" in names
@@ -104,7 +107,8 @@ def test_wheel_and_sdist_contents(tmp_path):
     import tarfile
     with tarfile.open(next(tmp_path.glob("bearingheat-*.tar.gz"))) as sdist:
         members = {m.split("/", 1)[1] for m in sdist.getnames() if "/" in m}
-    for needed in ("LICENSE", "README.md", "pyproject.toml", "bearingheat/__init__.py", "bearingheat/cli/calc.py"):
+    for needed in ("LICENSE", "README.md", "pyproject.toml", "bearingheat/__init__.py", "bearingheat/cli/calc.py",
+                   "bearingheat/py.typed"):
         assert needed in members, needed
     assert {f"bearingheat/tables/{t.name}" for t in (ROOT / "tables").glob("*.csv")} <= members
 

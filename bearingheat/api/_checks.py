@@ -7,6 +7,8 @@ as a warning message.
 """
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 
 from bearingheat.calc.contract import range_problems
@@ -20,6 +22,11 @@ def where(i: int, shape: tuple) -> str:
     return f" (at index {np.unravel_index(i, shape) if len(shape) > 1 else i})" if shape else ""
 
 
+def _describe(name: str, values: np.ndarray) -> Callable[[int], str]:
+    """'name: value' of the point at a flat index, for the range messages."""
+    return lambda i: f"{name}: {values[i]:g}"
+
+
 def check_ranges(arrays: dict[str, np.ndarray], shape: tuple, error: type[BearingheatError]) -> list[str]:
     """Raise for a given number that is NaN, infinite or outside its valid range; return the plausibility warnings."""
     warnings = []
@@ -29,7 +36,7 @@ def check_ranges(arrays: dict[str, np.ndarray], shape: tuple, error: type[Bearin
             i = int(np.flatnonzero(np.isnan(flat))[0])
             raise error(f"{name}: nan is not a number; leave the argument out where it is not known"
                         f"{where(i, shape)}")
-        errors, found = range_problems(name, flat, lambda i, v=flat, n=name: f"{n}: {v[i]:g}")
+        errors, found = range_problems(name, flat, _describe(name, flat))
         if errors:
             i, message = errors[0]
             raise error(message + where(i, shape))
@@ -47,8 +54,7 @@ def point_warnings(arrays: dict[str, np.ndarray], shape: tuple, error: type[Bear
     for name, values in arrays.items():
         flat = np.broadcast_to(values, shape).ravel() if shape else np.asarray(values, dtype=float).reshape(1)
         scalar = np.ndim(values) == 0
-        _, found = range_problems(name, flat[:1] if scalar else flat,
-                                  lambda i, v=flat, n=name: f"{n}: {v[i]:g}")
+        _, found = range_problems(name, flat[:1] if scalar else flat, _describe(name, flat))
         for i, message in found:
             if scalar:
                 every.append(message)

@@ -310,7 +310,7 @@ def friction_torque(designation: str | None = None, *, n, nu, lubrication: str |
              "e": e, "X0": X0, "Y0": Y0, "f0": f0, "f1": f1, "f2": f2}
     every, some = point_warnings({k: arrays[k] for k, v in given.items() if v is not None}, shape, FrictionInputError)
     # arrays become one row axis; scalars stay scalars (no copies of constants)
-    flat = {k: (v if v.ndim == 0 else np.broadcast_to(v, shape).ravel()) for k, v in arrays.items()}
+    flat: dict[str, object] = {k: (v if v.ndim == 0 else np.broadcast_to(v, shape).ravel()) for k, v in arrays.items()}
     keys = pd.DataFrame({"designation": [designation], "type": [bearing_type], "series": [series],
                          "lubrication": [lubrication], "arrangement": [arrangement]})
     supports = build_support_arrays(keys, flat)
@@ -327,8 +327,8 @@ def friction_torque(designation: str | None = None, *, n, nu, lubrication: str |
         raise FrictionInputError(first.message(i) + where(i, shape))
     size = int(np.prod(shape)) if shape else 1
     for problem in problems:  # warnings of the points they concern
-        for i in np.flatnonzero(np.broadcast_to(problem.mask, (size,))):
-            some.setdefault(int(i), []).append(problem.message(int(i)))
+        for point in np.flatnonzero(np.broadcast_to(problem.mask, (size,))):
+            some.setdefault(int(point), []).append(problem.message(int(point)))
     every = every + list(supports.notes[0]) + fill_notes  # notes on the bearing: every point
     status, messages = point_status(size, every, some)
     for name in ("MR", "NR"):

@@ -430,7 +430,7 @@ def range_problems(name: str, values: np.ndarray, describe: Callable[[int], str]
     values = np.asarray(values, dtype=float)
     unit = {"1": "", "delta_degC": "K"}.get(entry.unit, entry.unit)
     errors = [(int(i), f"{describe(int(i))} is not a finite number") for i in np.flatnonzero(np.isinf(values))]
-    warnings = []
+    warnings: list[tuple[int, str]] = []
     reported = np.isinf(values)
     for bounds, level, found in ((entry.valid, "valid", errors), (entry.plausible, "plausible", warnings)):
         if bounds is None:

@@ -68,7 +68,7 @@ def coefficient_uncertainties(coefficients: pd.DataFrame) -> dict[str, dict[str,
                          for c in ("fitted", "ci_low", "ci_high"))
     names = coefficients["coefficient"].astype(str).map({"f0": "f0_rel_unc", "f1": "f1_rel_unc", "f1_a": "f1_rel_unc"})
     for i in np.flatnonzero(names.notna().to_numpy() & np.isfinite(fitted) & (fitted != 0)):  # a short table
-        out.setdefault(str(coefficients["bearing"].iat[i]), {})[str(names.iat[i])] = \
+        out.setdefault(str(coefficients["bearing"].iat[int(i)]), {})[str(names.iat[int(i)])] = \
             float((high[i] - low[i]) / 2.0 / abs(fitted[i]))
     return out
 

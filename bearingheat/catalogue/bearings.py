@@ -308,7 +308,7 @@ def _records() -> tuple[BearingData, ...]:
     names = [f.name for f in fields(BearingData) if f.name not in ("query", "match", "note")]
     out = []
     for row in table.to_dict("records"):
-        values = {name: (float(row[name]) if name in NUMERIC else str(row[name])) for name in names}
+        values: dict[str, Any] = {name: (float(row[name]) if name in NUMERIC else str(row[name])) for name in names}
         out.append(BearingData(**values, query=str(row["designation"])))
     return tuple(out)
 

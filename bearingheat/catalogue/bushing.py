@@ -44,11 +44,11 @@ def pv_limit_seed004_table25(application: str, shaft: str, life: float) -> float
         raise BushingInputError(f"the DU/DP bushing handbook table 25: life {life:g} h not tabulated; expected one of "
                                 f"{', '.join(f'{x:g}' for x in lives)} h (or give K directly)")
     row = table[(table["application"] == application) & (table["shaft"] == shaft) & (table["life"] == life)]
-    value = float(row["K"].iloc[0])
-    if not math.isfinite(value):
+    K = float(row["K"].iloc[0])
+    if not math.isfinite(K):
         raise BushingInputError(f"the DU/DP bushing handbook table 25: K for {application}, {shaft} shaft, {life:g} h was lost in "
                                 "the OCR of the seed; give K directly")
-    return value * KGF_PER_CM2
+    return K * KGF_PER_CM2
 
 
 def pressure_limit_seed004(load_type: str) -> float:

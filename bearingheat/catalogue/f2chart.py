@@ -98,9 +98,9 @@ class F2Chart:
         """``points``: curve label -> (Fa/A, [ν·n·dM in mm³/(s·min)], [f2])."""
         self.name = name
         curves = []
-        for label, (Fa_over_A, xs, f2s) in points.items():
-            xs = np.asarray(xs, dtype=float)
-            f2s = np.asarray(f2s, dtype=float)
+        for label, (Fa_over_A, given_xs, given_f2s) in points.items():
+            xs = np.asarray(given_xs, dtype=float)
+            f2s = np.asarray(given_f2s, dtype=float)
             where = f"{name}, curve {label!r}"
             if len(xs) < 2:
                 raise F2ChartError(f"{where}: needs at least two points, has {len(xs)}")

@@ -86,7 +86,7 @@ def _static_defaults() -> dict[str, tuple[float, float]]:
     for bearing_type, rows in table.groupby("bearing_type"):
         x0 = float(rows["X0"].iloc[0]) if rows["X0"].nunique() == 1 else math.nan
         y0 = float(rows["Y0"].iloc[0]) if len(rows) == 1 else math.nan
-        out[bearing_type] = (x0, y0)
+        out[str(bearing_type)] = (x0, y0)
     return out
 
 

@@ -547,6 +547,6 @@ def skf_bearing(designation: str | None = None, bearing_type: str | None = None,
         start = 4.0
     elif bearing_type == "axial_spherical_roller":
         start = 8.0
-    return SKFBearing(bearing_type, row["series"], FORMULA_FAMILY[bearing_type], *R, *S, Kz, KL, irw,
+    return SKFBearing(bearing_type, row["series"], FORMULA_FAMILY[bearing_type], *R, *S, Kz, KL, irw,  # type: ignore[arg-type, call-arg]
                       _mu_ehl_type(bearing_type), parsed.bore if parsed else math.nan, seal, seals, unknown,
                       row["source"], start)

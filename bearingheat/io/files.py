@@ -156,7 +156,7 @@ def _fsync_folder(folder: Path) -> None:
             os.close(fd)
 
 
-def atomic_write(target, write: Callable[[Path], None]) -> Path:
+def atomic_write(target, write: Callable[[Path], object]) -> Path:
     """Write ``target`` atomically: ``write(temp_path)`` fills a temporary file beside it, which is renamed over it.
 
     Temporary files of earlier killed runs are removed first
@@ -215,7 +215,7 @@ def remove_stale_temps(folder, name: str, *, older_than: float = STALE_SECONDS) 
     left (it is never the target).
     """
     folder = Path(folder)
-    removed = []
+    removed: list[Path] = []
     try:
         entries = os.listdir(folder)
     except OSError:
@@ -366,7 +366,7 @@ def check_outputs(folder, names: Iterable[str], *, force: bool, inputs: Iterable
     return {name: safe_output(folder / name, force=True, inputs=inputs) for name in names}
 
 
-def write_outputs(folder, writers: Mapping[str, Callable[[Path], None]], *, force: bool,
+def write_outputs(folder, writers: Mapping[str, Callable[[Path], object]], *, force: bool,
                   inputs: Iterable = ()) -> list[Path]:
     """Write the files of a report into ``folder``: {file name: write(temp_path)}, each atomically.
 

@@ -120,7 +120,7 @@ def _refuse(bad, template: str, **values):
     position = np.unravel_index(flat, bad.shape)
     row = position[0] if len(position) == 1 else tuple(int(p) for p in position)
     error = ContactInputError(f"{message} (element {row})", row)
-    error._refusal = (message, flat)
+    setattr(error, "_refusal", (message, flat))
     raise error
 
 

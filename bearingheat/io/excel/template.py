@@ -19,6 +19,7 @@ import io
 import re
 import sys
 import zipfile
+from collections.abc import Sequence
 from pathlib import Path
 
 import pandas as pd
@@ -146,7 +147,7 @@ def _list_validation(letter: str, source: str, what: str, choices, name: str):
 
 
 def _supports_sheet(workbook, rows: list[dict], units: dict[str, str] | None = None,
-                    extra: list[tuple[str, str]] = ()) -> None:
+                    extra: Sequence[tuple[str, str]] = ()) -> None:
     ws = workbook.active
     ws.title = "Supports"
     units = units or {}

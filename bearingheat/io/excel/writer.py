@@ -14,6 +14,7 @@ headers (:func:`split_header`); cells take the named styles of
 from __future__ import annotations
 
 import math
+from collections.abc import Set as AbstractSet
 from copy import copy
 from dataclasses import dataclass
 from pathlib import Path
@@ -119,7 +120,7 @@ class SheetLayout:
 
 
 def sheet_layout(table: pd.DataFrame, units: dict[str, str] | None = None,
-                 input_columns: set[str] = frozenset()) -> SheetLayout:
+                 input_columns: AbstractSet[str] = frozenset()) -> SheetLayout:
     """The header row, units row, cell style and width of every column of ``table`` (values as objects)."""
     headers, unit_row, styles, magnitudes, widths, inputs, formats = [], [], [], [], [], [], []
     for header in table.columns:
@@ -143,7 +144,7 @@ def sheet_layout(table: pd.DataFrame, units: dict[str, str] | None = None,
 
 
 def fill_sheet(ws, table: pd.DataFrame, *, units: dict[str, str] | None = None,
-                input_columns: set[str] = frozenset(), formulas: dict[tuple[str, int], str] | None = None,
+                input_columns: AbstractSet[str] = frozenset(), formulas: dict[tuple[str, int], str] | None = None,
                 progress=None, rules=(), print_setup=None, hidden_columns=()) -> None:
     """Header row, units row, one row per table row; named styles; frozen panes and widths.
 

@@ -195,7 +195,7 @@ def test_progress_while_writing_in_place(tmp_path):
 
     stream = Terminal()
     calc_workbook(path, in_place=True, progress=Progress(stream=stream))
-    assert "\rreading Supports" in stream.getvalue() and "\rwriting Results" in stream.getvalue()
+    assert "\x1b[2Kreading Supports" in stream.getvalue() and "\x1b[2Kwriting Results" in stream.getvalue()
 
 
 def test_command_line_in_place_keeps_a_sheet_named_results(tmp_path, capsys):

@@ -118,8 +118,8 @@ def test_progress_bar_on_a_terminal_for_large_sheets(tmp_path):
     stream = Terminal()
     calc_workbook(path, tmp_path / "out.xlsx", progress=Progress(stream=stream))
     text = stream.getvalue()
-    assert "\rreading Supports" in text and "2500/2500" in text and "\rwriting Results" in text
-    assert text.endswith("\n")
+    assert "\x1b[2Kreading Supports" in text and "2500/2500" in text and "\x1b[2Kwriting Results" in text
+    assert text.replace("\x1b[?25h", "").endswith("\n")  # each stage ends its line (rich shows the cursor again)
 
 
 def test_no_progress_bar_when_not_a_terminal_or_small(tmp_path):
