@@ -7,7 +7,6 @@ values and with live formulas, and prints one line per stage.
 """
 from __future__ import annotations
 
-import sys
 import tempfile
 import time
 from pathlib import Path
@@ -17,6 +16,7 @@ import pandas as pd
 
 from bearingheat.calc.table import calc
 from bearingheat.io.excel import calc_workbook, read_supports
+from common import size_argument
 
 ROOT = Path(__file__).resolve().parents[1]
 TARGET_SECONDS = 10.0
@@ -68,4 +68,4 @@ def main(n_rows: int = 10_000) -> dict[str, float]:
 
 
 if __name__ == "__main__":
-    main(int(sys.argv[1]) if len(sys.argv) > 1 else 10_000)
+    main(size_argument(10_000, 10_000))

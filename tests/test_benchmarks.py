@@ -1,26 +1,74 @@
-"""The friction benchmark's four paths give the same M_R (a small run; no timing is asserted)."""
-from bench_friction import main
+"""Every benchmark runs on a tiny size and checks its own results (no timing is asserted: that is `make bench`)."""
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+RUNNER = Path(__file__).resolve().parents[1] / "benchmarks" / "__main__.py"
 
 
 def test_friction_benchmark_paths_agree(capsys):
+    from bench_friction import main
     figures = main(points=6000, repeats=1, loop_sample=600)
-    assert figures["points"] == 6000
-    assert "unit-aware API" in capsys.readouterr().out
+    assert figures["points"] == 6000 and figures["mixed_s"] > 0
+    printed = capsys.readouterr().out
+    assert "unit-aware API" in printed and "mixed rows, as calc gets them" in printed and "target >= 100x" in printed
+
+
+def test_skf_benchmark_runs_on_a_small_size(capsys):
+    from bench_skf import main
+    figures = main(points=3000, repeats=1)
+    assert figures["skf_kernel_s"] > 0 and "target <= 3x" in capsys.readouterr().out
+
+
+def test_thermal_benchmark_runs_on_a_small_size(capsys):
+    from bench_thermal import main
+    figures = main(rows=300)
+    assert figures["max_rel_diff"] < 1e-6 and "target >= 50x" in capsys.readouterr().out
 
 
 def test_pipeline_benchmark_runs_on_a_small_table(capsys):
-    from bench_pipeline import main as pipeline
-    figures = pipeline(rows=2000, repeats=1, cli=True)
+    from bench_pipeline import main
+    figures = main(rows=2000, repeats=1, cli=True)
     printed = capsys.readouterr().out
-    assert "minimal numpy" in printed and "bh.calc with heat-balance columns" in printed
-    assert figures["cli_peak_mb"] > 0 and figures["kernel"] > 0
+    assert "minimal numpy version of the same formulas" in printed and "memory-bandwidth floor" in printed
+    assert "bh.calc with heat-balance columns" in printed and "target <= 30x" in printed
+    assert "vs a bare pd.read_csv(engine='pyarrow') + to_parquet" in printed and "target <= 5x" in printed
+    assert figures["cli_peak_mb"] > figures["peak_mb[python + package]"] > 0 and figures["kernel"] > 0
+
+
+def test_dask_benchmark_runs_on_a_small_table(capsys):
+    pytest.importorskip("distributed")
+    from bench_dask import main
+    figures = main(rows=2000, partitions=4)
+    assert figures["rows_per_s_1"] > 0 and figures["rows_per_s_2"] > 0
+    assert "two workers vs one" in capsys.readouterr().out
+
+
+def test_excel_benchmark_runs_on_a_small_workbook(capsys):
+    from bench_excel import main
+    figures = main(n_rows=30)
+    assert figures["values"] > 0 and "30 supports" in capsys.readouterr().out
+
+
+def test_diagnose_benchmark_runs_on_a_small_set(capsys):
+    from bench_diagnose import main
+    assert main(rows=1500) > 0 and "target < 60 s" in capsys.readouterr().out
+
+
+def test_sizes_from_the_command_line(monkeypatch):
+    from common import size_argument
+    monkeypatch.setattr(sys, "argv", ["bench"])
+    assert size_argument(200, 10**6) == 200
+    monkeypatch.setattr(sys, "argv", ["bench", "--full"])
+    assert size_argument(200, 10**6) == 10**6
+    monkeypatch.setattr(sys, "argv", ["bench", "1e4"])
+    assert size_argument(200, 10**6) == 10_000
 
 
 def test_the_runner_goes_on_after_a_script_that_exits(tmp_path):
-    import subprocess
-    import sys
-    from pathlib import Path
-    runner = (Path(__file__).resolve().parents[1] / "benchmarks" / "__main__.py").read_text()
+    runner = RUNNER.read_text()
     (tmp_path / "bench_a.py").write_text("import sys\nprint('a ran')\nsys.exit(0)\n")
     (tmp_path / "bench_b.py").write_text("print('b ran')\n")
     (tmp_path / "__main__.py").write_text(runner)

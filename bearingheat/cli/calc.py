@@ -12,10 +12,16 @@ from bearingheat.calc.duty import duty_cycle, has_duty_cycle
 from bearingheat.calc.models import DEFAULT_MODEL, MODELS
 from bearingheat.calc.thermal import (DEFAULT_SPEED_FACTOR_METHOD, DEFAULT_VISCOSITY_AT, SPEED_FACTOR_METHODS,
                                      VISCOSITY_AT)
-from bearingheat.cli import UsageError, add_csv_arguments, add_force_argument
+import pandas as pd
+import pyarrow.compute as pc
+
+from bearingheat.cli import UsageError, add_csv_arguments
 from bearingheat.errors import ExcelError, F2ChartError, InputError
-from bearingheat.cli.options import add_json
-from bearingheat.io.console import Progress, print_summary
+from bearingheat.cli.options import add_force, add_json, add_output, add_quiet
+from bearingheat.io.console import Progress, print_summary, summary_columns
+from bearingheat.io.dataset import (calc_dataset, check_dataset_target, dask_client, dataset_columns, dataset_files,
+                                   is_dataset, read_dataset_columns)
+from bearingheat.io.pipeline import calc_file
 from bearingheat.io.json import results_json
 from bearingheat.io.excel.printing import export_pdf, pdf_output
 from bearingheat.io.excel.reader import EXCEL_SUFFIXES
@@ -60,10 +66,8 @@ or a file fault (cannot read or write, disk full, damaged workbook).
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("input", metavar="INPUT",
                         help="table of supports: CSV (.csv), Parquet (.parquet), Arrow/Feather (.arrow, .feather) or "
-                             "an Excel workbook (.xlsx)")
-    parser.add_argument("-o", "--output", metavar="FILE",
-                        help="file to write (.csv, .parquet, .arrow, .feather or .xlsx); without it the results are "
-                             "printed")
+                             "an Excel workbook (.xlsx); with --dask a folder or a glob pattern of Parquet files")
+    add_output(parser, ".csv, .parquet, .arrow, .feather or .xlsx; with --dask a folder for the Parquet dataset")
     parser.add_argument("--f2-chart", metavar="CSV",
                         help="digitised f2 chart (docs/friction.md gives the format)")
     parser.add_argument("--effects", metavar="SUMMARY_JSON",
@@ -90,12 +94,22 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                              "the rows of those designations the bands MR_low, MR_high, n_per_low, ...")
     parser.add_argument("--model", choices=sorted(MODELS), default=DEFAULT_MODEL,
                         help=f"friction model of rows whose 'model' cell is blank (default {DEFAULT_MODEL})")
-    add_force_argument(parser, "OUTPUT")
+    add_force(parser, "OUTPUT")
     parser.add_argument("--no-csv-escape", action="store_true",
                         help="CSV output: write text starting with =, +, -, @ as it is (no leading apostrophe)")
     add_csv_arguments(parser)
     add_json(parser)
-    parser.add_argument("-q", "--quiet", action="store_true", help="print nothing")
+    add_quiet(parser)
+    dask = parser.add_argument_group("fleet scale (needs pip install 'bearingheat[dask]'; docs/scale.md)")
+    dask.add_argument("--dask", action="store_true",
+                      help="compute a folder or glob of Parquet files on a Dask cluster and write the results as a "
+                           "Parquet dataset, one part per input partition, into the folder -o names")
+    dask.add_argument("--scheduler", metavar="ADDRESS",
+                      help="--dask: the scheduler of an existing dask.distributed cluster (tcp://host:8786); "
+                           "default a local cluster of worker processes")
+    dask.add_argument("--workers", metavar="N", type=int,
+                      help="--dask without --scheduler: worker processes of the local cluster (default one per CPU "
+                           "core)")
 
 
 def _load_effects(path: str | None):
@@ -127,7 +141,17 @@ def _pdf(args: argparse.Namespace, workbook: Path | None, source: Path) -> Path 
     return pdf_output(workbook, force=args.force, inputs=(source,))
 
 
+def _calc_options(args: argparse.Namespace) -> dict:
+    """calc's options from the command line."""
+    return dict(model=args.model, f2_chart=args.f2_chart, n_per_method=args.n_per_method,
+                effects=_load_effects(args.effects), viscosity_at=args.viscosity_at, coefficients=args.coefficients)
+
+
 def run(args: argparse.Namespace) -> int:
+    if args.dask or is_dataset(args.input):
+        return run_dask(args)
+    if args.scheduler or args.workers:
+        raise UsageError("--scheduler and --workers apply with --dask only")
     source = Path(args.input)
     if not source.is_file():
         raise UsageError(f"{source}: no such file")
@@ -137,10 +161,10 @@ def run(args: argparse.Namespace) -> int:
         raise UsageError("--in-place, --formulas and --sheet apply to Excel workbooks only")
     target = _output(args, source)
     pdf = _pdf(args, target, source)
+    if target is None or target.suffix.lower() not in EXCEL_SUFFIXES:
+        return run_table(args, source, target)
     try:
-        result = calc_csv(source, sep=args.sep, decimal=args.decimal, model=args.model, f2_chart=args.f2_chart,
-                          n_per_method=args.n_per_method, effects=_load_effects(args.effects),
-                          viscosity_at=args.viscosity_at, coefficients=args.coefficients)
+        result = calc_csv(source, sep=args.sep, decimal=args.decimal, **_calc_options(args))
         duty = duty_cycle(result) if has_duty_cycle(result) else None
         if duty is not None and target is not None and target.suffix.lower() not in EXCEL_SUFFIXES:
             # the summary per support beside the results: <name>.duty.csv
@@ -164,6 +188,60 @@ def run(args: argparse.Namespace) -> int:
             print("\nduty cycle (time-weighted per support):")
             print(duty.to_string(index=False))
     return 1 if (result["status"] == "error").any() else 0
+
+
+def run_table(args: argparse.Namespace, source: Path, target: Path | None) -> int:
+    """``bearingheat calc IN.csv|parquet|arrow [-o OUT.csv|parquet|arrow|feather]``: calc a block of rows at a
+    time (:func:`bearingheat.io.pipeline.calc_file`, with a progress bar on a terminal), the results held as Arrow
+    and written by pyarrow; at most the first rows and the counts are printed."""
+    escape = not args.no_csv_escape
+    try:
+        results = calc_file(source, sep=args.sep, decimal=args.decimal, progress=Progress(enabled=not args.quiet),
+                            **_calc_options(args))
+        has_duty = has_duty_cycle(pd.DataFrame(columns=results.column_names))
+        result = results.to_pandas() if args.json or has_duty else None
+        duty = duty_cycle(result) if has_duty else None
+        if duty is not None and target is not None:  # the summary per support beside the results: <name>.duty.csv
+            duty_target = safe_output(target.with_name(f"{target.stem}.duty{target.suffix}"), force=args.force,
+                                      inputs=(source,))
+            write_table(duty, duty_target, escape=escape)
+        if target is not None:
+            write_table(results, target, escape=escape)
+    except (InputError, F2ChartError) as exc:
+        raise UsageError(str(exc)) from exc
+    if args.json:
+        print(results_json(result, duty))
+    elif not args.quiet:
+        print_summary(results, args.output)
+        if duty is not None:
+            print("\nduty cycle (time-weighted per support):")
+            print(duty.to_string(index=False))
+    return 1 if pc.any(pc.equal(results.column("status"), "error")).as_py() else 0
+
+
+def run_dask(args: argparse.Namespace) -> int:
+    """``bearingheat calc FOLDER|GLOB --dask -o OUT_FOLDER [--scheduler ADDRESS]``: a Parquet dataset of results."""
+    if not args.dask:
+        raise UsageError(f"{args.input}: a folder or glob of Parquet files is computed with --dask (on a Dask "
+                         "cluster); give one file otherwise")
+    if not args.output:
+        raise UsageError("--dask writes a Parquet dataset: give -o FOLDER")
+    if args.json or args.in_place or args.formulas or args.sheet or args.pdf or args.sep or args.decimal:
+        raise UsageError("--dask reads Parquet files and writes a Parquet dataset: --json, --in-place, --formulas, "
+                         "--sheet, --pdf, --sep and --decimal do not apply")
+    if args.scheduler and args.workers:
+        raise UsageError("--workers sets up a local cluster; with --scheduler the cluster has its own workers")
+    try:
+        files = dataset_files(args.input)
+        target = check_dataset_target(args.output, files, force=args.force)
+        with dask_client(args.scheduler, args.workers):
+            calc_dataset(files, target, overwrite=args.force, **_calc_options(args))
+        shown = read_dataset_columns(target, summary_columns(dataset_columns(target)))
+    except (InputError, F2ChartError) as exc:
+        raise UsageError(str(exc)) from exc
+    if not args.quiet:
+        print_summary(shown, f"{target}/ (Parquet dataset of {len(files)} input files)")
+    return 1 if pc.any(pc.equal(shown.column("status"), "error")).as_py() else 0
 
 
 def run_calc_workbook(args: argparse.Namespace) -> int:

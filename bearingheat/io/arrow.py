@@ -27,7 +27,8 @@ from bearingheat.calc.contract import parse_header
 from bearingheat.errors import InputError
 from bearingheat.io.files import atomic_write
 
-__all__ = ["ARROW_SUFFIXES", "read_arrow", "write_arrow", "column_units"]
+__all__ = ["ARROW_SUFFIXES", "read_arrow", "read_arrow_table", "write_arrow", "arrow_table", "arrow_column",
+           "column_units", "unit_of"]
 
 #: suffix -> (read a pyarrow table from a path, write one to a path)
 _FORMATS = {
@@ -46,7 +47,8 @@ def _format(path: Path):
         raise InputError(f"{path}: {path.suffix or 'no suffix'} is not one of {', '.join(ARROW_SUFFIXES)}") from None
 
 
-def _unit_of(header: str) -> str:
+def unit_of(header: str) -> str:
+    """The unit of a ``name [unit]`` header ('' for text, dimensionless columns and headers calc cannot read)."""
     try:
         unit = parse_header(header)[1]
     except InputError:
@@ -54,31 +56,56 @@ def _unit_of(header: str) -> str:
     return unit or ""
 
 
-def read_arrow(path) -> pd.DataFrame:
-    """The table of a Parquet or Arrow/Feather file as a DataFrame (text as pandas strings, blanks as NaN)."""
+def read_arrow_table(path) -> pa.Table:
+    """The table of a Parquet or Arrow/Feather file as Arrow; :class:`InputError` for a damaged or empty one."""
     path = Path(path)
     read, _ = _format(path)
     try:
         table = read(path)
     except (pa.ArrowInvalid, OSError) as exc:
         raise InputError(f"{path}: not a readable {path.suffix} table ({exc})") from exc
-    frame = table.to_pandas()
-    if len(frame) == 0:
+    if table.num_rows == 0:
         raise InputError(f"{path}: no rows")
-    return frame
+    return table
 
 
-def write_arrow(frame: pd.DataFrame, path) -> Path:
-    """Write ``frame`` as Parquet or Arrow/Feather (by the suffix), with each column's unit as field metadata."""
+def read_arrow(path) -> pd.DataFrame:
+    """The table of a Parquet or Arrow/Feather file as a DataFrame (text as pandas strings, blanks as NaN)."""
+    return read_arrow_table(path).to_pandas()
+
+
+def arrow_column(values: pd.Series) -> pa.Array:
+    """One pandas column as Arrow; a column of mixed cells (numbers and text from a workbook) as text, each cell
+    as pandas' CSV writer would write it (``str(cell)``), missing cells missing."""
+    try:
+        return pa.array(values, from_pandas=True)
+    except (pa.ArrowInvalid, pa.ArrowTypeError):
+        cells = values.to_numpy(dtype=object)
+        missing = pd.isna(values).to_numpy()
+        return pa.array([None if gone else str(cell) for cell, gone in zip(cells, missing)], type=pa.string())
+
+
+def arrow_table(frame: pd.DataFrame | pa.Table) -> pa.Table:
+    """``frame`` as an Arrow table (no index column), each field with its unit as metadata (key ``unit``)."""
+    if isinstance(frame, pa.Table):
+        table = frame
+    else:
+        headers = [str(h) for h in frame.columns]
+        table = pa.Table.from_arrays([arrow_column(frame.iloc[:, i]) for i in range(frame.shape[1])], names=headers)
+    fields = [table.schema.field(i).with_metadata({"unit": unit_of(str(name))})
+              for i, name in enumerate(table.column_names)]
+    return table.cast(pa.schema(fields, metadata=table.schema.metadata))
+
+
+def write_arrow(frame: pd.DataFrame | pa.Table, path) -> Path:
+    """Write ``frame`` (pandas or Arrow) as Parquet or Arrow/Feather (by the suffix), with each column's unit as
+    field metadata."""
     path = Path(path)
     _, write = _format(path)
     try:
-        table = pa.Table.from_pandas(frame, preserve_index=False)
+        table = arrow_table(frame)
     except (pa.ArrowInvalid, pa.ArrowTypeError) as exc:
         raise InputError(f"{path}: the table cannot be written as {path.suffix} ({exc})") from exc
-    fields = [table.schema.field(i).with_metadata({"unit": _unit_of(str(name))})
-              for i, name in enumerate(table.column_names)]
-    table = table.cast(pa.schema(fields, metadata=table.schema.metadata))
     return atomic_write(path, lambda temp: write(table, temp))
 
 

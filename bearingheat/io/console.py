@@ -1,10 +1,11 @@
-"""Terminal output of the table commands: the summary table of calc results and a progress bar.
+"""Terminal output of the table commands: the summary table of calc results and a progress bar (rich).
 
 :func:`print_summary` writes the readable table that ``bearingheat calc``
 prints for a CSV and for a workbook alike; :class:`Progress` draws the bar
 that :func:`bearingheat.io.excel.workbook.calc_workbook` advances while it
-reads and writes large sheets (any object with ``start``, ``update`` and
-``finish`` will do).
+reads and writes large sheets and :func:`bearingheat.io.pipeline.calc_file`
+block by block (any object with ``start``, ``update`` and ``finish`` will
+do).
 """
 from __future__ import annotations
 
@@ -12,8 +13,12 @@ import re
 import sys
 
 import pandas as pd
+import pyarrow as pa
+from rich.console import Console
+from rich.progress import BarColumn, MofNCompleteColumn, TextColumn, TimeElapsedColumn
+from rich.progress import Progress as RichProgress
 
-__all__ = ["print_summary", "Progress", "PROGRESS_MIN_ROWS", "SHOWN_ROWS", "SHOWN_MESSAGES"]
+__all__ = ["print_summary", "summary_columns", "Progress", "PROGRESS_MIN_ROWS", "SHOWN_ROWS", "SHOWN_MESSAGES"]
 
 _CITED = re.compile(r"^row \d+[ :]")
 
@@ -24,18 +29,34 @@ SHOWN_ROWS = 50
 SHOWN_MESSAGES = 20
 
 
-def print_summary(result: pd.DataFrame, output: str | None, stream=None) -> None:
+#: the results the summary table shows (by name, before the unit)
+SHOWN_RESULTS = ("f0", "f1", "P1", "M0", "M1", "M2", "MR", "NR", "n_thr", "n_per", "T_op")
+
+
+def _shown(columns) -> tuple[str | None, list[str]]:
+    """(the column naming a row, the columns of the summary table)."""
+    label = "id" if "id" in columns else ("designation" if "designation" in columns else None)
+    shown = [c for c in (label, "designation" if label == "id" else None) if c]
+    shown += [c for c in columns if c.split(" [")[0] in SHOWN_RESULTS]
+    return label, shown + ["status"]
+
+
+def summary_columns(columns) -> list[str]:
+    """The columns of a results table :func:`print_summary` reads (to read only those from a big file)."""
+    return _shown(list(columns))[1] + (["message"] if "message" in columns else [])
+
+
+def print_summary(result: pd.DataFrame | pa.Table, output: str | None, stream=None) -> None:
     """A readable table of the main results, then one line per warning or error, then the counts.
 
     A table longer than :data:`SHOWN_ROWS` rows shows its first rows, and at most :data:`SHOWN_MESSAGES`
-    messages (errors first), each followed by how many were left out.
+    messages (errors first), each followed by how many were left out. An Arrow table (the results of a big
+    table) is read only in the columns shown.
     """
     stream = stream or sys.stdout
-    label = "id" if "id" in result.columns else ("designation" if "designation" in result.columns else None)
-    shown = [c for c in (label, "designation" if label == "id" else None) if c]
-    shown += [c for c in result.columns if c.split(" [")[0] in ("f0", "f1", "P1", "M0", "M1", "M2", "MR", "NR",
-                                                              "n_thr", "n_per", "T_op")]
-    shown.append("status")
+    if isinstance(result, pa.Table):
+        result = result.select(summary_columns(result.column_names)).to_pandas()
+    label, shown = _shown(list(result.columns))
     table = result[shown].head(SHOWN_ROWS)
     stream.write(table.to_string(index=False, na_rep="-", float_format=lambda x: f"{x:.4g}") + "\n")
     if len(result) > SHOWN_ROWS:
@@ -61,11 +82,13 @@ def print_summary(result: pd.DataFrame, output: str | None, stream=None) -> None
 
 
 class Progress:
-    """A one-line progress bar on a terminal stream; silent when disabled.
+    """A progress bar on stderr (rich), one line per stage (reading, calc, writing); silent when disabled.
 
-    Enabled when ``enabled`` is true and the stream is a terminal; each
-    stage (reading, writing) draws its own bar and ends it with a newline,
-    for sheets of at least :data:`PROGRESS_MIN_ROWS` rows.
+    Drawn when ``enabled`` is true and the stream is a terminal (not when
+    stderr goes to a file or a pipe, whatever the environment says about
+    colours), for stages of at least :data:`PROGRESS_MIN_ROWS` rows. Each
+    stage shows its label, the bar, rows done of the total and the time
+    elapsed, and ends with a newline.
     """
 
     def __init__(self, stream=None, enabled: bool = True, width: int = 30):
@@ -75,25 +98,32 @@ class Progress:
         self.total = 0
         self.label = ""
         self.active = False
+        self._bar = None
+        self._task = None
 
     def start(self, total: int, label: str) -> None:
+        self.finish()
         self.total, self.label = total, label
         self.active = self.enabled and total >= PROGRESS_MIN_ROWS
+        if not self.active:
+            return
+        console = Console(file=self.stream, force_terminal=True)
+        self._bar = RichProgress(TextColumn(f"{{task.description:<{max(24, len(label))}}}"),
+                                 BarColumn(bar_width=self.width), MofNCompleteColumn(), TimeElapsedColumn(),
+                                 console=console, auto_refresh=False, transient=False)
+        self._bar.start()
+        self._task = self._bar.add_task(label, total=total)
         self.update(0)
 
     def update(self, done: int) -> None:
         if not self.active:
             return
-        done = min(done, self.total)
-        filled = int(self.width * done / self.total) if self.total else self.width
-        bar = "#" * filled + "-" * (self.width - filled)
-        self.stream.write(f"\r{self.label:<24} [{bar}] {done}/{self.total}")
-        self.stream.flush()
+        self._bar.update(self._task, completed=min(done, self.total), refresh=True)
 
     def finish(self) -> None:
         if not self.active:
             return
         self.update(self.total)
-        self.stream.write("\n")
-        self.stream.flush()
+        self._bar.stop()
         self.active = False
+        self._bar = self._task = None

@@ -174,3 +174,58 @@ def test_a_long_table_prints_its_first_rows_and_the_counts(tmp_path, capsys):
     assert "... 70 more rows; -o FILE writes them all" in out
     assert "... 20 more rows with messages; -o FILE writes them all" not in out  # 20 warnings: all shown
     assert out[-1] == "120 supports: 100 ok, 20 warning, 0 error"
+
+
+def _big_table(tmp_path, copies: int) -> Path:
+    big = pd.concat([pd.read_csv(EXAMPLE)] * copies, ignore_index=True)
+    big["n [rpm]"] = big["n [rpm]"].astype(object)
+    big.loc[7, "n [rpm]"] = "abc"
+    source = tmp_path / "big.csv"
+    big.to_csv(source, index=False)
+    return source
+
+
+def test_a_big_table_to_parquet_and_csv_gives_the_same_results(tmp_path, capsys):
+    """The table path (blocks of rows, results in Arrow, pyarrow's writers) writes what calc computes: the same
+    numbers in Parquet and CSV, the units as Parquet field metadata, the rows' own file lines in the messages."""
+    import numpy as np
+    import pyarrow.parquet as parquet
+
+    from bearingheat.io.tables import calc_csv
+    source = _big_table(tmp_path, 500)  # 3000 rows
+    assert main(["calc", str(source), "-o", str(tmp_path / "out.parquet"), "-q"]) == 1
+    assert main(["calc", str(source), "-o", str(tmp_path / "out.csv"), "-q"]) == 1
+    assert capsys.readouterr().out == ""
+    expected = calc_csv(source)
+    parquet_result = pd.read_parquet(tmp_path / "out.parquet")
+    csv_result = pd.read_csv(tmp_path / "out.csv")
+    assert list(parquet_result.columns) == list(expected.columns) == list(csv_result.columns)
+    for column in ("MR [N*mm]", "NR [W]", "n_thr [1/min]", "T_op [degC]"):
+        np.testing.assert_array_equal(parquet_result[column].to_numpy(), expected[column].to_numpy())
+        np.testing.assert_array_equal(csv_result[column].to_numpy(), expected[column].to_numpy())
+    assert parquet_result["message"].iloc[7] == csv_result["message"].iloc[7] == \
+        "row 9 (id \"input shaft B (floating)\"): 'abc' is not a number for n [rpm]; n [rpm]: missing; the " \
+        "operating speed is needed"
+    assert parquet.read_schema(tmp_path / "out.parquet").field("NR [W]").metadata == {b"unit": b"W"}
+
+
+def test_the_progress_bar_is_drawn_on_a_terminal_only(tmp_path, monkeypatch, capsys):
+    import io
+    import sys
+
+    class Terminal(io.StringIO):
+        def isatty(self):
+            return True
+
+    source = _big_table(tmp_path, 500)
+    terminal = Terminal()
+    monkeypatch.setattr(sys, "stderr", terminal)
+    assert main(["calc", str(source), "-o", str(tmp_path / "out.parquet")]) == 1
+    assert "calc" in terminal.getvalue() and "3000/3000" in terminal.getvalue()
+    quiet = Terminal()
+    monkeypatch.setattr(sys, "stderr", quiet)
+    assert main(["calc", str(source), "-o", str(tmp_path / "out.parquet"), "--force", "-q"]) == 1
+    assert quiet.getvalue() == ""
+    monkeypatch.undo()
+    assert main(["calc", str(source), "-o", str(tmp_path / "out.parquet"), "--force"]) == 1
+    assert capsys.readouterr().err == ""  # stderr is no terminal here

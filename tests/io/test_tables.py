@@ -216,3 +216,76 @@ def test_text_columns_are_read_as_text(tmp_path):
     table = read_csv(path)
     assert [table.loc[0, c] for c in ("id", "designation", "series", "code")] == ["007", "6205", "02", "0042"]
     assert table.loc[0, "n [rpm]"] == 1500
+
+
+# ---- big tables: pyarrow's reader, the row lines in arrays, the CSV text from Arrow --------------------------------
+
+def test_pyarrow_and_pandas_read_a_file_alike(tmp_path):
+    """A file without spaces after its separators goes to pyarrow's reader, the same file with them to pandas'
+    parser: the same table, numbers, text, blanks and pandas' missing-value words alike."""
+    rows = ["id;designation;d [mm];n [rpm];Fr [kN];Y0;note", "a;6208;40;1500,5;2;;NA", "b;6209;45;NA;2,5;;x",
+            '"c;d";NU208-E;40;900;3;;007']
+    tight, spaced = tmp_path / "tight.csv", tmp_path / "spaced.csv"
+    tight.write_text("\n".join(rows) + "\n")
+    spaced.write_text("\n".join(row.replace(";", "; ") if not row.startswith('"') else row for row in rows) + "\n")
+    fast, slow = read_csv(tight), read_csv(spaced)
+    pd.testing.assert_frame_equal(fast, slow, check_exact=True)
+    assert fast["n [rpm]"].tolist()[0] == 1500.5 and pd.isna(fast["n [rpm]"].tolist()[1])
+    assert fast["Y0"].dtype == "float64" and fast["note"].tolist()[2] == "007" and fast["id"].tolist()[2] == "c;d"
+    assert list(fast.attrs["lines"]) == [2, 3, 4]
+
+
+def test_a_column_whose_type_changes_after_the_first_block_is_read_whole(tmp_path):
+    """pyarrow's block reader fixes a column's type from its first block (1 MB): a number with a decimal point
+    or a word far down the file makes the file be read again, whole (not a row lost, not a number cut)."""
+    path = tmp_path / "long.csv"
+    rows = 150_000  # 2 MB: two blocks
+    loads = ["2"] * rows
+    loads[-1] = "2.75"
+    speeds = ["1500"] * rows
+    speeds[-2] = "fast"
+    path.write_text("id,Fr [kN],n [rpm]\n" + "".join(f"s{i},{loads[i]},{speeds[i]}\n" for i in range(rows)))
+    table = read_csv(path)
+    assert len(table) == rows and table["Fr [kN]"].iloc[-1] == 2.75 and table["Fr [kN]"].dtype == "float64"
+    assert table["n [rpm]"].iloc[-2] == "fast" and table["n [rpm]"].iloc[0] == "1500"
+    assert table.attrs["lines"][rows - 1] == rows + 1
+
+
+def test_row_lines_of_an_unquoted_file_skip_blank_lines(tmp_path):
+    path = tmp_path / "in.csv"
+    path.write_text("\n" + ",".join(HEAD) + "\r\n" + ",".join(ROW) + "\r\n  \r\n\r\n"
+                    + "x,6205,25,52,7.8,oil_bath,3000,abc,12\r\n")
+    table = read_csv(path)
+    assert list(table.attrs["lines"]) == [3, 6]
+    result = calc_csv(path)
+    assert result["message"].tolist()[1] == "row 6 (id \"x\"): 'abc' is not a number for Fr [kN]"
+
+
+def test_row_lines_are_not_copied_by_every_operation():
+    """pandas deep-copies DataFrame.attrs on every operation: the row lines give themselves as their copy."""
+    import copy
+
+    from bearingheat.io.tables import RowLines
+    lines = RowLines(range(2, 100_002))
+    frame = pd.DataFrame({"x": range(100_000)})
+    frame.attrs["lines"] = lines
+    assert copy.deepcopy(lines) is lines and (frame + 1).attrs["lines"] is lines
+    assert lines[10:12] == RowLines([12, 13]) and lines[0] == 2 and len(lines) == 100_000
+
+
+def test_write_csv_writes_the_text_of_pandas_to_csv(tmp_path):
+    """The CSV text built from Arrow arrays is pandas' to_csv(index=False) text, byte for byte: floats of every
+    magnitude (Python's repr), whole floats with '.0', quotes only where a cell needs them, formulas escaped."""
+    import numpy as np
+    rng = np.random.default_rng(5)
+    numbers = rng.normal(size=3000) * 10.0 ** rng.integers(-12, 22, 3000)
+    numbers[::9] = np.round(numbers[::9])
+    numbers[::13] = np.nan
+    frame = pd.DataFrame({"id": [f"s{i}" if i % 5 else f'=cmd|"x, y"|{i}' for i in range(3000)],
+                          "MR [N*mm]": numbers, "n [rpm]": np.arange(3000), "flag": [True, False, True] * 1000,
+                          "message": ["" if i % 7 else f"row {i}: Fr [kN]; check\nit" for i in range(3000)]})
+    frame.loc[3, "message"] = None
+    write_csv(frame, tmp_path / "out.csv")
+    assert (tmp_path / "out.csv").read_text() == escape_formulas(frame).to_csv(index=False)
+    write_csv(frame, tmp_path / "raw.csv", escape=False)
+    assert (tmp_path / "raw.csv").read_text() == frame.to_csv(index=False)
