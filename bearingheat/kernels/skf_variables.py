@@ -55,15 +55,22 @@ def _f(x):
     return np.asarray(x, dtype=float)
 
 
+#: x^a from the cube root c = x^(1/3), for the exponents of table 2 that are thirds
+_THIRDS = {1.0 / 3.0: lambda x, c: c, 4.0 / 3.0: lambda x, c: x * c, 5.0 / 3.0: lambda x, c: x * c * c}
+
+
 def _pow(x, a):
     """x^a for x >= 0 and a scalar exponent, as exp(a·ln x): a third faster than np.power on large arrays.
 
     0^a is 0 for a > 0 and inf for a < 0, as with np.power; the relative
-    difference to np.power is of the order of 1e-15.
+    difference to np.power is of the order of 1e-15. The powers 1/3, 4/3
+    and 5/3 of table 2 use np.cbrt (one ulp, a third of the time of exp and ln).
     """
     x = _f(x)
     if x.ndim == 0 or np.ndim(a) != 0:
         return np.power(x, a)
+    if a in _THIRDS:
+        return _THIRDS[a](x, np.cbrt(x))
     with np.errstate(divide="ignore"):
         out = np.log(x)
     out *= a
@@ -111,13 +118,19 @@ def _sin_alpha(alpha_F, Fa):
     """
     x = np.radians(alpha_F)
     if np.ndim(x) and np.nanmax(x, initial=0.0) <= 0.5236:   # 30°
-        x2 = x * x
-        s = 1.0 / 39916800.0
-        s = ((((-s * x2 + 1.0 / 362880.0) * x2 - 1.0 / 5040.0) * x2 + 1.0 / 120.0) * x2 - 1.0 / 6.0) * x2 + 1.0
+        x2 = np.square(x)
+        s = np.multiply(x2, -1.0 / 39916800.0)
+        for coefficient in (1.0 / 362880.0, -1.0 / 5040.0, 1.0 / 120.0, -1.0 / 6.0):
+            s += coefficient
+            s *= x2
+        s += 1.0
         s *= x
     else:
         with np.errstate(invalid="ignore"):
             s = np.sin(x)
+    if np.ndim(s):
+        np.copyto(s, 1.0, where=~(_f(Fa) > 0))
+        return s
     return np.where(_f(Fa) > 0, s, 1.0)
 
 

@@ -322,4 +322,4 @@ def test_deep_groove_sine_series_matches_numpy():
 def test_benchmark_paths_agree():
     """benchmarks/bench_skf.py on a few points: the array kernel, the formula kernels and the evaluation agree."""
     figures = bench_skf_main(points=6000, repeats=1)
-    assert figures["points"] == 6000 and figures["skf_kernel_s"] > 0
+    assert figures["points"] == 6000 and figures["skf_kernel_s"] > 0 and figures["catalogue_chain_s"] > 0
