@@ -16,7 +16,8 @@ from bearingheat.calc.supports import number_column
 __all__ = ["plain_rows"]
 
 
-def plain_rows(frame: pd.DataFrame, plain: np.ndarray, results: dict, row_errors: list, warnings_by_row: list) -> None:
+def plain_rows(frame: pd.DataFrame, plain: np.ndarray, results: dict, row_errors: dict[int, list[str]],
+               warnings_by_row: dict[int, list[str]]) -> None:
     """Fill MR, NR, p_plain and V_plain of the plain rows into ``results``; their messages into the row lists."""
     rows = np.flatnonzero(plain)
     d, B, F, n, f = (number_column(frame, c)[rows] for c in ("d", "B", "Fr", "n", "f_plain"))
@@ -29,7 +30,7 @@ def plain_rows(frame: pd.DataFrame, plain: np.ndarray, results: dict, row_errors
     for col, values in (("p_plain", loss.p), ("V_plain", loss.V)):
         results[col] = np.full(len(plain), np.nan)
         results[col][rows] = values
-    for k, i in enumerate(rows):
+    for k, i in enumerate(rows.tolist()):
         if loss.status[k] == "error":
             row_errors[i].append(loss.message[k])
         elif loss.message[k]:

@@ -17,6 +17,7 @@ bearingheat.errors.ModelError: model: 'palmgren' is not one of schaeffler, skf
 """
 from __future__ import annotations
 
+import functools
 from collections import defaultdict
 
 from dataclasses import dataclass
@@ -168,6 +169,11 @@ def _row_models(frame: pd.DataFrame, default: str) -> tuple[np.ndarray, list[str
     return names, [known[name] for name in names.tolist()]
 
 
+def _message_at(problem: Problem, position: dict[int, int], row: int) -> str:
+    """The message of ``problem`` (found on a subset of rows) for ``row`` of the whole table."""
+    return problem.message(position[row])
+
+
 def _scatter(results: dict, part: dict, rows: np.ndarray, size: int) -> None:
     for name, values in part.items():
         if name not in results:
@@ -181,11 +187,11 @@ def evaluate_models(supports: SupportArrays, names: np.ndarray, labels: Labels, 
     present = [name for name in MODELS if np.any(names == name)]
     if len(present) == 1 and np.all(names == present[0]):
         with np.errstate(all="ignore"):
-            results, problems = MODELS[present[0]].evaluate(supports, labels, f2_chart)
-        results = {k: np.array(np.broadcast_to(v, (size,)), dtype=float) for k, v in results.items()}
+            one_model, one_model_problems = MODELS[present[0]].evaluate(supports, labels, f2_chart)
+        filled = {k: np.array(np.broadcast_to(v, (size,)), dtype=float) for k, v in one_model.items()}
         for name in RESULTS:
-            results.setdefault(name, np.full(size, np.nan))
-        return results, problems
+            filled.setdefault(name, np.full(size, np.nan))
+        return filled, one_model_problems
     results: dict[str, np.ndarray] = {}
     problems: list[Problem] = []
     for name in present:
@@ -193,11 +199,11 @@ def evaluate_models(supports: SupportArrays, names: np.ndarray, labels: Labels, 
         with np.errstate(all="ignore"):
             part, part_problems = MODELS[name].evaluate(supports.take(rows), labels, f2_chart)
         _scatter(results, part, rows, size)
+        position = {int(r): k for k, r in enumerate(rows)}
         for problem in part_problems:
             mask = np.zeros(size, dtype=bool)
             mask[rows] = problem.mask
-            problems.append(Problem(mask, problem.level,
-                                    lambda i, p=problem, pos={int(r): k for k, r in enumerate(rows)}: p.message(pos[i])))
+            problems.append(Problem(mask, problem.level, functools.partial(_message_at, problem, position)))
     for name in RESULTS:
         results.setdefault(name, np.full(size, np.nan))
     return results, problems
@@ -226,8 +232,8 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
     text = np.where(model_error != "", model_error, np.where(catalogue_rows, own, ""))
     # rows with messages only: error and warning lists keyed by row position
     row_errors: defaultdict[int, list[str]] = defaultdict(list)
-    for i in np.flatnonzero((text != "") & (text != None) & ~plain):  # noqa: E711 (element-wise on an object array)
-        row_errors[int(i)].append(text[i])
+    for i in np.flatnonzero((text != "") & (text != None) & ~plain).tolist():  # noqa: E711 (element-wise)
+        row_errors[i].append(text[i])
     # a row whose bearing did not resolve has its error already; rows of a model with its own tables report theirs
     resolved = (np.broadcast_to(supports.resolved, (n_rows,)) | ~catalogue_rows) & (model_error == "")
 
@@ -236,7 +242,7 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
     if plain.any():
         plain_rows(frame, plain, results, row_errors, warnings_by_row)
     for problem in problems:
-        for i in np.flatnonzero(problem.mask & ~plain):
+        for i in np.flatnonzero(problem.mask & ~plain).tolist():
             if problem.level == "error":
                 if resolved[i]:  # a row that failed to resolve has its error already
                     row_errors[i].append(problem.message(i))

@@ -9,12 +9,13 @@ builds the heat balance on it.
 from __future__ import annotations
 
 import math
+from typing import Callable
 
 import numpy as np
 import pandas as pd
 
 from bearingheat.calc.supports import number_column, text_column
-from bearingheat.catalogue.friction import resolve
+from bearingheat.catalogue.friction import ResolvedBearing, resolve
 from bearingheat.catalogue.thermal import THERMAL_KIND, THERMAL_KINDS, method_refusal, reference_conditions
 from bearingheat.errors import DesignationError
 from bearingheat.kernels import friction
@@ -30,12 +31,12 @@ PAIR_REASON = ("n_thr: the heat balance of a bearing pair is not in the sources 
 REFERENCE_KEYS = ("designation", "type", "series", "arrangement", "d", "D", "B", "T", "d1", "D1", "C0")
 
 
-def _resolve_rows(frame: pd.DataFrame):
+def _resolve_rows(frame: pd.DataFrame) -> list[tuple[ResolvedBearing | None, str]]:
     """Per row: (ResolvedBearing or None, reason)."""
     designations = text_column(frame, "designation")
     types = text_column(frame, "type")
     series = text_column(frame, "series")
-    out = []
+    out: list[tuple[ResolvedBearing | None, str]] = []
     for des, typ, ser in zip(designations, types, series):
         try:
             out.append((resolve(des, typ, ser), ""))
@@ -111,7 +112,7 @@ def _details(frame: pd.DataFrame, f0_scale=1.0, f1_scale=1.0) -> pd.DataFrame:
             reason[i] = PAIR_REASON
             continue
         kind[i] = THERMAL_KIND[entry.bearing_type]
-        checks = (
+        checks: tuple[tuple[str, float, str, Callable[[float], bool], str], ...] = (
             ("d", d[i], "the bore d gives dM = (d + D)/2", lambda v: v > 0, "must be > 0"),
             ("D", D[i], "the outside diameter D gives dM = (d + D)/2 and A_r", lambda v: v > d[i],
              f"must be larger than d = {d[i]:g} mm"),

@@ -50,6 +50,8 @@ _DRAG_SOURCE = {
     "6000": "SKF 6000 diagram 2 (p. 99; red curve ball bearings, blue roller bearings)",
     "10000": "SKF 10000/3 diagram 4 (p. 112)",
 }
+#: None as a 0-d object array: np.equal(texts, _NONE) marks the blank cells of a text column
+_NONE = np.array(None, dtype=object)
 _OIL = ("oil_mist", "oil_bath", "circulating_oil")  # oil-air, oil bath, oil jet (10000/3 p. 100)
 _CONSTANTS = ("R1", "R2", "R3", "R4", "S1", "S2", "S3", "S4", "S5", "Kz", "KL", "irw", "mu_EHL_type", "bore",
               "start_factor")
@@ -106,7 +108,7 @@ def _choice(x: _Extra, name: str, default: str):
     value = x.text(name)
     if np.ndim(value) == 0:
         return default if value is None else value
-    return np.where(np.equal(value, None), default, value)
+    return np.where(np.equal(value, _NONE), default, value)
 
 
 def _mapped(values, table: dict) -> np.ndarray | float:
@@ -237,9 +239,9 @@ def evaluate_skf_model(supports: SupportArrays, labels: Labels, f2_chart: F2Char
     # --- lubrication, oil, sliding coefficients (6000 pp. 98-101; 10000/3 pp. 102-103)
     lubrication = x.text("lubrication")
     known_lub = np.isin(lubrication, catalogue.LUBRICATIONS)
-    add(ok & np.equal(lubrication, None), "error",
+    add(ok & np.equal(lubrication, _NONE), "error",
         lambda i: f"{labels.name('lubrication', i)}: missing; expected one of {', '.join(catalogue.LUBRICATIONS)}")
-    add(ok & ~known_lub & np.not_equal(lubrication, None), "error",
+    add(ok & ~known_lub & np.not_equal(lubrication, _NONE), "error",
         lambda i: f"{labels.name('lubrication', i)}: {at(lubrication, i)!r} is not one of "
                   f"{', '.join(catalogue.LUBRICATIONS)}")
     oil = _choice(x, "oil", catalogue.DEFAULT_OIL)
@@ -343,22 +345,22 @@ def _seal_torques(x, text, ok, D, seals_designation, labels, add, shape):
             and not given_count.any() and np.ndim(unknown) == 0 and not unknown):
         return M_seal  # no seal anywhere: the common case of a table of open bearings
     seal_given = _per_row(seal_given, size)
-    seal = np.where(np.equal(seal_given, None), _per_row(text["seal"], size), seal_given)
+    seal = np.where(np.equal(seal_given, _NONE), _per_row(text["seal"], size), seal_given)
     seal = np.where(seal == "", None, seal)
     seals = np.where(given_count, seals, np.where(~np.isnan(seals_designation), seals_designation,
-                                                  np.where(np.equal(seal, None), 0.0, 2.0)))
+                                                  np.where(np.equal(seal, _NONE), 0.0, 2.0)))
     d_s = x.number("d_s")
     add(ok & given_count & ~np.isin(seals, (0.0, 1.0, 2.0)), "error",
         lambda i: f"{labels.name('seals', i)}: {labels.value('seals', seals[i])} must be 0, 1 or 2")
     add(ok & (d_s <= 0), "error", lambda i: f"{labels.name('d_s', i)}: {labels.value('d_s', d_s[i])} must be > 0")
-    add(ok & np.not_equal(unknown, "") & np.equal(seal_given, None) & ~given_count, "error",
+    add(ok & np.not_equal(unknown, "") & np.equal(seal_given, _NONE) & ~given_count, "error",
         lambda i: f"{labels.name('seal', i)}: missing; the designation's contact seal {at(unknown, i)!r} is not a "
                   f"seal type of SKF table 4 (6000 p. 96); give seal as one of {', '.join(catalogue.SEAL_TYPES)}, "
                   "or seals = 0 to leave the seal friction out")
-    add(ok & np.equal(seal, None) & given_count & (seals > 0), "error",
+    add(ok & np.equal(seal, _NONE) & given_count & (seals > 0), "error",
         lambda i: f"{labels.name('seal', i)}: missing; {labels.name('seals', i)} = {seals[i]:g} needs the seal type, "
                   f"one of {', '.join(catalogue.SEAL_TYPES)} (SKF 6000 table 4, p. 96)")
-    sealed = ok & np.not_equal(seal, None) & (seals > 0)
+    sealed = ok & np.not_equal(seal, _NONE) & (seals > 0)
     if not sealed.any():
         return M_seal
     types = _per_row(text["bearing_type"], size)

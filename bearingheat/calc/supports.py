@@ -15,7 +15,7 @@ from __future__ import annotations
 import dataclasses
 import math
 from dataclasses import dataclass, field
-from typing import Callable
+from typing import Any, Callable, TypeAlias
 
 import numpy as np
 import pandas as pd
@@ -43,6 +43,9 @@ _BLANK = {"bearing_type": "", "series": "", "f0_table": math.nan, "f0_basis": ""
 _TEXT = ("bearing_type", "series", "f0_basis", "m1_load", "p1_rule", "seal", "label", "prefix", "error")
 _FLOAT = ("f0_table", "f1_a", "f1_x", "X0_table", "Y0_table", "kB", "contact_angle", "bearings")
 _BOOL = ("m2", "no_axial", "resolved")
+
+#: a bearing constant: one value where every row has the same bearing, else an array with one value per row
+PerRow: TypeAlias = Any
 
 
 @dataclass
@@ -74,27 +77,27 @@ class SupportArrays:
     nu: np.ndarray
     Fr: np.ndarray
     Fa: np.ndarray
-    bearing_type: object
-    series: object
-    f0_basis: object
-    m1_load: object
-    p1_rule: object
-    seal: object
-    label: object
-    prefix: object
-    f0_table: object
-    f1_a: object
-    f1_x: object
-    X0_table: object
-    Y0_table: object
-    kB: object
-    contact_angle: object
-    bearings: object
-    f1_basis: object
-    m2: object
-    no_axial: object
-    error: object
-    resolved: object
+    bearing_type: PerRow
+    series: PerRow
+    f0_basis: PerRow
+    m1_load: PerRow
+    p1_rule: PerRow
+    seal: PerRow
+    label: PerRow
+    prefix: PerRow
+    f0_table: PerRow
+    f1_a: PerRow
+    f1_x: PerRow
+    X0_table: PerRow
+    Y0_table: PerRow
+    kB: PerRow
+    contact_angle: PerRow
+    bearings: PerRow
+    f1_basis: PerRow
+    m2: PerRow
+    no_axial: PerRow
+    error: PerRow
+    resolved: PerRow
     plain: np.ndarray
     notes: list = field(default_factory=list)
     #: model-specific inputs by contract name (per-row arrays or one value), e.g. the SKF model's oil level
@@ -103,7 +106,7 @@ class SupportArrays:
     def take(self, rows: np.ndarray) -> SupportArrays:
         """The supports at positions ``rows`` (scalars stay scalars)."""
         rows = np.asarray(rows)
-        changes = {}
+        changes: dict[str, Any] = {}
         for f in dataclasses.fields(self):
             value = getattr(self, f.name)
             if f.name == "size":
@@ -117,7 +120,7 @@ class SupportArrays:
                 changes[f.name] = value[rows]
         return dataclasses.replace(self, **changes)
 
-    def replace(self, **values) -> SupportArrays:
+    def replace(self, **values: Any) -> SupportArrays:
         """A copy with some fields replaced (e.g. another axial load)."""
         return dataclasses.replace(self, **values)
 
@@ -222,7 +225,7 @@ def _fill_blank(given, printed):
     return np.where(np.isnan(given), printed, given)
 
 
-def build_support_arrays(keys: pd.DataFrame, numbers: dict[str, object]) -> SupportArrays:
+def build_support_arrays(keys: pd.DataFrame, numbers: dict[str, Any]) -> SupportArrays:
     """The support arrays of a table (one row per support) or of one bearing at many operating points.
 
     ``keys`` holds the text columns of :data:`KEY_INPUTS` that are given,
@@ -235,7 +238,7 @@ def build_support_arrays(keys: pd.DataFrame, numbers: dict[str, object]) -> Supp
     size = lengths.pop() if lengths else len(keys)
     if lengths or (len(keys) not in (1, size)):
         raise ValueError("build_support_arrays: keys and numbers must have one length (or one key row)")
-    num = {}
+    num: dict[str, Any] = {}
     for name in NUMBER_INPUTS:
         value = numbers.get(name, math.nan)
         value = np.asarray(value, dtype=float)  # 0-d for a scalar: numpy division rules (x/0 = inf) everywhere

@@ -363,10 +363,10 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
         again = to_catalogue_units(table, units=units, cell=cell)
         frame = fill_from_catalogue(again.frame, again.labels)[0]  # the uncertainty columns, the same fill
     if has_uncertainty(table):
-        def again(perturbed: pd.DataFrame) -> pd.DataFrame:
+        def recalc(perturbed: pd.DataFrame) -> pd.DataFrame:
             return calc(perturbed, model=model, f2_chart=f2_chart, units=units, effects=effects,
                         n_per_method=n_per_method, viscosity_at=viscosity_at)
-        bands = uncertainty_bands(table, out, frame.reset_index(drop=True).set_axis(out.index), again,
+        bands = uncertainty_bands(table, out, frame.reset_index(drop=True).set_axis(out.index), recalc,
                                   method=uncertainty)
         out = pd.concat([out.drop(columns=["status", "message"]), bands, out[["status", "message"]]], axis=1)
     return out
@@ -392,8 +392,8 @@ def _implausible_relations(frame: pd.DataFrame, labels: Labels, from_table: dict
         load = number_column(frame, name)
         with np.errstate(invalid="ignore"):
             above = np.isfinite(load) & np.isfinite(C0) & (load > C0)
-        for i in np.flatnonzero(above):
-            problems.append((int(i), "warning", f"{labels.name(name, i)}: {user(name, i, load[i])} is above the "
+        for i in np.flatnonzero(above).tolist():
+            problems.append((i, "warning", f"{labels.name(name, i)}: {user(name, i, load[i])} is above the "
                                                 f"static load rating C0 = {C0[i]:g} N; check the load and its unit"))
     n = number_column(frame, "n")
     n_G = number_column(frame, "n_G")
@@ -401,9 +401,9 @@ def _implausible_relations(frame: pd.DataFrame, labels: Labels, from_table: dict
     designations = text_column(frame, "designation")
     with np.errstate(invalid="ignore"):
         fast = np.isfinite(n) & (n > n_G)
-    for i in np.flatnonzero(fast):
+    for i in np.flatnonzero(fast).tolist():
         of = f" of {designations[i]} ({CATALOGUE})" if catalogue_n_G[i] else ""
-        problems.append((int(i), "warning", f"{labels.name('n', i)}: {user('n', i, n[i])} is above the limiting "
+        problems.append((i, "warning", f"{labels.name('n', i)}: {user('n', i, n[i])} is above the limiting "
                                             f"speed n_G = {n_G[i]:g} 1/min{of}; check the speed and its unit"))
     return problems
 

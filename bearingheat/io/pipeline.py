@@ -19,6 +19,7 @@ need them).
 from __future__ import annotations
 
 from pathlib import Path
+from typing import Sequence
 
 import pandas as pd
 import pyarrow as pa
@@ -37,7 +38,7 @@ __all__ = ["ROWS_PER_BLOCK", "calc_file", "ordered_union"]
 ROWS_PER_BLOCK = 50_000
 
 
-def ordered_union(orders: list[list[str]], tie_break: list[str] = ()) -> list[str]:
+def ordered_union(orders: list[list[str]], tie_break: Sequence[str] = ()) -> list[str]:
     """One column order that keeps the order of every block's columns (a topological order of the 'comes
     before' pairs of all blocks); columns no block orders between them go by ``tie_break``, then by first
     appearance.
@@ -123,7 +124,7 @@ def _block_table(result: pd.DataFrame, block: pd.DataFrame, source: pa.Table | N
         values = result[name]
         same = source is not None and name in source.column_names and name in block.columns and \
             values.equals(block[name])
-        column = source.column(name) if same else arrow_column(values)
+        column = source.column(name) if source is not None and same else arrow_column(values)
         arrays.append(column)
         fields.append(pa.field(str(name), column.type, metadata={"unit": unit_of(str(name))}))
     return pa.Table.from_arrays(arrays, schema=pa.schema(fields))
@@ -147,16 +148,19 @@ def calc_file(path, *, sep: str | None = None, decimal: str | None = None, progr
     go to calc. A table calc cannot use at all raises its :class:`~bearingheat.errors.InputError`.
     """
     table, lines = _read(path, sep, decimal)
-    arrow = isinstance(table, pa.Table)
-    rows = table.num_rows if arrow else len(table)
+    rows = table.num_rows if isinstance(table, pa.Table) else len(table)
     options = _loaded(options)
     blocks = []
     if progress is not None:
         progress.start(rows, "calc")
     for start in range(0, rows, rows_per_block):
         stop = min(start + rows_per_block, rows)
-        source = table.slice(start, stop - start) if arrow else None
-        block = source.to_pandas() if arrow else table.iloc[start:stop]
+        source: pa.Table | None = None
+        if isinstance(table, pa.Table):
+            source = table.slice(start, stop - start)
+            block = source.to_pandas()
+        else:
+            block = table.iloc[start:stop]
         usable, extras = set_aside(block)
         result = calc(usable, **options)
         for position, header, values in extras:
