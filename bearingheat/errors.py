@@ -114,7 +114,7 @@ class NoStandardSizeError(OutsideMethodError):
 class BushingInputError(BearingheatError):
     """An argument of the plain-bushing sizing that cannot be used: a load, speed, bore, K or [p] that is not
     positive, an application, shaft, life or load type that the DU/DP bushing handbook does not tabulate, or a table cell lost in
-    the seed's OCR."""
+    the source's OCR."""
 
 
 class CoastdownError(BearingheatError):

@@ -2,10 +2,15 @@
 
 Argument and result names are those of the column contract
 (:mod:`bearingheat.calc.contract`): ``designation``, ``T_amb``, ``VI``,
-``MR``, ``NR``. The friction and heat-balance results are frozen
+``MR``, ``NR``. The results of friction_torque, heat_balance,
+ball_bearing_contact, size_bushing and size_thrust_washer are frozen
 dataclasses (:class:`~bearingheat.api.results.Result`) with one value per
 operating point, ``status`` and ``messages`` per point, ``to_frame()`` (the
 headers of ``calc``), a short ``repr`` and an HTML view in notebooks.
+oil_viscosity and thermal_reference_speed return Quantities (one value per
+point, nothing to flag); the coast-down analyses return their fits
+(:class:`~bearingheat.analysis.coastdown.CoastdownResult`), which are not
+per point.
 
 Error policy (the same for every function here): input that cannot be used
 at all (an unknown designation or model, a plain number where a Quantity is
@@ -19,7 +24,7 @@ method that does not apply) status 'error' and NaN, and the other points
 their values.
 """
 from bearingheat.api.bearings import BearingData, bearing, bearing_table, designations
-from bearingheat.api.bushing import size_bushing, size_thrust_washer
+from bearingheat.api.bushing import BushingSize, ThrustWasherSize, size_bushing, size_thrust_washer
 from bearingheat.api.coastdown import analyse_coastdown, analyse_spindle_coastdown
 from bearingheat.api.contact import BallContact, ball_bearing_contact, contact_angle_from_clearance
 from bearingheat.api.friction import FrictionResult, friction_torque
@@ -32,7 +37,7 @@ __all__ = [
     "friction_torque", "FrictionResult",
     "heat_balance", "HeatBalanceResult", "thermal_reference_speed", "oil_viscosity",
     "ball_bearing_contact", "BallContact", "contact_angle_from_clearance",
-    "size_bushing", "size_thrust_washer",
+    "size_bushing", "BushingSize", "size_thrust_washer", "ThrustWasherSize",
     "analyse_coastdown", "analyse_spindle_coastdown",
     "bearing", "BearingData", "bearing_table", "designations",
     "parse_designation", "decode_gost", "F2Chart",

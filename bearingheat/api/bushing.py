@@ -3,24 +3,140 @@
 The unit boundary of :mod:`bearingheat.kernels.bushing`: loads, speeds,
 lengths, temperatures and the admissible K = pV and [p] are pint Quantities,
 converted once to catalogue units; K and [p] come from the tables of
-:mod:`bearingheat.catalogue.bushing` unless given. The result is a dict of
-Quantities keyed 'name [unit]' (text and factors stay plain).
+:mod:`bearingheat.catalogue.bushing` unless given. The results are frozen
+dataclasses of Quantities (:class:`BushingSize`, :class:`ThrustWasherSize`)
+with the API's common :class:`~bearingheat.api.results.Result` methods.
 """
 from __future__ import annotations
 
-from typing import Any
+from dataclasses import dataclass, fields
+from typing import Any, ClassVar
 
 import numpy as np
 
+from bearingheat.api.results import Result
 from bearingheat.catalogue.bushing import pressure_limit_seed004, pv_limit_seed004_table25
 from bearingheat.errors import BushingInputError
 from bearingheat.kernels.bushing import size_bushing_kernel, size_thrust_washer_kernel, temperature_factor_seed004
 from bearingheat.units import magnitude, quantity
 
-__all__ = ["size_bushing", "size_thrust_washer"]
+__all__ = ["size_bushing", "size_thrust_washer", "BushingSize", "ThrustWasherSize"]
 
-_RESULT_UNITS = {"[N]": "N", "[1/min]": "1/min", "[mm]": "mm", "[N/mm^2]": "N/mm^2", "[N/mm^2*m/s]": "N/mm^2*m/s",
-                 "[m/s]": "m/s", "[W]": "W", "[h]": "h", "[degC]": "degC"}
+
+@dataclass(frozen=True, repr=False)
+class _PlainBearingSize(Result):
+    """The fields both sizings share; one sizing is one point of :class:`~bearingheat.api.results.Result`."""
+
+    F: Any
+    n: Any
+    d: Any
+    K: Any
+    K_table: Any
+    temperature_factor: float
+    T: Any
+    p_adm: Any
+    governing: str
+    V: Any
+    p: Any
+    pV: Any
+    f_low: float
+    f_high: float
+    N_low: Any
+    N_high: Any
+    life_fig86: Any
+    life_note: str
+    status: list[str]
+    messages: list[str]
+
+    kind: ClassVar[str]
+    #: field -> unit of the quantities (the catalogue units of the kernels)
+    UNITS: ClassVar[dict[str, str]] = {
+        "F": "N", "n": "1/min", "d": "mm", "K": "N/mm^2*m/s", "K_table": "N/mm^2*m/s", "T": "degC",
+        "p_adm": "N/mm^2", "V": "m/s", "p": "N/mm^2", "pV": "N/mm^2*m/s", "N_low": "W", "N_high": "W",
+        "life_fig86": "h", "l_pV": "mm", "p_at_l_pV": "N/mm^2", "l_p": "mm", "l_required": "mm",
+        "l_standard": "mm", "b_pV": "mm", "D_pV": "mm", "D_p": "mm", "D_required": "mm", "D_standard": "mm",
+    }
+
+    @classmethod
+    def _from_kernel(cls, values: dict[str, Any]) -> Any:
+        """The result of a sizing kernel's 'name [unit]' dict (units as :attr:`UNITS`)."""
+        named: dict[str, Any] = {}
+        for key, value in values.items():
+            name = key.split(" [")[0]
+            unit = cls.UNITS.get(name)
+            named[name] = quantity(value, unit) if unit and value is not None else value
+        named.pop("kind")
+        life_known = bool(np.isfinite(values["life_fig86 [h]"]))
+        # the life line of fig. 86 covers part of the pV range: elsewhere the life is unknown, a warning
+        named["status"] = ["ok" if life_known else "warning"]
+        named["messages"] = ["" if life_known else f"life_fig86: {values['life_note']}"]
+        return cls(**named)
+
+    def to_dict(self) -> dict[str, Any]:
+        """Magnitudes and texts keyed 'name [unit]' in the catalogue units (the keys of ``bushing --json``).
+
+        Returns
+        -------
+        dict of str to float, str or None
+            ``kind``, then every field under 'name [unit]' (unit-less
+            factors and texts under their name); ``T [degC]`` is None
+            without a temperature.
+        """
+        out: dict[str, Any] = {"kind": self.kind}
+        for item in fields(self):
+            name = item.name
+            if name in ("status", "messages"):
+                continue
+            value = getattr(self, name)
+            unit = self.UNITS.get(name)
+            if unit is None:
+                out[name] = value
+            else:
+                out[f"{name} [{unit}]"] = None if value is None else float(magnitude(value, unit, name))
+        return out
+
+
+@dataclass(frozen=True, repr=False)
+class BushingSize(_PlainBearingSize):
+    """The length of a DU bushing by the DU/DP bushing handbook (:func:`size_bushing`).
+
+    Quantities: ``F``, ``n``, ``d``; the derated ``K`` and the table's
+    ``K_table`` with ``temperature_factor`` and ``T`` (None without a
+    temperature); ``p_adm``; ``l_pV`` (the length from pV) with the pressure
+    there ``p_at_l_pV``; ``l_p`` (the length from [p]); ``governing`` ('pV'
+    or 'pressure'); ``l_required`` and ``l_standard`` (NaN without standard
+    lengths); at the chosen length ``V``, ``p`` and ``pV``; the friction
+    coefficients ``f_low``, ``f_high`` and the power losses ``N_low``,
+    ``N_high``; the fig. 86 life ``life_fig86`` with ``life_note``. One
+    point: ``status`` is 'warning' where fig. 86 gives no life.
+    """
+
+    l_pV: Any
+    p_at_l_pV: Any
+    l_p: Any
+    l_required: Any
+    l_standard: Any
+
+    kind: ClassVar[str] = "bushing"
+
+
+@dataclass(frozen=True, repr=False)
+class ThrustWasherSize(_PlainBearingSize):
+    """The outer diameter of a DU thrust washer by the DU/DP bushing handbook (:func:`size_thrust_washer`).
+
+    The fields of :class:`BushingSize` without the lengths, and ``b_pV``
+    (the radial width from pV), ``D_pV``, ``D_p`` (the outer diameter from
+    [p]), ``D_required`` and ``D_standard`` (NaN without standard
+    diameters); V, p and pV at the mean diameter of the chosen size.
+    """
+
+    b_pV: Any
+    D_pV: Any
+    D_p: Any
+    D_required: Any
+    D_standard: Any
+
+    kind: ClassVar[str] = "thrust_washer"
 
 
 def _admissible(application, shaft, life, load_type, T, K, p_adm):
@@ -36,21 +152,13 @@ def _admissible(application, shaft, life, load_type, T, K, p_adm):
     return K_table, factor, T_c, p
 
 
-def _wrap(result: dict[str, Any]) -> dict[str, Any]:
-    wrapped = {}
-    for key, value in result.items():
-        unit = next((u for tag, u in _RESULT_UNITS.items() if key.endswith(tag)), None)
-        wrapped[key] = quantity(value, unit) if unit and value is not None else value
-    return wrapped
-
-
 def size_bushing(F, n, d, *, application="bushing_constant_load", shaft=None, life=None, load_type,
-                 T=None, K=None, p_adm=None, standard_lengths=None, f=None) -> dict[str, Any]:
+                 T=None, K=None, p_adm=None, standard_lengths=None, f=None) -> BushingSize:
     """Size a cylindrical DU bushing with pint Quantities.
 
     K comes from table 25 (application, shaft 'soft'/'hardened', life 1000 h
     or 10 000 h) unless given; it is derated for T. [p] comes from the load
-    type unless given. Returns a dict of Quantities keyed 'name [unit]'.
+    type unless given.
     The length is the larger of l_pV = π·n·F/(60 000·K) and
     l_p = F/([p]·d), rounded up to ``standard_lengths`` where given.
 
@@ -102,18 +210,11 @@ def size_bushing(F, n, d, *, application="bushing_constant_load", shaft=None, li
 
     Returns
     -------
-    dict of str to pint.Quantity, float or str
-        Keyed 'name [unit]' (values as Quantities in that unit; text and
-        factors stay plain): ``F [N]``, ``n [1/min]``, ``d [mm]``, the
-        derated ``K`` and ``K_table`` [N/mm²·m/s], ``p_adm [N/mm^2]``,
-        ``V [m/s]``, ``l_pV [mm]``, ``p_at_l_pV [N/mm^2]``, ``l_p [mm]``,
-        ``governing`` ('pV' or 'pressure'), ``l_required [mm]``,
-        ``l_standard [mm]`` (NaN without standard lengths), ``p [N/mm^2]``
-        and ``pV`` at the chosen length, ``f_low``, ``f_high``,
-        ``N_low [W]``, ``N_high [W]`` (friction power f·F·V),
-        ``life_fig86 [h]`` (NaN outside the fig. 86 line) with
-        ``life_note``, ``temperature_factor``, ``T [degC]`` (None without
-        T) and ``kind`` = 'bushing'.
+    BushingSize
+        The sizing as Quantities (see :class:`BushingSize`): the lengths
+        from pV and from [p], the governing one, the standard length, p, V
+        and pV there, the friction losses and the fig. 86 life;
+        ``to_dict()`` gives the magnitudes keyed 'name [unit]'.
 
     Raises
     ------
@@ -136,24 +237,24 @@ def size_bushing(F, n, d, *, application="bushing_constant_load", shaft=None, li
     >>> u = ureg()
     >>> out = size_bushing(2 * u.kN, 500 * u.rpm, 25 * u.mm, shaft="soft", life=1000 * u.h,
     ...                    load_type="rotating_fixed_load_point", standard_lengths=[20, 30, 50, 100] * u.mm)
-    >>> round(out["l_pV [mm]"].to("mm").magnitude, 1), out["l_standard [mm]"], out["governing"]
-    (94.5, <Quantity(100.0, 'millimeter')>, 'pV')
+    >>> round(out.l_pV.to("mm").magnitude, 1), out.l_standard, out.governing, out.status
+    (94.5, <Quantity(100.0, 'millimeter')>, 'pV', ['ok'])
     """
     K_table, factor, T_c, p = _admissible(application, shaft, life, load_type, T, K, p_adm)
     lengths = None if standard_lengths is None else np.atleast_1d(magnitude(standard_lengths, "mm", "standard_lengths"))
     result = size_bushing_kernel(float(magnitude(F, "N", "F")), float(magnitude(n, "1/min", "n")),
                                  float(magnitude(d, "mm", "d")), K_table * factor, p, lengths, f)
     result.update({"K_table [N/mm^2*m/s]": K_table, "temperature_factor": factor, "T [degC]": T_c})
-    return _wrap(result)
+    return BushingSize._from_kernel(result)
 
 
 def size_thrust_washer(F, n, d, *, shaft=None, life=None, load_type, T=None, K=None, p_adm=None,
-                       standard_diameters=None, f=None) -> dict[str, Any]:
+                       standard_diameters=None, f=None) -> ThrustWasherSize:
     """Size a DU thrust washer with pint Quantities; d is the inner diameter.
 
     K comes from table 25 (application thrust_washer) unless given, derated for
     T; [p] from the load type unless given. V and pV are taken at the mean
-    diameter. Returns a dict of Quantities keyed 'name [unit]'. The outer
+    diameter. The outer
     diameter is the larger of D_pV = d + 2·n·F/(60 000·K) and
     D_p = sqrt(d² + 4·F/(π·[p])), rounded up to ``standard_diameters`` where
     given.
@@ -199,15 +300,11 @@ def size_thrust_washer(F, n, d, *, shaft=None, life=None, load_type, T=None, K=N
 
     Returns
     -------
-    dict of str to pint.Quantity, float or str
-        Keyed 'name [unit]': ``F [N]``, ``n [1/min]``, ``d [mm]``, ``K`` and
-        ``K_table`` [N/mm²·m/s], ``p_adm [N/mm^2]``, ``b_pV [mm]`` (radial
-        width from pV), ``D_pV [mm]``, ``D_p [mm]``, ``governing`` ('pV' or
-        'pressure'), ``D_required [mm]``, ``D_standard [mm]`` (NaN without
-        standard diameters), ``V [m/s]``, ``p [N/mm^2]`` and ``pV`` at the
-        chosen diameter, ``f_low``, ``f_high``, ``N_low [W]``,
-        ``N_high [W]``, ``life_fig86 [h]`` with ``life_note``,
-        ``temperature_factor``, ``T [degC]`` and ``kind`` = 'thrust_washer'.
+    ThrustWasherSize
+        The sizing as Quantities (see :class:`ThrustWasherSize`): the outer
+        diameters from pV and from [p], the governing one, the standard
+        diameter, p, V and pV there, the friction losses and the fig. 86
+        life; ``to_dict()`` gives the magnitudes keyed 'name [unit]'.
 
     Raises
     ------
@@ -229,7 +326,7 @@ def size_thrust_washer(F, n, d, *, shaft=None, life=None, load_type, T=None, K=N
     >>> from bearingheat.units import ureg
     >>> u = ureg()
     >>> out = size_thrust_washer(2 * u.kN, 500 * u.rpm, 25 * u.mm, shaft="soft", life=1000 * u.h, load_type="static")
-    >>> round(out["D_required [mm]"].to("mm").magnitude, 2), out["governing"]
+    >>> round(out.D_required.to("mm").magnitude, 2), out.governing
     (104.98, 'pV')
     """
     K_table, factor, T_c, p = _admissible("thrust_washer", shaft, life, load_type, T, K, p_adm)
@@ -238,4 +335,4 @@ def size_thrust_washer(F, n, d, *, shaft=None, life=None, load_type, T=None, K=N
     result = size_thrust_washer_kernel(float(magnitude(F, "N", "F")), float(magnitude(n, "1/min", "n")),
                                        float(magnitude(d, "mm", "d")), K_table * factor, p, diameters, f)
     result.update({"K_table [N/mm^2*m/s]": K_table, "temperature_factor": factor, "T [degC]": T_c})
-    return _wrap(result)
+    return ThrustWasherSize._from_kernel(result)

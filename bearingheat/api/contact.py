@@ -10,11 +10,12 @@ Source: В.А. Зайцев, В.А. Воронкин, «Расчёт осевы�
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
+from bearingheat.api.results import Result
 from bearingheat.errors import ContactInputError, UnitError
 from bearingheat.kernels.contact import (axial_displacement, axial_displacement_ratio, hertz_coefficients,
                                          initial_contact_angle, minimum_axial_load, race_curvatures,
@@ -24,8 +25,8 @@ from bearingheat.units import magnitude, quantity, speed_rpm
 __all__ = ["BallContact", "ball_bearing_contact", "contact_angle_from_clearance"]
 
 
-@dataclass(frozen=True)
-class BallContact:
+@dataclass(frozen=True, repr=False)
+class BallContact(Result):
     """Contact of one ball bearing (Quantities). ``Fa_min`` needs n; it uses α0 (the source's rule),
     ``Fa_min_at_alpha`` the working angle under Fa.
 
@@ -68,6 +69,9 @@ class BallContact:
     Fa_min_at_alpha : pint.Quantity [N], optional
         The same at the working angle α (the larger, stricter value); None
         without n.
+    status, messages : list of str
+        Per point (flattened): 'warning' where a given Fa is below Fa_min
+        (the balls slide under gyroscopic moments), else 'ok'.
 
     See Also
     --------
@@ -98,6 +102,8 @@ class BallContact:
     n: Any = None
     Fa_min: Any = None
     Fa_min_at_alpha: Any = None
+    status: list[str] = field(default_factory=list)
+    messages: list[str] = field(default_factory=list)
 
     # key of to_dict() -> (attribute, unit)
     _KEYS = {
@@ -292,11 +298,16 @@ def ball_bearing_contact(*, z, d_w, d_m, r_i, r_o, alpha0=None, clearance=None, 
     angle = working_contact_angle(load, c_star, angle0)
     xi_a = axial_displacement_ratio(angle, angle0)
     speed = fa_min = fa_min_working = None
+    points = int(np.size(np.broadcast_arrays(angle, c_star, load)[0]))
+    status, messages = ["ok"] * points, [""] * points
     if n is not None:
         rpm = speed_rpm(n, "n")
         speed = quantity(rpm, "1/min")
-        fa_min = quantity(minimum_axial_load(count, dw, dm, rpm, angle0), "N")
+        minimum = minimum_axial_load(count, dw, dm, rpm, angle0)
+        fa_min = quantity(minimum, "N")
         fa_min_working = quantity(minimum_axial_load(count, dw, dm, rpm, angle), "N")
+        if Fa is not None:
+            status, messages = _below_minimum_load(load, minimum, rpm)
     return BallContact(
         alpha0=quantity(angle0, "deg"),
         alpha=quantity(angle, "deg"),
@@ -313,4 +324,18 @@ def ball_bearing_contact(*, z, d_w, d_m, r_i, r_o, alpha0=None, clearance=None, 
         n=speed,
         Fa_min=fa_min,
         Fa_min_at_alpha=fa_min_working,
+        status=status,
+        messages=messages,
     )
+
+
+def _below_minimum_load(load, minimum, rpm) -> tuple[list[str], list[str]]:
+    """Per point: 'warning' and its message where Fa < Fa_min (at α0, the source's rule), else 'ok'."""
+    Fa, Fa_min, speed = (np.ravel(a) for a in np.broadcast_arrays(load, minimum, rpm))
+    status, messages = [], []
+    for fa, fa_min, n in zip(Fa.tolist(), Fa_min.tolist(), speed.tolist()):
+        low = fa < fa_min
+        status.append("warning" if low else "ok")
+        messages.append(f"Fa = {fa:.4g} N is below the minimum axial load Fa_min = {fa_min:.4g} N at n = {n:.6g} "
+                        "1/min (gyroscopic sliding of the balls, Zaitsev & Voronkin)" if low else "")
+    return status, messages

@@ -8,7 +8,7 @@ the point's messages joined by '; '.
 from __future__ import annotations
 
 import dataclasses
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 import pandas as pd
@@ -28,11 +28,13 @@ class Result:
 
     status: list[str]
     messages: list[str]
+    #: field -> unit for fields the column contract does not name (the contract's unit wins where it does)
+    UNITS: ClassVar[dict[str, str]] = {}
 
     def _numbers(self) -> dict[str, tuple[np.ndarray, str]]:
         """Field name -> (flat magnitudes, unit) of the per-point values, in the contract's unit where the contract
-        names the field."""
-        units = output_units()
+        names the field, else in the class's :attr:`UNITS`."""
+        units = {**self.UNITS, **output_units()}
         out = {}
         for item in dataclasses.fields(self):  # type: ignore[arg-type]
             value = getattr(self, item.name)

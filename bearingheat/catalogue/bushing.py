@@ -47,7 +47,7 @@ def pv_limit_seed004_table25(application: str, shaft: str, life: float) -> float
     K = float(row["K"].iloc[0])
     if not math.isfinite(K):
         raise BushingInputError(f"the DU/DP bushing handbook table 25: K for {application}, {shaft} shaft, {life:g} h was lost in "
-                                "the OCR of the seed; give K directly")
+                                "the OCR of the DU/DP bushing handbook; give K directly")
     return K * KGF_PER_CM2
 
 

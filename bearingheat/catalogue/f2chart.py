@@ -2,7 +2,7 @@
 
 The Schaeffler catalogue (p. 70, figures 3 and 4) gives f2 as curves against the
 viscosity-speed figure ν·n·dM, one curve per value of Fa/A. The chart images
-are missing from the seed and no public digitisation is known, so bearingheat
+are missing from the Schaeffler catalogue text and no public digitisation is known, so bearingheat
 never ships chart values: the user digitises the chart of their catalogue and
 passes the points as a CSV.
 
@@ -24,7 +24,7 @@ CSV format (one row per digitised point, a units row under the header)::
 Interpolation is linear in log-log: log f2 against log(ν·n·dM) along each
 curve, then log f2 against log(Fa/A) between the two curves that bracket
 the query. A query outside the Fa/A range of the curves, or outside the
-ν·n·dM range of either bracketing curve, is refused: the seed says the
+ν·n·dM range of either bracketing curve, is refused: the catalogue says the
 charts must not be extrapolated.
 """
 from __future__ import annotations
@@ -91,7 +91,7 @@ class F2Chart:
     >>> f2.round(5), chart.Fa_over_A_range
     (array([0.00871,     nan]), (0.5, 2.0))
     >>> refused[1]
-    "Fa/A = 3 is outside the f2 chart's curves (0.5 to 2); the seed forbids extrapolating the chart"
+    "Fa/A = 3 is outside the f2 chart's curves (0.5 to 2); the Schaeffler catalogue forbids extrapolating the chart"
     """
 
     def __init__(self, points: dict[str, tuple[float, list[float], list[float]]], name: str = "f2 chart"):
@@ -172,7 +172,7 @@ class F2Chart:
         for i, (level, x) in enumerate(zip(q_level.ravel(), q_x.ravel())):
             if not (lo <= level <= hi):
                 reasons.flat[i] = (f"Fa/A = {level:.4g} is outside the f2 chart's curves ({lo:g} to {hi:g}); "
-                                   "the seed forbids extrapolating the chart")
+                                   "the Schaeffler catalogue forbids extrapolating the chart")
                 continue
             upper = int(np.searchsorted(self._levels, level, side="left"))
             if self._levels[upper] == level:
@@ -185,7 +185,7 @@ class F2Chart:
                 if not (x_lo <= x <= x_hi):
                     reasons.flat[i] = (f"nu*n*dM = {x:.4g} mm^3/(s*min) is outside curve {curve.label!r} "
                                        f"(Fa/A = {curve.Fa_over_A:g}: {x_lo:.4g} to {x_hi:.4g}); "
-                                       "the seed forbids extrapolating the chart")
+                                       "the Schaeffler catalogue forbids extrapolating the chart")
                     break
                 values.append(np.interp(np.log(x), curve.log_x, curve.log_f2))
             else:

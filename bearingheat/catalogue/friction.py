@@ -42,7 +42,7 @@ class CatalogueEntry:
     bearing_type: str
     series: str
     f0_grease: float
-    f0_oil: float           # NaN where the seed prints a dash
+    f0_oil: float           # NaN where the catalogue prints a dash
     f0_basis: str           # 'constant' or 'B/(33+d)'
     f1_a: float
     f1_x: float
@@ -101,7 +101,7 @@ def kb_factor(bearing_type: str, prefix: str, series: str) -> float:
 
 
 def p1_rule(bearing_type: str, arrangement: str) -> str | None:
-    """Name of the P1 rule for the type and arrangement ('single' or 'paired'); None where the seed has a dash."""
+    """Name of the P1 rule for the type and arrangement ('single' or 'paired'); None where the catalogue has a dash."""
     return _p1_rules().get((bearing_type, arrangement))
 
 

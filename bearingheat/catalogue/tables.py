@@ -1,7 +1,7 @@
 """Lazy, cached loading of the coefficient tables in ``tables/``.
 
 Every table is a CSV with a header row, a units row under it (a pint unit,
-``1`` for a dimensionless number, ``-`` for a text column) and a ``source`` column naming the seed, table
+``1`` for a dimensionless number, ``-`` for a text column) and a ``source`` column naming the source, table
 and row it was typed from. The tables ship inside the wheel as the
 subpackage ``bearingheat.tables``.
 """

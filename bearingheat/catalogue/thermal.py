@@ -1,9 +1,9 @@
 """Reference conditions of the thermal reference speed and the bearing types the thermal method covers.
 
 The method is the published one of the Schaeffler HR 1 catalogue (2006,
-after ISO 15312 and the draft of DIN 732), as restated in issue 3; seed
-002 (p. 63, "Теплоотвод") names it, its page 72 with the formulas is
-missing. The reference conditions are ``tables/thermal_reference_conditions.csv``.
+after ISO 15312 and the draft of DIN 732); the Schaeffler catalogue
+(p. 63, "Теплоотвод") names it, its page 72 with the formulas is missing
+from the text. The reference conditions are ``tables/thermal_reference_conditions.csv``.
 
 >>> reference_conditions("radial").temperature_rise
 50.0

@@ -30,14 +30,14 @@ and m/s; 1 kgf/cm^2 = 0.0980665 N/mm^2, and the output shows the conversion.
 --application: bushing_constant_load, bushing_rotating_load,
   bushing_oscillating, guide, thrust_washer (d = inner diameter, F axial).
 --shaft soft|hardened and --life 1000h|10000h pick K from the DU/DP bushing handbook table 25
-  (some cells were lost in the seed's OCR: then give --K, e.g. 0.5N/mm^2*m/s).
+  (some cells were lost in the DU/DP bushing handbook's OCR: then give --K, e.g. 0.5N/mm^2*m/s).
 --load-type: static (1410 kgf/cm^2), rotating_fixed_load_point (565),
   moving_load_moderate (282), moving_load_severe (141).
 --T 150degC derates K: 1 up to 120 degC, linear to 0.5 at 280 degC
   (range -200 to +280 degC).
 Oscillation: --cycles 30/min --amplitude 90deg instead of --n
   (n = cycles x amplitude in revolutions, the DU/DP bushing handbook).
---f: friction coefficient for the power loss N = f*F*V; default the seed's
+--f: friction coefficient for the power loss N = f*F*V; default the handbook's
   range (0.05-0.1 at 0.05-0.1 m/s, 0.1-0.2 at 0.2-5 m/s).
 --json prints the result as JSON.
 
@@ -124,7 +124,7 @@ def run(args: argparse.Namespace) -> int:
         return 1
     except BearingheatError as exc:  # UnitError, BushingInputError: unusable input, exit 2
         raise UsageError(str(exc)) from exc
-    plain = {k: (v.magnitude if hasattr(v, "magnitude") else v) for k, v in result.items()}
+    plain = result.to_dict()
     if args.json:
         print(json.dumps(json_safe({k: (float(v) if isinstance(v, (int, float)) else v) for k, v in plain.items()}),
                          indent=2))

@@ -26,7 +26,7 @@ times increasing. Other columns are ignored.
 Output (stdout): the model chosen among coulomb, coulomb_viscous and
 coulomb_viscous_aero (M = M_c + c_v*w + c_a*w^2, chosen by 5-fold
 cross-validation and BIC: the simpler of the two choices), the components with
-95 % confidence intervals, the seed's constant f, the RMSE of n(t) with
+95 % confidence intervals, the TMM-7M lab sheet's constant f, the RMSE of n(t) with
 constant f (before) and with the chosen model (after), the run-down time, the
 energy dissipated, and f against n by formula (2) over intervals.
 

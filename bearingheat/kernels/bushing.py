@@ -7,7 +7,7 @@ rebuilt here from the definitions
     V = π·d·n / 60 000          [m/s]     (d in mm, n in 1/min)
 
 so that for a cylindrical bushing p·V = π·n·F / (60 000·l): the bore cancels
-and the length follows from an admissible K = pV alone. In the seed's units
+and the length follows from an admissible K = pV alone. In the handbook's units
 (F in kgf, K in kgf/cm²·m/s, l in mm) the same formula reads
 l = π·n·F / (600·K) — the OCR's 'боок' is '600K'.
 
@@ -149,7 +149,7 @@ def oscillating_speed_seed004(cycles_per_min, amplitude_rev):
     """Equivalent speed n [1/min] of an oscillating shaft, the DU/DP bushing handbook step 2.
 
     n = cycles per minute × amplitude in fractions of one revolution (as the
-    seed says; whether its 'amplitude' is the half or the full swing is not
+    handbook says; whether its 'amplitude' is the half or the full swing is not
     stated — give the angle swept in one direction per cycle).
 
     >>> oscillating_speed_seed004(60.0, 0.25)
@@ -167,7 +167,7 @@ def _outside(values, low, high):
 def life_hours_seed004_fig86(pV, extrapolate=False):
     """Life [h] of a DU bushing against pV [N/mm²·m/s], the DU/DP bushing handbook fig. 86.
 
-    A straight line in log-log coordinates through the seed's two points
+    A straight line in log-log coordinates through the handbook's two points
     (3.6 kgf/cm²·m/s → 1000 h, 18 kgf/cm²·m/s → 200 h): a two-point fit whose
     slope is exactly −1, so life·pV = 3600 h·kgf/cm²·m/s = 353.04 h·N/mm²·m/s.
     Valid between the points (0.353 to 1.765 N/mm²·m/s); outside them an
@@ -209,7 +209,7 @@ def temperature_factor_seed004(T):
     """Derating factor of the admissible pV with temperature T [°C], the DU/DP bushing handbook.
 
     1 from −200 °C to +120 °C, then falling linearly to 0.5 at +280 °C (the
-    seed says 'gradually' and 'about half'; linear is our reading).
+    handbook says 'gradually' and 'about half'; linear is our reading).
     Outside −200 to +280 °C an :class:`OutsideMethodError` is raised.
 
     >>> temperature_factor_seed004(100.0), temperature_factor_seed004(200.0), temperature_factor_seed004(280.0)
@@ -226,8 +226,8 @@ def friction_coefficient_range_seed004(V):
     """Default friction coefficient range (low, high) of DU at sliding speed V [m/s], the DU/DP bushing handbook.
 
     0.05–0.1 at 0.05–0.1 m/s (high loads); 0.1–0.2 at 0.2–5 m/s. Between
-    0.1 and 0.2 m/s the seed is silent and the envelope of both bands,
-    0.05–0.2, is returned. Outside 0.05–5 m/s: NaN (no data in the seed).
+    0.1 and 0.2 m/s the handbook is silent and the envelope of both bands,
+    0.05–0.2, is returned. Outside 0.05–5 m/s: NaN (no data in the handbook).
 
     >>> friction_coefficient_range_seed004(np.array([0.07, 0.15, 1.0, 6.0]))
     (array([0.05, 0.05, 0.1 ,  nan]), array([0.1, 0.2, 0.2, nan]))
@@ -357,7 +357,7 @@ def _check_duty(F, n, d):
     if n > N_MAX:
         raise OutsideMethodError(
             f"n = {n:g} 1/min is above 15 000 1/min: outside the DU/DP bushing handbook's sizing method "
-            "(the seed allows smaller bearings than calculated there)"
+            "(the handbook allows smaller bearings than calculated there)"
         )
 
 
@@ -365,7 +365,7 @@ def _check_speed(V):
     if V < SPEED_MIN:
         raise OutsideMethodError(
             f"V = {V:.4g} m/s is below 0.05 m/s: outside the DU/DP bushing handbook's sizing method "
-            "(the seed allows smaller bearings than calculated there)"
+            "(the handbook allows smaller bearings than calculated there)"
         )
 
 

@@ -14,7 +14,7 @@ Series goes in (:func:`~bearingheat.kernels._series.series_aware`). NaN inputs
 :class:`~bearingheat.errors.ContactInputError` (a ValueError) naming the value
 and, for an array or Series, its element or row.
 
-The seed works in kgf and cm; here every kernel is in N and mm. The seed's
+The paper works in kgf and cm; here every kernel is in N and mm. The paper's
 constants are kept as typed and converted once:
 
 * ``0.592e-4 (cm²/kgf)^(2/3)`` -- the Hertz compliance of two steel bodies,
@@ -23,16 +23,16 @@ constants are kept as typed and converted once:
 * ``5.75e-12 kgf·min²/mm⁴`` -- the gyroscopic-sliding constant,
   ρπ/(240 μ)·(2π/60)² with ρ = 7.85 g/cm³ and a friction coefficient μ = 0.02.
 
-The worked example of the seed, bearing 4-1006095 (5 × 13 × 4 mm), at
+The worked example of the paper, bearing 4-1006095 (5 × 13 × 4 mm), at
 Fa = 2 kgf:
 
 >>> C = stiffness_characteristic(7, 2.0, 8.7355, 12.0, 1.05, 1.16)
->>> round(C / KGF)                       # seed: 7792 kgf (table readings of 2K/(μπ))
+>>> round(C / KGF)                       # paper: 7792 kgf (table readings of 2K/(μπ))
 7803
 >>> alpha = working_contact_angle(2 * KGF, C, 12.0)
->>> degrees_to_dms(alpha)                # seed: 14°28′ (exact root at its C* = 7792 kgf: 14°28′04″)
+>>> degrees_to_dms(alpha)                # paper: 14°28′ (exact root at its C* = 7792 kgf: 14°28′04″)
 '14°27′57″'
->>> round(axial_displacement_ratio(alpha, 12.0), 5)   # seed: 0.04448
+>>> round(axial_displacement_ratio(alpha, 12.0), 5)   # paper: 0.04448
 0.04443
 """
 from __future__ import annotations
@@ -258,13 +258,13 @@ def race_curvatures(d_w, d_m, alpha0, r_i, r_o) -> RaceCurvatures:
 
     Σρ_o = (1/d_w)·[4 − 1/f_o − 2γ/(1 + γ)],  cos τ_o = [1/f_o − 2γ/(1 + γ)] / (d_w·Σρ_o)
 
-    This is the seed's form in T/(d_w cos α0) with the groove-centre diameters
+    This is the paper's form in T/(d_w cos α0) with the groove-centre diameters
     T_i = d_m + (2r_i − d_w)·cos α0 and T_o = d_m − (2r_o − d_w)·cos α0 (the
-    seed's T_в = d_1 + 2r_в, T_н = D_1 − 2r_н) and its "± 2ξ − 1" read as
+    paper's T_в = d_1 + 2r_в, T_н = D_1 − 2r_н) and its "± 2ξ − 1" read as
     "± (2ξ − 1)". d_w, d_m, r_i, r_o in mm, α0 in degrees.
 
     >>> rc = race_curvatures(2.0, 8.7355, 12.0, 1.05, 1.16)
-    >>> [round(v, 7) for v in rc]           # seed: 1.3361919, 0.9549594, 0.9287242, 0.7111268
+    >>> [round(v, 7) for v in rc]           # paper: 1.3361919, 0.9549594, 0.9287242, 0.7111268
     [1.336192, 0.9549594, 0.9287242, 0.7111269]
     """
     return RaceCurvatures(*_race_curvatures(d_w, d_m, alpha0, r_i, r_o))
@@ -319,7 +319,7 @@ def hertz_coefficients(cos_tau) -> HertzCoefficients:
 
     κ solves F(ρ) = [(κ² + 1)·E(m) − 2K(m)] / [(κ² − 1)·E(m)] with m = 1 − 1/κ²;
     then μ = (2κ²E/π)^(1/3), ν = (2E/(πκ))^(1/3) and 2K/(μπ) is the deflection
-    coefficient of the seed (Harris's δ*). The seed reads these from a table
+    coefficient of the paper (Harris's δ*). The paper reads these from a table
     (Zaitsev & Voronkin, p. 3: μν = 1.52, 2K/μπ = 0.63 at cos τ = 0.9287; μν = 1.17,
     0.852 at 0.7111). Valid for 0 ≤ cos τ < 1 (dimensionless).
 
@@ -347,11 +347,11 @@ def _hertz_coefficients(cos_tau):
 def race_compliance(d_w, sum_rho, deflection):
     """Compliance c of one ball–race contact [(mm²/N)^(2/3)] (Zaitsev & Voronkin, p. 2).
 
-    c = k·(2K/μπ)·(d_w·Σρ)^(1/3), k = :data:`HERTZ_COMPLIANCE_MM_N` (the seed's
+    c = k·(2K/μπ)·(d_w·Σρ)^(1/3), k = :data:`HERTZ_COMPLIANCE_MM_N` (the paper's
     0.592e-4 (cm²/kgf)^(2/3)); the normal approach is δ = c·d_w·(Q/d_w²)^(2/3).
     d_w in mm, Σρ in 1/mm, 2K/(μπ) dimensionless.
 
-    >>> round(race_compliance(2.0, 1.3361919, 0.63) / (100 / KGF) ** (2 / 3), 9)  # seed: 0.5176e-4 (cm²/kgf)^(2/3)
+    >>> round(race_compliance(2.0, 1.3361919, 0.63) / (100 / KGF) ** (2 / 3), 9)  # paper: 0.5176e-4 (cm²/kgf)^(2/3)
     5.1756e-05
     """
     d_w, sum_rho, deflection = _broadcast(d_w, sum_rho, deflection)
@@ -368,10 +368,10 @@ def stiffness_characteristic(z, d_w, d_m, alpha0, r_i, r_o, *, deflection_coeffi
     diameter), r_i, r_o in mm; α0 in degrees.
 
     ``deflection_coefficients=(inner, outer)`` replaces the exact 2K/(μπ) by
-    given values, e.g. the seed's table readings (0.63, 0.852).
+    given values, e.g. the paper's table readings (0.63, 0.852).
 
     >>> round(stiffness_characteristic(7, 2.0, 8.7355, 12.0, 1.05, 1.16,
-    ...                                deflection_coefficients=(0.63, 0.852)) / KGF)   # seed: 7792 kgf
+    ...                                deflection_coefficients=(0.63, 0.852)) / KGF)   # paper: 7792 kgf
     7792
     """
     z, d_w, d_m, alpha0, r_i, r_o = _broadcast(z, d_w, d_m, alpha0, r_i, r_o)
@@ -468,7 +468,7 @@ def working_contact_angle(Fa, C_star, alpha0):
     monotonically in α. Fa, C* in N (any one force unit for both); α0 in
     degrees, 0 ≤ α0 < 90°. Fa = 0 gives α0.
 
-    >>> round(working_contact_angle(2.0, 7792.0, 12.0), 4)     # kgf in; seed: 14°28′
+    >>> round(working_contact_angle(2.0, 7792.0, 12.0), 4)     # kgf in; paper: 14°28′
     14.467
     """
     Fa, C_star, alpha0 = _broadcast(Fa, C_star, alpha0)
@@ -523,10 +523,10 @@ def series_start(Fa, C_star, alpha0):
 
     x_0 = (3/2)·sin 2α0 / (6 + cos²α0)·[√(1 + (2/3)·(6 + cos²α0)/sin²α0·(Fa/(C*·sin α0))^(2/3)) − 1]
 
-    (the seed prints sin²α0 in the prefactor: OCR damage of sin 2α0, see
+    (the paper prints sin²α0 in the prefactor: OCR damage of sin 2α0, see
     docs/contact.md). Fa, C* in one force unit; α0 > 0 in degrees.
 
-    >>> round(series_start(2.0, 7792.0, 12.0), 7)    # seed: 0.0433985, which needs C* = 7793.0
+    >>> round(series_start(2.0, 7792.0, 12.0), 7)    # paper: 0.0433985, which needs C* = 7793.0
     0.0434016
     """
     Fa, C_star, alpha0 = _broadcast(Fa, C_star, alpha0)
@@ -548,7 +548,7 @@ def newton_increment(Fa, C_star, alpha0, x):
     denominator is (2/3)·d ln Fa/dα. Requires x > 0 (or Fa = 0, giving 0).
 
     >>> x0 = series_start(2.0, 7792.0, 12.0)
-    >>> round(x0 + newton_increment(2.0, 7792.0, 12.0, x0), 7)   # seed: 0.0430573; exact root 0.0430678
+    >>> round(x0 + newton_increment(2.0, 7792.0, 12.0, x0), 7)   # paper: 0.0430573; exact root 0.0430678
     0.0430694
     """
     Fa, C_star, alpha0, x = _broadcast(Fa, C_star, alpha0, x)
@@ -565,7 +565,7 @@ def newton_increment(Fa, C_star, alpha0, x):
 
 
 class SeriesIterate(NamedTuple):
-    """One row of the seed's iteration table: x_k [rad], α [deg], ξ_a, Fa_k [force], Δ [%]."""
+    """One row of the paper's iteration table: x_k [rad], α [deg], ξ_a, Fa_k [force], Δ [%]."""
 
     k: int
     x: Any
@@ -576,13 +576,13 @@ class SeriesIterate(NamedTuple):
 
 
 def series_iterates(Fa, C_star, alpha0, newton_steps: int = 1) -> list[SeriesIterate]:
-    """The seed's iteration table: x_0 from :func:`series_start`, then ``newton_steps`` Newton steps.
+    """The paper's iteration table: x_0 from :func:`series_start`, then ``newton_steps`` Newton steps.
 
     Row k holds x_k, α = α0 + x_k [deg], ξ_a at α, the load Fa_k at α and
     Δ_k = (Fa_k − Fa)/Fa·100 [%] (Zaitsev & Voronkin, p. 3). Fa, C* in one force unit.
 
     >>> rows = series_iterates(2.0, 7792.0, 12.0, newton_steps=1)
-    >>> [(round(r.x, 7), round(r.load, 3)) for r in rows]    # seed: (0.0433985, 2.029), (0.0430573, 2.001)
+    >>> [(round(r.x, 7), round(r.load, 3)) for r in rows]    # paper: (0.0433985, 2.029), (0.0430573, 2.001)
     [(0.0434016, 2.028), (0.0430694, 2.0)]
     """
     if int(newton_steps) != newton_steps or newton_steps < 0:
@@ -601,11 +601,11 @@ def series_iterates(Fa, C_star, alpha0, newton_steps: int = 1) -> list[SeriesIte
 
 
 def working_contact_angle_series(Fa, C_star, alpha0, newton_steps: int = 2):
-    """Working contact angle by the seed's series start and Newton steps [deg] (Zaitsev & Voronkin, p. 2).
+    """Working contact angle by the paper's series start and Newton steps [deg] (Zaitsev & Voronkin, p. 2).
 
     Same equation as :func:`working_contact_angle`; α0 > 0 required. The step
     is Newton's method on Fa^(2/3), so it converges quadratically: two steps
-    give a fraction of an arc second for the seed's loads (x small against α0);
+    give a fraction of an arc second for the paper's loads (x small against α0);
     α0 = 2° with Fa/C* = 0.01 (α ≈ 23°) needs six.
 
     >>> round(working_contact_angle_series(2.0, 7792.0, 12.0), 6) == round(working_contact_angle(2.0, 7792.0, 12.0), 6)
@@ -622,7 +622,7 @@ def minimum_axial_load(z, d_w, d_pitch, n, alpha):
     Fa_min = 5.75e-12·z·d_w³·D0·n²·sin²α·[1 − (d_w/D0)²·cos²α] kgf, times 9.80665 N/kgf.
 
     z balls, d_w ball diameter [mm], D0 = ``d_pitch`` pitch diameter [mm],
-    n inner-ring speed [1/min], α contact angle [deg] (the seed takes α0 from
+    n inner-ring speed [1/min], α contact angle [deg] (the paper takes α0 from
     the clearance; the working angle under Fa gives the larger, stricter value).
     The constant is ρπ/(240μ)·(2π/60)²/g for ρ = 7.85 g/cm³ and μ = 0.02: the
     gyroscopic moment J·ω_ball·ω_cage·sin α of a ball (J = m·d_w²/10, cage at

@@ -59,8 +59,8 @@ def drag_loss_torque(c, p, dM, n):
         M_{drag} = c \\cdot 10^{-7} d_M^3 (n d_M / 1000)^p
 
     c [-] >= 0, p [-] in [0.9, 3] (the range ``diagnose`` fits), dM [mm] > 0,
-    n [1/min] >= 0. p > 2/3 makes it grow faster with speed than M0 of seed
-    002; p = 2 gives the dM^5·n^2 law of splash losses.
+    n [1/min] >= 0. p > 2/3 makes it grow faster with speed than M0 of the Schaeffler
+    catalogue; p = 2 gives the dM^5·n^2 law of splash losses.
 
     Source: no catalogue formula; a power law in the peripheral speed n·dM
     that extends the Schaeffler catalogue M0 (p. 64, M0 ∝ (ν·n)^(2/3)·dM³), its

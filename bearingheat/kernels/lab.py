@@ -9,7 +9,7 @@ The DP11A manual pp. 11-13:
 * task 3, for each speed: T = T0 + f·P0·(P0/C0)^c·dm, least squares on
   N = P0^(1+c), c = 0.55 for radial ball bearings.
 
-The closed forms of the seed are implemented as printed and checked against
+The closed forms of the DP11A manual are implemented as printed and checked against
 a general least-squares solver (:func:`least_squares_line`). Note that the
 The DP11A manual f0 has no 10^-7 and no viscosity: T0 = f0·dm³·n^(2/3); the Schaeffler catalogue
 catalogue f0 of the same bearing is f0·1e7/ν^(2/3) (:func:`catalogue_f0_equivalent`).
@@ -81,7 +81,7 @@ def _closed_form_line(T, N):
 def speed_fit(T, n, dm):
     """(f0, T_F) of T = f0·dm³·n^(2/3) + T_F by the closed forms of the DP11A manual task 2, N = n^(2/3).
 
-    f0 in N·mm/(mm³·min^(-2/3)) as the seed defines it (no 1e-7, no ν); T_F [N·mm].
+    f0 in N·mm/(mm³·min^(-2/3)) as the DP11A manual defines it (no 1e-7, no ν); T_F [N·mm].
     T [N·mm] and n [1/min] of one weight and inclination, at least two distinct speeds.
 
     >>> n = np.array([2400.0, 2600.0, 2800.0, 3000.0])
@@ -111,7 +111,7 @@ def load_fit(T, P0, C0, dm, c=LOAD_EXPONENT_RADIAL):
 def least_squares_line(x, y, *, through_origin: bool = False) -> tuple[float, float]:
     """(slope, intercept) of y = slope·x + intercept by a general solver (numpy lstsq, SVD).
 
-    The reference the seed's closed forms are checked against; any units.
+    The reference the DP11A manual's closed forms are checked against; any units.
 
     >>> [round(v, 12) for v in least_squares_line([1.0, 2.0, 3.0], [3.0, 5.0, 7.0])]
     [2.0, 1.0]

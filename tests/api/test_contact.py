@@ -1,6 +1,7 @@
 """Ball bearing contact with units (Zaitsev & Voronkin): unit invariance, the clearance route, unit errors."""
 import math
 
+import numpy as np
 import pytest
 
 from bearingheat.api import contact as ct
@@ -55,3 +56,22 @@ def test_unit_errors_exact_messages():
     with pytest.raises(ContactInputError) as info:
         ct.ball_bearing_contact(**geometry, alpha0=12 * u.deg, clearance=0.01 * u.mm)
     assert str(info.value) == "give exactly one of alpha0 (an angle) or clearance (the mean radial clearance)"
+
+
+def test_ball_contact_is_a_result_with_a_warning_below_the_minimum_axial_load():
+    """Per point status: Fa below Fa_min (gyroscopic sliding, at α0) is a warning; to_frame as calc's headers."""
+    u = ureg()
+    r = ct.ball_bearing_contact(z=7, d_w=2 * u.mm, d_m=8.7355 * u.mm, r_i=1.05 * u.mm, r_o=1.16 * u.mm,
+                             alpha0=12 * u.deg, Fa=np.array([0.1, 20.0]) * u.gram_force, n=3000 * u.rpm)
+    minimum = r.Fa_min.to("N").magnitude
+    assert minimum == pytest.approx(0.01019, abs=5e-6)  # the value of the docstring example, 10.19 mN
+    assert r.status == ["warning", "ok"]  # 0.1 gf = 0.98 mN < 10.19 mN < 20 gf = 196 mN
+    assert r.messages[0] == ("Fa = 0.0009807 N is below the minimum axial load Fa_min = 0.01019 N at n = 3000 1/min "
+                             "(gyroscopic sliding of the balls, Zaitsev & Voronkin)")
+    assert r.messages[1] == ""
+    frame = r.to_frame()
+    assert list(frame["status"]) == ["warning", "ok"] and "alpha [deg]" in frame.columns
+    assert repr(r).splitlines()[0] == "BallContact: 2 points (1 ok, 1 warning)"
+    without_speed = ct.ball_bearing_contact(z=7, d_w=2 * u.mm, d_m=8.7355 * u.mm, r_i=1.05 * u.mm, r_o=1.16 * u.mm,
+                                         alpha0=12 * u.deg, Fa=0.1 * u.gram_force)
+    assert without_speed.status == ["ok"]  # no speed: no minimum load to compare with

@@ -52,7 +52,7 @@ def test_table_units_convert_with_pint_to_the_kernel_constant():
 
 def test_lost_table_cell_message():
     with pytest.raises(BushingInputError, match=re.escape(
-            "the DU/DP bushing handbook table 25: K for guide, hardened shaft, 1000 h was lost in the OCR of the seed; give K directly")):
+            "the DU/DP bushing handbook table 25: K for guide, hardened shaft, 1000 h was lost in the OCR of the DU/DP bushing handbook; give K directly")):
         bu.pv_limit_seed004_table25("guide", "hardened", 1000)
 
 

@@ -40,11 +40,11 @@ def test_extrapolation_is_refused():
     f2, reasons = chart.lookup([20.0, 1.0, 0.5], [1e4, 2e6, 500.0])
     assert np.isnan(f2).all()
     assert reasons[0] == ("Fa/A = 20 is outside the f2 chart's curves (0.1 to 10); "
-                          "the seed forbids extrapolating the chart")
+                          "the Schaeffler catalogue forbids extrapolating the chart")
     assert reasons[1] == ("nu*n*dM = 2e+06 mm^3/(s*min) is outside curve 'mid' (Fa/A = 1: 1000 to 1e+06); "
-                          "the seed forbids extrapolating the chart")
+                          "the Schaeffler catalogue forbids extrapolating the chart")
     assert reasons[2] == ("nu*n*dM = 500 mm^3/(s*min) is outside curve 'low' (Fa/A = 0.1: 1000 to 1e+06); "
-                          "the seed forbids extrapolating the chart")
+                          "the Schaeffler catalogue forbids extrapolating the chart")
 
 
 def test_example_file_reads(tmp_path):
@@ -106,7 +106,7 @@ def test_chart_feeds_m2_and_refuses_outside():
     assert out.loc[1, "M2"] == pytest.approx(0.003 * 1000 * dM, rel=1e-12)  # a user f2 wins over the chart
     assert out.loc[2, "status"] == "error"
     assert out.loc[2, "message"] == ("f2: Fa/A = 0.05 is outside the f2 chart's curves (0.1 to 10); "
-                                     "the seed forbids extrapolating the chart")
+                                     "the Schaeffler catalogue forbids extrapolating the chart")
 
 
 def test_chart_needs_kb():

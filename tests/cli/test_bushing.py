@@ -35,7 +35,7 @@ def test_bushing_outside_method_exit_1(capsys):
                  "--load-type", "static"]) == 1
     assert capsys.readouterr().err == (
         "bearingheat bushing: V = 0.02618 m/s is below 0.05 m/s: outside the DU/DP bushing handbook's sizing method "
-        "(the seed allows smaller bearings than calculated there)\n")
+        "(the handbook allows smaller bearings than calculated there)\n")
 
 
 def test_bushing_lost_table_value_exit_2(capsys):
@@ -43,7 +43,7 @@ def test_bushing_lost_table_value_exit_2(capsys):
                  "--load-type", "static"]) == 2
     assert capsys.readouterr().err == (
         "bearingheat bushing: error: the DU/DP bushing handbook table 25: K for bushing_constant_load, hardened shaft, 10000 h "
-        "was lost in the OCR of the seed; give K directly\n")
+        "was lost in the OCR of the DU/DP bushing handbook; give K directly\n")
 
 
 def test_bushing_oscillation_speed(capsys):

@@ -116,14 +116,14 @@ def test_size_bushing_lengthened_from_pressure():
 def test_size_bushing_below_minimum_speed_message():
     with pytest.raises(OutsideMethodError, match=re.escape(
             "V = 0.02618 m/s is below 0.05 m/s: outside the DU/DP bushing handbook's sizing method "
-            "(the seed allows smaller bearings than calculated there)")):
+            "(the handbook allows smaller bearings than calculated there)")):
         bu.size_bushing_kernel(2000.0, 20.0, 25.0, 0.55, 55.0)
 
 
 def test_size_bushing_above_maximum_speed_message():
     with pytest.raises(OutsideMethodError, match=re.escape(
             "n = 16000 1/min is above 15 000 1/min: outside the DU/DP bushing handbook's sizing method "
-            "(the seed allows smaller bearings than calculated there)")):
+            "(the handbook allows smaller bearings than calculated there)")):
         bu.size_bushing_kernel(2000.0, 16000.0, 25.0, 0.55, 55.0)
 
 

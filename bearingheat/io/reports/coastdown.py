@@ -75,7 +75,7 @@ def render_report(result: CoastdownResult, source: str, png: str | None) -> str:
     if fit.value("c_v") < 0 or fit.value("c_a") < 0:
         lines.append("- A negative component means the torque falls with speed over part of the range; "
                      "it is a curve shape, not a physical viscous or windage drag.")
-    lines += ["", f"- Constant f (the seed's single coefficient, from the Coulomb-only fit): {result.f_constant:.4g}",
+    lines += ["", f"- Constant f (the TMM-7M lab sheet's single coefficient, from the Coulomb-only fit): {result.f_constant:.4g}",
               f"- RMSE of n(t): {result.rmse_before:.4g} 1/min with constant f (before), "
               f"{result.rmse_after:.4g} 1/min with {result.model} (after)"]
     stop = result.rundown_time
