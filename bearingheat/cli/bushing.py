@@ -8,7 +8,7 @@ import sys
 
 import numpy as np
 
-from bearingheat.api.bushing import size_bushing, size_thrust_washer
+from bearingheat.api.bushing import BushingSize, ThrustWasherSize, size_bushing, size_thrust_washer
 from bearingheat.catalogue.bushing import KGF_PER_CM2
 from bearingheat.cli import UsageError
 from bearingheat.io.json import json_safe
@@ -114,6 +114,7 @@ def run(args: argparse.Namespace) -> int:
     }
     F, d, n = _quantity(args.F, "--F"), _quantity(args.d, "--d"), _speed(args)
     standard = None if args.standard is None else parse_list(args.standard, "--standard")
+    result: BushingSize | ThrustWasherSize
     try:
         if args.application == "thrust_washer":
             result = size_thrust_washer(F, n, d, standard_diameters=standard, **common)
