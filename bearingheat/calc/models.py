@@ -21,7 +21,7 @@ import functools
 from collections import defaultdict
 
 from dataclasses import dataclass
-from typing import Callable
+from typing import Any, Callable
 
 import numpy as np
 import pandas as pd
@@ -32,8 +32,8 @@ from bearingheat.calc.friction import EXCEL_FORMULAS, RESULTS, evaluate_catalogu
 from bearingheat.calc.skf import RESULTS as SKF_RESULTS
 from bearingheat.calc.skf import evaluate_skf_model
 from bearingheat.calc.messages import Labels, Problem
-from bearingheat.calc.supports import KEY_INPUTS, NUMBER_INPUTS, SupportArrays, build_support_arrays, number_column, \
-    text_column
+from bearingheat.calc.supports import KEY_INPUTS, NUMBER_INPUTS, SupportArrays, _stripped_or_none, \
+    build_support_arrays, number_column, per_distinct
 from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.errors import ModelError
 from bearingheat.kernels.friction import mean_diameter
@@ -161,12 +161,17 @@ def get_model(name: str) -> FrictionModel:
         raise ModelError(f"model: {name!r} is not one of {', '.join(MODELS)}") from None
 
 
-def _row_models(frame: pd.DataFrame, default: str) -> tuple[np.ndarray, list[str]]:
-    """The model name of every row (the ``model`` column, else ``default``) and the rows' errors."""
-    names = np.array([v or default for v in text_column(frame, "model")], dtype=object)
-    known = {name: "" if name in MODELS else f"model: {name!r} is not one of {', '.join(MODELS)}"
-             for name in set(names.tolist())}
-    return names, [known[name] for name in names.tolist()]
+def _row_models(frame: pd.DataFrame, default: str) -> tuple[np.ndarray, np.ndarray]:
+    """The model name of every row (the ``model`` column, else ``default``) and the rows' errors ('' if none),
+    as object arrays; each distinct name is looked up once."""
+    if "model" in frame.columns:
+        names = per_distinct(frame["model"], lambda v: _stripped_or_none(v) or default)
+    else:
+        names = np.full(len(frame), default, dtype=object)
+    codes, distinct = pd.factorize(names)
+    errors = np.array(["" if name in MODELS else f"model: {name!r} is not one of {', '.join(MODELS)}"
+                       for name in distinct], dtype=object)
+    return names, errors[codes]
 
 
 def _message_at(problem: Problem, position: dict[int, int], row: int) -> str:
@@ -223,19 +228,23 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
     labels = labels or Labels()
     n_rows = len(frame)
     supports = support_arrays_of(frame)
-    names, model_errors = _row_models(frame, model)
+    names, model_error = _row_models(frame, model)
     plain = supports.plain
-    uses_catalogue = {name: MODELS[name].catalogue_keys if name in MODELS else True for name in set(names.tolist())}
-    catalogue_rows = pd.Series(names, dtype=object).map(uses_catalogue).to_numpy(dtype=bool)
-    model_error = np.array(model_errors, dtype=object)
+    catalogue_rows = np.ones(n_rows, dtype=bool)
+    for name in MODELS:  # rows of a model with its own tables skip the catalogue's resolution errors
+        if not MODELS[name].catalogue_keys:
+            catalogue_rows &= names != name
+    model_ok = model_error == ""
     own = np.broadcast_to(np.asarray(supports.error, dtype=object), (n_rows,))
-    text = np.where(model_error != "", model_error, np.where(catalogue_rows, own, ""))
     # rows with messages only: error and warning lists keyed by row position
     row_errors: defaultdict[int, list[str]] = defaultdict(list)
-    for i in np.flatnonzero((text != "") & (text != None) & ~plain).tolist():  # noqa: E711 (element-wise)
-        row_errors[i].append(text[i])
+    for i in np.flatnonzero(~model_ok & ~plain).tolist():
+        row_errors[i].append(model_error[i])
+    own_error = model_ok & catalogue_rows & ~plain
+    for i in np.flatnonzero(own_error & (own != "") & (own != None)).tolist():  # noqa: E711 (element-wise)
+        row_errors[i].append(own[i])
     # a row whose bearing did not resolve has its error already; rows of a model with its own tables report theirs
-    resolved = (np.broadcast_to(supports.resolved, (n_rows,)) | ~catalogue_rows) & (model_error == "")
+    resolved = (np.broadcast_to(supports.resolved, (n_rows,)) | ~catalogue_rows) & model_ok
 
     results, problems = evaluate_models(supports, names, labels, f2_chart)
     warnings_by_row: defaultdict[int, list[str]] = defaultdict(list)
@@ -248,11 +257,9 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
                     row_errors[i].append(problem.message(i))
             else:
                 warnings_by_row[i].append(problem.message(i))
-    notes_of = supports.notes if len(supports.notes) == n_rows else supports.notes * n_rows
-    for i, notes in enumerate(notes_of):  # the notes of a designation, after the model's warnings
-        if notes and not plain[i]:
-            warnings_by_row[i].append("; ".join(notes))
-    out = pd.DataFrame({col: results[col] for col in RESULT_UNITS}, index=frame.index)
+    notes_of = np.broadcast_to(supports.notes, (n_rows,))
+    for i in np.flatnonzero(notes_of.astype(bool) & ~plain).tolist():  # a designation's notes, after the warnings
+        warnings_by_row[i].append("; ".join(notes_of[i]))
     status = np.full(n_rows, "ok", dtype=object)
     message = np.full(n_rows, "", dtype=object)
     for i, texts in warnings_by_row.items():
@@ -262,22 +269,20 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
         if texts:
             status[i], message[i] = "error", "; ".join(texts)
     failed = status == "error"
-    out.loc[failed, list(RESULT_UNITS)] = np.nan
+    reported = list(RESULT_UNITS)
     if "nu_n_dM" in results and np.any(~np.isnan(results["nu_n_dM"]) & ~failed):
-        for col in M2_REPORT_UNITS:
-            out[col] = np.where(failed, np.nan, results[col])
+        reported += list(M2_REPORT_UNITS)
     if plain.any():
-        for col in PLAIN_REPORT_UNITS:
-            out[col] = np.where(failed, np.nan, results[col])
-    for col in MODEL_REPORT_UNITS:  # the results of other models, where a row uses one
-        if col in results:
-            out[col] = np.where(failed, np.nan, results[col])
-    out["status"] = status
-    out["message"] = message
-    out["bearing_type"] = np.where(plain, "plain_bushing", np.broadcast_to(supports.bearing_type, (n_rows,)))
-    out["series"] = np.broadcast_to(supports.series, (n_rows,))
-    out["model"] = names
-    return out
+        reported += list(PLAIN_REPORT_UNITS)
+    reported += [col for col in MODEL_REPORT_UNITS if col in results]  # other models' results, where a row uses one
+    columns: dict[str, Any] = {col: np.where(failed, np.nan, results[col]) for col in reported}
+    # text columns stay object arrays: an internal frame, no Arrow strings to build
+    text_columns = {"status": status, "message": message,
+                    "bearing_type": np.where(plain, "plain_bushing", np.broadcast_to(supports.bearing_type, (n_rows,))),
+                    "series": np.broadcast_to(supports.series, (n_rows,)), "model": names}
+    columns.update({name: pd.Series(np.asarray(values, dtype=object), index=frame.index, dtype=object)
+                    for name, values in text_columns.items()})
+    return pd.DataFrame(columns, index=frame.index)
 
 
 class FrictionPower:

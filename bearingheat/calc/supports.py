@@ -99,7 +99,8 @@ class SupportArrays:
     error: PerRow
     resolved: PerRow
     plain: np.ndarray
-    notes: list = field(default_factory=list)
+    #: per row the notes of its designation (a tuple of texts; one entry where one bearing spans the rows)
+    notes: np.ndarray = field(default_factory=lambda: np.empty(0, dtype=object))
     #: model-specific inputs by contract name (per-row arrays or one value), e.g. the SKF model's oil level
     extra: dict = field(default_factory=dict)
 
@@ -112,7 +113,7 @@ class SupportArrays:
             if f.name == "size":
                 changes["size"] = len(rows)
             elif f.name == "notes":
-                changes["notes"] = [value[i] for i in rows] if len(value) == self.size else value
+                changes["notes"] = value[rows] if len(value) == self.size else value
             elif f.name == "extra":
                 changes["extra"] = {k: (v[rows] if np.ndim(v) == 1 and len(v) == self.size else v)
                                     for k, v in value.items()}
@@ -125,15 +126,21 @@ class SupportArrays:
         return dataclasses.replace(self, **values)
 
 
-def per_distinct(values: pd.Series, convert: Callable) -> np.ndarray:
-    """``convert(value)`` of every cell as an object array, computed once per distinct value (NaN, None and
-    pandas' missing values are one value: ``convert(None)``)."""
+def _factorized(values: pd.Series) -> tuple[np.ndarray, np.ndarray]:
+    """pd.factorize of a column (missing values: code -1), fast on Arrow columns of many chunks."""
     arrow = getattr(values.array, "__arrow_array__", None)
     if arrow is not None and getattr(arrow(), "num_chunks", 1) > 16:
         # pandas factorizes an Arrow array chunk by chunk: a column concatenated from many frames holds one
         # chunk per frame (10^6 rows in 4*10^4 chunks: 0.16 s a column), as Python objects 0.015 s
         values = pd.Series(values.to_numpy(dtype=object), index=values.index)
     codes, uniques = pd.factorize(values, use_na_sentinel=True)
+    return codes, np.asarray(uniques, dtype=object)
+
+
+def per_distinct(values: pd.Series, convert: Callable) -> np.ndarray:
+    """``convert(value)`` of every cell as an object array, computed once per distinct value (NaN, None and
+    pandas' missing values are one value: ``convert(None)``)."""
+    codes, uniques = _factorized(values)
     converted = np.array([convert(v) for v in uniques] + [convert(None)], dtype=object)
     return converted[codes]  # code -1 (missing) takes the last entry
 
@@ -225,6 +232,35 @@ def _fill_blank(given, printed):
     return np.where(np.isnan(given), printed, given)
 
 
+def _distinct_keys(keys: pd.DataFrame, f0_given: np.ndarray) -> tuple[np.ndarray, list[tuple]]:
+    """Per row the code of its key (the stripped texts of :data:`KEY_INPUTS`, blank arrangement 'single', and
+    whether f0 is given), and the distinct keys in order of first appearance.
+
+    Each column is factorized on its own and the codes are combined column by column (re-factorized after
+    each, so they stay below the row count): no Python object per row.
+    """
+    size = len(keys)
+    combined = np.zeros(size, dtype=np.int64)
+    parts = []
+    for name in KEY_INPUTS:
+        if name in keys.columns:
+            column_codes, raw = _factorized(keys[name])
+            texts = [_stripped_or_none(v) for v in raw] + [None]  # code -1 (missing) takes the last entry
+            column_codes = np.where(column_codes < 0, len(raw), column_codes)
+        else:
+            column_codes, texts = np.zeros(size, dtype=np.int64), [None]
+        if name == "arrangement":
+            texts = [text or "single" for text in texts]
+        parts.append((column_codes, texts))
+        combined = pd.factorize(combined * len(texts) + column_codes, sort=False)[0].astype(np.int64)
+    codes = pd.factorize(combined * 2 + f0_given.astype(np.int64), sort=False)[0]
+    first_row = np.empty(codes.max() + 1 if size else 0, dtype=np.intp)
+    first_row[codes[::-1]] = np.arange(size)[::-1]
+    uniques = [tuple(texts[column_codes[row]] for column_codes, texts in parts) + (bool(f0_given[row]),)
+               for row in first_row.tolist()]
+    return codes, uniques
+
+
 def build_support_arrays(keys: pd.DataFrame, numbers: dict[str, Any]) -> SupportArrays:
     """The support arrays of a table (one row per support) or of one bearing at many operating points.
 
@@ -247,23 +283,23 @@ def build_support_arrays(keys: pd.DataFrame, numbers: dict[str, Any]) -> Support
         f0_given = ~np.isnan(np.broadcast_to(num["f0"], (size,)))
     else:  # one bearing: f0 is given for all its points or for none
         f0_given = np.array([not np.all(np.isnan(num["f0"]))])
-    columns = {name: text_column(keys, name) for name in KEY_INPUTS}
-    columns["arrangement"] = [v or "single" for v in columns["arrangement"]]
-    key_tuples = list(zip(*(columns[name] for name in KEY_INPUTS), f0_given.tolist()))
-    codes, uniques = pd.factorize(pd.Series(key_tuples, dtype=object), sort=False)
+    codes, uniques = _distinct_keys(keys, f0_given)
     per_key = [_constants_of_key(*key) for key in uniques]
     plain_keys = np.array([(key[1] or "").lower() in PLAIN_TYPES for key in uniques], dtype=bool)
+    notes_of_key = np.empty(len(per_key), dtype=object)
+    for k, constants_of_key in enumerate(per_key):  # one by one: numpy would read a list of tuples as 2-D
+        notes_of_key[k] = tuple(constants_of_key["notes"])
 
     if len(uniques) == 1 and len(keys) == 1:
         def spread(name, dtype):
             return np.asarray(per_key[0][name], dtype=dtype)[()]
         plain = np.broadcast_to(plain_keys[0], (size,))
-        notes = [per_key[0]["notes"]]
+        notes = notes_of_key
     else:
         def spread(name, dtype):
             return np.array([c[name] for c in per_key], dtype=dtype)[codes]
         plain = plain_keys[codes]
-        notes = [per_key[c]["notes"] for c in codes]
+        notes = notes_of_key[codes]
     constants = {name: spread(name, object) for name in _TEXT}
     constants.update({name: spread(name, float) for name in _FLOAT})
     constants.update({name: spread(name, bool) for name in _BOOL})

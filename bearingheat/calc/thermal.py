@@ -84,6 +84,8 @@ OPERATING_TEMPERATURE_LIMIT = 150.0
 BELOW_AMBIENT_SEARCH = 50.0
 #: the search range is scanned in this many steps (about 8 K each) for the lowest equilibrium
 OPERATING_TEMPERATURE_CELLS = 24
+#: where every row's balance has one root, the ends of the range bracket it (6 or 7 balance calls instead of 29)
+SINGLE_ROOT_CELLS = 1
 #: where the operating viscosity is taken when it comes from nu40/nu100 or iso_vg
 VISCOSITY_AT = {
     "auto": ("the solved operating temperature T_op where T_amb and n are given (one operating state: the "
@@ -158,7 +160,13 @@ def _operating_point(frame, results, nu_at, Q_S, Q_L, Q_E, T_amb, t_limit):
 
     T_low = T_amb - BELOW_AMBIENT_SEARCH
     T_high = np.full(len(frame), float(t_limit))
-    T_op, status = lowest_operating_temperature(balance, T_low, T_high)
+    # With the catalogue speed law N_R grows with ν, ν(T) is monotone (Walther or constant), Q_S = k_q·A_r·(T − T_amb)
+    # and Q_L grow with T: where ν does not rise with T and k_q·A_r > 0 the balance falls strictly and has one root
+    # (rows with a missing input compare as NaN: their balance is NaN at the ends, status 2 whatever the scan)
+    with np.errstate(invalid="ignore", over="ignore"):
+        falling = power.closed & ~(Q_S(T_amb + 1.0) <= Q_S(T_amb)) & ~(nu_at(T_high) > nu_at(T_low))
+    cells = SINGLE_ROOT_CELLS if falling.all() else OPERATING_TEMPERATURE_CELLS
+    T_op, status = lowest_operating_temperature(balance, T_low, T_high, cells=cells)
     return T_op, status, balance
 
 

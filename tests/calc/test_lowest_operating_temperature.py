@@ -1,8 +1,13 @@
 """The heat balance's roots for all rows at once: the lowest equilibrium, and a bracket that closes quickly."""
+from pathlib import Path
+
 import numpy as np
+import pandas as pd
 
 from bearingheat.calc.thermal import lowest_operating_temperature
 from bearingheat.kernels.roots import bracketed_root
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 def test_the_lowest_of_three_equilibria_is_found_where_bisection_of_the_whole_range_finds_the_highest():
@@ -41,3 +46,47 @@ def test_a_secant_landing_on_the_root_closes_the_bracket_at_once():
     assert status.tolist() == [0]
     np.testing.assert_allclose(x, [22.5 + 1.3 / 0.7], rtol=1e-12)
     assert len(calls) <= 6
+
+
+def test_rows_with_one_root_skip_the_scan_and_give_the_same_temperature(monkeypatch):
+    """With the catalogue speed law (N_R falls with T through ν, Q_S and Q_L rise) the balance has one root:
+    the ends of the range bracket it. The demo's T_op is the same as with the full 24-cell scan, to 1e-12, and
+    the heat balance calls the friction model at most 7 times instead of 29."""
+    import bearingheat as bh
+    from bearingheat.calc import models, thermal
+
+    table = pd.read_csv(EXAMPLES / "gearbox_shaft.csv")
+    calls = []
+    original = models.FrictionPower.__call__
+
+    def counted(self, *args):
+        calls.append(1)
+        return original(self, *args)
+
+    monkeypatch.setattr(models.FrictionPower, "__call__", counted)
+    fast = bh.calc(table)
+    fast_calls = len(calls)
+    monkeypatch.setattr(thermal, "SINGLE_ROOT_CELLS", thermal.OPERATING_TEMPERATURE_CELLS)
+    calls.clear()
+    scanned = bh.calc(table)
+    assert fast_calls <= 7 and len(calls) == 29
+    np.testing.assert_allclose(fast["T_op [degC]"], scanned["T_op [degC]"], rtol=1e-12)
+    assert fast["T_op [degC]"].notna().sum() >= 5
+
+
+def test_rows_of_a_model_without_the_speed_law_keep_the_scan(monkeypatch):
+    """SKF rows (N_R not ∝ (ν·n)^(2/3)) may have several equilibria: the whole range is scanned."""
+    import bearingheat as bh
+    from bearingheat.calc import thermal
+
+    table = pd.read_csv(EXAMPLES / "gearbox_shaft_skf.csv")
+    cells = []
+    original = thermal.lowest_operating_temperature
+
+    def recorded(balance, T_low, T_high, **kw):
+        cells.append(kw.get("cells"))
+        return original(balance, T_low, T_high, **kw)
+
+    monkeypatch.setattr(thermal, "lowest_operating_temperature", recorded)
+    bh.calc(table, model="skf")
+    assert cells and set(cells) == {thermal.OPERATING_TEMPERATURE_CELLS}
