@@ -5,7 +5,7 @@ Two audits, both on tables with unit headers:
 * :func:`audit_coefficients` fits f0 and f1 (and f2 where a cylindrical
   roller bearing with ribs carries Fa) for each bearing of a measured data
   set (the columns of ``calc`` plus ``M [N*mm]``) by least squares with
-  ``scipy.optimize.least_squares``, gives 95 % confidence intervals from the
+  ``scipy.optimize.curve_fit``, gives 95 % confidence intervals from the
   Jacobian and flags the Schaeffler catalogue table values that lie outside them.
 
   The model is linear in the coefficients (the Schaeffler catalogue, pp. 64-70)::
@@ -33,14 +33,18 @@ Two audits, both on tables with unit headers:
 from __future__ import annotations
 
 import math
+import warnings
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 import pandas as pd
 from scipy import optimize, stats
 
 from bearingheat.analysis.diagnose import model_data, read_measurements
-from bearingheat.analysis.effects import catalogue_arrays
+from bearingheat.analysis.effects import ModelData, catalogue_arrays
 from bearingheat.analysis.deviations import (change_point, consistent_scale, local_residuals, median_interval,
                                              robust_scale)
 from bearingheat.calc.contract import parse_header
@@ -110,11 +114,11 @@ REFERENCE_SPEED_COLUMNS = ("n_thr", "n_B", "n_theta_r", "n_θr", "n_ref", "nthr"
 # Coefficient fit
 # ---------------------------------------------------------------------------------------------
 
-def fit_linear_coefficients(X: np.ndarray, M: np.ndarray, *, confidence: float = CONFIDENCE) -> dict:
+def fit_linear_coefficients(X: npt.ArrayLike, M: npt.ArrayLike, *, confidence: float = CONFIDENCE) -> dict[str, Any]:
     """Least squares fit of M = X·θ on relative residuals (M − X·θ)/M, with confidence intervals.
 
-    Uses ``scipy.optimize.least_squares`` (trust region reflective) on the
-    exact Jacobian −X/M; the covariance is s²·(JᵀJ)⁻¹ with
+    Uses ``scipy.optimize.curve_fit`` (trust region reflective, σ = M) on the
+    exact Jacobian X/M; its covariance is s²·(JᵀJ)⁻¹ with
     s² = Σr²/(N − p), and the interval is θ ± t(1 − α/2, N − p)·se.
 
     >>> X = np.array([[1.0, 1.0], [1.0, 2.0], [1.0, 3.0], [1.0, 4.0]])
@@ -125,16 +129,15 @@ def fit_linear_coefficients(X: np.ndarray, M: np.ndarray, *, confidence: float =
     X = np.asarray(X, dtype=float)
     M = np.asarray(M, dtype=float)
     N, p = X.shape
-    J = -X / M[:, None]
-    theta0, *_ = np.linalg.lstsq(-J, np.ones(N), rcond=None)
-    result = optimize.least_squares(lambda th: (M - X @ th) / M, theta0, jac=lambda th: J, method="trf",
-                                    xtol=1e-14, ftol=1e-14, gtol=1e-14)
-    theta = result.x
-    residual = result.fun
+    theta0, *_ = np.linalg.lstsq(X / M[:, None], np.ones(N), rcond=None)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", optimize.OptimizeWarning)  # no covariance without dof: NaN below
+        theta, cov = optimize.curve_fit(lambda x, *th: x @ np.asarray(th), X, M, p0=theta0, sigma=M,
+                                        jac=lambda x, *th: x, method="trf", xtol=1e-14, ftol=1e-14, gtol=1e-14)
+    residual = (M - X @ theta) / M
     dof = N - p
     sse = float(residual @ residual)
     if dof > 0:
-        cov = sse / dof * np.linalg.inv(J.T @ J)
         se = np.sqrt(np.diag(cov))
         half = stats.t.ppf(0.5 + confidence / 2.0, dof) * se
     else:
@@ -171,6 +174,7 @@ def audit_coefficients(table: pd.DataFrame, *, confidence: float = CONFIDENCE) -
     if len(data) == 0:
         raise AuditError("no usable row: " + "; ".join(excluded[:3]))
     a = data.arrays
+    assert a is not None, "model_data gives the support arrays of its rows"
     with np.errstate(divide="ignore", invalid="ignore"):
         X0 = data.M0 / data.f0
         user_f1 = pd.to_numeric(frame["f1"], errors="coerce").to_numpy(dtype=float)[rows] \
@@ -216,7 +220,7 @@ def audit_coefficients(table: pd.DataFrame, *, confidence: float = CONFIDENCE) -
     return result
 
 
-def _identifiable(X: np.ndarray, names: list[str], data, mine: np.ndarray) -> str:
+def _identifiable(X: np.ndarray, names: list[str], data: ModelData, mine: np.ndarray) -> str:
     """'' if the coefficients can be separated, otherwise why not."""
     n_rows, p = X.shape
     if n_rows <= p:
@@ -248,7 +252,7 @@ def _convert(values: pd.Series, header: str, unit_text: str | None, target: str)
         raise AuditError(f"column {header!r}: {exc}") from exc
 
 
-def rounding_step(n, steps=ROUNDING_STEPS) -> np.ndarray:
+def rounding_step(n: npt.ArrayLike, steps: Sequence[tuple[float, float]] = ROUNDING_STEPS) -> np.ndarray:
     """Rounding step [1/min] of each published speed: the step of its magnitude, or a finer one its digits show.
 
     ``steps`` is a ladder of (upper limit, step) [1/min]: a speed below the
@@ -276,7 +280,8 @@ def rounding_step(n, steps=ROUNDING_STEPS) -> np.ndarray:
     return step
 
 
-def implied_coefficients(details: pd.DataFrame, d, D, n) -> dict[str, np.ndarray]:
+def implied_coefficients(details: pd.DataFrame, d: npt.ArrayLike, D: npt.ArrayLike,
+                         n: npt.ArrayLike) -> dict[str, np.ndarray]:
     """f0 (holding the table's f1) and f1 (holding the table's f0) that make ``n`` the thermal reference speed.
 
     ``details`` are the rows of :func:`bearingheat.calc.thermal.thermal_reference_speed_details`;
@@ -305,14 +310,15 @@ def implied_coefficients(details: pd.DataFrame, d, D, n) -> dict[str, np.ndarray
     return {"f0": np.where(usable, f0, np.nan), "f1": np.where(usable, f1, np.nan)}
 
 
-def _text(table: pd.DataFrame, columns: dict[str, str], names) -> np.ndarray | None:
+def _text(table: pd.DataFrame, columns: dict[str, str], names: Iterable[str]) -> np.ndarray | None:
     for name in names:
         if name in columns:
             return table[columns[name]].astype(str).str.strip().replace({"nan": ""}).to_numpy(dtype=object)
     return None
 
 
-def _series_names(table: pd.DataFrame, columns: dict[str, str], frame: pd.DataFrame):
+def _series_names(table: pd.DataFrame, columns: dict[str, str],
+                  frame: pd.DataFrame) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """(family, series, variant, bore) of each row: the list's columns where given, else the designation's."""
     family, series = _text(table, columns, ("family",)), _text(table, columns, ("series",))
     variant = _text(table, columns, VARIANT_COLUMNS)
@@ -341,7 +347,7 @@ def _series_names(table: pd.DataFrame, columns: dict[str, str], frame: pd.DataFr
 
 
 def audit_reference_speeds(table: pd.DataFrame, *, speed_column: str | None = None,
-                           rounding_steps=ROUNDING_STEPS) -> pd.DataFrame:
+                           rounding_steps: Sequence[tuple[float, float]] = ROUNDING_STEPS) -> pd.DataFrame:
     """n_θr from the tables against the published n_θr, and the f0 and f1 it implies, for each bearing of a list.
 
     ``table`` has unit headers: ``designation`` (or ``type`` and ``series``
@@ -591,15 +597,16 @@ def _judge_spread(groups: pd.DataFrame, split: list[bool]) -> None:
                  & groups["note"].eq("") & groups["f0_spread"].notna())
     overall = float(groups.loc[reference, "f0_spread"].median()) if reference.any() else math.nan
     single = np.ones(len(groups), dtype=bool)
+    spreads = groups["f0_spread"].to_numpy(dtype=float)
     for i in range(len(groups)):
         same = reference & (groups["family"] == groups["family"].iat[i])
         typical = float(groups.loc[same, "f0_spread"].median()) if same.sum() >= 2 else overall
-        spread = groups["f0_spread"].iat[i]
+        spread = spreads[i]
         if np.isfinite(typical) and np.isfinite(spread) and spread > SPREAD_FACTOR * typical:
             single[i] = False
             if groups["systematic"].iat[i]:
                 groups.loc[groups.index[i], "note"] = _join(
-                    groups["note"].iat[i], f"implied f0 spreads {spread:.1%} (series that agree: {typical:.1%}): "
+                    str(groups["note"].iat[i]), f"implied f0 spreads {spread:.1%} (series that agree: {typical:.1%}): "
                     "no single f0 reproduces the group; the median is a summary")
     groups["single_f0"] = single
 

@@ -27,10 +27,12 @@ Quantities.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 import pandas as pd
 from scipy import stats
 from scipy.optimize import least_squares
@@ -76,6 +78,9 @@ PARAMETER_UNITS = {
     "M1": "N*mm",
 }
 
+#: torque parameters -> resisting torque M(ω) [N·m] as a function of ω [rad/s]
+TorqueBuilder = Callable[[np.ndarray], Callable[[np.ndarray], np.ndarray]]
+
 MIN_SAMPLES = 10
 CV_FOLDS = 5
 CONFIDENCE = 0.95
@@ -113,11 +118,13 @@ class ModelFit:
         return (float(self.ci_low[k]), float(self.ci_high[k]))
 
 
-def _least_squares_fit(t, n, build_torque, start, lower, upper, scale, I, t0):
+def _least_squares_fit(t: np.ndarray, n: np.ndarray, build_torque: TorqueBuilder, start: np.ndarray,
+                       lower: np.ndarray, upper: np.ndarray, scale: np.ndarray, I: float,
+                       t0: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Fit (n0 at t0, torque parameters) to n(t); returns (values, jacobian, residuals)."""
     penalty = 10.0 * float(np.max(n))
 
-    def residuals(params):
+    def residuals(params: np.ndarray) -> np.ndarray:
         model = rundown_speed(t, t0, params[0], build_torque(params[1:]), I)
         res = model - n
         return np.where(np.isfinite(res), res, penalty)
@@ -128,13 +135,17 @@ def _least_squares_fit(t, n, build_torque, start, lower, upper, scale, I, t0):
     return solution.x, solution.jac, solution.fun
 
 
-def _fit_model(name, t, n, build_torque, start, lower, upper, scale, I, parameters) -> ModelFit:
+def _fit_model(name: str, t: np.ndarray, n: np.ndarray, build_torque: TorqueBuilder, start: np.ndarray,
+               lower: np.ndarray, upper: np.ndarray, scale: np.ndarray, I: float,
+               parameters: tuple[str, ...]) -> ModelFit:
     t0 = float(t[0])
     values, jac, res = _least_squares_fit(t, n, build_torque, start, lower, upper, scale, I, t0)
     count, k = n.size, values.size
     rss = float(res @ res)
     dof = max(count - k, 1)
-    covariance = np.linalg.pinv(jac.T @ jac) * rss / dof
+    # s²·(JᵀJ)⁻¹ as J⁺·J⁺ᵀ: the pseudo-inverse of J, not of JᵀJ (which squares its condition number)
+    jac_pinv = np.linalg.pinv(jac)
+    covariance = jac_pinv @ jac_pinv.T * rss / dof
     std_errors = np.sqrt(np.clip(np.diag(covariance), 0.0, None))
     half_width = stats.t.ppf(0.5 + CONFIDENCE / 2.0, dof) * std_errors
     bic = count * math.log(max(rss, 1e-300) / count) + k * math.log(count)
@@ -153,8 +164,8 @@ def _fit_model(name, t, n, build_torque, start, lower, upper, scale, I, paramete
                     values + half_width, math.sqrt(rss / count), bic, cv_rmse, fitted)
 
 
-def _plain_builder(components: tuple[str, ...]):
-    def build(params):
+def _plain_builder(components: tuple[str, ...]) -> TorqueBuilder:
+    def build(params: np.ndarray) -> Callable[[np.ndarray], np.ndarray]:
         named = dict(zip(components, params))
         return plain_torque(**named)
     return build
@@ -169,7 +180,9 @@ def _select_model(fits: dict[str, ModelFit]) -> str:
 
 
 # --------------------------------------------------------------------------- interval table (formula 2)
-def interval_friction_table(t, n_smooth, I, G=None, r=None, dn=None, dt=None, count=10):
+def interval_friction_table(t: npt.ArrayLike, n_smooth: npt.ArrayLike, I: float, G: float | None = None,
+                            r: float | None = None, dn: float | None = None, dt: float | None = None,
+                            count: int = 10) -> pd.DataFrame:
     """Interval-average torque and the TMM-7M lab sheet formula (2) over chosen intervals of the smoothed run-down.
 
     Intervals are speed steps ``dn`` [1/min] down from the first smoothed speed
@@ -210,7 +223,7 @@ def interval_friction_table(t, n_smooth, I, G=None, r=None, dn=None, dt=None, co
     return pd.DataFrame(rows, columns=columns)
 
 
-def _first_crossing(t, speed, level):
+def _first_crossing(t: np.ndarray, speed: np.ndarray, level: float) -> float:
     below = np.flatnonzero(speed <= level + 1e-9 * abs(float(speed[0])))
     k = int(below[0])
     if k == 0:
@@ -305,7 +318,7 @@ class CoastdownResult:
     def rmse_after(self) -> float:
         return self.chosen.rmse
 
-    def torque(self, omega):
+    def torque(self, omega: npt.ArrayLike) -> np.ndarray:
         """Fitted resisting torque [N·m] of the chosen model at ω [rad/s]."""
         fit = self.chosen
         return plain_torque(fit.value("M_c"), fit.value("c_v"), fit.value("c_a"))(np.asarray(omega, dtype=float))
@@ -340,7 +353,8 @@ class CoastdownResult:
 
 
 # --------------------------------------------------------------------------- analysis
-def _validate(t, n, I, G, r):
+def _validate(t: npt.ArrayLike, n: npt.ArrayLike, I: float, G: float | None,
+              r: float | None) -> tuple[np.ndarray, np.ndarray]:
     t = np.asarray(t, dtype=float)
     n = np.asarray(n, dtype=float)
     if t.shape != n.shape or t.ndim != 1:
@@ -365,11 +379,11 @@ def _validate(t, n, I, G, r):
     return t, n
 
 
-def _trapezoid(y, x) -> float:
+def _trapezoid(y: np.ndarray, x: np.ndarray) -> float:
     return float(np.sum(0.5 * (y[1:] + y[:-1]) * np.diff(x)))
 
 
-def _usable_derivative_mask(n_smooth, n_max):
+def _usable_derivative_mask(n_smooth: np.ndarray, n_max: float) -> np.ndarray:
     """Samples before the rotor stops (smoothed speed above 2 % of the top speed)."""
     running = n_smooth > 0.02 * n_max
     stop = np.flatnonzero(~running)
@@ -378,8 +392,9 @@ def _usable_derivative_mask(n_smooth, n_max):
     return running
 
 
-def coastdown_analysis(t, n, I, G=None, r=None, *, window=None, interval_dn=None, interval_dt=None,
-                       interval_count=10) -> CoastdownResult:
+def coastdown_analysis(t: npt.ArrayLike, n: npt.ArrayLike, I: float, G: float | None = None, r: float | None = None,
+                       *, window: int | None = None, interval_dn: float | None = None,
+                       interval_dt: float | None = None, interval_count: int = 10) -> CoastdownResult:
     """Analyse a run-down n(t): the TMM-7M lab sheet formulas (1) and (2) and the nested torque models.
 
     t [s], n [1/min] samples; I [kg·m²]; G [N] and r [mm] (None: no friction
@@ -456,7 +471,8 @@ def coastdown_analysis(t, n, I, G=None, r=None, *, window=None, interval_dn=None
                            energy=energy)
 
 
-def spindle_coastdown_fit(t, n, I, nu, dM, bearings=2, P=None, f0_catalogue=None) -> SpindleFit:
+def spindle_coastdown_fit(t: npt.ArrayLike, n: npt.ArrayLike, I: float, nu: float, dM: float, bearings: int = 2,
+                          P: float | None = None, f0_catalogue: float | None = None) -> SpindleFit:
     """Fit f0 and M1 of the Schaeffler catalogue form to a run-down of a shaft on rolling bearings.
 
     M(n) = bearings·(M0(n; ν, dM, f0) + M1) [N·mm], M0 from
@@ -487,7 +503,7 @@ def spindle_coastdown_fit(t, n, I, nu, dM, bearings=2, P=None, f0_catalogue=None
     mean_torque_nmm = I * n_max * RPM_TO_RAD_S / (t[-1] - t[0]) * 1000.0 / bearings
     guess = np.maximum(guess, [0.01 * mean_torque_nmm / float(np.max(shape)), 0.01 * mean_torque_nmm])
 
-    def build(params):
+    def build(params: np.ndarray) -> Callable[[np.ndarray], np.ndarray]:
         f0, m1 = params
         return lambda omega: bearings * (rolling_bearing_M0_seed002(omega / RPM_TO_RAD_S, nu, dM, f0) + m1) / 1000.0
 

@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 import pandas as pd
@@ -57,7 +58,7 @@ class ModelFit:
     fitted: np.ndarray                # N·mm, with the fitted scales
     cv_fitted: np.ndarray             # N·mm, held-out predictions
 
-    def as_json(self) -> dict:
+    def as_json(self) -> dict[str, Any]:
         return {"model": self.model, "scales": self.scales, "before": self.before, "after": self.after,
                 "cv_after": self.cv_after, "bic_after": self.bic_after}
 
@@ -99,7 +100,7 @@ class ModelComparison:
                          "scales": ", ".join(f"{name} × {value:.3g}" for name, value in fit.scales.items())})
         return pd.DataFrame(rows)
 
-    def summary(self) -> dict:
+    def summary(self) -> dict[str, Any]:
         return {"best": self.best, "runner_up": self.runner_up, "ratio": _clean(self.ratio),
                 "p_value": _clean(self.p_value), "n_rows": self.n_rows, "folds": self.k,
                 "verdict": self.verdict(), "residual": "measured - model",
@@ -125,7 +126,7 @@ def _evaluate(measured: MeasuredData, name: str) -> tuple[np.ndarray, dict[str, 
     """(MR, fit terms, usable mask, exclusion messages) of one model on every measured row."""
     results = compute_supports(measured.frame, labels=measured.labels, model=name)
     failed = (results["status"] == "error").to_numpy()
-    messages = [f"row {i + 1} ({name}): {results['message'].iat[i]}" for i in np.flatnonzero(failed)]
+    messages = [f"row {i + 1} ({name}): {results['message'].iat[i]}" for i in map(int, np.flatnonzero(failed))]
     MR = results["MR"].to_numpy(dtype=float)
     model = get_model(name)
     if model.fit_terms is None:

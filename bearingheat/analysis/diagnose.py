@@ -31,13 +31,16 @@ import json
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 import pandas as pd
 from scipy import stats
 
 from bearingheat.analysis.effects import CANDIDATES, EFFECT_NAMES, ModelData, bearing_keys, catalogue_arrays
 from bearingheat.calc.contract import parse_header
+from bearingheat.calc.messages import Labels
 from bearingheat.calc.fill import fill_from_catalogue
 from bearingheat.calc.models import compute_supports
 from bearingheat.calc.supports import SupportArrays
@@ -103,7 +106,7 @@ class MeasuredData:
     t: np.ndarray                 # h, NaN if not given
     group: np.ndarray | None      # user's group labels, or None
     row_errors: list[list[str]]   # per row
-    labels: object = None
+    labels: Labels | None = None
 
 
 def _measured_column(table: pd.DataFrame, name: str, row_errors: list[list[str]]) -> np.ndarray:
@@ -224,7 +227,7 @@ def _load_column(results: pd.DataFrame, a: SupportArrays, rows: np.ndarray) -> n
 # Metrics and residual structure
 # ---------------------------------------------------------------------------------------------
 
-def error_metrics(measured, predicted) -> dict:
+def error_metrics(measured: npt.ArrayLike, predicted: npt.ArrayLike) -> dict[str, float]:
     """RMSE [N·mm], MAPE [%], bias = mean(measured − predicted) [N·mm] and relative RMSE [1].
 
     The residual is measured − model everywhere (reports, plots, bias): a
@@ -257,10 +260,10 @@ REGRESSOR_UNITS = {"n": "1/min", "nu*n": "mm^2/s*1/min", "load": "N", "Fa/Fr": "
                    "T_oil": "degC", "bearing": "-"}
 
 
-def residual_structure(data: ModelData, predicted: np.ndarray) -> list[dict]:
+def residual_structure(data: ModelData, predicted: np.ndarray) -> list[dict[str, Any]]:
     """Relative residual (M − model)/M against each regressor: Spearman ρ and p; the bearing by ANOVA."""
     residual = (data.M - predicted) / data.M
-    out = []
+    out: list[dict[str, Any]] = []
     for name, values in regressors(data).items():
         ok = ~np.isnan(values)
         if ok.sum() < 3 or np.ptp(values[ok]) == 0:
@@ -293,11 +296,11 @@ class CandidateScore:
     name: str
     applicable: bool
     reason: str = ""
-    params: dict = field(default_factory=dict)
-    public: dict = field(default_factory=dict)
+    params: dict[str, Any] = field(default_factory=dict)
+    public: dict[str, Any] = field(default_factory=dict)
     n_params: int = 0
-    fit: dict = field(default_factory=dict)       # error_metrics on the fitting data
-    cv: dict = field(default_factory=dict)        # error_metrics of the held-out predictions
+    fit: dict[str, float] = field(default_factory=dict)       # error_metrics on the fitting data
+    cv: dict[str, float] = field(default_factory=dict)        # error_metrics of the held-out predictions
     bic: float = math.nan
     delta_bic: float = math.nan                   # BIC(none) − BIC(candidate)
     cv_improvement: float = math.nan              # 1 − cv rel_rmse / cv rel_rmse of none
@@ -306,8 +309,8 @@ class CandidateScore:
     predicted: np.ndarray | None = None
     cv_predicted: np.ndarray | None = None
 
-    def as_json(self) -> dict:
-        def clean(x):
+    def as_json(self) -> dict[str, Any]:
+        def clean(x: float) -> float | None:
             return None if isinstance(x, float) and not math.isfinite(x) else x
         return {
             "applicable": self.applicable, "reason": self.reason, "parameters": self.public,
@@ -330,7 +333,7 @@ class Diagnosis:
     folds: np.ndarray
     groups: np.ndarray
     k: int
-    structure: list[dict]
+    structure: list[dict[str, Any]]
     excluded: list[str] = field(default_factory=list)
 
     @property
@@ -348,7 +351,7 @@ class Diagnosis:
         return (f"Chosen: '{self.effect}' (ΔBIC {chosen.delta_bic:.1f}, held-out gain {chosen.cv_improvement:.1%}, "
                 f"p = {chosen.p_value:.2g}){tied}.")
 
-    def summary(self) -> dict:
+    def summary(self) -> dict[str, Any]:
         none, chosen = self.scores["none"], self.chosen
         return {
             "effect": self.effect,
@@ -391,7 +394,7 @@ def assign_folds(groups: np.ndarray, k: int, seed: int) -> np.ndarray:
     return fold_of_group[np.searchsorted(unique, groups)]
 
 
-def _bic(M, predicted, n_params) -> float:
+def _bic(M: np.ndarray, predicted: np.ndarray, n_params: int) -> float:
     r = (M - predicted) / M
     sse = float(np.dot(r, r))
     N = len(M)
@@ -433,6 +436,7 @@ def diagnose(data: ModelData, *, k: int = 5, seed: int = 0, groups: np.ndarray |
             error_metrics(data.M, predicted), error_metrics(data.M, cv_predicted),
             _bic(data.M, predicted, n_params), predicted=predicted, cv_predicted=cv_predicted)
     none = scores["none"]
+    assert none.predicted is not None and none.cv_predicted is not None, "'none' applies to any data"
     none.delta_bic, none.cv_improvement = 0.0, 0.0
     r_none = ((data.M - none.cv_predicted) / data.M) ** 2
     for score in scores.values():
@@ -487,7 +491,7 @@ def key_regressor(diagnosis: Diagnosis) -> str:
     return best
 
 
-def format_value(value, digits=4) -> str:
+def format_value(value: Any, digits: int = 4) -> str:
     """A number, None or a dict of them as the report and the calc messages show it ('–' for none).
 
     >>> format_value({"k": 2.123456, "tau [h]": None})
@@ -520,9 +524,9 @@ class FittedEffect:
     """
 
     effect: str
-    parameters: dict
+    parameters: dict[str, Any]
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         if self.effect not in CANDIDATES:
             raise DiagnoseError(f"effect {self.effect!r} is not one of {', '.join(EFFECT_NAMES)}")
         for name in CANDIDATES[self.effect].required:
@@ -530,7 +534,7 @@ class FittedEffect:
                 raise DiagnoseError(f"effect {self.effect!r} needs the parameter {name!r}")
 
     @classmethod
-    def from_summary(cls, path) -> "FittedEffect":
+    def from_summary(cls, path: str | Path) -> FittedEffect:
         """Load the effect of a ``diagnose`` summary.json."""
         text = Path(path).read_text(encoding="utf-8")
         try:

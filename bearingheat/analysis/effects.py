@@ -32,7 +32,9 @@ model instead of bending it; the significance rule lives in
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 import pandas as pd
@@ -89,19 +91,19 @@ def bearing_keys(frame: pd.DataFrame) -> np.ndarray:
     The seal torque and preload of ``diagnose`` are fitted per key, and
     ``calc --effects`` looks them up by the same key.
     """
-    def text(col):
+    def text(col: str) -> list[str | None]:
         if col not in frame.columns:
             return [None] * len(frame)
         return [None if v is None or (isinstance(v, float) and math.isnan(v)) or str(v).strip() == ""
                 else str(v).strip() for v in frame[col]]
 
-    def number(col):
+    def number(col: str) -> np.ndarray:
         if col not in frame.columns:
             return np.full(len(frame), np.nan)
         return pd.to_numeric(frame[col], errors="coerce").to_numpy(dtype=float)
 
     d, D = number("d"), number("D")
-    out = []
+    out: list[str] = []
     for des, typ, ser, di, Di in zip(text("designation"), text("type"), text("series"), d, D):
         if des:
             out.append(des)
@@ -182,12 +184,16 @@ class CalcRows:
         return np.flatnonzero(self.ok)
 
 
-def _weighted_sse(M, pred):
+#: fitted parameters of a candidate, by name (a float, or an array per bearing)
+Params = dict[str, Any]
+
+
+def _weighted_sse(M: np.ndarray, pred: np.ndarray) -> float:
     r = (M - pred) / M
     return float(np.dot(r, r))
 
 
-def _nonneg_scale(M, base, extra):
+def _nonneg_scale(M: np.ndarray, base: np.ndarray, extra: np.ndarray) -> float:
     """θ >= 0 minimising Σ((M − base − θ·extra)/M)² (closed form)."""
     w2 = 1.0 / (M * M)
     den = float(np.sum(w2 * extra * extra))
@@ -196,13 +202,14 @@ def _nonneg_scale(M, base, extra):
     return max(0.0, float(np.sum(w2 * extra * (M - base))) / den)
 
 
-def _grid_best(objective, grid):
+def _grid_best(objective: Callable[[float], float], grid: np.ndarray) -> tuple[int, list[float]]:
     """Index of the best grid point of a 1-D objective, and the objective on the whole grid."""
-    values = [objective(g) for g in grid]
+    values = [objective(float(g)) for g in grid]
     return int(np.argmin(values)), values
 
 
-def _refine(objective, grid, best, values, xatol):
+def _refine(objective: Callable[[float], float], grid: np.ndarray, best: int, values: list[float],
+            xatol: float) -> float:
     """A bounded search between the neighbours of grid point ``best``; the better of it and the grid point."""
     lo, hi = grid[max(best - 1, 0)], grid[min(best + 1, len(grid) - 1)]
     res = optimize.minimize_scalar(objective, bounds=(lo, hi), method="bounded", options={"xatol": xatol})
@@ -228,20 +235,20 @@ class Candidate:
     def applicable(self, data: ModelData) -> str:
         return ""
 
-    def fit(self, data: ModelData, rows: np.ndarray) -> dict:
+    def fit(self, data: ModelData, rows: np.ndarray) -> Params:
         raise NotImplementedError
 
-    def predict(self, data: ModelData, params: dict, rows: np.ndarray) -> np.ndarray:
+    def predict(self, data: ModelData, params: Params, rows: np.ndarray) -> np.ndarray:
         raise NotImplementedError
 
-    def n_params(self, data: ModelData, params: dict) -> int:
+    def n_params(self, data: ModelData, params: Params) -> int:
         return len(params)
 
-    def public_parameters(self, data: ModelData, params: dict) -> dict:
+    def public_parameters(self, data: ModelData, params: Params) -> dict[str, Any]:
         """Parameters as written to summary.json (names with units)."""
         return dict(params)
 
-    def apply(self, frame: pd.DataFrame, results: pd.DataFrame, parameters: dict, note: str) -> None:
+    def apply(self, frame: pd.DataFrame, results: pd.DataFrame, parameters: dict[str, Any], note: str) -> None:
         """Add the fitted effect to MR and recompute NR for every row of calc ``results`` that is not in error.
 
         ``frame`` holds calc's inputs (contract names, catalogue units),
@@ -263,10 +270,10 @@ class Candidate:
         results["MR"] = np.where(ok, rows.MR, results["MR"].to_numpy(dtype=float))
         results["NR"] = np.where(ok, friction.power_loss(rows.MR, rows.n), results["NR"].to_numpy(dtype=float))
         for i, text in rows.notes.items():
-            current = results.at[index[i], "message"]
+            current = str(results.at[index[i], "message"] or "")
             results.at[index[i], "message"] = f"{current}; {text}" if current else text
 
-    def change(self, rows: CalcRows, parameters: dict) -> None:
+    def change(self, rows: CalcRows, parameters: dict[str, Any]) -> None:
         """Change ``rows.MR`` of the rows ``rows.ok`` by the fitted ``parameters`` (and ``rows.notes``)."""
         raise NotImplementedError
 
@@ -276,13 +283,13 @@ class NoEffect(Candidate):
     description = "the catalogue model M0 + M1 (+ M2) as it stands"
     key_regressor = "n"
 
-    def fit(self, data, rows):
+    def fit(self, data: ModelData, rows: np.ndarray) -> Params:
         return {}
 
-    def predict(self, data, params, rows):
+    def predict(self, data: ModelData, params: Params, rows: np.ndarray) -> np.ndarray:
         return data.MR[rows]
 
-    def apply(self, frame, results, parameters, note):
+    def apply(self, frame: pd.DataFrame, results: pd.DataFrame, parameters: dict[str, Any], note: str) -> None:
         """The catalogue model as it stands: the results are left as they are."""
 
 
@@ -292,7 +299,7 @@ class SealDrag(Candidate):
     key_regressor = "n"
     required = ("M_seal [N*mm]",)
 
-    def fit(self, data, rows):
+    def fit(self, data: ModelData, rows: np.ndarray) -> Params:
         M, base, code = data.M[rows], data.MR[rows], data.bearing[rows]
         w2 = 1.0 / (M * M)
         k = len(data.bearing_names)
@@ -302,16 +309,16 @@ class SealDrag(Candidate):
             M_seal = np.where(den > 0, np.maximum(num / den, 0.0), 0.0)
         return {"M_seal": M_seal}
 
-    def predict(self, data, params, rows):
+    def predict(self, data: ModelData, params: Params, rows: np.ndarray) -> np.ndarray:
         return data.MR[rows] + seal_drag_torque(params["M_seal"], data.bearing[rows])
 
-    def n_params(self, data, params):
+    def n_params(self, data: ModelData, params: Params) -> int:
         return int(np.count_nonzero(np.bincount(data.bearing, minlength=len(data.bearing_names))))
 
-    def public_parameters(self, data, params):
+    def public_parameters(self, data: ModelData, params: Params) -> dict[str, Any]:
         return {"M_seal [N*mm]": {name: float(v) for name, v in zip(data.bearing_names, params["M_seal"])}}
 
-    def change(self, rows, parameters):
+    def change(self, rows: CalcRows, parameters: dict[str, Any]) -> None:
         table = parameters["M_seal [N*mm]"]
         for i in rows.positions:
             if rows.keys[i] in table:
@@ -327,17 +334,17 @@ class F0Scale(Candidate):
     key_regressor = "nu*n"
     required = ("k",)
 
-    def fit(self, data, rows):
+    def fit(self, data: ModelData, rows: np.ndarray) -> Params:
         theta = _nonneg_scale(data.M[rows], data.MR[rows], data.M0[rows])
         return {"k": 1.0 + theta}
 
-    def predict(self, data, params, rows):
+    def predict(self, data: ModelData, params: Params, rows: np.ndarray) -> np.ndarray:
         return data.MR[rows] + (params["k"] - 1.0) * data.M0[rows]
 
-    def public_parameters(self, data, params):
+    def public_parameters(self, data: ModelData, params: Params) -> dict[str, Any]:
         return {"k": float(params["k"])}
 
-    def change(self, rows, parameters):
+    def change(self, rows: CalcRows, parameters: dict[str, Any]) -> None:
         rows.MR[rows.ok] += (float(parameters["k"]) - 1.0) * rows.M0[rows.ok]
 
 
@@ -348,11 +355,11 @@ class ViscosityHeating(Candidate):
     key_regressor = "NR"
     required = ("R_th [K/W]",)
 
-    def _predict(self, data, R_th, rows):
+    def _predict(self, data: ModelData, R_th: float, rows: np.ndarray) -> np.ndarray:
         return heated_total_torque(R_th, data.f0[rows], data.nu[rows], data.n[rows], data.dM[rows],
                                    data.M1[rows] + data.M2[rows]) if R_th > 0 else data.MR[rows]
 
-    def fit(self, data, rows):
+    def fit(self, data: ModelData, rows: np.ndarray) -> Params:
         NR = data.NR[rows]
         top = float(np.nanmax(NR)) if len(NR) else 0.0
         if not top > 0:
@@ -360,7 +367,7 @@ class ViscosityHeating(Candidate):
         R_max = 4.0 / (VISCOSITY_TEMPERATURE_COEFFICIENT * top)  # ν down to e^-4 at the highest loss
         M = data.M[rows]
 
-        def sse(log_r):
+        def sse(log_r: float) -> float:
             return _weighted_sse(M, self._predict(data, math.exp(log_r), rows))
 
         grid = np.linspace(math.log(R_max) - 9.0, math.log(R_max), 19)
@@ -369,16 +376,16 @@ class ViscosityHeating(Candidate):
             return {"R_th": 0.0}
         return {"R_th": math.exp(_refine(sse, grid, best, values, 1e-4))}
 
-    def predict(self, data, params, rows):
+    def predict(self, data: ModelData, params: Params, rows: np.ndarray) -> np.ndarray:
         return self._predict(data, params["R_th"], rows)
 
-    def public_parameters(self, data, params):
+    def public_parameters(self, data: ModelData, params: Params) -> dict[str, Any]:
         return {"R_th [K/W]": float(params["R_th"]), "b [1/K]": VISCOSITY_TEMPERATURE_COEFFICIENT}
 
-    def n_params(self, data, params):
+    def n_params(self, data: ModelData, params: Params) -> int:
         return 1
 
-    def change(self, rows, parameters):
+    def change(self, rows: CalcRows, parameters: dict[str, Any]) -> None:
         ok = rows.ok
         load_part = rows.MR - rows.M0
         rows.MR[ok] = heated_total_torque(float(parameters["R_th [K/W]"]),
@@ -393,15 +400,15 @@ class DragLosses(Candidate):
     required = ("c", "p")
     P_BOUNDS = (0.9, 3.0)
 
-    def fit(self, data, rows):
+    def fit(self, data: ModelData, rows: np.ndarray) -> Params:
         M, base, dM, n = data.M[rows], data.MR[rows], data.dM[rows], data.n[rows]
 
-        def best_c(p):
+        def best_c(p: float) -> tuple[float, float]:
             extra = drag_loss_torque(1.0, p, dM, n)
             c = _nonneg_scale(M, base, extra)
             return c, _weighted_sse(M, base + c * extra)
 
-        def sse(p):
+        def sse(p: float) -> float:
             return best_c(p)[1]
 
         grid = np.linspace(*self.P_BOUNDS, 22)
@@ -409,13 +416,13 @@ class DragLosses(Candidate):
         c, _ = best_c(p)
         return {"c": c, "p": p}
 
-    def predict(self, data, params, rows):
+    def predict(self, data: ModelData, params: Params, rows: np.ndarray) -> np.ndarray:
         return data.MR[rows] + drag_loss_torque(params["c"], params["p"], data.dM[rows], data.n[rows])
 
-    def public_parameters(self, data, params):
+    def public_parameters(self, data: ModelData, params: Params) -> dict[str, Any]:
         return {"c": float(params["c"]), "p": float(params["p"])}
 
-    def change(self, rows, parameters):
+    def change(self, rows: CalcRows, parameters: dict[str, Any]) -> None:
         ok = rows.ok
         rows.MR[ok] += drag_loss_torque(float(parameters["c"]), float(parameters["p"]), rows.dM[ok], rows.n[ok])
 
@@ -426,7 +433,7 @@ class RunIn(Candidate):
     key_regressor = "t"
     required = ("a", "tau [h]")
 
-    def applicable(self, data):
+    def applicable(self, data: ModelData) -> str:
         t = data.t
         if np.all(np.isnan(t)):
             return "no running time column 't [h]'"
@@ -436,11 +443,11 @@ class RunIn(Candidate):
             return "the running time t does not vary"
         return ""
 
-    def fit(self, data, rows):
+    def fit(self, data: ModelData, rows: np.ndarray) -> Params:
         M, base, M0, t = data.M[rows], data.MR[rows], data.M0[rows], data.t[rows]
         span = float(np.ptp(data.t)) or 1.0
 
-        def best_a(log_tau):
+        def best_a(log_tau: float) -> tuple[float, float]:
             extra = M0 * np.exp(-t / math.exp(log_tau))
             a = _nonneg_scale(M, base, extra)
             return a, _weighted_sse(M, base + a * extra)
@@ -448,7 +455,7 @@ class RunIn(Candidate):
         # τ between 1 % and 100 % of the observed time span: a decay slower than that is
         # indistinguishable from a constant f0 scale within the data
         bounds = (math.log(0.01 * span), math.log(span))
-        def sse(log_tau):
+        def sse(log_tau: float) -> float:
             return best_a(log_tau)[1]
 
         grid = np.linspace(*bounds, 21)
@@ -456,13 +463,13 @@ class RunIn(Candidate):
         a, _ = best_a(log_tau)
         return {"a": a, "tau": math.exp(log_tau)}
 
-    def predict(self, data, params, rows):
+    def predict(self, data: ModelData, params: Params, rows: np.ndarray) -> np.ndarray:
         return data.MR[rows] + params["a"] * data.M0[rows] * np.exp(-data.t[rows] / params["tau"])
 
-    def public_parameters(self, data, params):
+    def public_parameters(self, data: ModelData, params: Params) -> dict[str, Any]:
         return {"a": float(params["a"]), "tau [h]": float(params["tau"])}
 
-    def change(self, rows, parameters):
+    def change(self, rows: CalcRows, parameters: dict[str, Any]) -> None:
         frame, ok = rows.frame, rows.ok
         t = pd.to_numeric(frame["t"], errors="coerce").to_numpy(dtype=float) if "t" in frame.columns \
             else np.full(len(frame), np.nan)
@@ -478,33 +485,40 @@ class Preload(Candidate):
     key_regressor = "load"
     required = ("F_pre [N]",)
 
-    def _axial_bearings(self, data):
+    @staticmethod
+    def _arrays(data: ModelData) -> SupportArrays:
+        """The support arrays of ``data`` (the candidate is applicable only where they are given)."""
+        assert data.arrays is not None, "the preload candidate needs the support arrays of the rows"
+        return data.arrays
+
+    def _axial_bearings(self, data: ModelData) -> np.ndarray:
         """Bearing codes whose M1 depends on the axial load (ball, tapered, spherical, thrust)."""
-        a = data.arrays
+        a = self._arrays(data)
         depends = (a.m1_load != "Fr") & ~a.no_axial
         return np.unique(data.bearing[depends])
 
-    def applicable(self, data):
+    def applicable(self, data: ModelData) -> str:
         if data.arrays is None or data.arrays.size == 0:
             return "no catalogue arrays"
         if len(self._axial_bearings(data)) == 0:
             return "no bearing in the data has an M1 that depends on the axial load"
         return ""
 
-    def _m1(self, data, rows, F_pre):
-        return evaluate_with_axial_load(data.arrays, rows, data.Fa[rows] + F_pre)
+    def _m1(self, data: ModelData, rows: np.ndarray, F_pre: np.ndarray | float) -> np.ndarray:
+        return evaluate_with_axial_load(self._arrays(data), rows, data.Fa[rows] + F_pre)
 
-    def fit(self, data, rows):
+    def fit(self, data: ModelData, rows: np.ndarray) -> Params:
         F_pre = np.zeros(len(data.bearing_names))
         for code in self._axial_bearings(data):
             mine = rows[data.bearing[rows] == code]
             if len(mine) == 0:
                 continue
             M, M0 = data.M[mine], data.M0[mine]
-            C0 = np.nanmax(data.arrays.C0[mine]) if np.any(~np.isnan(data.arrays.C0[mine])) else np.nan
+            C0_rows = self._arrays(data).C0[mine]
+            C0 = np.nanmax(C0_rows) if np.any(~np.isnan(C0_rows)) else np.nan
             top = C0 if C0 > 0 else 10.0 * max(float(np.max(data.Fr[mine] + data.Fa[mine])), 1.0)
 
-            def sse(force):
+            def sse(force: float) -> float:
                 pred = M0 + self._m1(data, mine, force)
                 return _weighted_sse(M, pred) if np.all(np.isfinite(pred)) else math.inf
 
@@ -515,7 +529,7 @@ class Preload(Candidate):
             F_pre[code] = _refine(sse, grid, best, values, 1e-3 * grid[best])
         return {"F_pre": F_pre}
 
-    def predict(self, data, params, rows):
+    def predict(self, data: ModelData, params: Params, rows: np.ndarray) -> np.ndarray:
         F_pre = params["F_pre"][data.bearing[rows]]
         out = data.MR[rows].copy()
         active = F_pre > 0
@@ -524,13 +538,13 @@ class Preload(Candidate):
             out[active] = data.M0[sub] + self._m1(data, sub, F_pre[active])
         return out
 
-    def n_params(self, data, params):
+    def n_params(self, data: ModelData, params: Params) -> int:
         return len(self._axial_bearings(data))
 
-    def public_parameters(self, data, params):
+    def public_parameters(self, data: ModelData, params: Params) -> dict[str, Any]:
         return {"F_pre [N]": {name: float(v) for name, v in zip(data.bearing_names, params["F_pre"])}}
 
-    def change(self, rows, parameters):
+    def change(self, rows: CalcRows, parameters: dict[str, Any]) -> None:
         table, keys, a = parameters["F_pre [N]"], rows.keys, rows.arrays
         force = np.array([float(table.get(keys[i], 0.0)) for i in range(len(rows.frame))])
         active = np.flatnonzero(rows.ok & (force > 0))

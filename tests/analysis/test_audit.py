@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import re
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -320,3 +321,13 @@ def test_hr1_outliers_are_single_rows_the_catalogue_itself_contradicts(hr1_audit
     assert not rows.loc[rows["designation"].isin(["NU311-E-TVP2", "NUP311-E-TVP2"])].empty
     marked = audit.bearings.set_index("designation")
     assert not marked.loc["NU311-E-TVP2", "outlier"]
+
+
+def test_linear_fit_without_residual_dof_has_no_intervals_and_no_warning():
+    X = np.array([[1.0, 1.0], [1.0, 2.0]])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        fit = fit_linear_coefficients(X, X @ np.array([2.0, 0.5]))
+    np.testing.assert_allclose(fit["theta"], [2.0, 0.5], rtol=1e-12)
+    assert fit["dof"] == 0
+    assert np.isnan(fit["se"]).all() and np.isnan(fit["low"]).all() and np.isnan(fit["high"]).all()

@@ -7,10 +7,11 @@ import re
 import numpy as np
 import pytest
 from coastdown_helpers import integrate_rundown, spindle_torque
+from scipy.optimize import curve_fit
 
 from bearingheat.analysis import coastdown as cd
 from bearingheat.errors import CoastdownError
-from bearingheat.kernels.coastdown import plain_torque
+from bearingheat.kernels.coastdown import plain_torque, rundown_speed
 
 
 def test_interval_table_reproduces_formula2_on_a_straight_line():
@@ -133,3 +134,16 @@ def test_spindle_below_nu_n_2000_is_refused():
             "spindle coast-down: ν·n reaches only 1000 mm²/s·1/min (< 2000): M0 of the Schaeffler catalogue is constant over "
             "the whole run-down and cannot be told apart from M1")):
         cd.spindle_coastdown_fit(np.arange(12.0), 100 - np.arange(12.0), 0.05, 10.0, 50.0)
+
+
+def test_standard_errors_are_those_of_curve_fit():
+    """s²(JᵀJ)⁻¹ from the pseudo-inverse of J: the covariance scipy's curve_fit gives at the same optimum."""
+    t, n, _ = integrate_rundown(plain_torque(0.3, 0.004, 5e-5), 2.6, 930.0, 2.0, 2.0, 12)
+    fit = cd.coastdown_analysis(t, n, 2.6, 1100.0, 25.0).fits["coulomb_viscous_aero"]
+
+    def speed(times, n0, M_c, c_v, c_a):
+        return rundown_speed(times, float(t[0]), n0, plain_torque(M_c, c_v, c_a), 2.6)
+
+    values, covariance = curve_fit(speed, t, n, p0=fit.values, method="trf", x_scale=np.abs(fit.values))
+    np.testing.assert_allclose(values, fit.values, rtol=1e-6)
+    np.testing.assert_allclose(np.sqrt(np.diag(covariance)), fit.std_errors, rtol=1e-3)

@@ -38,22 +38,30 @@ from __future__ import annotations
 import io
 import posixpath
 import re
+import os
 import shutil
 import zipfile
+from collections.abc import Callable, Collection, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING, Protocol
 from urllib.parse import unquote
 
+import pandas as pd
 from lxml import etree
 
 from bearingheat.errors import ExcelError, WorkbookContentError
 from bearingheat.io.excel.ownership import (COMPANION_MARKS, INPUT_MARK, RESULTS_MARK, choose_companion_sheet,
                                             choose_results_sheet, mark_value, read_companions, read_marks,
                                             sheet_ref)
-from bearingheat.io.excel.printing import is_bearingheat_header
+from bearingheat.io.excel.freshness import ConditionalRule
+from bearingheat.io.excel.printing import PrintSetup, is_bearingheat_header
 from bearingheat.io.excel.sheetxml import results_sheet_xml
 from bearingheat.io.excel.stylesheet import StyleSheet
 from bearingheat.io.files import WorkbookLock, atomic_write
+
+if TYPE_CHECKING:
+    from bearingheat.io.console import Progress
 
 __all__ = ["Package", "open_package", "write_results_in_place", "InPlaceResult"]
 
@@ -80,7 +88,7 @@ _PARSER = etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=Tru
 _OLE_MAGIC = b"\xd0\xcf\x11\xe0\xa1\xb1\x1a\xe1"
 
 
-def _parse(data: bytes, where: str, path) -> etree._Element:
+def _parse(data: bytes, where: str, path: str | os.PathLike[str]) -> etree._Element:
     try:
         return etree.fromstring(data, _PARSER)
     except etree.XMLSyntaxError as exc:
@@ -135,17 +143,24 @@ class Package:
                 raise ExcelError(f"{self.path}: damaged workbook, the part {name} cannot be read ({exc})") from exc
         return self._parts[name]
 
+    def required(self, part: str) -> bytes:
+        """The bytes of a part the package must have (:func:`open_package` checked it is there)."""
+        data = self.read(part)
+        if data is None:
+            raise ExcelError(f"{self.path}: damaged workbook, the part {part} is missing")
+        return data
+
     def relationships(self, part: str) -> list[etree._Element]:
         data = self.read(rels_part(part))
         return [] if data is None else list(_parse(data, rels_part(part), self.path).iter(_P + "Relationship"))
 
 
-def _refuse(path, why: str) -> WorkbookContentError:
+def _refuse(path: str | os.PathLike[str], why: str) -> WorkbookContentError:
     return WorkbookContentError(f"{path}: --in-place refused, {why}; the file is unchanged. Write the results to "
                                 "a new workbook with -o OUTPUT.xlsx instead")
 
 
-def open_package(path) -> Package:
+def open_package(path: str | os.PathLike[str]) -> Package:
     """The workbook at ``path`` as a package that :func:`write_results_in_place` can edit, or a refusal.
 
     :class:`ExcelError` for a file that is not a workbook (or is damaged),
@@ -177,14 +192,15 @@ def open_package(path) -> Package:
         raise _refuse(path, "the workbook is saved as Strict Open XML, which bearingheat does not edit (save it "
                             "in Excel as 'Excel Workbook (*.xlsx)')")
     package.workbook = _resolve("", office[0].get("Target", ""))
-    if package.read(package.workbook) is None:
+    workbook_data = package.read(package.workbook)
+    if workbook_data is None:
         raise ExcelError(f"{path}: not a readable Excel workbook (its workbook part {package.workbook} is missing)")
     if any(n.startswith("_xmlsignatures/") for n in lowered):
         raise _refuse(path, "the workbook is digitally signed and any change would break its signature")
     if any(n.startswith(posixpath.dirname(package.workbook).lower() + "/revisions/") for n in lowered):
         raise _refuse(path, "the workbook is a shared workbook with a change history (xl/revisions), which an edit "
                             "outside Excel would not be part of")
-    root = _parse(package.read(package.workbook), package.workbook, path)
+    root = _parse(workbook_data, package.workbook, path)
     if root.tag != _M + "workbook":
         raise _refuse(path, f"its workbook part is not SpreadsheetML Transitional ({etree.QName(root).namespace})")
     sharing = root.find(_M + "fileSharing")
@@ -221,7 +237,7 @@ class _Workbook:
     def __init__(self, package: Package):
         self.package = package
         self.part = package.workbook
-        self.root = _parse(package.read(self.part), self.part, package.path)
+        self.root = _parse(package.required(self.part), self.part, package.path)
         self.rels_name = rels_part(self.part)
         rels_data = package.read(self.rels_name)
         if rels_data is None:
@@ -238,9 +254,13 @@ class _Workbook:
                        for s in sheets.iter(_M + "sheet")]
         self.changed = self.rels_changed = False
 
-    def child(self, name: str, create: bool = False) -> etree._Element | None:
+    def child(self, name: str) -> etree._Element | None:
+        return self.root.find(_M + name)
+
+    def ensure_child(self, name: str) -> etree._Element:
+        """The child ``name`` of <workbook>, added at its place in CT_Workbook's order when absent."""
         found = self.root.find(_M + name)
-        if found is not None or not create:
+        if found is not None:
             return found
         element = etree.Element(_M + name)
         later = _WORKBOOK_ORDER[_WORKBOOK_ORDER.index(name) + 1:]
@@ -263,7 +283,7 @@ class _Workbook:
                   companions: dict[str, str] | None = None) -> None:
         """Write the marks of pair ``k`` (results sheet, input sheet, companion sheets by role); drop the marks
         of pairs in ``stale``."""
-        names = self.child("definedNames", create=True)
+        names = self.ensure_child("definedNames")
         wanted = {f"{RESULTS_MARK}{k}": mark_value(results), f"{INPUT_MARK}{k}": mark_value(source)}
         wanted.update({f"{COMPANION_MARKS[role]}{k}": mark_value(sheet) for role, sheet in (companions or {}).items()})
         drop = {f"{m}{j}".lower() for j in stale for m in (RESULTS_MARK, INPUT_MARK)}
@@ -288,7 +308,7 @@ class _Workbook:
     def print_titles(self, sheet: _Sheet, value: str) -> None:
         """Give ``sheet`` print titles (``_xlnm.Print_Titles``) unless it has some."""
         index = str(self.sheets.index(sheet))
-        names = self.child("definedNames", create=True)
+        names = self.ensure_child("definedNames")
         for element in names.iter(_M + "definedName"):
             if element.get("name", "").lower() == "_xlnm.print_titles" and element.get("localSheetId") == index:
                 return
@@ -297,7 +317,7 @@ class _Workbook:
         self.changed = True
 
     def full_calc_on_load(self) -> None:
-        calc = self.child("calcPr", create=True)
+        calc = self.ensure_child("calcPr")
         if calc.get("fullCalcOnLoad") not in ("1", "true"):
             calc.set("fullCalcOnLoad", "1")
             self.changed = True
@@ -339,8 +359,8 @@ class _Workbook:
 
 class _ContentTypes:
     def __init__(self, package: Package):
-        self.name = package.find("[Content_Types].xml")
-        self.root = _parse(package.read(self.name), self.name, package.path)
+        self.name = package.find("[Content_Types].xml") or "[Content_Types].xml"
+        self.root = _parse(package.required(self.name), self.name, package.path)
         self.changed = False
 
     def override(self, part: str, content_type: str) -> None:
@@ -357,7 +377,7 @@ class _ContentTypes:
                 self.changed = True
 
 
-def _new_sheet_part(package: Package, workbook_part: str, reserved=()) -> str:
+def _new_sheet_part(package: Package, workbook_part: str, reserved: Collection[str] = ()) -> str:
     folder = posixpath.join(posixpath.dirname(workbook_part), "worksheets")
     taken = {n.lower() for n in package.names()} | {n.lower() for n in reserved}
     k = 1
@@ -404,13 +424,15 @@ def _kept_setup(package: Package, sheet: _Sheet, input_sheet: str) -> dict[str, 
     return kept
 
 
-def _drop_from_calc_chain(data: bytes, sheet_id: int, where: str, path) -> bytes | None:
+def _drop_from_calc_chain(data: bytes, sheet_id: int, where: str, path: str | os.PathLike[str]) -> bytes | None:
     """The calc chain without the cells of sheet ``sheet_id`` (None: nothing is left; ``data``: nothing changed)."""
     root = _parse(data, where, path)
     cells = [c for c in root if isinstance(c.tag, str) and etree.QName(c).localname == "c"]
-    effective, current = [], None
+    effective: list[int | None] = []
+    current = None
     for cell in cells:
-        current = int(cell.get("i")) if cell.get("i") is not None else current
+        index = cell.get("i")
+        current = int(index) if index is not None else current
         effective.append(current)
     if sheet_id not in effective:
         return data
@@ -436,7 +458,9 @@ def _drop_sheet_from_chain(package: Package, workbook: _Workbook, types: _Conten
         return
     new = _drop_from_calc_chain(data, sheet.sheet_id, chain[1], package.path)
     if new is None:
-        removed.add(package.find(chain[1]))
+        member = package.find(chain[1])
+        if member is not None:
+            removed.add(member)
         changes.pop(chain[1], None)
         workbook.remove_relationship(chain[0])
         types.remove(chain[1])
@@ -444,9 +468,27 @@ def _drop_sheet_from_chain(package: Package, workbook: _Workbook, types: _Conten
         changes[chain[1]] = new
 
 
-def write_results_in_place(package: Package, input_sheet: str, table, *, lock: WorkbookLock,
-                           units: dict[str, str] | None = None, formulas=None, progress=None, placeholders=(),
-                           rules=(), print_setup=None, companions=(), hidden_columns=()) -> InPlaceResult:
+class Companion(Protocol):
+    """A companion sheet of the results sheet (:class:`bearingheat.io.excel.sheets.CellsSheet`, ``TableSheet``)."""
+
+    role: str
+    base: str
+    hidden: bool
+
+    def render(self, styles: StyleSheet) -> bytes: ...
+
+
+#: (column, row position) -> formula of the results sheet
+CellFormulas = dict[tuple[str, int], str]
+
+
+def write_results_in_place(package: Package, input_sheet: str, table: pd.DataFrame, *, lock: WorkbookLock,
+                           units: dict[str, str] | None = None,
+                           formulas: CellFormulas | Callable[[dict[str, str]], CellFormulas] | None = None,
+                           progress: Progress | None = None, placeholders: Collection[str] = (),
+                           rules: Sequence[ConditionalRule] = (), print_setup: PrintSetup | None = None,
+                           companions: Sequence[Companion] = (), hidden_columns: Sequence[str] = ()
+                           ) -> InPlaceResult:
     """Write ``table`` as the results sheet of ``input_sheet`` into the workbook of ``package``.
 
     The results sheet that bearingheat marked for ``input_sheet`` is replaced
@@ -559,8 +601,9 @@ def _zip_info(info: zipfile.ZipInfo, compress_type: int | None = None) -> zipfil
 
 def _write(package: Package, changes: dict[str, bytes], removed: set[str], lock: WorkbookLock) -> list[str]:
     """Write the edited package over the workbook (atomically, after the lock's last check); the parts written."""
-    existing = {package.find(part): data for part, data in changes.items() if package.find(part) is not None}
-    new = {part: data for part, data in changes.items() if package.find(part) is None}
+    members = {part: package.find(part) for part in changes}
+    existing = {member: changes[part] for part, member in members.items() if member is not None}
+    new = {part: changes[part] for part, member in members.items() if member is None}
     names = package.names()
     sheets = [i for i, n in enumerate(names) if re.search(r"worksheets/[^/]+\.xml$", n)]
     insert_after = sheets[-1] if sheets else len(names) - 1

@@ -21,22 +21,30 @@ Formula cells are read as the values a spreadsheet program saved for them
 """
 from __future__ import annotations
 
+import os
 import re
 import warnings
 import zipfile
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import pandas as pd
 from openpyxl import load_workbook
 from openpyxl.utils import column_index_from_string, get_column_letter
 from openpyxl.utils.exceptions import InvalidFileException
+from openpyxl.workbook import Workbook
+from openpyxl.worksheet.worksheet import Worksheet
 
 from bearingheat.calc.contract import input_units, parse_header
 from bearingheat.errors import ExcelError, InputError, UnitError
 from bearingheat.io.excel.ownership import read_marks
 from bearingheat.units import parse_unit, quantity
+
+if TYPE_CHECKING:
+    from bearingheat.io.console import Progress
 
 __all__ = [
     "SheetInfo",
@@ -58,6 +66,9 @@ RESULTS_SHEET = "Results"
 HEADER_SEARCH_ROWS = 20
 EXCEL_SUFFIXES = (".xlsx", ".xlsm")
 _TEXT_UNITS = ("", "-")
+
+#: (row, column) of a cell covered by a merge -> (the merge's value, its first row, its first column)
+MergedCells = dict[tuple[int, int], tuple[object, int, int]]
 
 
 @dataclass
@@ -102,15 +113,15 @@ class SheetInfo:
         return unit if unit is not None else self.units.get(header)
 
 
-def _text(value) -> str:
+def _text(value: object) -> str:
     return "" if value is None else str(value).strip()
 
 
-def _is_number(value) -> bool:
+def _is_number(value: object) -> bool:
     return isinstance(value, (int, float)) and not isinstance(value, bool)
 
 
-def _as_text_value(value):
+def _as_text_value(value: object) -> object:
     """A text-column cell as the user sees it: 6208 typed as a number is the designation '6208'."""
     if _is_number(value):
         if isinstance(value, float) and value.is_integer():
@@ -121,7 +132,8 @@ def _as_text_value(value):
     return value
 
 
-def open_workbook(path: Path, *, keep_vba: bool = False, read_only: bool = False, data_only: bool = False):
+def open_workbook(path: str | os.PathLike[str], *, keep_vba: bool = False, read_only: bool = False,
+                  data_only: bool = False) -> Workbook:
     """The workbook at ``path`` (external links kept); :class:`ExcelError` when it is not a readable workbook.
 
     The warnings openpyxl gives while loading (they name what it will drop)
@@ -142,9 +154,9 @@ def _known_names() -> set[str]:
     return set(input_units())
 
 
-def _merged_header_values(ws, header_search: int) -> dict[tuple[int, int], object]:
+def _merged_header_values(ws: Worksheet, header_search: int) -> MergedCells:
     """Cells covered by a vertical merge near the top of the sheet -> the merge's value."""
-    covered: dict[tuple[int, int], object] = {}
+    covered: MergedCells = {}
     for merged in ws.merged_cells.ranges:
         if merged.min_row > header_search + 1:
             continue
@@ -155,7 +167,7 @@ def _merged_header_values(ws, header_search: int) -> dict[tuple[int, int], objec
     return covered
 
 
-def _header_texts(ws, row: int, max_col: int, merged) -> list[str]:
+def _header_texts(ws: Worksheet, row: int, max_col: int, merged: MergedCells) -> list[str]:
     texts = []
     for col in range(1, max_col + 1):
         value = ws.cell(row, col).value
@@ -167,7 +179,7 @@ def _header_texts(ws, row: int, max_col: int, merged) -> list[str]:
     return texts
 
 
-def _find_header_row(ws, max_col: int, merged) -> int:
+def _find_header_row(ws: Worksheet, max_col: int, merged: MergedCells) -> int:
     known = _known_names()
     best_row, best_count = 0, 0
     for row in range(1, min(ws.max_row, HEADER_SEARCH_ROWS) + 1):
@@ -189,7 +201,7 @@ def _find_header_row(ws, max_col: int, merged) -> int:
     return best_row
 
 
-def _looks_like_units_row(values: list, names: list[str | None]) -> bool:
+def _looks_like_units_row(values: list[object], names: list[str | None]) -> bool:
     """The row under the header holds units when its dimensional columns hold unit texts and no numbers."""
     known = input_units()
     saw_unit = False
@@ -214,7 +226,7 @@ def _looks_like_units_row(values: list, names: list[str | None]) -> bool:
     return saw_unit
 
 
-def _choose_sheet(workbook, sheet: str | None, path: Path) -> str:
+def _choose_sheet(workbook: Workbook, sheet: str | None, path: Path) -> str:
     names = workbook.sheetnames
     if sheet is not None:
         if sheet not in names:
@@ -239,7 +251,8 @@ def _choose_sheet(workbook, sheet: str | None, path: Path) -> str:
                      "name the sheet with --sheet")
 
 
-def read_supports(path, sheet: str | None = None, *, progress=None) -> tuple[pd.DataFrame, SheetInfo]:
+def read_supports(path: str | os.PathLike[str], sheet: str | None = None, *,
+                  progress: Progress | None = None) -> tuple[pd.DataFrame, SheetInfo]:
     """Supports of one sheet: a DataFrame (one row per non-empty sheet row) and its :class:`SheetInfo`.
 
     ``sheet`` defaults to 'Supports', else the first visible sheet with a
@@ -257,7 +270,8 @@ def read_supports(path, sheet: str | None = None, *, progress=None) -> tuple[pd.
     return read_sheet(workbook, path, sheet, progress=progress)
 
 
-def read_sheet(workbook, path: Path, sheet: str | None, *, progress=None) -> tuple[pd.DataFrame, SheetInfo]:
+def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
+               progress: Progress | None = None) -> tuple[pd.DataFrame, SheetInfo]:
     """:func:`read_supports` on a workbook already open (``progress``: an object with start, update, finish)."""
     name = _choose_sheet(workbook, sheet, path)
     ws = workbook[name]
@@ -286,7 +300,7 @@ def read_sheet(workbook, path: Path, sheet: str | None, *, progress=None) -> tup
     units: dict[str, str] = {}
     units_row = None
     candidate = header_row + 1
-    raw_units = []
+    raw_units: list[object] = []
     for col, _ in columns:
         if (candidate, col) in merged and merged[(candidate, col)][1] <= header_row:
             raw_units.append(None)
@@ -349,12 +363,12 @@ def read_sheet(workbook, path: Path, sheet: str | None, *, progress=None) -> tup
                 uncached.append((position_of_row[row], header, formula))
 
     known = input_units()
-    frame_columns = {}
+    frame_columns: dict[str, pd.Series] = {}
     for (col, header), contract, values in zip(columns, names, data):
         if contract is not None and known[contract] in _TEXT_UNITS:
-            texts = [_as_text_value(v) for v in values]
-            every = bool(texts) and all(isinstance(t, str) for t in texts)
-            frame_columns[header] = pd.Series(texts) if every else pd.Series(texts, dtype=object)
+            text_values = [_as_text_value(v) for v in values]
+            every = bool(text_values) and all(isinstance(t, str) for t in text_values)
+            frame_columns[header] = pd.Series(text_values) if every else pd.Series(text_values, dtype=object)
         else:
             frame_columns[header] = _numeric_if_possible(values)
     table = pd.DataFrame(frame_columns, index=pd.RangeIndex(len(rows)))
@@ -364,26 +378,26 @@ def read_sheet(workbook, path: Path, sheet: str | None, *, progress=None) -> tup
     return table, info
 
 
-def stored_cells(ws) -> dict:
+def stored_cells(ws: Worksheet) -> dict[tuple[int, int], Any]:
     """The cells a worksheet holds, {(row, column): cell}: openpyxl keeps them sparse, so this costs nothing
     for a stray cell far down (the row 1 048 576 of a mistyped Ctrl+Down)."""
     return ws._cells
 
 
-def _used_columns(ws, rows: int) -> int:
+def _used_columns(ws: Worksheet, rows: int) -> int:
     """The last column with a value in the first ``rows`` rows (at least 1)."""
     return max([col for (row, col), cell in stored_cells(ws).items() if row <= rows and cell.value is not None]
                + [1])
 
 
-def _used_rows(ws, columns: dict[int, int], first: int) -> dict[int, list]:
+def _used_rows(ws: Worksheet, columns: dict[int, int], first: int) -> dict[int, list[tuple[int, Any]]]:
     """{row: [(position of the column, cell), ...]} of the rows from ``first`` on with a value in ``columns``
     ({column index: position}), in row order.
 
     Only the used range of the contract's columns is read: a stray value far
     down (row 1 048 576) costs one row, not a million.
     """
-    rows: dict[int, list] = {}
+    rows: dict[int, list[tuple[int, Any]]] = {}
     for (row, col), cell in stored_cells(ws).items():
         if row >= first and col in columns and cell.value is not None:
             rows.setdefault(row, []).append((columns[col], cell))
@@ -406,7 +420,8 @@ def contract_name(header: str) -> str | None:
     return name if name in _known_names() else None
 
 
-def _check_units(sheet: str, header_row: int, units_row: int, columns, units: dict[str, str]) -> None:
+def _check_units(sheet: str, header_row: int, units_row: int, columns: Iterable[tuple[int, str]],
+                 units: dict[str, str]) -> None:
     """A unit in the header and a different one in the units row: refuse rather than guess."""
     for col, header in columns:
         if header not in units:
@@ -426,7 +441,7 @@ def _check_units(sheet: str, header_row: int, units_row: int, columns, units: di
                              f"the header {header!r}; keep one of them")
 
 
-def _numeric_if_possible(values: list) -> pd.Series:
+def _numeric_if_possible(values: list[Any]) -> pd.Series:
     present = [v for v in values if v is not None]
     if present and all(_is_number(v) for v in present):
         if len(present) == len(values) and all(isinstance(v, int) for v in present):
@@ -437,7 +452,8 @@ def _numeric_if_possible(values: list) -> pd.Series:
     return pd.Series(values, dtype=object)
 
 
-def _cached_values(path: Path, sheet: str, cells: dict[tuple[str, int], str], letters: dict[str, str]) -> dict:
+def _cached_values(path: Path, sheet: str, cells: dict[tuple[str, int], str],
+                   letters: dict[str, str]) -> dict[tuple[str, int], Any]:
     """The values a spreadsheet program saved for formula cells (None where it saved none)."""
     workbook = open_workbook(path, read_only=True, data_only=True)
     try:
@@ -446,7 +462,7 @@ def _cached_values(path: Path, sheet: str, cells: dict[tuple[str, int], str], le
             wanted.setdefault(row, []).append((header, column_index_from_string(letters[header]) - 1))
         first, last = min(wanted), max(wanted)
         width = max(col for entries in wanted.values() for _, col in entries) + 1
-        out = {}
+        out: dict[tuple[str, int], Any] = {}
         rows = workbook[sheet].iter_rows(min_row=first, max_row=last, max_col=width, values_only=True)
         for row, values in enumerate(rows, start=first):
             for header, col in wanted.get(row, ()):
@@ -472,5 +488,5 @@ def with_units(table: pd.DataFrame, units: dict[str, str]) -> pd.DataFrame:
     for header, unit in units.items():
         if header not in out.columns or unit in ("-", "1", ""):
             continue
-        out[header] = quantity(out[header].astype(float), parse_unit(unit, name=header))
+        out[header] = quantity(out[header].astype(float), str(parse_unit(unit, name=header)))
     return out

@@ -18,9 +18,11 @@ import datetime as _dt
 import io
 import re
 import sys
+import os
 import zipfile
 from collections.abc import Sequence
 from pathlib import Path
+from typing import Any
 
 import pandas as pd
 from openpyxl import Workbook
@@ -28,6 +30,7 @@ from openpyxl.comments import Comment
 from openpyxl.styles import Alignment, Font
 from openpyxl.utils import get_column_letter
 from openpyxl.worksheet.datavalidation import DataValidation
+from openpyxl.worksheet.worksheet import Worksheet
 
 from bearingheat.calc import contract
 from bearingheat.calc.contract import parse_header
@@ -42,7 +45,7 @@ __all__ = ["TEMPLATE_COLUMNS", "LISTS", "PLACEHOLDER", "is_placeholder", "build_
 
 #: (name, unit, required, width, what a designer types) in sheet order, from the column contract; Fr in column F
 TEMPLATE_COLUMNS = [(c.name, c.template[0], c.required, c.template[1], c.meaning)
-                    for c in contract.template_columns()]
+                    for c in contract.template_columns() if c.template is not None]
 #: titles of the lists on the hidden Lists sheet where they differ from the column's name
 _LIST_TITLES = {"type": "bearing type", "n_per_method": "n_per method"}
 #: the drop-down lists: (contract column, title on the hidden Lists sheet, values), in the Lists sheet's column
@@ -119,7 +122,7 @@ _AFTER_COLUMNS = [
 ]
 
 
-def _lists_sheet(workbook) -> None:
+def _lists_sheet(workbook: Workbook) -> None:
     ws = workbook.create_sheet("Lists")
     for col, (_name, title, values) in enumerate(LISTS, start=1):
         ws.cell(1, col, title)
@@ -128,7 +131,7 @@ def _lists_sheet(workbook) -> None:
     ws.sheet_state = "hidden"
 
 
-def _list_validation(letter: str, source: str, what: str, choices, name: str):
+def _list_validation(letter: str, source: str, what: str, choices: Sequence[str], name: str) -> DataValidation:
     if name in _OPEN_LISTS:  # a warning the designer may pass: calc reads designations with suffixes too
         dv = DataValidation(type="list", formula1=source, allow_blank=True, showErrorMessage=True,
                             errorStyle="warning", showInputMessage=True, errorTitle=f"Not in the {what} list",
@@ -146,7 +149,7 @@ def _list_validation(letter: str, source: str, what: str, choices, name: str):
     return dv
 
 
-def _supports_sheet(workbook, rows: list[dict], units: dict[str, str] | None = None,
+def _supports_sheet(workbook: Workbook, rows: list[dict[str, Any]], units: dict[str, str] | None = None,
                     extra: Sequence[tuple[str, str]] = ()) -> None:
     ws = workbook.active
     ws.title = "Supports"
@@ -181,7 +184,7 @@ def _supports_sheet(workbook, rows: list[dict], units: dict[str, str] | None = N
     ws.sheet_properties.tabColor = "FFD966"
 
 
-def _results_sheet(workbook) -> None:
+def _results_sheet(workbook: Workbook) -> None:
     ws = workbook.create_sheet("Results")
     headers = [("row", "-"), ("id", "-"), ("designation", "-")]
     headers += [(name, unit) for name, unit in RESULT_UNITS.items()]
@@ -199,7 +202,7 @@ def _results_sheet(workbook) -> None:
     ws.sheet_properties.tabColor = "44546A"
 
 
-def is_placeholder(ws) -> bool:
+def is_placeholder(ws: Worksheet) -> bool:
     """True for the template's empty results sheet: headers and units, and only the placeholder text under them
     (nothing of the designer's, so calc may fill it although it carries no bearingheat mark)."""
     cells = stored_cells(ws)
@@ -214,7 +217,7 @@ def is_placeholder(ws) -> bool:
     return all(row <= 2 or (row, col) == (3, 1) for (row, col), cell in cells.items() if cell.value is not None)
 
 
-def _instructions_sheet(workbook) -> None:
+def _instructions_sheet(workbook: Workbook) -> None:
     ws = workbook.create_sheet("Instructions")
     ws.column_dimensions["A"].width = 16
     ws.column_dimensions["B"].width = 10
@@ -222,7 +225,7 @@ def _instructions_sheet(workbook) -> None:
     ws.column_dimensions["D"].width = 100
     row = 1
 
-    def put(text, kind):
+    def put(text: str, kind: str) -> None:
         nonlocal row
         cell = ws.cell(row, 1, text)
         if kind == "title":
@@ -252,7 +255,7 @@ def _instructions_sheet(workbook) -> None:
     ws.sheet_properties.tabColor = "A9D08E"
 
 
-def _finish(workbook) -> None:
+def _finish(workbook: Workbook) -> None:
     workbook.properties.creator = "bearingheat"
     workbook.properties.lastModifiedBy = "bearingheat"
     workbook.properties.created = _FIXED_DATE
@@ -260,7 +263,7 @@ def _finish(workbook) -> None:
     workbook.active = 0
 
 
-def build_template():
+def build_template() -> Workbook:
     """The empty template: Supports (two example rows), Results, Instructions, hidden Lists."""
     workbook = Workbook()
     st.register_styles(workbook)
@@ -272,10 +275,12 @@ def build_template():
     return workbook
 
 
-def build_example(csv_path):
+def build_example(csv_path: str | os.PathLike[str]) -> Workbook:
     """The template filled with the supports of a calc CSV (``name [unit]`` headers; units go to row 2)."""
     table = pd.read_csv(csv_path, skipinitialspace=True)
-    units, rows, extra = {}, [{} for _ in range(len(table))], []
+    units: dict[str, str] = {}
+    rows: list[dict[str, Any]] = [{} for _ in range(len(table))]
+    extra: list[tuple[str, str]] = []
     template_names = {c[0] for c in TEMPLATE_COLUMNS}
     for header in table.columns:
         name, unit = parse_header(header)
@@ -297,7 +302,7 @@ def build_example(csv_path):
     return workbook
 
 
-def save_deterministic(workbook, path) -> Path:
+def save_deterministic(workbook: Workbook, path: str | os.PathLike[str]) -> Path:
     """Save with fixed zip timestamps so the same workbook gives the same bytes."""
     path = Path(path)
     buffer = io.BytesIO()
@@ -317,7 +322,8 @@ def save_deterministic(workbook, path) -> Path:
     return path
 
 
-def regenerate(folder, example_csv="examples/gearbox_shaft.csv") -> list[Path]:
+def regenerate(folder: str | os.PathLike[str],
+               example_csv: str | os.PathLike[str] = "examples/gearbox_shaft.csv") -> list[Path]:
     """Write template.xlsx and gearbox_shaft_example.xlsx into ``folder``."""
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)

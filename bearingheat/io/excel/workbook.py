@@ -18,12 +18,15 @@ that row (``Supports!F7: 'abc' is not a number for Fr [kN]``).
 from __future__ import annotations
 
 import contextlib
+import os
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 import pandas as pd
+from openpyxl.workbook import Workbook
 from openpyxl.workbook.defined_name import DefinedName
 
 from bearingheat.calc.contract import columns
@@ -40,8 +43,13 @@ from bearingheat.io.excel.safety import unsupported_content
 from bearingheat.io.excel.template import is_placeholder
 from bearingheat.io.excel.sheets import results_sheets
 from bearingheat.io.excel.writer import atomic_save, fill_sheet, install_sheet
-from bearingheat.io.files import safe_output, workbook_lock
+from bearingheat.io.files import WorkbookLock, safe_output, workbook_lock
 from bearingheat.io.tables import write_csv
+
+if TYPE_CHECKING:
+    from bearingheat.analysis.diagnose import FittedEffect
+    from bearingheat.catalogue.f2chart import F2Chart
+    from bearingheat.io.console import Progress
 
 __all__ = ["calc_workbook", "WorkbookRun"]
 
@@ -58,7 +66,7 @@ def _mark_uncached(result: pd.DataFrame, info: SheetInfo) -> None:
         text = (f"{where}: formula {formula} has no saved value (the file was never opened and saved in a "
                 "spreadsheet program); open it in Excel or LibreOffice, save it, and run again")
         row = result.index[position]
-        current = result.at[row, "message"]
+        current = str(result.at[row, "message"] or "")
         result.at[row, "message"] = f"{text}; {current}" if current else text
         result.at[row, "status"] = "error"
         result.loc[row, numeric] = np.nan
@@ -115,7 +123,7 @@ class WorkbookRun:
     duty: pd.DataFrame | None = None
 
 
-def _mark_results_sheet(workbook, input_sheet: str, placeholders: list[str], roles: dict[str, str]
+def _mark_results_sheet(workbook: Workbook, input_sheet: str, placeholders: list[str], roles: dict[str, str]
                         ) -> tuple[str, str | None, dict[str, str]]:
     """(results sheet name, note, companion sheets by role) for an openpyxl workbook (the -o copy), with their
     ownership marks set; ``roles`` maps the companions' roles to the names they take when new."""
@@ -142,10 +150,11 @@ def _mark_results_sheet(workbook, input_sheet: str, placeholders: list[str], rol
     return name, note, companions
 
 
-def calc_workbook(path, output=None, *, sheet: str | None = None, in_place: bool = False, formulas: bool = False,
-                  model: str = DEFAULT_MODEL, n_per_method: str = DEFAULT_SPEED_FACTOR_METHOD, f2_chart=None,
-                  effects=None, keep_vba: bool = True,
-                  progress=None, viscosity_at: str = DEFAULT_VISCOSITY_AT) -> WorkbookRun:
+def calc_workbook(path: str | os.PathLike[str], output: str | os.PathLike[str] | None = None, *,
+                  sheet: str | None = None, in_place: bool = False, formulas: bool = False,
+                  model: str = DEFAULT_MODEL, n_per_method: str = DEFAULT_SPEED_FACTOR_METHOD,
+                  f2_chart: F2Chart | str | None = None, effects: FittedEffect | None = None, keep_vba: bool = True,
+                  progress: Progress | None = None, viscosity_at: str = DEFAULT_VISCOSITY_AT) -> WorkbookRun:
     """Run calc on a sheet of supports and write a results sheet.
 
     ``output`` (a new .xlsx/.xlsm) gets a copy of the workbook plus the
@@ -168,7 +177,7 @@ def calc_workbook(path, output=None, *, sheet: str | None = None, in_place: bool
     target = Path(output) if output is not None else (source if in_place else None)
     if in_place and output is not None:
         raise ExcelError("give either --in-place or -o OUTPUT, not both")
-    if output is not None and target.resolve() == source.resolve():
+    if output is not None and target is not None and target.resolve() == source.resolve():
         raise ExcelError(f"-o {output} is the input workbook; use --in-place to write into it")
     if formulas and target is None:
         raise ExcelError("--formulas writes a workbook: give -o OUTPUT.xlsx or --in-place")
@@ -176,32 +185,34 @@ def calc_workbook(path, output=None, *, sheet: str | None = None, in_place: bool
         raise ExcelError("--formulas cannot express the fitted effect of --effects; use one of them")
     if target is not None and target.suffix.lower() not in EXCEL_SUFFIXES + (".csv",):
         raise ExcelError(f"{target}: write the results to .xlsx, .xlsm or .csv")
-    if formulas and target.suffix.lower() == ".csv":
+    if formulas and target is not None and target.suffix.lower() == ".csv":
         raise ExcelError("--formulas needs an Excel output (.xlsx), not a CSV")
     if target is not None and target.suffix.lower() == ".xlsm" and source.suffix.lower() != ".xlsm":
         raise ExcelError(f"{target}: only a .xlsm input can be written as .xlsm")
     with contextlib.ExitStack() as stack:
-        lock = package = None
+        edit = None
         if in_place:
             safe_output(source, force=True)  # a read-only workbook, or one with other hard links, is refused
             lock = stack.enter_context(workbook_lock(source))
             package = open_package(source)
+            edit = package, lock
             if not keep_vba and package.find("xl/vbaProject.bin") is not None:
                 raise WorkbookContentError(
                     f"{source}: --in-place keeps every part of the workbook, its VBA macros too; keep_vba=False "
                     "would drop them; the file is unchanged. Write the results to a new workbook with "
                     "-o OUTPUT.xlsx instead")
-        return _run(source, target, package, lock, sheet=sheet, formulas=formulas, model=model,
+        return _run(source, target, edit, sheet=sheet, formulas=formulas, model=model,
                     n_per_method=n_per_method, f2_chart=f2_chart, effects=effects, keep_vba=keep_vba,
                     progress=progress, viscosity_at=viscosity_at)
 
 
-def _run(source: Path, target: Path | None, package: Package | None, lock, *, sheet, formulas, model, n_per_method,
-         f2_chart, effects, keep_vba, progress, viscosity_at=DEFAULT_VISCOSITY_AT) -> WorkbookRun:
-    """Read, calc and write (the checks of :func:`calc_workbook` done; ``package`` and ``lock`` for in-place)."""
-    in_place = package is not None
+def _run(source: Path, target: Path | None, edit: tuple[Package, WorkbookLock] | None, *, sheet: str | None,
+         formulas: bool, model: str, n_per_method: str, f2_chart: F2Chart | str | None, effects: FittedEffect | None,
+         keep_vba: bool, progress: Progress | None, viscosity_at: str = DEFAULT_VISCOSITY_AT) -> WorkbookRun:
+    """Read, calc and write (the checks of :func:`calc_workbook` done; ``edit``: the package and its lock, for
+    in-place)."""
     writes_workbook = target is not None and target.suffix.lower() in EXCEL_SUFFIXES
-    vba = keep_vba and writes_workbook and not in_place and target.suffix.lower() == ".xlsm"
+    vba = keep_vba and edit is None and target is not None and target.suffix.lower() == ".xlsm"
     workbook = open_workbook(source, keep_vba=vba)
     table, info = read_sheet(workbook, source, sheet, progress=progress)
     if not len(table):
@@ -221,10 +232,11 @@ def _run(source: Path, target: Path | None, package: Package | None, lock, *, sh
     results_sheet = None
     if target is not None and target.suffix.lower() == ".csv":
         write_csv(result, target)
-    elif writes_workbook:
+    elif target is not None and writes_workbook:
         sheets = results_sheets(source, workbook, table, info, result, formulas=formulas, model=model, duty=duty)
         placeholders = [ws.title for ws in workbook.worksheets if is_placeholder(ws)]
-        if in_place:
+        if edit is not None:
+            package, lock = edit
             done = write_results_in_place(package, info.sheet, sheets.table, lock=lock, units={"row": "-"},
                                           formulas=sheets.formulas, progress=progress, placeholders=placeholders,
                                           rules=sheets.rules, print_setup=sheets.print_setup,

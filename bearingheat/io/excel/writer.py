@@ -14,10 +14,13 @@ headers (:func:`split_header`); cells take the named styles of
 from __future__ import annotations
 
 import math
+import os
+from collections.abc import Iterable, Sequence
 from collections.abc import Set as AbstractSet
 from copy import copy
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import pandas as pd
@@ -25,16 +28,21 @@ from openpyxl import Workbook
 from openpyxl.cell.cell import Cell
 from openpyxl.formatting.rule import FormulaRule
 from openpyxl.utils import get_column_letter
+from openpyxl.worksheet.worksheet import Worksheet
 
 from bearingheat.calc.contract import input_units, parse_header
 from bearingheat.errors import ExcelError, InputError
 from bearingheat.io.excel import style as st
+from bearingheat.io.excel.freshness import ConditionalRule
 from bearingheat.io.excel.reader import (DEFAULT_SHEET, EXCEL_SUFFIXES, RESULTS_SHEET, SheetInfo, contract_name,
                                          open_workbook)
 from bearingheat.io.excel.printing import PrintSetup
 from bearingheat.io.excel.style import number_format
 from bearingheat.io.excel.safety import refuse_lossy_rewrite
 from bearingheat.io.files import atomic_write
+
+if TYPE_CHECKING:
+    from bearingheat.io.console import Progress
 
 __all__ = [
     "write_results",
@@ -72,13 +80,13 @@ _MESSAGE_LINE = 66
 LINE_HEIGHT = 15.0
 
 
-def message_heights(messages) -> dict[int, float]:
+def message_heights(messages: Iterable[object]) -> dict[int, float]:
     """Row position -> height [pt] of the rows whose message takes more than one line of the message column.
 
     >>> message_heights(["", "short", "x" * 140])
     {2: 45.0}
     """
-    out = {}
+    out: dict[int, float] = {}
     for position, text in enumerate(messages):
         lines = math.ceil(len(text) / _MESSAGE_LINE) if isinstance(text, str) else 1
         if lines > 1:
@@ -86,7 +94,7 @@ def message_heights(messages) -> dict[int, float]:
     return out
 
 
-def _cell_value(value):
+def _cell_value(value: object) -> object:
     if value is None:
         return None
     if isinstance(value, (float, np.floating)):
@@ -122,7 +130,13 @@ class SheetLayout:
 def sheet_layout(table: pd.DataFrame, units: dict[str, str] | None = None,
                  input_columns: AbstractSet[str] = frozenset()) -> SheetLayout:
     """The header row, units row, cell style and width of every column of ``table`` (values as objects)."""
-    headers, unit_row, styles, magnitudes, widths, inputs, formats = [], [], [], [], [], [], []
+    headers: list[str] = []
+    unit_row: list[str] = []
+    styles: list[str] = []
+    magnitudes: list[np.ndarray] = []
+    widths: list[float] = []
+    inputs: list[bool] = []
+    formats: list[str | None] = []
     for header in table.columns:
         column = table[header]
         name, unit = split_header(header, column, units)
@@ -143,9 +157,10 @@ def sheet_layout(table: pd.DataFrame, units: dict[str, str] | None = None,
     return SheetLayout(headers, unit_row, styles, magnitudes, widths, inputs, formats, heights)
 
 
-def fill_sheet(ws, table: pd.DataFrame, *, units: dict[str, str] | None = None,
-                input_columns: AbstractSet[str] = frozenset(), formulas: dict[tuple[str, int], str] | None = None,
-                progress=None, rules=(), print_setup=None, hidden_columns=()) -> None:
+def fill_sheet(ws: Worksheet, table: pd.DataFrame, *, units: dict[str, str] | None = None,
+               input_columns: AbstractSet[str] = frozenset(), formulas: dict[tuple[str, int], str] | None = None,
+               progress: Progress | None = None, rules: Sequence[ConditionalRule] = (),
+               print_setup: PrintSetup | None = None, hidden_columns: Sequence[str] = ()) -> None:
     """Header row, units row, one row per table row; named styles; frozen panes and widths.
 
     Text values are written as text, also when they begin with '=' (they
@@ -219,9 +234,9 @@ def fill_sheet(ws, table: pd.DataFrame, *, units: dict[str, str] | None = None,
         print_setup.apply(ws)
 
 
-def _style_arrays(ws, keys) -> dict:
+def _style_arrays(ws: Worksheet, keys: Iterable[tuple[str, str | None]]) -> dict[tuple[str, str | None], Any]:
     """(named style, number format or None) -> the style array of a cell that has it (copied onto many cells)."""
-    arrays = {}
+    arrays: dict[tuple[str, str | None], Any] = {}
     for name, fmt in keys:
         probe = Cell(ws)
         probe.style = name
@@ -231,7 +246,7 @@ def _style_arrays(ws, keys) -> dict:
     return arrays
 
 
-def _unit_text(unit) -> str:
+def _unit_text(unit: object) -> str:
     """A pint unit as typed in a units row: 'kN', 'rpm', 'mm^2/s'."""
     return format(unit, "~C").replace("**", "^")
 
@@ -274,7 +289,7 @@ def result_table(result: pd.DataFrame, table: pd.DataFrame, info: SheetInfo) -> 
     return out
 
 
-def install_sheet(workbook, name: str, after: str | None = None):
+def install_sheet(workbook: Workbook, name: str, after: str | None = None) -> Worksheet:
     """A fresh sheet ``name``: an existing one of that name is replaced at its place."""
     if name in workbook.sheetnames:
         index = workbook.sheetnames.index(name)
@@ -284,7 +299,7 @@ def install_sheet(workbook, name: str, after: str | None = None):
     return workbook.create_sheet(name, index)
 
 
-def atomic_save(workbook, path: Path) -> None:
+def atomic_save(workbook: Workbook, path: Path) -> None:
     """Save to a temporary file in the target's folder, then rename it over the target.
 
     :func:`bearingheat.io.files.atomic_write`: a failure while saving leaves
@@ -294,8 +309,9 @@ def atomic_save(workbook, path: Path) -> None:
     atomic_write(path, lambda temp: workbook.save(temp))
 
 
-def write_results(results: pd.DataFrame, path, *, sheet: str = RESULTS_SHEET, units: dict[str, str] | None = None,
-                  input_columns=(), formulas: dict[tuple[str, int], str] | None = None) -> Path:
+def write_results(results: pd.DataFrame, path: str | os.PathLike[str], *, sheet: str = RESULTS_SHEET,
+                  units: dict[str, str] | None = None, input_columns: Iterable[str] = (),
+                  formulas: dict[tuple[str, int], str] | None = None) -> Path:
     """Write ``results`` as sheet ``sheet`` of the workbook ``path`` (header row, units row, one row each).
 
     A new workbook is created when ``path`` does not exist; in an existing
@@ -324,7 +340,8 @@ def write_results(results: pd.DataFrame, path, *, sheet: str = RESULTS_SHEET, un
     return path
 
 
-def write_results_workbook(result: pd.DataFrame, path, source=None, duty: pd.DataFrame | None = None) -> Path:
+def write_results_workbook(result: pd.DataFrame, path: str | os.PathLike[str],
+                           source: str | os.PathLike[str] | None = None, duty: pd.DataFrame | None = None) -> Path:
     """Results of a CSV calc as a new workbook: one 'Results' sheet, input columns styled as inputs, printed
     with the name of the CSV ``source`` in the page header (:class:`bearingheat.io.excel.printing.PrintSetup`);
     a duty cycle summary (:func:`bearingheat.calc.duty.duty_cycle`) as the sheet 'Duty cycle'.

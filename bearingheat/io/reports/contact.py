@@ -55,4 +55,4 @@ def plot_alpha_vs_axial_load(path: str | Path = DEFAULT_PATH, max_load_N: float 
 
 
 if __name__ == "__main__":  # pragma: no cover
-    print(plot_alpha_vs_axial_load(*sys.argv[1:2]))
+    print(plot_alpha_vs_axial_load(sys.argv[1] if len(sys.argv) > 1 else DEFAULT_PATH))

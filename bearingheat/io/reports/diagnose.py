@@ -10,12 +10,16 @@ regressor of the residual plot), ``report.md`` (:func:`report_markdown`),
 from __future__ import annotations
 
 import json
+import os
+from collections.abc import Iterable
 from functools import partial
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
-from bearingheat.analysis.diagnose import REGRESSOR_UNITS, Diagnosis, format_value, key_regressor, regressors
+from bearingheat.analysis.diagnose import (REGRESSOR_UNITS, CandidateScore, Diagnosis, format_value, key_regressor,
+                                           regressors)
 from bearingheat.io.files import write_outputs as write_files
 from bearingheat.io.reports import matplotlib_figure
 
@@ -31,6 +35,12 @@ def _plot_rows(n: int) -> np.ndarray:
     return np.sort(np.random.default_rng(0).choice(n, _PLOT_POINTS, replace=False))
 
 
+def _predicted(score: CandidateScore) -> np.ndarray:
+    """The torque a candidate predicts (the catalogue model and the chosen effect always apply)."""
+    assert score.predicted is not None, f"candidate {score.name!r} does not apply to the data"
+    return score.predicted
+
+
 def plot_residuals(diagnosis: Diagnosis, path: Path) -> str:
     """Relative residual against the key regressor, before and after; returns the regressor's name."""
     Figure = matplotlib_figure()
@@ -39,8 +49,8 @@ def plot_residuals(diagnosis: Diagnosis, path: Path) -> str:
     key = key_regressor(diagnosis)
     x = regressors(data)[key]
     rows = _plot_rows(len(data))
-    before = (data.M - diagnosis.scores["none"].predicted) / data.M * 100.0
-    after = (data.M - diagnosis.chosen.predicted) / data.M * 100.0
+    before = (data.M - _predicted(diagnosis.scores["none"])) / data.M * 100.0
+    after = (data.M - _predicted(diagnosis.chosen)) / data.M * 100.0
     fig = Figure(figsize=(9, 3.6))
     axes = fig.subplots(1, 2, sharey=True)
     for ax, residual, title in ((axes[0], before, "catalogue model"),
@@ -66,11 +76,12 @@ def plot_measured_vs_predicted(diagnosis: Diagnosis, path: Path) -> None:
     rows = _plot_rows(len(data))
     fig = Figure(figsize=(4.6, 4.4))
     ax = fig.subplots()
-    ax.scatter(diagnosis.scores["none"].predicted[rows], data.M[rows], s=6, alpha=0.5, label="catalogue model")
+    catalogue, chosen = _predicted(diagnosis.scores["none"]), _predicted(diagnosis.chosen)
+    ax.scatter(catalogue[rows], data.M[rows], s=6, alpha=0.5, label="catalogue model")
     if diagnosis.effect != "none":
-        ax.scatter(diagnosis.chosen.predicted[rows], data.M[rows], s=6, alpha=0.5, label=f"with {diagnosis.effect}")
-    top = float(max(np.max(data.M), np.max(diagnosis.scores["none"].predicted), np.max(diagnosis.chosen.predicted)))
-    low = float(min(np.min(data.M), np.min(diagnosis.scores["none"].predicted)))
+        ax.scatter(chosen[rows], data.M[rows], s=6, alpha=0.5, label=f"with {diagnosis.effect}")
+    top = float(max(np.max(data.M), np.max(catalogue), np.max(chosen)))
+    low = float(min(np.min(data.M), np.min(catalogue)))
     ax.plot([low, top], [low, top], "k-", lw=0.8)
     ax.set_xscale("log")
     ax.set_yscale("log")
@@ -81,7 +92,7 @@ def plot_measured_vs_predicted(diagnosis: Diagnosis, path: Path) -> None:
     fig.savefig(path, dpi=90, format="png")
 
 
-def report_markdown(diagnosis: Diagnosis, summary: dict, key: str) -> str:
+def report_markdown(diagnosis: Diagnosis, summary: dict[str, Any], key: str) -> str:
     """report.md: the effect, the error before and after, the residual structure, the candidates, the plots."""
     lines = [
         "# bearingheat diagnose: report", "",
@@ -128,7 +139,8 @@ def report_markdown(diagnosis: Diagnosis, summary: dict, key: str) -> str:
     return "\n".join(lines)
 
 
-def write_outputs(diagnosis: Diagnosis, out_dir, *, force: bool = False, inputs=()) -> dict:
+def write_outputs(diagnosis: Diagnosis, out_dir: str | os.PathLike[str], *, force: bool = False,
+                  inputs: Iterable[str | os.PathLike[str]] = ()) -> dict[str, Any]:
     """Write summary.json, report.md, residuals.png and measured_vs_predicted.png into ``out_dir``.
 
     Existing files are not replaced unless ``force``; none of them may be one of ``inputs``; each file is
@@ -148,7 +160,7 @@ def write_outputs(diagnosis: Diagnosis, out_dir, *, force: bool = False, inputs=
     return summary
 
 
-def summary_lines(summary: dict, out_dir) -> list[str]:
+def summary_lines(summary: dict[str, Any], out_dir: str | os.PathLike[str]) -> list[str]:
     """The outcome in a few lines for the console: the effect, the error before and after, where the report is."""
     lines = [f"effect: {summary['effect']}  parameters: {format_value(summary['parameters']) or '(none)'}",
              f"RMSE {summary['rmse_before']:.4g} -> {summary['rmse_after']:.4g} N*mm "
