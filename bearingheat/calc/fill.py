@@ -13,12 +13,14 @@ table. Each distinct designation is looked up once.
 """
 from __future__ import annotations
 
+from typing import Sequence
+
 import numpy as np
 import pandas as pd
 
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.supports import number_column, text_column
-from bearingheat.catalogue.bearings import CATALOGUE, BearingData, bearing, disagreeing
+from bearingheat.catalogue.bearings import CATALOGUE, bearing, disagreeing
 from bearingheat.errors import DesignationError
 
 __all__ = ["FILLED", "fill_from_catalogue", "fill_arrays", "catalogue_values"]
@@ -27,28 +29,25 @@ __all__ = ["FILLED", "fill_from_catalogue", "fill_arrays", "catalogue_values"]
 FILLED = ("d", "D", "B", "T", "C0", "e", "Y", "Y0", "n_G")
 
 
-def catalogue_values(designations: list) -> tuple[dict[str, np.ndarray], list[str | None]]:
+def catalogue_values(designations: Sequence[str | None] | np.ndarray
+                     ) -> tuple[dict[str, np.ndarray], list[str | None]]:
     """Per row, the bearing table's value of each :data:`FILLED` column (NaN where it has none) and the
-    lookup's error message for designations it does not know (None where found or blank)."""
-    found: dict[str, BearingData | str] = {}
-    for text in dict.fromkeys(d for d in designations if d):
+    lookup's error message for designations it does not know (None where found or blank); each distinct
+    designation is looked up once."""
+    codes, uniques = pd.factorize(np.asarray(designations, dtype=object), use_na_sentinel=True)
+    per_key = {name: np.full(len(uniques) + 1, np.nan) for name in FILLED}  # the last entry: blank designation
+    messages = np.full(len(uniques) + 1, None, dtype=object)
+    for code, text in enumerate(uniques.tolist()):
+        if not text:
+            continue
         try:
-            found[text] = bearing(text)
+            entry = bearing(text)
         except DesignationError as exc:
-            found[text] = str(exc)
-    values = {name: np.full(len(designations), np.nan) for name in FILLED}
-    problems: list[str | None] = [None] * len(designations)
-    codes, uniques = pd.factorize(pd.Series(designations, dtype=object))
-    for code, text in enumerate(uniques):
-        rows = codes == code
-        entry = found[text]
-        if isinstance(entry, str):
-            for i in np.flatnonzero(rows):
-                problems[i] = entry
+            messages[code] = str(exc)
             continue
         for name in FILLED:
-            values[name][rows] = getattr(entry, name)
-    return values, problems
+            per_key[name][code] = getattr(entry, name)
+    return {name: column[codes] for name, column in per_key.items()}, messages[codes].tolist()
 
 
 def fill_from_catalogue(frame: pd.DataFrame, labels: Labels

@@ -86,6 +86,8 @@ BELOW_AMBIENT_SEARCH = 50.0
 OPERATING_TEMPERATURE_CELLS = 24
 #: where every row's balance has one root, the ends of the range bracket it (6 or 7 balance calls instead of 29)
 SINGLE_ROOT_CELLS = 1
+#: the columns a viscosity-temperature law comes from (:func:`~bearingheat.calc.viscosity.viscosity_model_rows`)
+OIL_DATA = frozenset({"nu40", "nu100", "iso_vg"})
 #: where the operating viscosity is taken when it comes from nu40/nu100 or iso_vg
 VISCOSITY_AT = {
     "auto": ("the solved operating temperature T_op where T_amb and n are given (one operating state: the "
@@ -228,6 +230,8 @@ def fill_viscosity(frame: pd.DataFrame, *, viscosity_at: str = "auto",
     """
     if viscosity_at not in VISCOSITY_AT:
         raise HeatBalanceError(f"viscosity_at: {viscosity_at!r} is not one of {', '.join(VISCOSITY_AT)}")
+    if not OIL_DATA & set(frame.columns):  # nothing to fill from: the frame as it is (the heat balance sees no A, B)
+        return frame, []
     frame = frame.copy()
     A, B, problems = _walther_columns(frame)
     frame["_walther_A"] = A
