@@ -303,7 +303,9 @@ class FrictionPower:
         self.f0 = results["f0"].to_numpy(dtype=float)
         self.load_torque = results["M1"].to_numpy(dtype=float) + np.nan_to_num(results["M2"].to_numpy(dtype=float))
         self.dM = mean_diameter(number_column(frame, "d"), number_column(frame, "D"))
-        self.closed = np.array([MODELS[m].speed_exponent is not None if m in MODELS else True for m in names])
+        codes, distinct = pd.factorize(names)
+        self.closed = np.array([MODELS[m].speed_exponent is not None if m in MODELS else True for m in distinct] +
+                               [True], dtype=bool)[codes]  # the last entry: rows without a model name
         self.generic: dict[str, tuple[np.ndarray, SupportArrays]] = {}
         if not self.closed.all():
             supports = support_arrays_of(frame)

@@ -47,7 +47,7 @@ import pandas as pd
 from bearingheat.calc.contract import columns, register_choices
 from bearingheat.calc.models import FrictionPower, compute_supports
 from bearingheat.calc.reference_speed import thermal_reference_speed_details, thermal_reference_speed_rows
-from bearingheat.calc.supports import number_column, text_column
+from bearingheat.calc.supports import _stripped_or_none, number_column, per_distinct
 from bearingheat.calc.viscosity import viscosity_model_rows
 from bearingheat.catalogue.thermal import THERMAL_KINDS
 from bearingheat.errors import HeatBalanceError
@@ -414,8 +414,9 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
     if "T_bearing" in has:
         columns["n_per"] = _permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue,
                                                    T_bearing, T_amb, Q_S, Q_L, Q_E, usable, methods, problems)
-        columns["n_per_method_used"] = np.where(np.isnan(columns["n_per"]), "",
-                                                [SPEED_FACTOR_METHODS[m].title for m in methods]).astype(object)
+        method_codes, method_names = pd.factorize(methods)
+        titles = np.array([SPEED_FACTOR_METHODS[m].title for m in method_names] + [""], dtype=object)[method_codes]
+        columns["n_per_method_used"] = np.where(np.isnan(columns["n_per"]), "", titles).astype(object)
     _assumed_oil_outlet(frame, usable, problems)
     ordered = [c for c in ("n_thr", "n_per", "n_per_method_used", "T_op", "nu_op", "Q_S", "Q_L") if c in columns]
     return pd.DataFrame({c: columns[c] for c in ordered}, index=frame.index), problems
@@ -423,7 +424,10 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
 
 def _row_choices(frame: pd.DataFrame, column: str, default: str, choices, problems: list) -> np.ndarray:
     """Every row's ``column`` cell, else ``default``; a name not in ``choices`` is a row error (and the default)."""
-    names = np.array([v or default for v in text_column(frame, column)], dtype=object)
+    if column in frame.columns:
+        names = per_distinct(frame[column], lambda v: _stripped_or_none(v) or default)
+    else:
+        names = np.full(len(frame), default, dtype=object)
     for i in np.flatnonzero(~np.isin(names, list(choices))):
         problems.append((int(i), "error", f"{column}: {names[i]!r} is not one of {', '.join(choices)}"))
         names[i] = default
