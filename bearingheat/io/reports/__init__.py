@@ -8,7 +8,10 @@ from __future__ import annotations
 
 from bearingheat.errors import MissingExtraError
 
-__all__ = ["matplotlib_figure"]
+__all__ = ["matplotlib_figure", "FIGURE_DPI"]
+
+#: the resolution of every PNG figure bearingheat writes: sharp on paper at its printed size
+FIGURE_DPI = 150
 
 
 def matplotlib_figure() -> type:

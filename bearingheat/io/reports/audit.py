@@ -21,7 +21,7 @@ import pandas as pd
 from bearingheat.analysis.audit import SYSTEMATIC_RULE, ReferenceSpeedAudit
 from bearingheat.io.files import write_outputs
 from bearingheat.io.tables import escape_formulas
-from bearingheat.io.reports import matplotlib_figure
+from bearingheat.io.reports import FIGURE_DPI, matplotlib_figure
 
 __all__ = ["coefficient_lines", "reference_speed_lines", "write_coefficients", "write_reference_speeds",
            "draw_reference_speeds", "REFERENCE_SPEED_FILES"]
@@ -31,7 +31,6 @@ SHOWN_EXCLUDED = 20
 #: the files of the reference speed audit
 REFERENCE_SPEED_FILES = ("reference_speeds.csv", "reference_speed_series.csv", "reference_speeds.png")
 #: resolution of the figure [dots per inch]
-FIGURE_DPI = 150
 
 
 def coefficient_lines(result: pd.DataFrame) -> list[str]:

@@ -12,7 +12,7 @@ from pathlib import Path
 from bearingheat.analysis.coastdown import CoastdownResult
 from bearingheat.io.files import write_outputs
 from bearingheat.io.json import json_safe
-from bearingheat.io.reports import matplotlib_figure
+from bearingheat.io.reports import FIGURE_DPI, matplotlib_figure
 
 __all__ = ["plot_coastdown", "render_report", "coastdown_summary", "write_coastdown_outputs"]
 
@@ -46,7 +46,7 @@ def plot_coastdown(result: CoastdownResult, path) -> None:
     bottom.set_ylabel(label)
     bottom.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(path, format="png")
+    fig.savefig(path, format="png", dpi=FIGURE_DPI)
 
 
 def _ci(fit, name, digits=4):

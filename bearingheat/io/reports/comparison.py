@@ -13,7 +13,7 @@ import numpy as np
 
 from bearingheat.analysis.comparison import ModelComparison
 from bearingheat.io.files import write_outputs
-from bearingheat.io.reports import matplotlib_figure
+from bearingheat.io.reports import FIGURE_DPI, matplotlib_figure
 
 __all__ = ["COMPARISON_FILES", "comparison_lines", "comparison_markdown", "plot_comparison", "write_comparison"]
 
@@ -76,7 +76,7 @@ def plot_comparison(comparison: ModelComparison, path: Path) -> None:
         ax.plot([low, top], [low, top], "k-", lw=0.8)
     axes[0].set_ylabel("M measured [N·mm]")
     fig.tight_layout()
-    fig.savefig(path, dpi=150, format="png")
+    fig.savefig(path, dpi=FIGURE_DPI, format="png")
 
 
 def write_comparison(comparison: ModelComparison, out_dir, *, force: bool = False, inputs=()) -> None:

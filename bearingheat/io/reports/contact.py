@@ -12,7 +12,7 @@ from pathlib import Path
 import numpy as np
 
 from bearingheat.kernels.contact import KGF, series_start, stiffness_characteristic, working_contact_angle
-from bearingheat.io.reports import matplotlib_figure
+from bearingheat.io.reports import FIGURE_DPI, matplotlib_figure
 
 __all__ = ["EXAMPLE_BEARING", "plot_alpha_vs_axial_load", "DEFAULT_PATH"]
 
@@ -50,7 +50,7 @@ def plot_alpha_vs_axial_load(path: str | Path = DEFAULT_PATH, max_load_N: float 
         ax.grid(True, linewidth=0.4)
         ax.legend(loc="lower right", fontsize=8)
         fig.tight_layout()
-        fig.savefig(path, format="png", metadata={"Software": None})
+        fig.savefig(path, format="png", dpi=FIGURE_DPI, metadata={"Software": None})
     return path
 
 

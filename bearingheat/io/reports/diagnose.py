@@ -21,7 +21,7 @@ import numpy as np
 from bearingheat.analysis.diagnose import (REGRESSOR_UNITS, CandidateScore, Diagnosis, format_value, key_regressor,
                                            regressors)
 from bearingheat.io.files import write_outputs as write_files
-from bearingheat.io.reports import matplotlib_figure
+from bearingheat.io.reports import FIGURE_DPI, matplotlib_figure
 
 __all__ = ["plot_residuals", "plot_measured_vs_predicted", "report_markdown", "write_outputs", "summary_lines"]
 
@@ -64,7 +64,7 @@ def plot_residuals(diagnosis: Diagnosis, path: Path) -> str:
     axes[0].set_ylabel("(M measured − M model)/M measured [%]")
     axes[1].legend(fontsize=7, loc="best")
     fig.tight_layout()
-    fig.savefig(path, dpi=90, format="png")
+    fig.savefig(path, dpi=FIGURE_DPI, format="png")
     return key
 
 
@@ -89,7 +89,7 @@ def plot_measured_vs_predicted(diagnosis: Diagnosis, path: Path) -> None:
     ax.set_ylabel("M measured [N·mm]")
     ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(path, dpi=90, format="png")
+    fig.savefig(path, dpi=FIGURE_DPI, format="png")
 
 
 def report_markdown(diagnosis: Diagnosis, summary: dict[str, Any], key: str) -> str:

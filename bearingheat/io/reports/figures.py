@@ -14,7 +14,7 @@ import pandas as pd
 from bearingheat.analysis.coastdown import coastdown_analysis
 from bearingheat.calc.table import calc
 from bearingheat.catalogue.bushing import pressure_limit_seed004, pv_limit_seed004_table25
-from bearingheat.io.reports import matplotlib_figure
+from bearingheat.io.reports import FIGURE_DPI, matplotlib_figure
 from bearingheat.io.reports.coastdown import plot_coastdown
 
 __all__ = ["plot_friction_torque", "plot_bushing_pv", "write_doc_figures"]
@@ -46,7 +46,7 @@ def plot_friction_torque(path) -> Path:
     by_load.set_title("6208, oil bath, ν = 40 mm²/s", fontsize=10)
     by_load.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(path, dpi=150, format="png")
+    fig.savefig(path, dpi=FIGURE_DPI, format="png")
     return Path(path)
 
 
@@ -75,7 +75,7 @@ def plot_bushing_pv(path, *, F_N: float = 2000.0, n_rpm: float = 500.0, d_mm: fl
                  fontsize=9)
     ax.legend(fontsize=7, loc="lower left")
     fig.tight_layout()
-    fig.savefig(path, dpi=150, format="png")
+    fig.savefig(path, dpi=FIGURE_DPI, format="png")
     return Path(path)
 
 

@@ -20,7 +20,7 @@ from bearingheat.calc.models import compute_supports
 from bearingheat.calc.table import require_columns, to_catalogue_units
 from bearingheat.calc.thermal import fill_viscosity, heat_balance_rows, heat_flow_curves
 from bearingheat.errors import InputError
-from bearingheat.io.reports import matplotlib_figure
+from bearingheat.io.reports import FIGURE_DPI, matplotlib_figure
 
 __all__ = ["heat_balance_curves", "draw_heat_balance", "figure_format", "FIGURE_FORMATS"]
 
@@ -115,4 +115,4 @@ def draw_heat_balance(curves: dict, path, format: str | None = None) -> None:  #
     right.legend(fontsize=8, loc="upper left")
     fig.suptitle(f"Heat balance: {curves['label']}", fontsize=11)
     fig.tight_layout()
-    fig.savefig(path, format=format or figure_format(path), dpi=150)
+    fig.savefig(path, format=format or figure_format(path), dpi=FIGURE_DPI)

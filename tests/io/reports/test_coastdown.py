@@ -6,7 +6,10 @@ import math
 
 import numpy as np
 
+from PIL import Image
+
 from bearingheat.analysis.coastdown import coastdown_analysis
+from bearingheat.io.reports import FIGURE_DPI
 from bearingheat.io.reports.coastdown import coastdown_summary, render_report, write_coastdown_outputs
 
 
@@ -28,6 +31,8 @@ def test_outputs_written(tmp_path):
     files = write_coastdown_outputs(result, tmp_path / "run", "straight.csv")
     assert [p.rsplit("/", 1)[-1] for p in map(str, files)] == ["coastdown.png", "report.md", "summary.json"]
     assert (tmp_path / "run" / "coastdown.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    with Image.open(tmp_path / "run" / "coastdown.png") as image:  # 6.4 in square at 150 dpi
+        assert image.size == (960, 960) and round(image.info["dpi"][0]) == FIGURE_DPI == 150
     assert (tmp_path / "run" / "report.md").read_text(encoding="utf-8") == render_report(
         result, "straight.csv", png="coastdown.png")
     assert json.loads((tmp_path / "run" / "summary.json").read_text())["model"] == "coulomb"
