@@ -7,12 +7,18 @@ with X0 = 0.6, Y0 = 0.5 (table 1, radial ball bearing); task 1 μ for each
 speed, task 2 f0 and T_F for each β, task 3 f and T0 for each speed, by the
 closed forms of :mod:`bearingheat.kernels.lab`, each checked against a
 general least-squares solver. The comparison runs the catalogue model of
-The Schaeffler catalogue (:func:`bearingheat.calc.table.calc`) on the same bearings.
+the Schaeffler catalogue (:func:`bearingheat.calc.table.calc`) on the same bearings.
+
+Task 1's μ is, as the manual defines it, the slope of a line through the
+origin. The torque of the same manual's tasks 2 and 3 has a load-independent
+part (T_F, T0), so task 1 also fits the line with an intercept,
+T = μ_slope·P0·d/2 + T_intercept, which is the line the report draws.
 
 The report, its tables and figures are written by :mod:`bearingheat.io.reports.lab`.
 """
 from __future__ import annotations
 
+from collections.abc import Hashable
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -96,17 +102,27 @@ def read_lab_table(table: pd.DataFrame) -> pd.DataFrame:
     return out
 
 
+def _first(group: pd.DataFrame, column: str) -> float:
+    """The value of a column that is the same on every reading of a group (a bearing's d, dm, C0)."""
+    return float(group[column].to_numpy(dtype=float)[0])
+
+
 @dataclass
 class LabResult:
     """Everything the lab report shows."""
 
     readings: pd.DataFrame                      # with Fa, Fr, P0 [N], d, dm, C0, and catalogue columns
-    table4: dict = field(default_factory=dict)  # (bearing, beta) -> DataFrame rows Q, columns n
-    table5: dict = field(default_factory=dict)  # (bearing, Q) -> DataFrame rows n, columns beta
-    task1: pd.DataFrame | None = None           # bearing, beta, n, mu, mu_lstsq, points
-    task2: pd.DataFrame | None = None           # bearing, Q, beta, f0, T_F, (lstsq), f0_catalogue_equivalent
-    task3: pd.DataFrame | None = None           # bearing, beta, n, f, T0, (lstsq)
-    comparison: pd.DataFrame | None = None      # per bearing: measured vs the Schaeffler catalogue / the DP11A manual models
+    # (bearing, beta) -> mean T, rows Q, columns n; (bearing, Q) -> mean T, rows n, columns beta
+    table4: dict[tuple[Hashable, Hashable], pd.DataFrame] = field(default_factory=dict)
+    table5: dict[tuple[Hashable, Hashable], pd.DataFrame] = field(default_factory=dict)
+    # bearing, beta, n, points, mu, mu_lstsq (through the origin), mu_slope, T_intercept (line with an intercept)
+    task1: pd.DataFrame = field(default_factory=pd.DataFrame)
+    # bearing, Q, beta, points, f0, T_F, (lstsq), f0_catalogue_equivalent
+    task2: pd.DataFrame = field(default_factory=pd.DataFrame)
+    # bearing, beta, n, points, f, T0, (lstsq)
+    task3: pd.DataFrame = field(default_factory=pd.DataFrame)
+    # per bearing: measured against the DP11A manual's μ model and the Schaeffler catalogue model
+    comparison: pd.DataFrame = field(default_factory=pd.DataFrame)
     notes: list[str] = field(default_factory=list)
 
 
@@ -124,14 +140,19 @@ def process_lab(table: pd.DataFrame, *, nu: float | None = None, lubrication: st
     r["Fa"], r["Fr"] = lab_loads(r["Q"].to_numpy(), r["beta"].to_numpy())
     r["P0"] = friction.static_equivalent_load(r["Fr"].to_numpy(), r["Fa"].to_numpy(), X0, Y0)
     result = LabResult(r)
-    rows1, rows2, rows3 = [], [], []
+    rows1: list[dict[str, object]] = []
+    rows2: list[dict[str, object]] = []
+    rows3: list[dict[str, object]] = []
     for (bearing, beta, n), g in r.groupby(["bearing", "beta", "n"], sort=True):
-        d = float(g["d"].iat[0])
+        d = _first(g, "d")
         mu = reduced_friction_coefficient(g["T"], g["P0"], d)
         mu_ls, _ = least_squares_line(g["P0"] * d / 2.0, g["T"], through_origin=True)
-        rows1.append({"bearing": bearing, "beta": beta, "n": n, "points": len(g), "mu": mu, "mu_lstsq": mu_ls})
+        mu_slope, T_intercept = (least_squares_line(g["P0"] * d / 2.0, g["T"]) if g["P0"].nunique() >= 2
+                                 else (np.nan, np.nan))
+        rows1.append({"bearing": bearing, "beta": beta, "n": n, "points": len(g), "mu": mu, "mu_lstsq": mu_ls,
+                      "mu_slope": mu_slope, "T_intercept": T_intercept})
         if g["P0"].nunique() >= 2:
-            dm, C0 = float(g["dm"].iat[0]), float(g["C0"].iat[0])
+            dm, C0 = _first(g, "dm"), _first(g, "C0")
             f, T0 = load_fit(g["T"], g["P0"], C0, dm)
             slope, intercept = least_squares_line(g["P0"] ** (1 + LOAD_EXPONENT_RADIAL), g["T"])
             rows3.append({"bearing": bearing, "beta": beta, "n": n, "points": len(g), "f": f, "T0": T0,
@@ -139,7 +160,7 @@ def process_lab(table: pd.DataFrame, *, nu: float | None = None, lubrication: st
     for (bearing, Q, beta), g in r.groupby(["bearing", "Q", "beta"], sort=True):
         if g["n"].nunique() < 2:
             continue
-        dm = float(g["dm"].iat[0])
+        dm = _first(g, "dm")
         f0, TF = speed_fit(g["T"], g["n"], dm)
         slope, intercept = least_squares_line(g["n"] ** (2.0 / 3.0), g["T"])
         row = {"bearing": bearing, "Q": Q, "beta": beta, "points": len(g), "f0": f0, "T_F": TF,
@@ -150,32 +171,32 @@ def process_lab(table: pd.DataFrame, *, nu: float | None = None, lubrication: st
         result.table4[(bearing, beta)] = g.pivot_table(index="Q", columns="n", values="T", aggfunc="mean")
     for (bearing, Q), g in r.groupby(["bearing", "Q"], sort=True):
         result.table5[(bearing, Q)] = g.pivot_table(index="n", columns="beta", values="T", aggfunc="mean")
-    # --- comparison with the models of the seeds
-    r["T_seed000_mu"] = REDUCED_FRICTION_RADIAL * r["P0"] * r["d"] / 2.0
+    # --- comparison with the DP11A manual's μ model and the Schaeffler catalogue model
+    r["T_mu_model"] = REDUCED_FRICTION_RADIAL * r["P0"] * r["d"] / 2.0
     viscosity = r["nu"] if "nu" in r.columns else (pd.Series(nu, index=r.index) if nu is not None else None)
     if viscosity is not None:
         rows = pd.DataFrame({"designation": r["bearing"], "d [mm]": r["d"], "D [mm]": r["D"],
                              "C0 [N]": r["C0"], "lubrication": lubrication, "n [1/min]": r["n"],
                              "Fr [N]": r["Fr"], "Fa [N]": r["Fa"], "nu [mm^2/s]": viscosity})
         catalogue = calc(rows)
-        r["MR_seed002"] = catalogue["MR [N*mm]"].to_numpy()
-        r["M0_seed002"] = catalogue["M0 [N*mm]"].to_numpy()
-        r["M1_seed002"] = catalogue["M1 [N*mm]"].to_numpy()
+        r["MR_catalogue"] = catalogue["MR [N*mm]"].to_numpy()
+        r["M0_catalogue"] = catalogue["M0 [N*mm]"].to_numpy()
+        r["M1_catalogue"] = catalogue["M1 [N*mm]"].to_numpy()
         r["nu"] = viscosity.to_numpy(dtype=float)
         if not result.task2.empty:
             nu_of = r.groupby(["bearing", "Q", "beta"])["nu"].mean()
             keys = list(zip(result.task2["bearing"], result.task2["Q"], result.task2["beta"]))
-            result.task2["f0_seed002_equivalent"] = catalogue_f0_equivalent(
+            result.task2["f0_catalogue_equivalent"] = catalogue_f0_equivalent(
                 result.task2["f0"].to_numpy(), nu_of.loc[keys].to_numpy())
     else:
         result.notes.append("no viscosity given (column 'nu [mm^2/s]' or --nu): the Schaeffler catalogue comparison is skipped")
     comp = []
     for bearing, g in r.groupby("bearing", sort=True):
         entry = {"bearing": bearing, "readings": len(g), "T_mean [N*mm]": g["T"].mean(),
-                 "seed000_mu_model / measured": float((g["T_seed000_mu"] / g["T"]).median())}
-        if "MR_seed002" in g:
-            entry["seed002_MR / measured"] = float((g["MR_seed002"] / g["T"]).median())
-            entry["seed002 M0 share"] = float((g["M0_seed002"] / g["MR_seed002"]).median())
+                 "DP11A mu model / measured": float((g["T_mu_model"] / g["T"]).median())}
+        if "MR_catalogue" in g:
+            entry["catalogue MR / measured"] = float((g["MR_catalogue"] / g["T"]).median())
+            entry["catalogue M0 share"] = float((g["M0_catalogue"] / g["MR_catalogue"]).median())
         comp.append(entry)
     result.comparison = pd.DataFrame(comp)
     return result
@@ -190,12 +211,12 @@ EXAMPLE_TRUTH = {"f0": 3e-8, "f": LOAD_COEFFICIENT_RADIAL, "c": LOAD_EXPONENT_RA
                  "nu": 20.0, "seed": 2016}
 
 
-def generate_example(seed: int = EXAMPLE_TRUTH["seed"]) -> pd.DataFrame:
+def generate_example(seed: int = int(EXAMPLE_TRUTH["seed"])) -> pd.DataFrame:
     """The shipped example examples/lab_dp11a_example.csv: GENERATED readings, not measurements.
 
     Follows the procedure of the DP11A manual: the three bearings of table 3, the
     weights 0.5, 1 and 2 kg, β = 30°, 60°, 90°, four speeds in the rig's
-    range (motor 3600-4600 1/min over a 1.5 belt ratio), T from the seed's
+    range (motor 3600-4600 1/min over a 1.5 belt ratio), T from the manual's
     two-term formula with :data:`EXAMPLE_TRUTH` and 2 % noise, rounded to 4
     significant digits like a read-off.
     """

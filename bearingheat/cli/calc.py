@@ -18,7 +18,7 @@ import pyarrow.compute as pc
 from bearingheat.cli import UsageError, add_csv_arguments
 from bearingheat.errors import ExcelError, F2ChartError, InputError
 from bearingheat.cli.options import add_force, add_json, add_output, add_quiet
-from bearingheat.io.console import Progress, print_summary, summary_columns
+from bearingheat.io.console import Progress, print_summary, print_table, summary_columns
 from bearingheat.io.dataset import (calc_dataset, check_dataset_target, dask_client, dataset_columns, dataset_files,
                                    is_dataset, read_dataset_columns)
 from bearingheat.io.pipeline import calc_file
@@ -185,8 +185,8 @@ def run(args: argparse.Namespace) -> int:
     elif not args.quiet:
         print_summary(result, args.output)
         if duty is not None:
-            print("\nduty cycle (time-weighted per support):")
-            print(duty.to_string(index=False))
+            print()
+            print_table(duty, title="duty cycle (time-weighted per support):")
     return 1 if (result["status"] == "error").any() else 0
 
 
@@ -200,7 +200,7 @@ def run_table(args: argparse.Namespace, source: Path, target: Path | None) -> in
                             **_calc_options(args))
         has_duty = has_duty_cycle(pd.DataFrame(columns=results.column_names))
         result = results.to_pandas() if args.json or has_duty else None
-        duty = duty_cycle(result) if has_duty else None
+        duty = duty_cycle(result) if result is not None and has_duty else None
         if duty is not None and target is not None:  # the summary per support beside the results: <name>.duty.csv
             duty_target = safe_output(target.with_name(f"{target.stem}.duty{target.suffix}"), force=args.force,
                                       inputs=(source,))
@@ -210,12 +210,12 @@ def run_table(args: argparse.Namespace, source: Path, target: Path | None) -> in
     except (InputError, F2ChartError) as exc:
         raise UsageError(str(exc)) from exc
     if args.json:
-        print(results_json(result, duty))
+        print(results_json(result if result is not None else results.to_pandas(), duty))
     elif not args.quiet:
         print_summary(results, args.output)
         if duty is not None:
-            print("\nduty cycle (time-weighted per support):")
-            print(duty.to_string(index=False))
+            print()
+            print_table(duty, title="duty cycle (time-weighted per support):")
     return 1 if pc.any(pc.equal(results.column("status"), "error")).as_py() else 0
 
 
@@ -275,7 +275,7 @@ def run_calc_workbook(args: argparse.Namespace) -> int:
                 write_csv(run.duty, safe_output(csv_target.with_name(f"{csv_target.stem}.duty.csv"),
                                                 force=args.force, inputs=(source,)),
                           escape=not args.no_csv_escape)
-        if pdf is not None:
+        if pdf is not None and run.results_sheet is not None:  # a workbook written has its results sheet
             export_pdf(real if args.in_place else target, run.results_sheet, pdf)
     except ExcelError as exc:
         raise UsageError(str(exc)) from exc
@@ -288,8 +288,8 @@ def run_calc_workbook(args: argparse.Namespace) -> int:
             where = f"{output}" + (f", sheet {run.results_sheet!r}" if run.results_sheet else "")
         print_summary(run.result, where)
         if run.duty is not None:
-            print("\nduty cycle (time-weighted per support):")
-            print(run.duty.to_string(index=False))
+            print()
+            print_table(run.duty, title="duty cycle (time-weighted per support):")
         for note in run.notes:
             print(f"note: {note}", file=sys.stderr)
         if run.dropped:

@@ -1,16 +1,20 @@
-"""``bearingheat contact``: contact angle, stiffness C* and minimum axial load of a ball bearing (Zaitsev & Voronkin)."""
+"""``bearingheat contact``: contact angle, stiffness C* and minimum axial load of ball bearings (Zaitsev & Voronkin)."""
 from __future__ import annotations
 
+import argparse
 import csv
 import io
 import json
 import sys
 from pathlib import Path
+from typing import Any
 
 from bearingheat.api.contact import ball_bearing_contact
 from bearingheat.calc.contract import parse_header
 from bearingheat.cli import UsageError
+from bearingheat.cli.options import add_json
 from bearingheat.errors import BearingheatError, InputError, UnitError
+from bearingheat.io.console import print_record
 from bearingheat.io.tables import escape_cell, read_text, sniff_format
 from bearingheat.units import parse_quantity, parse_unit, ureg
 
@@ -45,7 +49,7 @@ Output: 'key: value' lines (one bearing) or CSV (a TABLE); --json prints one JSO
 object (one bearing) or a list of objects (a TABLE). Keys: alpha0 [deg], Fa [N],
 alpha [deg], xi_a, delta_a [mm], C_star [N], sum_rho_i [1/mm], sum_rho_o [1/mm],
 cos_tau_i, cos_tau_o, 2K/(mu*pi)_i, 2K/(mu*pi)_o, and with n: n [1/min], Fa_min [N]
-(at alpha0, the seed's rule) and Fa_min at alpha [N] (at the working angle).
+(at alpha0, Zaitsev & Voronkin's rule) and Fa_min at alpha [N] (at the working angle).
 A warning goes to stderr when a given Fa is below Fa_min.
 
 Exit codes: 0 ok (warnings included), 1 some CSV rows in error (reported in the
@@ -69,17 +73,17 @@ _REQUIRED = ("z", "dw", "dm", "ri", "ro")
 _CHECK_UNIT = {"length": "mm", "angle": "deg", "force": "N", "speed": "1/min"}
 
 
-def add_arguments(parser) -> None:
+def add_arguments(parser: argparse.ArgumentParser) -> None:
     for option, (_, _, kind) in _FIELDS.items():
         example = {"count": "7", "length": "2mm", "angle": "12deg", "force": "2kgf", "speed": "3000rpm"}[kind]
         parser.add_argument(f"--{option}", metavar="N" if kind == "count" else "VALUE",
                             help=f"{kind}, e.g. {example}")
     parser.add_argument("input", metavar="TABLE", nargs="?",
                         help="CSV file with one bearing a row (see above); without it one bearing from the options")
-    parser.add_argument("--json", action="store_true", help="print JSON instead of text")
+    add_json(parser)
 
 
-def run(args) -> int:
+def run(args: argparse.Namespace) -> int:
     if args.input is not None:
         given = [f"--{option}" for option in _FIELDS if getattr(args, option) is not None]
         if given:
@@ -102,12 +106,11 @@ def run(args) -> int:
     if args.json:
         print(json.dumps(record, ensure_ascii=False))
     else:
-        for key, value in record.items():
-            print(f"{key}: {value:.6g}" if isinstance(value, float) else f"{key}: {value}")
+        print_record(record)
     return 0
 
 
-def _parse_argument(option: str, text: str):
+def _parse_argument(option: str, text: str) -> Any:
     kind = _FIELDS[option][2]
     if kind == "count":
         try:
@@ -117,7 +120,7 @@ def _parse_argument(option: str, text: str):
     return parse_quantity(text, name=f"--{option}")
 
 
-def _evaluate(inputs: dict) -> tuple[dict, str | None]:
+def _evaluate(inputs: dict[str, Any]) -> tuple[dict[str, Any], str | None]:
     """Run ball_bearing_contact; return the output record and a warning (or None)."""
     result = ball_bearing_contact(**inputs)
     record = result.to_dict()
@@ -145,7 +148,7 @@ def _run_csv(path: str, as_json: bool) -> int:
         raise UsageError(f"{path}: the file is empty")
     header = [parse_header(cell, strict=False) for cell in rows[0]]
     by_column = {name: option for option, (_, name, _) in _FIELDS.items()}
-    columns = {}  # option -> (position, unit)
+    columns: dict[str, tuple[int, Any]] = {}  # option -> (position, pint unit or None for a count)
     label_position = None
     for position, (name, unit_text) in enumerate(header):
         if name == "designation":
@@ -175,15 +178,16 @@ def _run_csv(path: str, as_json: bool) -> int:
     if missing:
         raise UsageError(f"{path}: missing column(s) {', '.join(missing)}")
 
-    records, failures = [], 0
+    records: list[dict[str, Any]] = []
+    failures = 0
     for number, cells in enumerate(rows[1:], start=1):
         if not any(cell.strip() for cell in cells):
             continue
-        record = {"row": number}
+        record: dict[str, Any] = {"row": number}
         if label_position is not None and label_position < len(cells):
             record["designation"] = cells[label_position].strip()
         try:
-            inputs = {}
+            inputs: dict[str, Any] = {}
             for option, (position, unit) in columns.items():
                 text = cells[position].strip() if position < len(cells) else ""
                 column = _FIELDS[option][1]
@@ -210,7 +214,7 @@ def _run_csv(path: str, as_json: bool) -> int:
     if as_json:
         print(json.dumps(records, ensure_ascii=False))
     else:
-        keys = []
+        keys: list[str] = []
         for record in records:
             keys.extend(k for k in record if k not in keys and k not in ("warning", "error"))
         keys += ["warning", "error"]

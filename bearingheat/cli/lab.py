@@ -5,10 +5,11 @@ import argparse
 import json
 
 from bearingheat.analysis.lab import process_lab
-from bearingheat.cli import UsageError, add_csv_arguments, add_force_argument
-from bearingheat.cli.options import add_json, add_out_dir
+from bearingheat.cli import UsageError, add_csv_arguments
+from bearingheat.cli.options import add_force, add_json, add_out_dir, add_quiet
 from bearingheat.io.json import json_safe
 from bearingheat.errors import BearingheatError, UnitError
+from bearingheat.io.console import print_table
 from bearingheat.io.files import check_outputs
 from bearingheat.io.reports.lab import write_lab_outputs
 from bearingheat.io.tables import read_table
@@ -47,13 +48,14 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("input", metavar="READINGS", help="CSV (.csv) or Excel (.xlsx) of readings")
     add_out_dir(parser, "report.md, the CSVs and plots", required=True)
     add_json(parser)
-    parser.add_argument("--nu", metavar="VISCOSITY", help="viscosity for the Schaeffler catalogue comparison, e.g. 20mm^2/s")
+    parser.add_argument("--nu", metavar="VISCOSITY",
+                        help="viscosity for the Schaeffler catalogue comparison, e.g. 20mm^2/s")
     parser.add_argument("--lubrication", default="grease",
                         help="lubrication of the Schaeffler catalogue comparison (default grease)")
     parser.add_argument("--sheet", metavar="NAME", help="sheet of an Excel workbook")
-    add_force_argument(parser, "the files in DIR")
+    add_force(parser)
     add_csv_arguments(parser)
-    parser.add_argument("-q", "--quiet", action="store_true", help="print nothing")
+    add_quiet(parser)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -80,8 +82,8 @@ def run(args: argparse.Namespace) -> int:
                                     "notes": list(result.notes), "files": [str(f) for f in files]}),
                          ensure_ascii=False))
     elif not args.quiet:
-        print(result.task1.to_string(index=False, float_format=lambda x: f"{x:.4g}"))
-        print(result.comparison.to_string(index=False, float_format=lambda x: f"{x:.4g}"))
+        print_table(result.task1, float_format=".4g")
+        print_table(result.comparison, float_format=".4g")
         for note in result.notes:
             print(f"note: {note}")
         print(f"{len(files)} files written to {args.out_dir}")

@@ -51,10 +51,34 @@ def test_example_recovers_the_generating_coefficients():
 
 def test_catalogue_comparison():
     result = process_lab(pd.read_csv(EXAMPLE))
-    assert "seed002_MR / measured" in result.comparison.columns
+    assert list(result.comparison.columns) == ["bearing", "readings", "T_mean [N*mm]", "DP11A mu model / measured",
+                                               "catalogue MR / measured", "catalogue M0 share"]
     assert result.notes == []
     no_nu = process_lab(pd.read_csv(EXAMPLE).drop(columns="nu [mm^2/s]"))
     assert no_nu.notes == ["no viscosity given (column 'nu [mm^2/s]' or --nu): the Schaeffler catalogue comparison is skipped"]
+
+
+def _readings(T=None):
+    """Bearing 101 (d = 12 mm) radial at 3000 1/min under 0.5, 1 and 2 kg: P0 = 4.905, 9.81, 19.62 N."""
+    table = pd.DataFrame({"bearing": ["101"] * 3, "Q [kg]": [0.5, 1.0, 2.0], "beta [deg]": [90.0] * 3,
+                          "n [1/min]": [3000.0] * 3, "T [N*mm]": [0.1, 0.1, 0.1] if T is None else T})
+    return table
+
+
+def test_task1_keeps_the_manuals_mu_through_the_origin_and_fits_the_line_with_an_intercept():
+    P0 = np.array([4.905, 9.81, 19.62])
+    d = process_lab(_readings()).readings["d"].iat[0]
+    T = 0.04 + 0.0003 * P0 * d / 2.0                    # a load-independent 0.04 N*mm and mu = 0.0003
+    row = process_lab(_readings(T)).task1.iloc[0]
+    assert d == 12.0
+    # the manual's mu = 2*sum(T*P0)/(d*sum(P0^2)) misses the intercept: 0.0003 + 0.04*2*sum(P0)/(d*sum(P0^2))
+    assert row["mu"] == pytest.approx(0.0003 + 0.04 * 2 * P0.sum() / (d * (P0 ** 2).sum()), rel=1e-12)
+    assert row["mu"] == pytest.approx(0.00075305, rel=1e-4)
+    assert row["mu_slope"] == pytest.approx(0.0003, rel=1e-9)
+    assert row["T_intercept"] == pytest.approx(0.04, rel=1e-9)
+    one_load = process_lab(_readings().iloc[:1]).task1.iloc[0]
+    assert one_load["mu"] == pytest.approx(2 * 0.1 / (12.0 * 4.905), rel=1e-12)
+    assert np.isnan(one_load["mu_slope"]) and np.isnan(one_load["T_intercept"])
 
 
 def test_unknown_bearing():

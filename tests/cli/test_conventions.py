@@ -1,14 +1,21 @@
 """Every command's --help follows one convention: the same option names, an exit-code paragraph, no seed numbers."""
 from __future__ import annotations
 
+import re
+
 import pytest
 
 from bearingheat.cli import COMMANDS, build_parser
+from bearingheat.cli.options import FORCE_DIR_HELP, FORCE_FILE_HELP, JSON_HELP, QUIET_HELP
 
 #: commands that print results (--json), and those that write files (-o/--output or --out-dir)
 PRINTS = {"calc", "coastdown", "bushing", "contact", "lab", "audit", "diagnose", "lookup"}
 WRITES_FILE = {"calc", "template", "plot"}
 WRITES_FOLDER = {"coastdown", "lab", "audit", "diagnose"}
+#: commands whose module still writes the help of these options itself instead of taking it from cli/options.py:
+#: bushing and lookup (--json), plot (-o OUTPUT, and --force by cli.add_force_argument), coastdown (--force by
+#: cli.add_force_argument). strict: the test fails once they are fixed, so that they leave this set.
+NOT_YET_UNIFORM = {"bushing", "lookup", "plot", "coastdown"}
 
 
 def _help(command: str) -> tuple[str, dict]:
@@ -30,6 +37,33 @@ def test_help_convention(command):
     for option, help_text in (("-q", "print nothing"), ("--json", "print the results as JSON")):
         if option in options and command not in ("calc", "contact", "bushing", "lookup", "plot", "coastdown"):
             assert options[option].help.startswith(help_text)
+
+
+@pytest.mark.parametrize("command", [pytest.param(c, marks=pytest.mark.xfail(
+    reason="its module writes the help of -o, --force or --json itself", strict=True))
+    if c in NOT_YET_UNIFORM else c for c in sorted(COMMANDS)])
+def test_the_shared_options_have_one_help_text(command):
+    """-q/--quiet, --json, -o/--output FILE, --out-dir DIR and --force read the same in every command."""
+    _, options = _help(command)
+    if "-q" in options:
+        assert options["-q"].option_strings == ["-q", "--quiet"] and options["-q"].help == QUIET_HELP
+    if "--json" in options:
+        assert options["--json"].help == JSON_HELP
+    if "--output" in options:
+        output = options["--output"]
+        assert output.option_strings == ["-o", "--output"] and output.metavar == "FILE"
+        assert re.fullmatch(r"file to write \(\.[^()]+\)(; without it .+)?", output.help), output.help
+    if "--out-dir" in options:
+        assert options["--out-dir"].metavar == "DIR"
+        assert re.fullmatch(r"folder to write .+ into", options["--out-dir"].help), options["--out-dir"].help
+    if "--force" in options:
+        expected = FORCE_DIR_HELP if "--out-dir" in options else FORCE_FILE_HELP
+        assert options["--force"].help == expected
+
+
+def test_the_shared_help_texts():
+    assert (QUIET_HELP, JSON_HELP) == ("print nothing but errors", "print the results as JSON instead of text")
+    assert (FORCE_FILE_HELP, FORCE_DIR_HELP) == ("replace FILE if it exists", "replace the files in DIR that exist")
 
 
 def test_version():
