@@ -84,8 +84,6 @@ OPERATING_TEMPERATURE_LIMIT = 150.0
 BELOW_AMBIENT_SEARCH = 50.0
 #: the search range is scanned in this many steps (about 8 K each) for the lowest equilibrium
 OPERATING_TEMPERATURE_CELLS = 24
-#: where every row's balance has one root, the ends of the range bracket it (6 or 7 balance calls instead of 29)
-SINGLE_ROOT_CELLS = 1
 #: the columns a viscosity-temperature law comes from (:func:`~bearingheat.calc.viscosity.viscosity_model_rows`)
 OIL_DATA = frozenset({"nu40", "nu100", "iso_vg"})
 #: where the operating viscosity is taken when it comes from nu40/nu100 or iso_vg
@@ -167,12 +165,12 @@ def _operating_point(frame, results, nu_at, Q_S, Q_L, Q_E, T_amb, t_limit):
     # (rows with a missing input compare as NaN: their balance is NaN at the ends, status 2 whatever the scan)
     with np.errstate(invalid="ignore", over="ignore"):
         falling = power.closed & ~(Q_S(T_amb + 1.0) <= Q_S(T_amb)) & ~(nu_at(T_high) > nu_at(T_low))
-    cells = SINGLE_ROOT_CELLS if falling.all() else OPERATING_TEMPERATURE_CELLS
-    T_op, status = lowest_operating_temperature(balance, T_low, T_high, cells=cells)
+    T_op, status = lowest_operating_temperature(balance, T_low, T_high, single_root=falling)
     return T_op, status, balance
 
 
-def lowest_operating_temperature(balance, T_low, T_high, *, cells: int = OPERATING_TEMPERATURE_CELLS):
+def lowest_operating_temperature(balance, T_low, T_high, *, cells: int = OPERATING_TEMPERATURE_CELLS,
+                                 single_root=False):
     """The lowest temperature in [T_low, T_high] where the bearing stops heating up, for all rows at once.
 
     ``balance(T)`` is N_R + Q_E − Q_S − Q_L [W] per row (positive while the
@@ -184,7 +182,10 @@ def lowest_operating_temperature(balance, T_low, T_high, *, cells: int = OPERATI
     equilibrium, 1 where the bearing still heats up at T_high (runaway), -1
     where it no longer heats up at T_low, 2 where the balance is NaN at an
     end. Two roots closer together than one cell may both be missed; one
-    root is never missed.
+    root is never missed. Rows marked ``single_root`` (a balance known to
+    fall strictly) are refined between the ends of the range whatever the
+    other rows are, so a row's T does not depend on the rows computed with
+    it; where every row is, the scan is skipped.
 
     >>> T, status = lowest_operating_temperature(
     ...     lambda T: -(T - 40.0) * (T - 90.0) * (T - 120.0), np.array([0.0, 0.0]), np.array([150.0, 30.0]))
@@ -193,6 +194,9 @@ def lowest_operating_temperature(balance, T_low, T_high, *, cells: int = OPERATI
     """
     T_low = np.asarray(T_low, dtype=float)
     T_high = np.asarray(T_high, dtype=float)
+    single = np.broadcast_to(np.asarray(single_root, dtype=bool), np.broadcast_shapes(T_low.shape, T_high.shape))
+    if single.all():
+        cells = 1
     grid = T_low + np.linspace(0.0, 1.0, cells + 1)[:, None] * (T_high - T_low)
     with np.errstate(invalid="ignore", over="ignore"):
         values = np.array([np.asarray(balance(T), dtype=float) for T in grid])  # a loop over the grid, not rows
@@ -205,8 +209,8 @@ def lowest_operating_temperature(balance, T_low, T_high, *, cells: int = OPERATI
     at_low = ~found & (f_low == 0) & ~(f_high > 0)  # in balance already at T_low
     status = np.where(found | at_low, 0, np.where(f_high > 0, 1, np.where(f_low < 0, -1, 2)))  # 2: NaN inside
     status = np.where(np.isnan(f_low) | np.isnan(f_high), 2, status)
-    low = np.where(found, grid[first, rows], T_low)
-    high = np.where(found, grid[first + 1, rows], T_low)
+    low = np.where(found, np.where(single, T_low, grid[first, rows]), T_low)
+    high = np.where(found, np.where(single, T_high, grid[first + 1, rows]), T_low)
     with np.errstate(invalid="ignore", over="ignore"):
         T, _ = bracketed_root(balance, low, high, rtol=1e-14)
     T = np.where(at_low, T_low, T)

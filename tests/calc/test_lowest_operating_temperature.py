@@ -66,12 +66,33 @@ def test_rows_with_one_root_skip_the_scan_and_give_the_same_temperature(monkeypa
     monkeypatch.setattr(models.FrictionPower, "__call__", counted)
     fast = bh.calc(table)
     fast_calls = len(calls)
-    monkeypatch.setattr(thermal, "SINGLE_ROOT_CELLS", thermal.OPERATING_TEMPERATURE_CELLS)
+    original_search = thermal.lowest_operating_temperature
+
+    def scan_every_row(balance, T_low, T_high, **options):
+        return original_search(balance, T_low, T_high, cells=options.get("cells", 24), single_root=False)
+
+    monkeypatch.setattr(thermal, "lowest_operating_temperature", scan_every_row)
     calls.clear()
     scanned = bh.calc(table)
     assert fast_calls <= 7 and len(calls) == 29
     np.testing.assert_allclose(fast["T_op [degC]"], scanned["T_op [degC]"], rtol=1e-12)
     assert fast["T_op [degC]"].notna().sum() >= 5
+
+
+def test_a_single_root_row_does_not_depend_on_the_rows_beside_it():
+    """A row marked single_root is refined between the ends of the range, with or without rows that need the
+    scan beside it (calc in blocks gives the same T as one call)."""
+    def balance(T):  # row 0 falls strictly (root 60 °C); row 1 has three equilibria
+        return np.array([60.0 - T[0], -(T[1] - 40.0) * (T[1] - 70.0) * (T[1] - 100.0)])
+
+    def one_row(T):
+        return 60.0 - T
+
+    together, status = lowest_operating_temperature(balance, np.array([0.0, 0.0]), np.array([150.0, 150.0]),
+                                                    single_root=np.array([True, False]))
+    alone, _ = lowest_operating_temperature(one_row, np.array([0.0]), np.array([150.0]), single_root=True)
+    assert status.tolist() == [0, 0] and together[0] == alone[0]
+    np.testing.assert_allclose(together, [60.0, 40.0], rtol=1e-13)
 
 
 def test_rows_of_a_model_without_the_speed_law_keep_the_scan(monkeypatch):
@@ -80,13 +101,13 @@ def test_rows_of_a_model_without_the_speed_law_keep_the_scan(monkeypatch):
     from bearingheat.calc import thermal
 
     table = pd.read_csv(EXAMPLES / "gearbox_shaft_skf.csv")
-    cells = []
+    marked = []
     original = thermal.lowest_operating_temperature
 
-    def recorded(balance, T_low, T_high, **kw):
-        cells.append(kw.get("cells"))
-        return original(balance, T_low, T_high, **kw)
+    def recorded(balance, T_low, T_high, **options):
+        marked.append(np.asarray(options["single_root"]))
+        return original(balance, T_low, T_high, **options)
 
     monkeypatch.setattr(thermal, "lowest_operating_temperature", recorded)
     bh.calc(table, model="skf")
-    assert cells and set(cells) == {thermal.OPERATING_TEMPERATURE_CELLS}
+    assert marked and not any(m.any() for m in marked)
