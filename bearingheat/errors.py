@@ -25,6 +25,7 @@ __all__ = [
     "MissingExtraError",
     "CatalogueError",
     "F2ChartError",
+    "VMChartError",
     "ModelError",
     "FrictionInputError",
     "HeatBalanceError",
@@ -73,6 +74,10 @@ class CatalogueError(BearingheatError):
 
 class F2ChartError(BearingheatError):
     """A user-digitised f2 chart that cannot be used."""
+
+
+class VMChartError(BearingheatError):
+    """A user-digitised chart of the SKF drag loss factor VM that cannot be used."""
 
 
 class ModelError(BearingheatError):

@@ -32,6 +32,7 @@ from bearingheat.api.thermal import HeatBalanceResult, heat_balance, thermal_ref
 from bearingheat.api.viscosity import oil_viscosity
 from bearingheat.catalogue.designation import decode_gost, parse_designation
 from bearingheat.catalogue.f2chart import F2Chart
+from bearingheat.catalogue.vm_chart import VMChart
 
 __all__ = [
     "friction_torque", "FrictionResult",
@@ -40,5 +41,5 @@ __all__ = [
     "size_bushing", "BushingSize", "size_thrust_washer", "ThrustWasherSize",
     "analyse_coastdown", "analyse_spindle_coastdown",
     "bearing", "BearingData", "bearing_table", "designations",
-    "parse_designation", "decode_gost", "F2Chart",
+    "parse_designation", "decode_gost", "F2Chart", "VMChart",
 ]

@@ -247,6 +247,8 @@ CONTRACT: tuple[Column, ...] = (
     _out("phi_bl", "1", "SKF model: weighting factor of the sliding friction coefficient", "skf"),
     _out("mu_sl", "1", "SKF model: the sliding friction coefficient used", "skf", shown="mu_sl_used"),
     _out("M_start", "N*mm", "SKF model: starting torque", "skf"),
+    _out("VM_chart", "1", "SKF model: the drag loss factor VM read off the digitised VM chart (calc --vm-chart) "
+         "at the row's H/dm; blank where VM was given or not needed", "skf"),
     _out("status", "", "ok | warning | error", "table"),
     _out("message", "", "what is wrong or uncertain, naming the column (and the cell in a workbook)", "table"),
 )

@@ -41,7 +41,7 @@ from bearingheat.kernels.thermal import friction_heat, friction_power
 
 __all__ = ["FrictionModel", "FrictionPower", "MODELS", "DEFAULT_MODEL", "get_model", "compute_supports",
            "RESULT_UNITS", "M2_REPORT_UNITS", "PLAIN_REPORT_UNITS", "MODEL_REPORT_UNITS", "EXTRA_INPUTS",
-           "model_inputs", "support_arrays_of"]
+           "model_inputs", "support_arrays_of", "row_model_names", "SKF"]
 
 Evaluation = Callable[[SupportArrays, Labels, "F2Chart | None"], "tuple[dict[str, np.ndarray], list[Problem]]"]
 
@@ -172,6 +172,11 @@ def _row_models(frame: pd.DataFrame, default: str) -> tuple[np.ndarray, np.ndarr
     errors = np.array(["" if name in MODELS else f"model: {name!r} is not one of {', '.join(MODELS)}"
                        for name in distinct], dtype=object)
     return names, errors[codes]
+
+
+def row_model_names(frame: pd.DataFrame, default: str) -> np.ndarray:
+    """The model name of every row: its ``model`` cell, else ``default`` (an object array)."""
+    return _row_models(frame, default)[0]
 
 
 def _message_at(problem: Problem, position: dict[int, int], row: int) -> str:

@@ -22,13 +22,15 @@ import pandas as pd
 
 from bearingheat.calc import contract
 from bearingheat.calc.messages import Labels, Problem, at
-from bearingheat.calc.supports import SupportArrays
+from bearingheat.calc.supports import SupportArrays, _stripped_or_none, distinct_keys, number_column, per_distinct, \
+    text_codes
 from bearingheat.catalogue import skf as catalogue
 from bearingheat.catalogue.f2chart import F2Chart
+from bearingheat.catalogue.vm_chart import VMChart
 from bearingheat.errors import BearingheatError
 from bearingheat.kernels import skf
 
-__all__ = ["RESULTS", "EXTRA_INPUTS", "evaluate_skf_model"]
+__all__ = ["RESULTS", "EXTRA_INPUTS", "evaluate_skf_model", "fill_vm_from_chart"]
 
 #: the results of the SKF model, in the order calc writes them (catalogue units)
 RESULTS = ("G_rr", "G_sl", "M_rr", "M_sl", "M_seal", "M_drag", "phi_ish", "phi_rs", "phi_bl", "mu_sl", "M_start",
@@ -281,7 +283,8 @@ def evaluate_skf_model(supports: SupportArrays, labels: Labels, f2_chart: F2Char
     missing("VM", lambda i: f"an oil bath needs the drag loss factor VM: read it off "
                             f"{_DRAG_SOURCE.get(at(edition, i), _DRAG_SOURCE['10000'])} for "
                             f"{'ball' if at(bearing_type, i) in catalogue.BALL_TYPES else 'roller'} bearings at "
-                            f"H/dm = {H[i] / dm[i]:.3g}", bath & np.isnan(VM) & known_edition)
+                            f"H/dm = {H[i] / dm[i]:.3g}, or digitise the diagram (calc --vm-chart)",
+            bath & np.isnan(VM) & known_edition)
     add(ok & ~np.isin(lubrication, ("oil_bath", "circulating_oil")) & ~np.isnan(VM), "warning",
         lambda i: f"{labels.name('VM', i)}: ignored; there is drag only in an oil bath or with oil jet")
     low_level = np.where(np.isnan(Dw), H < 0.25 * (D - d), H < 0.5 * Dw)
@@ -450,3 +453,45 @@ def _drag_torques(s, x, c, text, rows_mask, edition, d, D, dm, n, nu, H, VM, jet
                        skf.drag_torque_roller_10000(VM, K_roll, width, dm, n, nu, H, Kz, KL, d, D))
     drag = np.where(e6000, old, new) * np.where(jet, 2.0, 1.0)
     return np.where(rows_mask, drag, 0.0)
+
+
+def fill_vm_from_chart(frame: pd.DataFrame, chart: VMChart, skf_rows: np.ndarray
+                       ) -> tuple[pd.DataFrame, list[tuple[int, str, str]], np.ndarray]:
+    """A blank VM of every oil-bath row of the SKF model read off the user's digitised chart at H/dm.
+
+    ``frame`` holds calc's inputs (contract names, catalogue units) after the
+    bearing table's fill, ``skf_rows`` marks the rows the SKF model computes.
+    A row is read where its lubrication is ``oil_bath``, VM is blank and the
+    oil level H, d and D are given, on the curve of its edition
+    (``skf_edition``, default 10000) and kind (ball or roller bearing, from
+    the SKF tables); other rows are left to the model's own checks. Returns
+    (frame with VM filled, (row position, 'error', message) where the chart
+    refuses the level, VM read off the chart per row (NaN elsewhere)).
+    """
+    n_rows = len(frame)
+    read = np.full(n_rows, np.nan)
+    lubrication = per_distinct(frame["lubrication"], _stripped_or_none) if "lubrication" in frame.columns \
+        else np.full(n_rows, None, dtype=object)
+    VM, H = number_column(frame, "VM"), number_column(frame, "oil_level")
+    d, D = number_column(frame, "d"), number_column(frame, "D")
+    rows = skf_rows & np.equal(lubrication, "oil_bath") & np.isnan(VM) & ~np.isnan(H) & ~np.isnan(d) & ~np.isnan(D)
+    if not rows.any():
+        return frame, [], read
+    edition = per_distinct(frame["skf_edition"], lambda v: _clean(v, False) or catalogue.DEFAULT_EDITION) \
+        if "skf_edition" in frame.columns else np.full(n_rows, catalogue.DEFAULT_EDITION, dtype=object)
+    codes, distinct = distinct_keys([text_codes(frame, c) for c in ("designation", "type", "series")])
+    kind = np.array([_kind(_constants_of(*key)) for key in distinct], dtype=object)[codes]
+    rows &= (kind != "") & np.isin(edition, catalogue.EDITIONS)  # else the model's own message says why
+    positions = np.flatnonzero(rows)
+    values, reasons = chart.lookup(edition[positions], kind[positions], H[positions] / (0.5 * (d + D))[positions])
+    read[positions] = values
+    problems = [(int(i), "error", f"VM: not read off {chart.name}: {reason}; give VM")
+                for i, reason in zip(positions.tolist(), reasons.tolist()) if reason]
+    return frame.assign(VM=np.where(np.isnan(read), VM, read)), problems, read
+
+
+def _kind(constants: dict) -> str:
+    """'ball' or 'roller' for the curve of the VM diagram; '' where the bearing did not resolve."""
+    if constants["error"] or not constants["bearing_type"]:
+        return ""
+    return "ball" if constants["bearing_type"] in catalogue.BALL_TYPES else "roller"

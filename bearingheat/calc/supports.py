@@ -25,7 +25,7 @@ from bearingheat.catalogue.friction import LUBRICATION_F0_COLUMN, ResolvedBearin
 from bearingheat.errors import DesignationError
 
 __all__ = ["SupportArrays", "build_support_arrays", "bearing_constants", "NUMBER_INPUTS", "KEY_INPUTS",
-           "text_column", "number_column"]
+           "text_column", "number_column", "text_codes", "distinct_keys"]
 
 #: numeric inputs of the friction model, in catalogue units
 NUMBER_INPUTS = ("d", "D", "B", "C0", "Y", "e", "X0", "Y0", "alpha", "f0", "f1", "f2", "n", "nu", "Fr", "Fa")
@@ -232,33 +232,31 @@ def _fill_blank(given, printed):
     return np.where(np.isnan(given), printed, given)
 
 
-def _distinct_keys(keys: pd.DataFrame, f0_given: np.ndarray) -> tuple[np.ndarray, list[tuple]]:
-    """Per row the code of its key (the stripped texts of :data:`KEY_INPUTS`, blank arrangement 'single', and
-    whether f0 is given), and the distinct keys in order of first appearance.
+def text_codes(frame: pd.DataFrame, name: str) -> tuple[np.ndarray, list[str | None]]:
+    """A text column as codes into its distinct stripped texts (None for blank cells; a column of None where
+    it is absent), factorized once."""
+    if name not in frame.columns:
+        return np.zeros(len(frame), dtype=np.int64), [None]
+    codes, raw = _factorized(frame[name])
+    texts = [_stripped_or_none(v) for v in raw] + [None]  # code -1 (missing) takes the last entry
+    return np.where(codes < 0, len(raw), codes), texts
 
-    Each column is factorized on its own and the codes are combined column by column (re-factorized after
-    each, so they stay below the row count): no Python object per row.
+
+def distinct_keys(parts: list[tuple[np.ndarray, list]]) -> tuple[np.ndarray, list[tuple]]:
+    """Per row the code of its key, and the distinct keys (tuples) in order of first appearance.
+
+    ``parts`` are (codes, values) of each key column (:func:`text_codes`).
+    The codes are combined column by column and re-factorized after each, so
+    they stay below the row count: no Python object per row.
     """
-    size = len(keys)
+    size = len(parts[0][0])
     combined = np.zeros(size, dtype=np.int64)
-    parts = []
-    for name in KEY_INPUTS:
-        if name in keys.columns:
-            column_codes, raw = _factorized(keys[name])
-            texts = [_stripped_or_none(v) for v in raw] + [None]  # code -1 (missing) takes the last entry
-            column_codes = np.where(column_codes < 0, len(raw), column_codes)
-        else:
-            column_codes, texts = np.zeros(size, dtype=np.int64), [None]
-        if name == "arrangement":
-            texts = [text or "single" for text in texts]
-        parts.append((column_codes, texts))
-        combined = pd.factorize(combined * len(texts) + column_codes, sort=False)[0].astype(np.int64)
-    codes = pd.factorize(combined * 2 + f0_given.astype(np.int64), sort=False)[0]
-    first_row = np.empty(codes.max() + 1 if size else 0, dtype=np.intp)
-    first_row[codes[::-1]] = np.arange(size)[::-1]
-    uniques = [tuple(texts[column_codes[row]] for column_codes, texts in parts) + (bool(f0_given[row]),)
-               for row in first_row.tolist()]
-    return codes, uniques
+    for column_codes, values in parts:
+        combined = pd.factorize(combined * len(values) + column_codes, sort=False)[0].astype(np.int64)
+    first_row = np.empty(int(combined.max()) + 1 if size else 0, dtype=np.intp)
+    first_row[combined[::-1]] = np.arange(size)[::-1]
+    uniques = [tuple(values[column_codes[row]] for column_codes, values in parts) for row in first_row.tolist()]
+    return combined, uniques
 
 
 def build_support_arrays(keys: pd.DataFrame, numbers: dict[str, Any]) -> SupportArrays:
@@ -283,7 +281,10 @@ def build_support_arrays(keys: pd.DataFrame, numbers: dict[str, Any]) -> Support
         f0_given = ~np.isnan(np.broadcast_to(num["f0"], (size,)))
     else:  # one bearing: f0 is given for all its points or for none
         f0_given = np.array([not np.all(np.isnan(num["f0"]))])
-    codes, uniques = _distinct_keys(keys, f0_given)
+    parts = [text_codes(keys, name) for name in KEY_INPUTS]
+    arrangement = KEY_INPUTS.index("arrangement")
+    parts[arrangement] = (parts[arrangement][0], [text or "single" for text in parts[arrangement][1]])
+    codes, uniques = distinct_keys([*parts, (f0_given.astype(np.int64), [False, True])])
     per_key = [_constants_of_key(*key) for key in uniques]
     plain_keys = np.array([(key[1] or "").lower() in PLAIN_TYPES for key in uniques], dtype=bool)
     notes_of_key = np.empty(len(per_key), dtype=object)

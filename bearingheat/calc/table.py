@@ -40,8 +40,10 @@ from bearingheat.calc.fill import fill_from_catalogue
 from bearingheat.calc.uncertainty import fill_from_coefficients, has_uncertainty, uncertainty_bands
 from bearingheat.catalogue.bearings import CATALOGUE
 from bearingheat.calc.models import (DEFAULT_MODEL, M2_REPORT_UNITS, MODEL_REPORT_UNITS, PLAIN_REPORT_UNITS,
-                                    RESULT_UNITS, compute_supports)
+                                     RESULT_UNITS, SKF, compute_supports, row_model_names)
 from bearingheat.catalogue.f2chart import F2Chart
+from bearingheat.catalogue.vm_chart import VMChart
+from bearingheat.calc.skf import fill_vm_from_chart
 from bearingheat.errors import InputError, UnitError
 from bearingheat.units import convert_column
 
@@ -206,6 +208,7 @@ def require_columns(frame: pd.DataFrame) -> None:
 
 
 def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart | str | None = None,
+         vm_chart: VMChart | str | None = None,
          units: dict[str, str] | None = None, cell: Callable[[str, int], str] | None = None,
          effects=None, n_per_method: str = DEFAULT_SPEED_FACTOR_METHOD,
          viscosity_at: str = DEFAULT_VISCOSITY_AT, coefficients: pd.DataFrame | str | None = None,
@@ -252,6 +255,12 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
         A digitised f2 chart (:class:`~bearingheat.catalogue.f2chart.F2Chart`),
         or the path of its CSV, for M2 of axially loaded cylindrical roller
         bearings.
+    vm_chart : VMChart or str, optional
+        A digitised chart of the SKF drag loss factor VM against H/dm
+        (:class:`~bearingheat.catalogue.vm_chart.VMChart`), or the path of
+        its CSV: oil-bath rows of the SKF model with a blank VM read it off
+        the chart of their edition and kind (never extrapolated); the column
+        ``VM_chart`` shows the value read.
     units : dict of str to str, optional
         Header -> unit typed in a separate units row (Excel); a unit in the
         header itself wins.
@@ -316,11 +325,13 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
     1     81.217  12.757     ok
     """
     if is_dask_frame(table):  # lazily, partition by partition (bearingheat.calc.distributed)
-        return calc_dask(table, calc, model=model, f2_chart=f2_chart, units=units, effects=effects,
+        return calc_dask(table, calc, model=model, f2_chart=f2_chart, vm_chart=vm_chart, units=units, effects=effects,
                          n_per_method=n_per_method, viscosity_at=viscosity_at, coefficients=coefficients,
                          uncertainty=uncertainty)
     if isinstance(f2_chart, str):
         f2_chart = F2Chart.from_csv(f2_chart)
+    if isinstance(vm_chart, str):
+        vm_chart = VMChart.from_csv(vm_chart)
     if n_per_method not in SPEED_FACTOR_METHODS:
         raise InputError(f"n_per_method: {n_per_method!r} is not one of {', '.join(SPEED_FACTOR_METHODS)}")
     if viscosity_at not in VISCOSITY_AT:
@@ -334,6 +345,10 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
         cells = frame["viscosity_at"] if "viscosity_at" in frame.columns else pd.Series(None, index=frame.index)
         frame = frame.assign(viscosity_at=cells.where(cells.notna(), viscosity_at))
     frame, fill_problems, from_table = fill_from_catalogue(frame, converted.labels)
+    vm_read = None
+    if vm_chart is not None:  # SKF model: a blank VM of an oil bath from the digitised diagram
+        frame, vm_problems, vm_read = fill_vm_from_chart(frame, vm_chart, row_model_names(frame, model) == SKF.name)
+        fill_problems = fill_problems + vm_problems
     extra_problems = [p for p in fill_problems if p[1] == "warning"]
     for ext in EXTENSIONS.values():
         with np.errstate(all="ignore"):  # rows in error are computed too, and masked afterwards
@@ -359,6 +374,8 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
             columns, problems = ext.extend(frame, results)
         _add_messages(results, [(i, level, m, False) for i, level, m in problems])
         extension_columns.append((columns, output_units(owner=ext.owner)))
+    if vm_read is not None and not np.isnan(vm_read).all():
+        extension_columns.append((pd.DataFrame({"VM_chart": vm_read}, index=results.index), {"VM_chart": "1"}))
     out = _assemble(table, results, extension_columns)
     if coefficients is not None:
         table = fill_from_coefficients(table, pd.read_csv(coefficients) if isinstance(coefficients, str)
@@ -367,7 +384,7 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
         frame = fill_from_catalogue(again.frame, again.labels)[0]  # the uncertainty columns, the same fill
     if has_uncertainty(table):
         def recalc(perturbed: pd.DataFrame) -> pd.DataFrame:
-            return calc(perturbed, model=model, f2_chart=f2_chart, units=units, effects=effects,
+            return calc(perturbed, model=model, f2_chart=f2_chart, vm_chart=vm_chart, units=units, effects=effects,
                         n_per_method=n_per_method, viscosity_at=viscosity_at)
         bands = uncertainty_bands(table, out, frame.reset_index(drop=True).set_axis(out.index), recalc,
                                   method=uncertainty)

@@ -29,15 +29,14 @@ charts must not be extrapolated.
 """
 from __future__ import annotations
 
-import csv
-import io
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
-from bearingheat.units import convert_column
+from bearingheat.catalogue.digitised import read_chart_csv
 from bearingheat.errors import F2ChartError, UnitError
+from bearingheat.units import convert_column
 
 __all__ = ["F2Chart", "F2ChartError"]
 
@@ -122,25 +121,14 @@ class F2Chart:
     def from_csv(cls, path: str | Path) -> "F2Chart":
         """Read a digitised chart in the format of the module docstring."""
         path = Path(path)
-        try:
-            text = path.read_text(encoding="utf-8-sig")
-        except OSError as exc:
-            raise F2ChartError(f"{path}: cannot read the f2 chart ({exc.strerror})") from exc
-        rows = list(csv.reader(io.StringIO(text)))
-        required = ["curve", "Fa_over_A", "nu_n_dM", "f2"]
-        if len(rows) < 2 or any(col not in rows[0] for col in required):
-            raise F2ChartError(f"{path}: an f2 chart needs the columns {', '.join(required)} and a units row")
-        header, units = rows[0], rows[1]
-        col = {name: header.index(name) for name in required}
+        col, units, rows = read_chart_csv(path, ["curve", "Fa_over_A", "nu_n_dM", "f2"], "an f2 chart", F2ChartError)
         try:
             scale = convert_column(np.ones(1), units[col["nu_n_dM"]], _X_UNIT, name="nu_n_dM")[1]
         except UnitError as exc:  # an unknown unit, or one of another dimension
             raise F2ChartError(f"{path}: units row: nu_n_dM unit {units[col['nu_n_dM']]!r} "
                                f"is not convertible to {_X_UNIT}") from exc
         points: dict[str, tuple[float, list[float], list[float]]] = {}
-        for line_no, row in enumerate(rows[2:], start=3):
-            if not any(cell.strip() for cell in row):
-                continue
+        for line_no, row in rows:
             try:
                 label = row[col["curve"]].strip()
                 level, x, f2 = (float(row[col[c]]) for c in ("Fa_over_A", "nu_n_dM", "f2"))

@@ -16,7 +16,7 @@ import pandas as pd
 import pyarrow.compute as pc
 
 from bearingheat.cli import UsageError, add_csv_arguments
-from bearingheat.errors import ExcelError, F2ChartError, InputError
+from bearingheat.errors import ExcelError, F2ChartError, InputError, VMChartError
 from bearingheat.cli.options import add_force, add_json, add_output, add_quiet
 from bearingheat.io.console import Progress, print_summary, print_table, summary_columns
 from bearingheat.io.dataset import (calc_dataset, check_dataset_target, dask_client, dataset_columns, dataset_files,
@@ -63,6 +63,9 @@ or a file fault (cannot read or write, disk full, damaged workbook).
 """
 
 
+#: errors that make the input unusable: one line and exit 2 (ExcelError is an InputError)
+UNUSABLE_INPUT = (InputError, F2ChartError, VMChartError)
+
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("input", metavar="INPUT",
                         help="table of supports: CSV (.csv), Parquet (.parquet), Arrow/Feather (.arrow, .feather) or "
@@ -70,6 +73,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_output(parser, ".csv, .parquet, .arrow, .feather or .xlsx; with --dask a folder for the Parquet dataset")
     parser.add_argument("--f2-chart", metavar="CSV",
                         help="digitised f2 chart (docs/friction.md gives the format)")
+    parser.add_argument("--vm-chart", metavar="CSV",
+                        help="digitised chart of the SKF drag loss factor VM against H/dm: oil-bath rows of the SKF "
+                             "model with a blank VM read it off (docs/skf.md gives the format)")
     parser.add_argument("--effects", metavar="SUMMARY_JSON",
                         help="apply an effect fitted by 'bearingheat diagnose' (its summary.json)")
     parser.add_argument("--sheet", metavar="NAME", help="input sheet of an Excel workbook")
@@ -143,7 +149,7 @@ def _pdf(args: argparse.Namespace, workbook: Path | None, source: Path) -> Path 
 
 def _calc_options(args: argparse.Namespace) -> dict:
     """calc's options from the command line."""
-    return dict(model=args.model, f2_chart=args.f2_chart, n_per_method=args.n_per_method,
+    return dict(model=args.model, f2_chart=args.f2_chart, vm_chart=args.vm_chart, n_per_method=args.n_per_method,
                 effects=_load_effects(args.effects), viscosity_at=args.viscosity_at, coefficients=args.coefficients)
 
 
@@ -167,10 +173,7 @@ def run(args: argparse.Namespace) -> int:
         result = calc_csv(source, sep=args.sep, decimal=args.decimal, **_calc_options(args))
         duty = duty_cycle(result) if has_duty_cycle(result) else None
         if duty is not None and target is not None and target.suffix.lower() not in EXCEL_SUFFIXES:
-            # the summary per support beside the results: <name>.duty.csv
-            duty_target = safe_output(target.with_name(f"{target.stem}.duty{target.suffix}"), force=args.force,
-                                      inputs=(source,))
-            write_table(duty, duty_target, escape=not args.no_csv_escape)
+            _write_duty_beside(duty, target, source, args)
         if target is not None:
             if target.suffix.lower() in EXCEL_SUFFIXES:
                 write_results_workbook(result, target, source, duty)
@@ -178,44 +181,50 @@ def run(args: argparse.Namespace) -> int:
                     export_pdf(target, "Results", pdf)
             else:
                 write_table(result, target, escape=not args.no_csv_escape)
-    except (InputError, F2ChartError) as exc:  # ExcelError is an InputError
+    except UNUSABLE_INPUT as exc:
         raise UsageError(str(exc)) from exc
     if args.json:
         print(results_json(result, duty))
     elif not args.quiet:
-        print_summary(result, args.output)
-        if duty is not None:
-            print()
-            print_table(duty, title="duty cycle (time-weighted per support):")
+        _print_results(result, duty, args.output)
     return 1 if (result["status"] == "error").any() else 0
+
+
+def _write_duty_beside(duty: pd.DataFrame, target: Path, source: Path, args: argparse.Namespace) -> None:
+    """The duty-cycle summary per support beside the results: <name>.duty.<suffix>."""
+    duty_target = safe_output(target.with_name(f"{target.stem}.duty{target.suffix}"), force=args.force,
+                              inputs=(source,))
+    write_table(duty, duty_target, escape=not args.no_csv_escape)
+
+
+def _print_results(results, duty: pd.DataFrame | None, output: str | None) -> None:
+    """The summary of the results (first rows, counts) and the duty-cycle table where there is one."""
+    print_summary(results, output)
+    if duty is not None:
+        print()
+        print_table(duty, title="duty cycle (time-weighted per support):")
 
 
 def run_table(args: argparse.Namespace, source: Path, target: Path | None) -> int:
     """``bearingheat calc IN.csv|parquet|arrow [-o OUT.csv|parquet|arrow|feather]``: calc a block of rows at a
     time (:func:`bearingheat.io.pipeline.calc_file`, with a progress bar on a terminal), the results held as Arrow
     and written by pyarrow; at most the first rows and the counts are printed."""
-    escape = not args.no_csv_escape
     try:
         results = calc_file(source, sep=args.sep, decimal=args.decimal, progress=Progress(enabled=not args.quiet),
                             **_calc_options(args))
         has_duty = has_duty_cycle(pd.DataFrame(columns=results.column_names))
         result = results.to_pandas() if args.json or has_duty else None
         duty = duty_cycle(result) if result is not None and has_duty else None
-        if duty is not None and target is not None:  # the summary per support beside the results: <name>.duty.csv
-            duty_target = safe_output(target.with_name(f"{target.stem}.duty{target.suffix}"), force=args.force,
-                                      inputs=(source,))
-            write_table(duty, duty_target, escape=escape)
+        if duty is not None and target is not None:
+            _write_duty_beside(duty, target, source, args)
         if target is not None:
-            write_table(results, target, escape=escape)
-    except (InputError, F2ChartError) as exc:
+            write_table(results, target, escape=not args.no_csv_escape)
+    except UNUSABLE_INPUT as exc:
         raise UsageError(str(exc)) from exc
     if args.json:
         print(results_json(result if result is not None else results.to_pandas(), duty))
     elif not args.quiet:
-        print_summary(results, args.output)
-        if duty is not None:
-            print()
-            print_table(duty, title="duty cycle (time-weighted per support):")
+        _print_results(results, duty, args.output)
     return 1 if pc.any(pc.equal(results.column("status"), "error")).as_py() else 0
 
 
@@ -237,7 +246,7 @@ def run_dask(args: argparse.Namespace) -> int:
         with dask_client(args.scheduler, args.workers):
             calc_dataset(files, target, overwrite=args.force, **_calc_options(args))
         shown = read_dataset_columns(target, summary_columns(dataset_columns(target)))
-    except (InputError, F2ChartError) as exc:
+    except UNUSABLE_INPUT as exc:
         raise UsageError(str(exc)) from exc
     if not args.quiet:
         print_summary(shown, f"{target}/ (Parquet dataset of {len(files)} input files)")
@@ -261,7 +270,8 @@ def run_calc_workbook(args: argparse.Namespace) -> int:
     progress = Progress(enabled=not args.quiet)
     options = dict(sheet=args.sheet, formulas=args.formulas, model=args.model, n_per_method=args.n_per_method,
                    viscosity_at=args.viscosity_at,
-                   f2_chart=args.f2_chart, effects=_load_effects(args.effects), progress=progress)
+                   f2_chart=args.f2_chart, vm_chart=args.vm_chart, effects=_load_effects(args.effects),
+                   progress=progress)
     try:
         if args.in_place:
             real = safe_output(source, force=True)  # refuses a read-only workbook; writes through a link
@@ -271,10 +281,8 @@ def run_calc_workbook(args: argparse.Namespace) -> int:
             run = calc_workbook(source, None if csv_target is not None else target, **options)
         if csv_target is not None:
             write_csv(run.result, csv_target, escape=not args.no_csv_escape)
-            if run.duty is not None:  # the summary per support beside the results: <name>.duty.csv
-                write_csv(run.duty, safe_output(csv_target.with_name(f"{csv_target.stem}.duty.csv"),
-                                                force=args.force, inputs=(source,)),
-                          escape=not args.no_csv_escape)
+            if run.duty is not None:
+                _write_duty_beside(run.duty, csv_target, source, args)
         if pdf is not None and run.results_sheet is not None:  # a workbook written has its results sheet
             export_pdf(real if args.in_place else target, run.results_sheet, pdf)
     except ExcelError as exc:
@@ -286,10 +294,7 @@ def run_calc_workbook(args: argparse.Namespace) -> int:
         output = args.input if args.in_place else args.output
         if output is not None:
             where = f"{output}" + (f", sheet {run.results_sheet!r}" if run.results_sheet else "")
-        print_summary(run.result, where)
-        if run.duty is not None:
-            print()
-            print_table(run.duty, title="duty cycle (time-weighted per support):")
+        _print_results(run.result, run.duty, where)
         for note in run.notes:
             print(f"note: {note}", file=sys.stderr)
         if run.dropped:

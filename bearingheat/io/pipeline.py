@@ -27,6 +27,7 @@ import pyarrow as pa
 from bearingheat.calc.contract import CONTRACT, output_header
 from bearingheat.calc.table import calc
 from bearingheat.catalogue.f2chart import F2Chart
+from bearingheat.catalogue.vm_chart import VMChart
 from bearingheat.io.arrow import ARROW_SUFFIXES, arrow_column, read_arrow_table, unit_of
 from bearingheat.io.csv_reader import RowLines, read_source
 from bearingheat.io.tables import cite_rows, set_aside
@@ -107,10 +108,13 @@ def _concat(blocks: list[pa.Table]) -> pa.Table:
 
 
 def _loaded(options: dict) -> dict:
-    """calc's options with the files it would read on every call read once (an f2 chart, a coefficients CSV)."""
+    """calc's options with the files it would read on every call read once (the f2 and VM charts, a coefficients
+    CSV)."""
     options = dict(options)
     if isinstance(options.get("f2_chart"), str):
         options["f2_chart"] = F2Chart.from_csv(options["f2_chart"])
+    if isinstance(options.get("vm_chart"), str):
+        options["vm_chart"] = VMChart.from_csv(options["vm_chart"])
     if isinstance(options.get("coefficients"), str):
         options["coefficients"] = pd.read_csv(options["coefficients"])
     return options

@@ -215,10 +215,10 @@ ERRORS = [
      "ring raceway (SKF 10000/3 p. 110, fig. 2)"),
     ({"VM": None},
      "VM: missing; an oil bath needs the drag loss factor VM: read it off SKF 6000 diagram 2 (p. 99; red curve ball "
-     "bearings, blue roller bearings) for roller bearings at H/dm = 0.0417"),
+     "bearings, blue roller bearings) for roller bearings at H/dm = 0.0417, or digitise the diagram (calc --vm-chart)"),
     ({"VM": None, "skf_edition": "10000"},
      "VM: missing; an oil bath needs the drag loss factor VM: read it off SKF 10000/3 diagram 4 (p. 112) for roller "
-     "bearings at H/dm = 0.0417"),
+     "bearings at H/dm = 0.0417, or digitise the diagram (calc --vm-chart)"),
     ({"skf_edition": "10000", "nu": 600.0},
      "nu [mm^2/s]: 600 is above 500 mm²/s, the limit of the SKF 10000/3 drag formula for an oil level H <= D/2 "
      "(p. 110); use skf_edition 6000 or a thinner oil"),

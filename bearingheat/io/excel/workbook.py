@@ -34,7 +34,7 @@ from bearingheat.calc.duty import duty_cycle, has_duty_cycle
 from bearingheat.calc.models import DEFAULT_MODEL
 from bearingheat.calc.table import calc
 from bearingheat.calc.thermal import DEFAULT_SPEED_FACTOR_METHOD, DEFAULT_VISCOSITY_AT
-from bearingheat.errors import ExcelError, F2ChartError, InputError, WorkbookContentError
+from bearingheat.errors import ExcelError, F2ChartError, InputError, VMChartError, WorkbookContentError
 from bearingheat.io.excel.ownership import (COMPANION_MARKS, INPUT_MARK, RESULTS_MARK, choose_companion_sheet,
                                             choose_results_sheet, mark_value, read_companions, read_marks)
 from bearingheat.io.excel.package import Package, open_package, write_results_in_place
@@ -49,6 +49,7 @@ from bearingheat.io.tables import write_csv
 if TYPE_CHECKING:
     from bearingheat.analysis.diagnose import FittedEffect
     from bearingheat.catalogue.f2chart import F2Chart
+    from bearingheat.catalogue.vm_chart import VMChart
     from bearingheat.io.console import Progress
 
 __all__ = ["calc_workbook", "WorkbookRun"]
@@ -153,7 +154,8 @@ def _mark_results_sheet(workbook: Workbook, input_sheet: str, placeholders: list
 def calc_workbook(path: str | os.PathLike[str], output: str | os.PathLike[str] | None = None, *,
                   sheet: str | None = None, in_place: bool = False, formulas: bool = False,
                   model: str = DEFAULT_MODEL, n_per_method: str = DEFAULT_SPEED_FACTOR_METHOD,
-                  f2_chart: F2Chart | str | None = None, effects: FittedEffect | None = None, keep_vba: bool = True,
+                  f2_chart: F2Chart | str | None = None, vm_chart: VMChart | str | None = None,
+                  effects: FittedEffect | None = None, keep_vba: bool = True,
                   progress: Progress | None = None, viscosity_at: str = DEFAULT_VISCOSITY_AT) -> WorkbookRun:
     """Run calc on a sheet of supports and write a results sheet.
 
@@ -202,12 +204,14 @@ def calc_workbook(path: str | os.PathLike[str], output: str | os.PathLike[str] |
                     "would drop them; the file is unchanged. Write the results to a new workbook with "
                     "-o OUTPUT.xlsx instead")
         return _run(source, target, edit, sheet=sheet, formulas=formulas, model=model,
-                    n_per_method=n_per_method, f2_chart=f2_chart, effects=effects, keep_vba=keep_vba,
+                    n_per_method=n_per_method, f2_chart=f2_chart, vm_chart=vm_chart, effects=effects,
+                    keep_vba=keep_vba,
                     progress=progress, viscosity_at=viscosity_at)
 
 
 def _run(source: Path, target: Path | None, edit: tuple[Package, WorkbookLock] | None, *, sheet: str | None,
-         formulas: bool, model: str, n_per_method: str, f2_chart: F2Chart | str | None, effects: FittedEffect | None,
+         formulas: bool, model: str, n_per_method: str, f2_chart: F2Chart | str | None,
+         vm_chart: VMChart | str | None, effects: FittedEffect | None,
          keep_vba: bool, progress: Progress | None, viscosity_at: str = DEFAULT_VISCOSITY_AT) -> WorkbookRun:
     """Read, calc and write (the checks of :func:`calc_workbook` done; ``edit``: the package and its lock, for
     in-place)."""
@@ -219,8 +223,8 @@ def _run(source: Path, target: Path | None, edit: tuple[Package, WorkbookLock] |
         raise ExcelError(f"sheet {info.sheet!r}: no supports under the header (row {info.header_row})")
     try:
         result = calc(table, model=model, n_per_method=n_per_method, units=info.units, cell=info.cell,
-                      f2_chart=f2_chart, effects=effects, viscosity_at=viscosity_at)
-    except F2ChartError as exc:
+                      f2_chart=f2_chart, vm_chart=vm_chart, effects=effects, viscosity_at=viscosity_at)
+    except (F2ChartError, VMChartError) as exc:
         raise ExcelError(str(exc)) from exc
     except InputError as exc:
         raise _input_error(exc, info) from exc
