@@ -191,8 +191,10 @@ def to_catalogue_units(table: pd.DataFrame, *, units: dict[str, str] | None = No
 def require_columns(frame: pd.DataFrame) -> None:
     """Raise :class:`InputError` naming the first required column the frame (contract names) lacks."""
     have = set(frame.columns)
-    types = frame["type"] if "type" in have else pd.Series([None] * len(frame), index=frame.index)
-    rolling = ~types.fillna("").astype(str).str.lower().isin(PLAIN_TYPES)
+    rolling = np.ones(len(frame), dtype=bool)
+    if "type" in have:
+        types = per_distinct(frame["type"], lambda v: str(v).lower() if isinstance(v, str) else "")
+        rolling = ~pd.Series(types, dtype=object).isin(PLAIN_TYPES).to_numpy()
     if "n" not in have:
         raise InputError("missing column: 'n [1/min]' (any n unit of the right dimension)")
     if not rolling.any():

@@ -313,7 +313,7 @@ def _solve_operating_temperature(frame, A, B, rows, t_limit, problems, unsolved)
 def _plain_rows(results: pd.DataFrame) -> np.ndarray:
     if "bearing_type" not in results.columns:
         return np.zeros(len(results), dtype=bool)
-    return (results["bearing_type"].astype(str) == "plain_bushing").to_numpy()
+    return (results["bearing_type"].to_numpy(dtype=object) == "plain_bushing")
 
 
 def _no_equilibrium_text(status, T_amb, t_limit):
