@@ -186,7 +186,7 @@ def interval_friction_table(t: npt.ArrayLike, n_smooth: npt.ArrayLike, I: float,
     """Interval-average torque and the TMM-7M lab sheet formula (2) over chosen intervals of the smoothed run-down.
 
     Intervals are speed steps ``dn`` [1/min] down from the first smoothed speed
-    (the seed's way: read Δt for a chosen Δn off the diagram), or time steps
+    (the TMM-7M lab sheet's way: read Δt for a chosen Δn off the diagram), or time steps
     ``dt`` [s]; with neither, ``count`` equal speed steps over the recorded
     range. Crossing times are interpolated linearly on the smoothed curve.
     Returns a DataFrame; the ``f`` column is NaN when G or r is not given.
@@ -305,7 +305,7 @@ class CoastdownResult:
 
     @property
     def f_constant(self) -> float:
-        """The seed's single coefficient: M_c of the constant-torque (Coulomb) fit over G·r."""
+        """The TMM-7M lab sheet's single coefficient: M_c of the constant-torque (Coulomb) fit over G·r."""
         if self.G is None or self.r is None:
             return float("nan")
         return self.fits["coulomb"].value("M_c") / (self.G * self.r / 1000.0)

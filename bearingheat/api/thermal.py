@@ -1,7 +1,7 @@
 """The heat balance for Python callers: pint Quantities in, :class:`HeatBalanceResult` of Quantities out.
 
 Thermal reference speed, permissible speed and operating temperature of a
-bearing (issue 3, after Schaeffler HR 1, ISO 15312 and DIN 732). The rows
+bearing (after Schaeffler HR 1, ISO 15312 and DIN 732). The rows
 are :mod:`bearingheat.calc.thermal`, the formulas
 :mod:`bearingheat.kernels.thermal`; the friction comes from
 :func:`bearingheat.calc.models.compute_supports`.

@@ -6,7 +6,7 @@ Row functions: :func:`thermal_reference_speed_rows` and
 pass) and :func:`heat_balance_rows` (n_thr, n_per, T_op, nu_op, Q_S, Q_L
 after it). The formulas are :mod:`bearingheat.kernels.thermal`, the
 reference conditions :mod:`bearingheat.catalogue.thermal`; the unit-aware
-functions are :mod:`bearingheat.api.thermal` (issue 3, after Schaeffler
+functions are :mod:`bearingheat.api.thermal` (after Schaeffler
 HR 1, ISO 15312 and DIN 732).
 
 As a calc extension (:func:`prepare`, :func:`extend`) it reads the

@@ -78,11 +78,6 @@ def _version() -> str:
         return "unknown (not installed)"
 
 
-def add_force_argument(parser: argparse.ArgumentParser, what: str = "the output file") -> None:
-    """``--force``: replace existing output files (without it an existing file is refused, exit 2)."""
-    parser.add_argument("--force", action="store_true", help=f"replace {what} if it exists")
-
-
 def add_csv_arguments(parser: argparse.ArgumentParser) -> None:
     """``--sep`` and ``--decimal`` of a CSV input (found from the file when not given)."""
     parser.add_argument("--sep", metavar="SEP", choices=(",", ";", "tab", "\t"),

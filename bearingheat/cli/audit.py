@@ -13,6 +13,7 @@ from bearingheat.calc.contract import parse_header
 from bearingheat.calc.models import DEFAULT_MODEL, MODELS
 from bearingheat.cli import UsageError, add_csv_arguments
 from bearingheat.cli.options import add_force, add_json, add_out_dir, add_quiet
+from bearingheat.io.console import print_table
 from bearingheat.io.json import json_safe
 from bearingheat.errors import AuditError, DiagnoseError
 from bearingheat.io.files import check_outputs
@@ -87,7 +88,8 @@ def run(args: argparse.Namespace) -> int:
         raise UsageError(f"--folds: {args.folds} must be >= 2")
     out_dir = Path(args.out_dir) if args.out_dir else None
     models = model_names(args.model)
-    say = (lambda text: None) if args.quiet or args.json else (lambda text: sys.stdout.write(text + "\n"))
+    silent = args.quiet or args.json
+    say = (lambda text: None) if silent else (lambda text: sys.stdout.write(text + "\n"))
     printed: dict = {}
     flagged = False
     speed_names = [args.speed_column] if args.speed_column else list(REFERENCE_SPEED_COLUMNS)
@@ -115,7 +117,10 @@ def run(args: argparse.Namespace) -> int:
         for kind, table in jobs:
             if kind == "coefficients":
                 result = audit_coefficients(table)
-                for line in coefficient_lines(result):
+                title, _, *excluded = coefficient_lines(result)  # the title, the table as text, excluded rows
+                if not silent:
+                    print_table(result, float_format=".4g", title=title)
+                for line in excluded:
                     say(line)
                 flagged |= bool((result["flag"] != "").any() or (result["status"] != "ok").any())
                 printed["coefficients"] = result.to_dict(orient="records")

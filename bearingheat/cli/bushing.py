@@ -11,6 +11,7 @@ import numpy as np
 from bearingheat.api.bushing import BushingSize, ThrustWasherSize, size_bushing, size_thrust_washer
 from bearingheat.catalogue.bushing import KGF_PER_CM2
 from bearingheat.cli import UsageError
+from bearingheat.cli.options import add_json, add_quiet
 from bearingheat.io.json import json_safe
 from bearingheat.errors import BearingheatError, OutsideMethodError, UnitError
 from bearingheat.kernels.bushing import oscillating_speed_seed004
@@ -39,7 +40,8 @@ Oscillation: --cycles 30/min --amplitude 90deg instead of --n
   (n = cycles x amplitude in revolutions, the DU/DP bushing handbook).
 --f: friction coefficient for the power loss N = f*F*V; default the handbook's
   range (0.05-0.1 at 0.05-0.1 m/s, 0.1-0.2 at 0.2-5 m/s).
---json prints the result as JSON.
+--json prints the result as JSON; -q prints nothing but errors (a duty outside
+  the method is one: its message goes to stderr, exit 1).
 
 Exit codes: 0 sized; 1 the duty lies outside the DU/DP bushing handbook's method (V below
 0.05 m/s, n above 15 000 1/min, T outside -200..280 degC, no standard size
@@ -62,7 +64,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--T", default=None, help="operating temperature, e.g. 150degC")
     parser.add_argument("--standard", default=None, help="standard lengths (outer diameters), e.g. 10,15,20,25mm")
     parser.add_argument("--f", type=float, default=None, help="friction coefficient for the power loss")
-    parser.add_argument("--json", action="store_true", help="print JSON instead of text")
+    add_json(parser)
+    add_quiet(parser)
 
 
 def _quantity(text, name):
@@ -129,7 +132,7 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         print(json.dumps(json_safe({k: (float(v) if isinstance(v, (int, float)) else v) for k, v in plain.items()}),
                          indent=2))
-    else:
+    elif not args.quiet:
         print(render(plain, args.application))
     return 0
 

@@ -5,8 +5,8 @@ import argparse
 import json
 
 from bearingheat.api.coastdown import analyse_coastdown, analyse_spindle_coastdown
-from bearingheat.cli import UsageError, add_csv_arguments, add_force_argument
-from bearingheat.cli.options import add_json, add_out_dir
+from bearingheat.cli import UsageError, add_csv_arguments
+from bearingheat.cli.options import add_force, add_json, add_out_dir, add_quiet
 from bearingheat.errors import BearingheatError, UnitError
 from bearingheat.io.coastdown import read_rundown
 from bearingheat.io.files import check_outputs
@@ -41,7 +41,8 @@ so that f0 can be audited against the catalogue value given by --f0.
 --out-dir DIR writes DIR/report.md, DIR/coastdown.png and DIR/summary.json
 (keys include model, 'M_c [N*m]', 'c_v [N*m*s]', 'c_a [N*m*s^2]', f_constant,
 'rmse_before [1/min]', 'rmse_after [1/min]'). Existing files in DIR are
-replaced only with --force; each file is written atomically.
+replaced only with --force; each file is written atomically. --json prints
+the summary instead of the report; -q prints nothing but errors.
 
 Exit codes: 0 done; 2 unusable input (missing file or column, bad cell, bad
 unit, too few samples, speed not falling) or a file fault."""
@@ -62,7 +63,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     intervals.add_argument("--dt", default=None, help="time step of the formula (2) intervals, e.g. 10s")
     add_out_dir(parser, "report.md, coastdown.png and summary.json")
     add_json(parser)
-    add_force_argument(parser, "the files in DIR")
+    add_quiet(parser)
+    add_force(parser)
     add_csv_arguments(parser)
     parser.add_argument("--spindle", action="store_true", help="also fit the Schaeffler catalogue rolling-bearing form")
     parser.add_argument("--nu", default=None, help="oil viscosity at operating temperature, e.g. 20mm^2/s")
@@ -103,7 +105,7 @@ def run(args: argparse.Namespace) -> int:
         raise UsageError(str(exc)) from exc
     if args.json:
         print(json.dumps(coastdown_summary(result), ensure_ascii=False))
-    else:
+    elif not args.quiet:
         print(render_report(result, args.data, png=None))
     if args.out_dir:
         write_coastdown_outputs(result, args.out_dir, args.data, force=args.force, inputs=(args.data,))

@@ -12,7 +12,7 @@ from typing import Any
 from bearingheat.api.contact import ball_bearing_contact
 from bearingheat.calc.contract import parse_header
 from bearingheat.cli import UsageError
-from bearingheat.cli.options import add_json
+from bearingheat.cli.options import add_json, add_quiet
 from bearingheat.errors import BearingheatError, InputError, UnitError
 from bearingheat.io.console import print_record
 from bearingheat.io.tables import escape_cell, read_text, sniff_format
@@ -21,7 +21,7 @@ from bearingheat.units import parse_quantity, parse_unit, ureg
 HELP = "contact angle from clearance, working angle under Fa, stiffness C*, minimum axial load (Zaitsev & Voronkin)"
 
 DESCRIPTION = """\
-Contact of a ball bearing after Zaitsev & Voronkin (Zaitsev, Voronkin): the initial contact
+Contact of a ball bearing after Zaitsev & Voronkin (2009): the initial contact
 angle alpha0 (given, or from the mean radial clearance), the stiffness
 characteristic C*, the working contact angle alpha under the axial load Fa, the
 dimensionless axial displacement xi_a, and the minimum axial load Fa_min against
@@ -50,7 +50,8 @@ object (one bearing) or a list of objects (a TABLE). Keys: alpha0 [deg], Fa [N],
 alpha [deg], xi_a, delta_a [mm], C_star [N], sum_rho_i [1/mm], sum_rho_o [1/mm],
 cos_tau_i, cos_tau_o, 2K/(mu*pi)_i, 2K/(mu*pi)_o, and with n: n [1/min], Fa_min [N]
 (at alpha0, Zaitsev & Voronkin's rule) and Fa_min at alpha [N] (at the working angle).
-A warning goes to stderr when a given Fa is below Fa_min.
+A warning goes to stderr when a given Fa is below Fa_min. With -q nothing is printed but
+errors (--json still prints its JSON).
 
 Exit codes: 0 ok (warnings included), 1 some CSV rows in error (reported in the
 'error' column / key and on stderr), 2 unusable input (bad argument, impossible
@@ -81,6 +82,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("input", metavar="TABLE", nargs="?",
                         help="CSV file with one bearing a row (see above); without it one bearing from the options")
     add_json(parser)
+    add_quiet(parser)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -88,7 +90,7 @@ def run(args: argparse.Namespace) -> int:
         given = [f"--{option}" for option in _FIELDS if getattr(args, option) is not None]
         if given:
             raise UsageError(f"TABLE gives the bearings; drop {', '.join(given)}")
-        return _run_csv(args.input, args.json)
+        return _run_csv(args.input, args.json, args.quiet)
 
     missing = [f"--{option}" for option in _REQUIRED if getattr(args, option) is None]
     if missing:
@@ -101,11 +103,12 @@ def run(args: argparse.Namespace) -> int:
     except BearingheatError as exc:  # UnitError, ContactInputError: unusable input, exit 2
         raise UsageError(str(exc)) from exc
     if warning:
-        print(f"bearingheat contact: warning: {warning}", file=sys.stderr)
         record["warning"] = warning
+        if not args.quiet:
+            print(f"bearingheat contact: warning: {warning}", file=sys.stderr)
     if args.json:
         print(json.dumps(record, ensure_ascii=False))
-    else:
+    elif not args.quiet:
         print_record(record)
     return 0
 
@@ -121,19 +124,13 @@ def _parse_argument(option: str, text: str) -> Any:
 
 
 def _evaluate(inputs: dict[str, Any]) -> tuple[dict[str, Any], str | None]:
-    """Run ball_bearing_contact; return the output record and a warning (or None)."""
+    """Run ball_bearing_contact on one bearing; return the output record and its warning (or None): a given Fa
+    below the minimum axial load Fa_min, the result's status."""
     result = ball_bearing_contact(**inputs)
-    record = result.to_dict()
-    warning = None
-    if inputs.get("Fa") is not None and result.Fa_min is not None:
-        fa, fa_min = record["Fa [N]"], record["Fa_min [N]"]
-        if fa < fa_min:
-            warning = (f"Fa = {fa:.4g} N is below the minimum axial load Fa_min = {fa_min:.4g} N "
-                       f"at n = {record['n [1/min]']:.6g} 1/min (gyroscopic sliding of the balls, Zaitsev & Voronkin)")
-    return record, warning
+    return result.to_dict(), result.messages[0] or None
 
 
-def _run_csv(path: str, as_json: bool) -> int:
+def _run_csv(path: str, as_json: bool, quiet: bool = False) -> int:
     file = Path(path)
     if not file.is_file():
         raise UsageError(f"no such file: {path}")
@@ -204,7 +201,8 @@ def _run_csv(path: str, as_json: bool) -> int:
             record.update(result)
             if warning:
                 record["warning"] = warning
-                print(f"bearingheat contact: warning: row {number}: {warning}", file=sys.stderr)
+                if not quiet:
+                    print(f"bearingheat contact: warning: row {number}: {warning}", file=sys.stderr)
         except BearingheatError as exc:  # a row in error: reported in its record, exit 1
             failures += 1
             record["error"] = str(exc)
@@ -213,7 +211,7 @@ def _run_csv(path: str, as_json: bool) -> int:
 
     if as_json:
         print(json.dumps(records, ensure_ascii=False))
-    else:
+    elif not quiet:
         keys: list[str] = []
         for record in records:
             keys.extend(k for k in record if k not in keys and k not in ("warning", "error"))

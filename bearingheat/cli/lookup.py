@@ -7,7 +7,9 @@ import math
 from bearingheat.api.bearings import bearing
 from bearingheat.catalogue.bearings import NUMERIC, units_of_table
 from bearingheat.cli import UsageError
+from bearingheat.cli.options import add_json, add_quiet
 from bearingheat.errors import DesignationError
+from bearingheat.io.console import print_record
 
 HELP = "a bearing's dimensions, load ratings, e, Y, Y0 and speeds by designation (Schaeffler HR 1, 2006)"
 
@@ -29,7 +31,8 @@ Output: 'name [unit]: value' lines: designation, match (exact, cage or design), 
 d, D, B, T [mm], C, C0 [N], e, Y, Y0, n_G (limiting speed), n_thr (the catalogue's
 thermal reference speed) [1/min], and source (catalogue, pages, table, row). Values the
 catalogue does not give (T, e, Y, Y0 of a ball or cylindrical roller bearing) are left
-out; --json prints one JSON object with the same keys and null for them.
+out; --json prints one JSON object with the same keys and null for them. With -q
+nothing is printed: the exit code alone says whether the designation is in the table.
 
 Exit codes: 0 found; 2 unknown or ambiguous designation (the message lists close
 designations of the table).
@@ -40,7 +43,8 @@ _TEXT = ("designation", "match", "note", "family", "bearing_type", "series", "pr
 
 def add_arguments(parser) -> None:
     parser.add_argument("designation", help="bearing designation, e.g. 6208, 6208-2Z, NU208-E-TVP2, 30208-A")
-    parser.add_argument("--json", action="store_true", help="print JSON instead of text")
+    add_json(parser)
+    add_quiet(parser)
 
 
 def run(args) -> int:
@@ -51,11 +55,9 @@ def run(args) -> int:
     record = _record(data)
     if args.json:
         print(json.dumps(record, ensure_ascii=False))
-        return 0
-    for key, value in record.items():
-        if value is None or value == "":
-            continue
-        print(f"{key}: {format(value, '.15g') if isinstance(value, float) else value}")
+    elif not args.quiet:
+        print_record({key: value for key, value in record.items() if value is not None and value != ""},
+                     float_format=".15g")
     return 0
 
 

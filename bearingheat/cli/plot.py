@@ -4,17 +4,18 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-from bearingheat.cli import UsageError, add_csv_arguments, add_force_argument
+from bearingheat.cli import UsageError, add_csv_arguments
+from bearingheat.cli.options import add_force, add_output, add_quiet
 from bearingheat.errors import InputError
 from bearingheat.io.files import atomic_write, safe_output
-from bearingheat.io.reports.thermal import draw_heat_balance, figure_format, heat_balance_curves
+from bearingheat.io.reports.thermal import FIGURE_FORMATS, draw_heat_balance, figure_format, heat_balance_curves
 from bearingheat.io.tables import read_csv
 
-HELP = "plot friction heat and heat carried away of one support against speed and temperature (PNG)"
+HELP = "plot friction heat and heat carried away of one support against speed and temperature (PNG, SVG, PDF)"
 
 DESCRIPTION = """\
 Draws, for one support of a calc table (CSV, the columns of 'bearingheat calc'),
-two panels of the heat balance N_R + Q_E = Q_S + Q_L (issue 3, after Schaeffler HR 1):
+two panels of the heat balance N_R + Q_E = Q_S + Q_L (Schaeffler catalogue HR 1, edition 2006):
 
   left   against speed n, at the bearing temperature T_bearing (or at the
          operating temperature T_op where T_bearing is not given): the friction
@@ -33,7 +34,8 @@ Q_E, C0 (for n_thr).
   bearingheat plot supports.csv --id "spindle rear" -o heat_balance.png
 
 The figure format follows the ending of -o (.png, .svg, .pdf ...). An existing
-file is replaced only with --force; the file is written atomically.
+file is replaced only with --force; the file is written atomically. It prints
+'wrote FILE', and a warning about the row to stderr; with -q only errors.
 
 Exit codes: 0 plot written, 1 the row is in error (the message goes to stderr),
 2 unusable input (missing file, missing column, no such row) or a file fault.
@@ -45,9 +47,11 @@ def add_arguments(parser) -> None:
     which = parser.add_mutually_exclusive_group()
     which.add_argument("--row", type=int, default=None, help="row position (0 = first data row); default 0")
     which.add_argument("--id", default=None, help="the row whose 'id' column has this text")
-    parser.add_argument("-o", "--output", required=True, help="PNG file to write")
-    add_force_argument(parser, "OUTPUT")
+    suffixes = [f".{suffix}" for suffix in FIGURE_FORMATS]
+    add_output(parser, f"{', '.join(suffixes[:-1])} or {suffixes[-1]}", required=True)
+    add_force(parser)
     add_csv_arguments(parser)
+    add_quiet(parser)
 
 
 def run(args) -> int:
@@ -66,9 +70,10 @@ def run(args) -> int:
         print(f"bearingheat plot: row in error: {curves['message']}", file=sys.stderr)
         return 1
     atomic_write(target, lambda temp: draw_heat_balance(curves, temp, format=fmt))
-    if curves["message"]:
-        print(f"bearingheat plot: warning: {curves['message']}", file=sys.stderr)
-    print(f"wrote {args.output}")
+    if not args.quiet:
+        if curves["message"]:
+            print(f"bearingheat plot: warning: {curves['message']}", file=sys.stderr)
+        print(f"wrote {args.output}")
     return 0
 
 

@@ -4,7 +4,7 @@ The Schaeffler catalogue (p. 63, "Теплоотвод") says the thermally perm
 from the balance between the friction power and the heat carried away; its
 page 72 with the formulas is missing, so the method is the published one of
 the Schaeffler HR 1 catalogue (2006, after ISO 15312 and the draft of
-DIN 732), as restated in issue 3.
+DIN 732).
 
 Kernels work on floats, arrays or Series in catalogue units: lengths [mm],
 areas [mm²], loads [N], torques [N·mm], speeds [1/min], viscosity [mm²/s],
@@ -25,7 +25,7 @@ The friction torque comes from the engine kernels
 (:func:`bearingheat.kernels.friction.speed_dependent_torque` and
 :func:`bearingheat.kernels.friction.load_dependent_torque`); the friction
 power of the heat balance is :func:`friction_power`, (π·n/30)·1e-3·M [W], as
-issue 3 writes it. The engine's :func:`bearingheat.kernels.friction.power_loss`
+the standard writes it. The engine's :func:`bearingheat.kernels.friction.power_loss`
 N_R = M·n/9550, as the catalogue prints it, rounds π/30000 to 1/9550
 (about 0.007 % apart); the heat balance keeps the exact form, which the
 published checks of its roots are written in. The rows of a table are
@@ -70,9 +70,9 @@ __all__ = [
     "operating_temperature",
 ]
 
-#: (π/30)·1e-3: friction power [W] per torque [N·mm] and speed [1/min] (issue 3, the n_θr equation).
+#: (π/30)·1e-3: friction power [W] per torque [N·mm] and speed [1/min] (ISO 15312, the n_θr equation).
 POWER_PER_TORQUE_SPEED = math.pi / 30.0 * 1e-3
-#: Heat carried away by circulating oil: 0.0286 kW/(l/min·K) = 28.6 W/(l/min·K) (issue 3, after HR 1).
+#: Heat carried away by circulating oil: 0.0286 kW/(l/min·K) = 28.6 W/(l/min·K) (Schaeffler HR 1).
 OIL_HEAT_CAPACITY_FLOW = 28.6
 
 
@@ -185,7 +185,7 @@ def oil_heat_flow(V_L, dT_L):
 
 @series_aware
 def friction_power(M, n):
-    """Friction power N_R = (π·n/30)·1e-3·M [W] of the heat balance (issue 3, the n_θr equation).
+    """Friction power N_R = (π·n/30)·1e-3·M [W] of the heat balance (ISO 15312, the n_θr equation).
 
     M [N·mm] friction torque, n [1/min] >= 0. The one definition of the
     power in the heat balance: the roots below use its factor
@@ -270,7 +270,7 @@ def torque_coefficients(f0, dM):
 
 
 def balance_root(c_high, c_low, load_torque, nu, Q, scale):
-    """x = n/scale where (π·n/30)·1e-3·(M0(ν·n) + M_load) = Q, both M0 regimes (issue 3, after HR 1).
+    """x = n/scale where (π·n/30)·1e-3·(M0(ν·n) + M_load) = Q, both M0 regimes (Schaeffler HR 1).
 
     c_high, c_low [N·mm] of :func:`torque_coefficients`; M_load = M1 (+ M2)
     [N·mm]; ν [mm²/s]; Q [W]; scale [1/min] (1 for the speed itself, n_θr
@@ -316,7 +316,7 @@ def balance_speed(f0, nu, dM, load_torque, Q):
 
 @series_aware
 def speed_factor_coefficients(n_thr, f0, nu, dM, load_torque, Q):
-    """(k_L, k_P) of the speed factor f_n (issue 3, after HR 1).
+    """(k_L, k_P) of the speed factor f_n (Schaeffler HR 1).
 
     k_L = 1e-6·(π/30)·n_θr·1e-7·f0·(ν·n_θr)^(2/3)·dM³/Q,
     k_P = 1e-6·(π/30)·n_θr·f1·P1·dM/Q with Q in kW; here Q [W] and
@@ -347,13 +347,13 @@ def speed_factor_exact(k_L, k_P):
     return _root_five_thirds(k_L, k_P)
 
 
-#: validity of the catalogue approximation of f_n (issue 3, after HR 1)
+#: validity of the catalogue approximation of f_n (Schaeffler HR 1)
 APPROXIMATION_RANGE = (0.01, 10.0)
 
 
 @series_aware
 def speed_factor_catalogue_approximation(k_L, k_P):
-    """Catalogue approximation of the speed factor (issue 3, after HR 1)::
+    """Catalogue approximation of the speed factor (Schaeffler HR 1)::
 
         f_n = 490.77 / (1 + 498.78·k_L^0.599 + 852.88·k_P^0.963 − 504.5·k_L^0.055·k_P^0.832)
 

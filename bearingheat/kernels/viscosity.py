@@ -100,7 +100,7 @@ def walther_viscosity(A, B, theta):
 def viscosity_from_two_points(nu1, theta1, nu2, theta2, theta):
     """ν [mm²/s] at θ [°C] from ν1 at θ1 and ν2 at θ2 (ASTM D341, Walther).
 
-    Published checks (issue 3):
+    Checks:
 
     >>> round(viscosity_from_two_points(404.0, 40.0, 28.0, 100.0, 60.0), 2)
     132.13

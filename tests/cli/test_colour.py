@@ -6,8 +6,12 @@ import sys
 from pathlib import Path
 
 import pytest
+from synthetic_torque import measured_set
 
+from bearingheat.analysis.audit import audit_coefficients
 from bearingheat.cli import main
+from bearingheat.io.reports.audit import coefficient_lines
+from bearingheat.io.tables import read_table
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 BOLD, GREEN = "\x1b[1m", "\x1b[32m"
@@ -54,3 +58,25 @@ def test_the_plain_summary_of_calc_is_unchanged(monkeypatch):
                        "0      161.7   25.06           9325           5009        41.54     ok")
     assert text[7:10] == ["6 supports: 6 ok, 0 warning, 0 error", "", "duty cycle (time-weighted per support):"]
     assert text[10].split()[:3] == ["support", "designation", "cases"]
+
+
+def test_lookup_is_a_record_in_colour_and_the_same_lines_without(colour_terminal, monkeypatch):
+    plain = _run(monkeypatch, ["lookup", "6208"], terminal=False)
+    assert plain.splitlines()[:3] == ["designation: 6208", "match: exact", "family: deep groove ball"]
+    coloured = _run(monkeypatch, ["lookup", "6208"], terminal=True)
+    assert BOLD in coloured and "n_thr [1/min]" in coloured and "9300" in coloured
+    monkeypatch.setenv("NO_COLOR", "1")
+    assert _run(monkeypatch, ["lookup", "6208"], terminal=True) == plain
+
+
+def test_audit_coefficients_in_colour_and_the_text_of_the_report_without(colour_terminal, monkeypatch, tmp_path):
+    table, _, _ = measured_set("none", 3, designations=["6004", "6310"])
+    source = tmp_path / "m.csv"
+    table.to_csv(source, index=False)
+    plain = _run(monkeypatch, ["audit", str(source)], terminal=False)
+    assert plain == "\n".join(coefficient_lines(audit_coefficients(read_table(str(source), None)))) + "\n"
+    assert plain.startswith("Coefficients fitted to the measured torque (95 % confidence intervals):\n")
+    coloured = _run(monkeypatch, ["audit", str(source)], terminal=True)
+    assert BOLD in coloured and GREEN in coloured
+    monkeypatch.setenv("NO_COLOR", "1")
+    assert _run(monkeypatch, ["audit", str(source)], terminal=True) == plain

@@ -12,10 +12,8 @@ from bearingheat.cli.options import FORCE_DIR_HELP, FORCE_FILE_HELP, JSON_HELP, 
 PRINTS = {"calc", "coastdown", "bushing", "contact", "lab", "audit", "diagnose", "lookup"}
 WRITES_FILE = {"calc", "template", "plot"}
 WRITES_FOLDER = {"coastdown", "lab", "audit", "diagnose"}
-#: commands whose module still writes the help of these options itself instead of taking it from cli/options.py:
-#: bushing and lookup (--json), plot (-o OUTPUT, and --force by cli.add_force_argument), coastdown (--force by
-#: cli.add_force_argument). strict: the test fails once they are fixed, so that they leave this set.
-NOT_YET_UNIFORM = {"bushing", "lookup", "plot", "coastdown"}
+#: commands with -q/--quiet: every one that prints results or names the files it wrote
+QUIET = PRINTS | WRITES_FILE | WRITES_FOLDER
 
 
 def _help(command: str) -> tuple[str, dict]:
@@ -34,14 +32,11 @@ def test_help_convention(command):
         assert "-o" in options and "--output" in options and "--out-dir" not in options
     if command in WRITES_FOLDER:
         assert "--out-dir" in options and "--out" not in options
-    for option, help_text in (("-q", "print nothing"), ("--json", "print the results as JSON")):
-        if option in options and command not in ("calc", "contact", "bushing", "lookup", "plot", "coastdown"):
-            assert options[option].help.startswith(help_text)
+    assert ("-q" in options) == (command in QUIET)
+    assert ("--force" in options) == (command in WRITES_FILE | WRITES_FOLDER)
 
 
-@pytest.mark.parametrize("command", [pytest.param(c, marks=pytest.mark.xfail(
-    reason="its module writes the help of -o, --force or --json itself", strict=True))
-    if c in NOT_YET_UNIFORM else c for c in sorted(COMMANDS)])
+@pytest.mark.parametrize("command", sorted(COMMANDS))
 def test_the_shared_options_have_one_help_text(command):
     """-q/--quiet, --json, -o/--output FILE, --out-dir DIR and --force read the same in every command."""
     _, options = _help(command)
@@ -59,6 +54,31 @@ def test_the_shared_options_have_one_help_text(command):
     if "--force" in options:
         expected = FORCE_DIR_HELP if "--out-dir" in options else FORCE_FILE_HELP
         assert options["--force"].help == expected
+
+
+@pytest.mark.parametrize(("command", "option", "metavar", "help_text"), [
+    ("bushing", "--json", None, "print the results as JSON instead of text"),
+    ("bushing", "-q", None, "print nothing but errors"),
+    ("lookup", "--json", None, "print the results as JSON instead of text"),
+    ("lookup", "-q", None, "print nothing but errors"),
+    ("plot", "-o", "FILE", "file to write (.png, .svg, .svgz, .pdf, .eps, .ps, .jpg, .jpeg, .tif, .tiff or .webp)"),
+    ("plot", "--force", None, "replace FILE if it exists"),
+    ("plot", "-q", None, "print nothing but errors"),
+    ("coastdown", "--out-dir", "DIR", "folder to write report.md, coastdown.png and summary.json into"),
+    ("coastdown", "--force", None, "replace the files in DIR that exist"),
+    ("coastdown", "--json", None, "print the results as JSON instead of text"),
+    ("coastdown", "-q", None, "print nothing but errors"),
+])
+def test_the_help_of_the_options_that_were_spelt_apart(command, option, metavar, help_text):
+    """bushing, lookup, plot and coastdown once wrote these helps themselves ('print JSON instead of text',
+    'PNG file to write', 'replace OUTPUT if it exists'); now they read as in every other command."""
+    _, options = _help(command)
+    assert (options[option].metavar, options[option].help) == (metavar, help_text)
+
+
+def test_plot_output_is_required_and_named_alike():
+    _, options = _help("plot")
+    assert options["-o"].option_strings == ["-o", "--output"] and options["-o"].required
 
 
 def test_the_shared_help_texts():

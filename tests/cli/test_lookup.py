@@ -75,8 +75,9 @@ def test_unknown_designation_exits_2_with_json_too(capsys):
     assert main(["lookup", "22208-E1", "--json"]) == 2
     captured = capsys.readouterr()
     assert captured.out == ""
-    assert captured.err.startswith("bearingheat lookup: error: designation: '22208-E1' is not in the bearing table "
-                                   "(Schaeffler HR 1, 2006), which holds no spherical roller bearing; close matches: ")
+    assert captured.err == ("bearingheat lookup: error: designation: '22208-E1' is not in the bearing table "
+                            "(Schaeffler HR 1, 2006), which holds no spherical roller bearing; close matches: "
+                            "NU2228-E-M1, NJ2228-E-M1, N228-E-M1, NUP2228-E-M1, NU228-E-M1\n")
 
 
 def test_ambiguous_designation_exits_2(capsys):

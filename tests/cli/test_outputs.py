@@ -111,7 +111,8 @@ def test_plot_output_needs_force(tmp_path, capsys):
     assert main(["plot", str(table), "-o", str(svg)]) == 0
     assert b"<svg" in svg.read_bytes()[:500]
     assert main(["plot", str(table), "-o", str(tmp_path / "heat.txt")]) == 2
-    assert _err(capsys).startswith(f"bearingheat plot: error: {tmp_path / 'heat.txt'}: a figure is written as .png, ")
+    assert _err(capsys) == (f"bearingheat plot: error: {tmp_path / 'heat.txt'}: a figure is written as .png, .svg, "
+                            ".svgz, .pdf, .eps, .ps, .jpg, .jpeg, .tif, .tiff, .webp; name it e.g. heat_balance.png")
     odd = tmp_path / "table.png"  # a CSV named like a figure: still never overwritten by its own plot
     odd.write_bytes(table.read_bytes())
     assert main(["plot", str(odd), "-o", str(odd), "--force"]) == 2

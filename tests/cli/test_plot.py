@@ -30,7 +30,7 @@ def test_plot_usage_errors(tmp_path, capsys):
 def test_plot_row_in_error_exits_1(tmp_path, capsys):
     path = plot_table(tmp_path, **{"Fr [kN]": [-2, 5]})
     assert main(["plot", str(path), "--row", "0", "-o", str(tmp_path / "x.png")]) == 1
-    assert capsys.readouterr().err.startswith("bearingheat plot: row in error: Fr [kN]: -2 must be >= 0")
+    assert capsys.readouterr().err == "bearingheat plot: row in error: Fr [kN]: -2 must be >= 0\n"
 
 
 def test_plot_subprocess(tmp_path):

@@ -23,7 +23,7 @@ EXAMPLE_BEARING = {"z": 7, "d_w": 2.0, "d_m": 8.7355, "alpha0": 12.0, "r_i": 1.0
 
 
 def plot_alpha_vs_axial_load(path: str | Path = DEFAULT_PATH, max_load_N: float = 60.0) -> Path:
-    """Write the PNG of α(Fa) for the example bearing: exact root, the seed's quadratic start, and its example point."""
+    """Write the PNG of α(Fa) for the example bearing: exact root, the paper's quadratic start, and its example point."""
     Figure = matplotlib_figure()
     import matplotlib
 

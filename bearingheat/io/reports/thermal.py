@@ -1,6 +1,6 @@
 """The heat-balance figure of one support (``bearingheat plot``): friction heat and heat carried away.
 
-Two panels of the heat balance N_R + Q_E = Q_S + Q_L (issue 3, after
+Two panels of the heat balance N_R + Q_E = Q_S + Q_L (after
 Schaeffler HR 1): against speed at the bearing temperature (crossing: the
 permissible speed n_per) and against temperature at the operating speed
 (crossing: the operating temperature T_op). :func:`heat_balance_curves`
