@@ -14,7 +14,7 @@ from __future__ import annotations
 import math
 import re
 import threading
-from typing import Any
+from typing import Any, TypeAlias, Union, overload
 
 import numpy as np
 import pandas as pd
@@ -22,6 +22,9 @@ import pint
 from bearingheat.errors import UnitError
 
 __all__ = [
+    "Quantity",
+    "QuantityLike",
+    "Magnitude",
     "ureg",
     "UnitError",
     "magnitude",
@@ -37,8 +40,12 @@ __all__ = [
 
 TWO_PI = 2.0 * math.pi
 
-
-
+#: A pint Quantity, scalar or array magnitude (the type of the unit-aware API's arguments and results).
+Quantity: TypeAlias = pint.Quantity
+#: A Quantity or a pint-pandas Series (dtype ``pint[unit]``): what :func:`magnitude` converts.
+QuantityLike: TypeAlias = Union[pint.Quantity, pd.Series]
+#: Numbers in catalogue units: a float for a scalar, a float array, a float Series for a pint-pandas Series.
+Magnitude: TypeAlias = Union[float, np.ndarray, pd.Series]
 
 _LOADING = threading.Lock()
 _LOADED: set[int] = set()
@@ -118,7 +125,7 @@ def _is_pint_series(value: Any) -> bool:
     return isinstance(value, pd.Series) and str(value.dtype).startswith("pint[")
 
 
-def _as_quantity(value: Any, name: str, expected: str):
+def _as_quantity(value: Any, name: str, expected: str) -> tuple[Quantity, pd.Index | None]:
     """Return (Quantity, index) for a Quantity or a pint-pandas Series."""
     if _is_pint_series(value):
         return value.pint.quantity, value.index
@@ -136,20 +143,32 @@ def _short(value: Any) -> str:
     return text if len(text) <= 40 else text[:37] + "..."
 
 
-def _describe(q) -> str:
+def _describe(q: Quantity) -> str:
     """'3 meter / second' for a scalar, 'values in meter / second' for an array."""
     if np.ndim(q.magnitude) == 0:
         return f"{float(q.magnitude):g} {q.units}"
     return f"values in {q.units}"
 
 
-def _restore_index(mag: Any, index):
+def _restore_index(mag: float | np.ndarray, index: pd.Index | None) -> Magnitude:
     if index is None:
         return mag
     return pd.Series(np.asarray(mag, dtype=float), index=index)
 
 
-def magnitude(value: Any, unit: str, name: str):
+@overload
+def magnitude(value: pd.Series, unit: str, name: str) -> pd.Series: ...
+
+
+@overload
+def magnitude(value: Quantity, unit: str, name: str) -> float | np.ndarray: ...
+
+
+@overload
+def magnitude(value: object, unit: str, name: str) -> Magnitude: ...
+
+
+def magnitude(value: Any, unit: str, name: str) -> Magnitude:
     """Convert a Quantity to ``unit`` and return its magnitude.
 
     ``value`` is a pint Quantity (scalar or ndarray) or a pint-pandas Series;
@@ -185,20 +204,32 @@ def magnitude(value: Any, unit: str, name: str):
     return _restore_index(_plain(converted.magnitude), index)
 
 
-def _scaled(mag: Any, factor: float):
+def _scaled(mag: Any, factor: float) -> float | np.ndarray:
     """mag·factor as float, without a copy when the factor is exactly 1."""
     if factor == 1.0:
         return _plain(mag)
     return _plain(np.multiply(mag, factor))
 
 
-def _plain(mag: Any):
+def _plain(mag: Any) -> float | np.ndarray:
     if isinstance(mag, np.ndarray):
         return np.asarray(mag, dtype=float) if mag.ndim else float(mag)  # no copy of a float array
     return float(mag)
 
 
-def speed_rpm(value: Any, name: str = "n"):
+@overload
+def speed_rpm(value: pd.Series, name: str = ...) -> pd.Series: ...
+
+
+@overload
+def speed_rpm(value: Quantity, name: str = ...) -> float | np.ndarray: ...
+
+
+@overload
+def speed_rpm(value: object, name: str = ...) -> Magnitude: ...
+
+
+def speed_rpm(value: Any, name: str = "n") -> Magnitude:
     """Shaft speed in revolutions per minute.
 
     Revolutions per time convert directly (50 Hz = 3000 1/min, rpm = 1/min);
@@ -230,7 +261,15 @@ def speed_rpm(value: Any, name: str = "n"):
     return _restore_index(_scaled(q.magnitude, factor), index)
 
 
-def quantity(mag: Any, unit: str):
+@overload
+def quantity(mag: pd.Series, unit: str) -> pd.Series: ...
+
+
+@overload
+def quantity(mag: float | np.ndarray, unit: str) -> Quantity: ...
+
+
+def quantity(mag: float | np.ndarray | pd.Series, unit: str) -> Quantity | pd.Series:
     """Wrap a kernel result in a Quantity of the application registry.
 
     A Series result becomes a pint-pandas Series when pint-pandas is
@@ -251,7 +290,7 @@ def quantity(mag: Any, unit: str):
     return u.Quantity(mag, unit)
 
 
-def parse_quantity(text: str, *, name: str = "value"):
+def parse_quantity(text: str, *, name: str = "value") -> Quantity:
     """Parse a command-line value with its unit, e.g. ``'2mm'``, ``'2.6kg*m^2'``, ``'3000rpm'``.
 
     >>> parse_quantity('2.6kg*m^2', name='--I').to('kg*m^2').magnitude
@@ -332,7 +371,15 @@ def convert_column(numbers: np.ndarray, unit_text: str | None, target: str, *, n
         raise UnitError(f"unit {unit_text} cannot be converted to {target}") from exc
 
 
-def celsius(value: Any, name: str):
+@overload
+def celsius(value: Quantity, name: str) -> float | np.ndarray: ...
+
+
+@overload
+def celsius(value: object, name: str) -> Magnitude: ...
+
+
+def celsius(value: Any, name: str) -> Magnitude:
     """An absolute temperature Quantity as a magnitude in °C (degC, K, degF); a temperature difference is refused.
 
     Scalars come back as float, arrays as float arrays.

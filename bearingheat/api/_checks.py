@@ -7,7 +7,7 @@ as a warning message.
 """
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 
 import numpy as np
 
@@ -17,7 +17,7 @@ from bearingheat.errors import BearingheatError
 __all__ = ["check_ranges", "point_warnings", "point_status", "where"]
 
 
-def where(i: int, shape: tuple) -> str:
+def where(i: int, shape: tuple[int, ...]) -> str:
     """' (at index i)' for an array argument, '' for scalars."""
     return f" (at index {np.unravel_index(i, shape) if len(shape) > 1 else i})" if shape else ""
 
@@ -27,7 +27,8 @@ def _describe(name: str, values: np.ndarray) -> Callable[[int], str]:
     return lambda i: f"{name}: {values[i]:g}"
 
 
-def check_ranges(arrays: dict[str, np.ndarray], shape: tuple, error: type[BearingheatError]) -> list[str]:
+def check_ranges(arrays: Mapping[str, float | np.ndarray], shape: tuple[int, ...], error: type[BearingheatError]
+                 ) -> list[str]:
     """Raise for a given number that is NaN, infinite or outside its valid range; return the plausibility warnings."""
     warnings = []
     for name, values in arrays.items():
@@ -44,7 +45,7 @@ def check_ranges(arrays: dict[str, np.ndarray], shape: tuple, error: type[Bearin
     return warnings
 
 
-def point_warnings(arrays: dict[str, np.ndarray], shape: tuple, error: type[BearingheatError]
+def point_warnings(arrays: Mapping[str, float | np.ndarray], shape: tuple[int, ...], error: type[BearingheatError]
                    ) -> tuple[list[str], dict[int, list[str]]]:
     """:func:`check_ranges` per operating point: raise for unusable numbers; return the plausibility warnings of
     scalar arguments (every point's) and, for array arguments, those of the points that have them."""

@@ -10,7 +10,7 @@ with the API's common :class:`~bearingheat.api.results.Result` methods.
 from __future__ import annotations
 
 from dataclasses import dataclass, fields
-from typing import Any, ClassVar
+from typing import Any, ClassVar, TypeVar
 
 import numpy as np
 
@@ -18,32 +18,34 @@ from bearingheat.api.results import Result
 from bearingheat.catalogue.bushing import pressure_limit_seed004, pv_limit_seed004_table25
 from bearingheat.errors import BushingInputError
 from bearingheat.kernels.bushing import size_bushing_kernel, size_thrust_washer_kernel, temperature_factor_seed004
-from bearingheat.units import magnitude, quantity
+from bearingheat.units import Quantity, magnitude, quantity
 
 __all__ = ["size_bushing", "size_thrust_washer", "BushingSize", "ThrustWasherSize"]
+
+_Size = TypeVar("_Size", bound="_PlainBearingSize")
 
 
 @dataclass(frozen=True, repr=False)
 class _PlainBearingSize(Result):
     """The fields both sizings share; one sizing is one point of :class:`~bearingheat.api.results.Result`."""
 
-    F: Any
-    n: Any
-    d: Any
-    K: Any
-    K_table: Any
+    F: Quantity
+    n: Quantity
+    d: Quantity
+    K: Quantity
+    K_table: Quantity
     temperature_factor: float
-    T: Any
-    p_adm: Any
+    T: Quantity | None
+    p_adm: Quantity
     governing: str
-    V: Any
-    p: Any
-    pV: Any
+    V: Quantity
+    p: Quantity
+    pV: Quantity
     f_low: float
     f_high: float
-    N_low: Any
-    N_high: Any
-    life_fig86: Any
+    N_low: Quantity
+    N_high: Quantity
+    life_fig86: Quantity
     life_note: str
     status: list[str]
     messages: list[str]
@@ -58,7 +60,7 @@ class _PlainBearingSize(Result):
     }
 
     @classmethod
-    def _from_kernel(cls, values: dict[str, Any]) -> Any:
+    def _from_kernel(cls: type[_Size], values: dict[str, Any]) -> _Size:
         """The result of a sizing kernel's 'name [unit]' dict (units as :attr:`UNITS`)."""
         named: dict[str, Any] = {}
         for key, value in values.items():
@@ -72,7 +74,7 @@ class _PlainBearingSize(Result):
         named["messages"] = ["" if life_known else f"life_fig86: {values['life_note']}"]
         return cls(**named)
 
-    def to_dict(self) -> dict[str, Any]:
+    def to_dict(self) -> dict[str, float | str | None]:
         """Magnitudes and texts keyed 'name [unit]' in the catalogue units (the keys of ``bushing --json``).
 
         Returns
@@ -82,7 +84,7 @@ class _PlainBearingSize(Result):
             factors and texts under their name); ``T [degC]`` is None
             without a temperature.
         """
-        out: dict[str, Any] = {"kind": self.kind}
+        out: dict[str, float | str | None] = {"kind": self.kind}
         for item in fields(self):
             name = item.name
             if name in ("status", "messages"):
@@ -111,11 +113,11 @@ class BushingSize(_PlainBearingSize):
     point: ``status`` is 'warning' where fig. 86 gives no life.
     """
 
-    l_pV: Any
-    p_at_l_pV: Any
-    l_p: Any
-    l_required: Any
-    l_standard: Any
+    l_pV: Quantity
+    p_at_l_pV: Quantity
+    l_p: Quantity
+    l_required: Quantity
+    l_standard: Quantity
 
     kind: ClassVar[str] = "bushing"
 
@@ -130,18 +132,19 @@ class ThrustWasherSize(_PlainBearingSize):
     diameters); V, p and pV at the mean diameter of the chosen size.
     """
 
-    b_pV: Any
-    D_pV: Any
-    D_p: Any
-    D_required: Any
-    D_standard: Any
+    b_pV: Quantity
+    D_pV: Quantity
+    D_p: Quantity
+    D_required: Quantity
+    D_standard: Quantity
 
     kind: ClassVar[str] = "thrust_washer"
 
 
-def _admissible(application, shaft, life, load_type, T, K, p_adm):
+def _admissible(application: str, shaft: str | None, life: Quantity | None, load_type: str, T: Quantity | None,
+                K: Quantity | None, p_adm: Quantity | None) -> tuple[float, float, float | None, float]:
     if K is None:
-        if None in (shaft, life):
+        if shaft is None or life is None:
             raise BushingInputError("give either K, or shaft and life to read K from the DU/DP bushing handbook table 25")
         K_table = pv_limit_seed004_table25(application, shaft, float(magnitude(life, "h", "life")))
     else:
@@ -152,8 +155,10 @@ def _admissible(application, shaft, life, load_type, T, K, p_adm):
     return K_table, factor, T_c, p
 
 
-def size_bushing(F, n, d, *, application="bushing_constant_load", shaft=None, life=None, load_type,
-                 T=None, K=None, p_adm=None, standard_lengths=None, f=None) -> BushingSize:
+def size_bushing(F: Quantity, n: Quantity, d: Quantity, *, application: str = "bushing_constant_load",
+                 shaft: str | None = None, life: Quantity | None = None, load_type: str, T: Quantity | None = None,
+                 K: Quantity | None = None, p_adm: Quantity | None = None, standard_lengths: Quantity | None = None,
+                 f: float | None = None) -> BushingSize:
     """Size a cylindrical DU bushing with pint Quantities.
 
     K comes from table 25 (application, shaft 'soft'/'hardened', life 1000 h
@@ -248,8 +253,10 @@ def size_bushing(F, n, d, *, application="bushing_constant_load", shaft=None, li
     return BushingSize._from_kernel(result)
 
 
-def size_thrust_washer(F, n, d, *, shaft=None, life=None, load_type, T=None, K=None, p_adm=None,
-                       standard_diameters=None, f=None) -> ThrustWasherSize:
+def size_thrust_washer(F: Quantity, n: Quantity, d: Quantity, *, shaft: str | None = None, life: Quantity | None = None,
+                       load_type: str, T: Quantity | None = None, K: Quantity | None = None,
+                       p_adm: Quantity | None = None, standard_diameters: Quantity | None = None,
+                       f: float | None = None) -> ThrustWasherSize:
     """Size a DU thrust washer with pint Quantities; d is the inner diameter.
 
     K comes from table 25 (application thrust_washer) unless given, derated for

@@ -8,19 +8,31 @@ dataclasses, :class:`~bearingheat.analysis.coastdown.CoastdownResult` and
 """
 from __future__ import annotations
 
+import enum
+
 import numpy as np
 
 from bearingheat.analysis.coastdown import CoastdownResult, SpindleFit, coastdown_analysis, spindle_coastdown_fit
 from bearingheat.errors import CoastdownError
 from bearingheat.kernels.coastdown import TMM_7M
-from bearingheat.units import magnitude, speed_rpm
+from bearingheat.units import Quantity, magnitude, speed_rpm
 
 __all__ = ["analyse_coastdown", "analyse_spindle_coastdown"]
 
-_TMM = object()
+
+class _Rig(enum.Enum):
+    """The default of I, G and r: the value of the TMM-7M rig."""
+
+    TMM_7M = "TMM-7M"
+
+    def __repr__(self) -> str:
+        return "TMM-7M"
 
 
-def _rig_value(value, default, unit, name):
+_TMM = _Rig.TMM_7M
+
+
+def _rig_value(value: Quantity | _Rig | None, default: float, unit: str, name: str) -> float | None:
     if value is _TMM:
         return default
     if value is None:
@@ -28,8 +40,10 @@ def _rig_value(value, default, unit, name):
     return magnitude(value, unit, name)
 
 
-def analyse_coastdown(t, n, *, I=_TMM, G=_TMM, r=_TMM, window=None, interval_dn=None, interval_dt=None,
-                      interval_count=10) -> CoastdownResult:
+def analyse_coastdown(t: Quantity, n: Quantity, *, I: Quantity | _Rig = _TMM, G: Quantity | _Rig | None = _TMM,
+                      r: Quantity | _Rig | None = _TMM, window: int | None = None,
+                      interval_dn: Quantity | None = None, interval_dt: Quantity | None = None,
+                      interval_count: int = 10) -> CoastdownResult:
     """Coast-down analysis with pint Quantities.
 
     t: times (Quantity array), n: shaft speeds (1/min, rpm, Hz or rad/s).
@@ -115,7 +129,8 @@ def analyse_coastdown(t, n, *, I=_TMM, G=_TMM, r=_TMM, window=None, interval_dn=
                               interval_count=interval_count)
 
 
-def analyse_spindle_coastdown(t, n, *, I, nu, dM, bearings=2, P=None, f0_catalogue=None) -> SpindleFit:
+def analyse_spindle_coastdown(t: Quantity, n: Quantity, *, I: Quantity, nu: Quantity, dM: Quantity, bearings: int = 2,
+                              P: Quantity | None = None, f0_catalogue: float | None = None) -> SpindleFit:
     """Fit the catalogue M0 + M1 form to a rolling-bearing spindle run-down, with pint Quantities.
 
     The torque of a shaft on z identical rolling bearings is taken in the

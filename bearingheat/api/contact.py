@@ -11,7 +11,7 @@ Source: В.А. Зайцев, В.А. Воронкин, «Расчёт осевы�
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
+from typing import ClassVar
 
 import numpy as np
 
@@ -20,7 +20,7 @@ from bearingheat.errors import ContactInputError, UnitError
 from bearingheat.kernels.contact import (axial_displacement, axial_displacement_ratio, hertz_coefficients,
                                          initial_contact_angle, minimum_axial_load, race_curvatures,
                                          stiffness_characteristic, working_contact_angle)
-from bearingheat.units import magnitude, quantity, speed_rpm
+from bearingheat.units import Quantity, magnitude, quantity, speed_rpm
 
 __all__ = ["BallContact", "ball_bearing_contact", "contact_angle_from_clearance"]
 
@@ -87,26 +87,26 @@ class BallContact(Result):
     (12.5279, <Quantity(0.0, 'newton')>, None)
     """
 
-    alpha0: Any
-    alpha: Any
-    Fa: Any
-    xi_a: Any
-    delta_a: Any
-    C_star: Any
-    sum_rho_i: Any
-    sum_rho_o: Any
-    cos_tau_i: Any
-    cos_tau_o: Any
-    deflection_i: Any
-    deflection_o: Any
-    n: Any = None
-    Fa_min: Any = None
-    Fa_min_at_alpha: Any = None
+    alpha0: Quantity
+    alpha: Quantity
+    Fa: Quantity
+    xi_a: Quantity
+    delta_a: Quantity
+    C_star: Quantity
+    sum_rho_i: Quantity
+    sum_rho_o: Quantity
+    cos_tau_i: Quantity
+    cos_tau_o: Quantity
+    deflection_i: Quantity
+    deflection_o: Quantity
+    n: Quantity | None = None
+    Fa_min: Quantity | None = None
+    Fa_min_at_alpha: Quantity | None = None
     status: list[str] = field(default_factory=list)
     messages: list[str] = field(default_factory=list)
 
     # key of to_dict() -> (attribute, unit)
-    _KEYS = {
+    _KEYS: ClassVar[dict[str, tuple[str, str]]] = {
         "alpha0 [deg]": ("alpha0", "deg"),
         "Fa [N]": ("Fa", "N"),
         "alpha [deg]": ("alpha", "deg"),
@@ -124,7 +124,7 @@ class BallContact(Result):
         "Fa_min at alpha [N]": ("Fa_min_at_alpha", "N"),
     }
 
-    def to_dict(self) -> dict[str, Any]:
+    def to_dict(self) -> dict[str, float | list[float]]:
         """Magnitudes under keys carrying their unit, e.g. ``'alpha [deg]'``; keys of absent values left out.
 
         Returns
@@ -146,7 +146,7 @@ class BallContact(Result):
         >>> d["alpha [deg]"], d["Fa [N]"], "n [1/min]" in d
         (12.0, 0.0, False)
         """
-        result = {}
+        result: dict[str, float | list[float]] = {}
         for key, (attribute, unit) in self._KEYS.items():
             value = getattr(self, attribute)
             if value is None:
@@ -156,21 +156,21 @@ class BallContact(Result):
         return result
 
 
-def _angle_deg(value, name: str):
+def _angle_deg(value: Quantity, name: str) -> float | np.ndarray:
     if getattr(value, "unitless", False):
         raise UnitError(f"{name}: {value.magnitude!r} has no unit; write it as an angle, e.g. {value.magnitude!r} deg")
     return magnitude(value, "deg", name)
 
 
-def _count(value, name: str):
-    if hasattr(value, "units"):
+def _count(value: float | Quantity, name: str) -> float:
+    if isinstance(value, Quantity):
         if not value.unitless:
             raise UnitError(f"{name}: {value} must be a plain number of balls, without a unit")
-        value = value.magnitude
+        return value.magnitude
     return value
 
 
-def contact_angle_from_clearance(clearance, r_i, r_o, d_w):
+def contact_angle_from_clearance(clearance: Quantity, r_i: Quantity, r_o: Quantity, d_w: Quantity) -> Quantity:
     """Initial contact angle α0 (Quantity in degrees) from the mean radial clearance.
 
     Unit-aware form of :func:`~bearingheat.kernels.contact.initial_contact_angle`: lengths are Quantities.
@@ -215,7 +215,9 @@ def contact_angle_from_clearance(clearance, r_i, r_o, d_w):
     return quantity(initial_contact_angle(e, ri, ro, dw), "deg")
 
 
-def ball_bearing_contact(*, z, d_w, d_m, r_i, r_o, alpha0=None, clearance=None, Fa=None, n=None) -> BallContact:
+def ball_bearing_contact(*, z: float, d_w: Quantity, d_m: Quantity, r_i: Quantity, r_o: Quantity,
+                         alpha0: Quantity | None = None, clearance: Quantity | None = None, Fa: Quantity | None = None,
+                         n: Quantity | None = None) -> BallContact:
     """Contact angles, stiffness and minimum axial load of a ball bearing, unit-aware.
 
     z: number of balls (plain number); d_w ball diameter, d_m pitch diameter,
@@ -329,10 +331,12 @@ def ball_bearing_contact(*, z, d_w, d_m, r_i, r_o, alpha0=None, clearance=None, 
     )
 
 
-def _below_minimum_load(load, minimum, rpm) -> tuple[list[str], list[str]]:
+def _below_minimum_load(load: float | np.ndarray, minimum: float | np.ndarray, rpm: float | np.ndarray
+                        ) -> tuple[list[str], list[str]]:
     """Per point: 'warning' and its message where Fa < Fa_min (at α0, the source's rule), else 'ok'."""
     Fa, Fa_min, speed = (np.ravel(a) for a in np.broadcast_arrays(load, minimum, rpm))
-    status, messages = [], []
+    status: list[str] = []
+    messages: list[str] = []
     for fa, fa_min, n in zip(Fa.tolist(), Fa_min.tolist(), speed.tolist()):
         low = fa < fa_min
         status.append("warning" if low else "ok")

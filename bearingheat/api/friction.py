@@ -15,10 +15,11 @@ gives a Series out. Shaft speed is revolutions per time: ``50 * u.Hz`` is
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 import pandas as pd
 
 from bearingheat.api._checks import point_status, point_warnings, where
@@ -30,11 +31,9 @@ from bearingheat.calc.models import DEFAULT_MODEL, EXTRA_INPUTS, MODEL_REPORT_UN
 from bearingheat.calc.supports import build_support_arrays
 from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.errors import FrictionInputError
-from bearingheat.units import magnitude, quantity, speed_rpm
+from bearingheat.units import Magnitude, QuantityLike, magnitude, quantity, speed_rpm
 
 __all__ = ["FrictionResult", "friction_torque"]
-
-
 
 
 @dataclass(frozen=True, repr=False)
@@ -55,25 +54,25 @@ class FrictionResult(Result):
         table for the bearing type, series and lubrication, or as given).
     f1 : float or numpy.ndarray or pandas.Series [1]
         Coefficient of the load-dependent torque M1.
-    P0 : pint.Quantity [N]
+    P0 : pint.Quantity or pandas.Series [N]
         Static equivalent load, for f1 in P0/C0.
-    P1 : pint.Quantity [N]
+    P1 : pint.Quantity or pandas.Series [N]
         Load of M1 = f1·P1·dM (by the P1 rule of the bearing type).
-    M0 : pint.Quantity [N·mm]
+    M0 : pint.Quantity or pandas.Series [N·mm]
         Speed-dependent friction torque.
-    M1 : pint.Quantity [N·mm]
+    M1 : pint.Quantity or pandas.Series [N·mm]
         Load-dependent friction torque.
-    M2 : pint.Quantity [N·mm]
+    M2 : pint.Quantity or pandas.Series [N·mm]
         Torque of an axial load on a cylindrical roller bearing, f2·Fa·dM
         (0 where the bearing carries no axial load).
-    MR : pint.Quantity [N·mm]
+    MR : pint.Quantity or pandas.Series [N·mm]
         Total friction torque M0 + M1 + M2.
-    NR : pint.Quantity [W]
+    NR : pint.Quantity or pandas.Series [W]
         Friction power loss MR·n/9550.
     Fa_over_A : float or numpy.ndarray or pandas.Series [1]
         The abscissa parameter Fa/A of the f2 chart where M2 applies, NaN
         elsewhere.
-    nu_n_dM : pint.Quantity [mm³/(s·min)]
+    nu_n_dM : pint.Quantity or pandas.Series [mm³/(s·min)]
         The viscosity-speed figure ν·n·dM of the f2 chart where M2 applies,
         NaN elsewhere.
     status : list of str
@@ -106,47 +105,54 @@ class FrictionResult(Result):
     ('deep_groove_ball', '62', 2.0, <Quantity(2000.0, 'newton')>)
     """
 
-    f0: Any
-    f1: Any
-    P0: Any
-    P1: Any
-    M0: Any
-    M1: Any
-    M2: Any
-    MR: Any
-    NR: Any
-    Fa_over_A: Any
-    nu_n_dM: Any
+    f0: Magnitude
+    f1: Magnitude
+    P0: QuantityLike
+    P1: QuantityLike
+    M0: QuantityLike
+    M1: QuantityLike
+    M2: QuantityLike
+    MR: QuantityLike
+    NR: QuantityLike
+    Fa_over_A: Magnitude
+    nu_n_dM: QuantityLike
     status: list[str] = field(default_factory=lambda: ["ok"])
     messages: list[str] = field(default_factory=lambda: [""])
     bearing_type: str = ""
     series: str = ""
-    model_results: dict = field(default_factory=dict)
+    model_results: dict[str, Magnitude | QuantityLike] = field(default_factory=dict)
 
 
 _LENGTHS = ("d", "D", "B")
 _FACTORS = ("Y", "e", "X0", "Y0", "f0", "f1", "f2")
 
 
-def _dimensionless(value, name: str):
+def _dimensionless(value: QuantityLike | npt.ArrayLike | None, name: str) -> Magnitude:
     if value is None:
         return math.nan
     if hasattr(value, "units") or (isinstance(value, pd.Series) and str(value.dtype).startswith("pint[")):
         return magnitude(value, "dimensionless", name)
     if isinstance(value, pd.Series):
         return value
-    return np.asarray(value, dtype=float) if np.ndim(value) else float(value)
+    numbers = np.asarray(value, dtype=float)
+    return numbers if numbers.ndim else float(numbers)
 
 
-def _optional(value, unit: str, name: str):
+def _optional(value: QuantityLike | None, unit: str, name: str) -> Magnitude:
     return math.nan if value is None else magnitude(value, unit, name)
 
 
-def friction_torque(designation: str | None = None, *, n, nu, lubrication: str | None = None, Fr=None, Fa=None,
-                    d=None, D=None, B=None, C0=None, bearing_type: str | None = None, series: str | None = None,
-                    arrangement: str = "single", Y=None, e=None, X0=None, Y0=None, alpha=None,
-                    f0=None, f1=None, f2=None, f2_chart: F2Chart | None = None,
-                    model: str = DEFAULT_MODEL, model_inputs: dict | None = None) -> FrictionResult:
+def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: QuantityLike,
+                    lubrication: str | None = None, Fr: QuantityLike | None = None, Fa: QuantityLike | None = None,
+                    d: QuantityLike | None = None, D: QuantityLike | None = None, B: QuantityLike | None = None,
+                    C0: QuantityLike | None = None, bearing_type: str | None = None, series: str | None = None,
+                    arrangement: str = "single", Y: QuantityLike | npt.ArrayLike | None = None,
+                    e: QuantityLike | npt.ArrayLike | None = None, X0: QuantityLike | npt.ArrayLike | None = None,
+                    Y0: QuantityLike | npt.ArrayLike | None = None, alpha: QuantityLike | None = None,
+                    f0: QuantityLike | npt.ArrayLike | None = None, f1: QuantityLike | npt.ArrayLike | None = None,
+                    f2: QuantityLike | npt.ArrayLike | None = None, f2_chart: F2Chart | None = None,
+                    model: str = DEFAULT_MODEL,
+                    model_inputs: Mapping[str, QuantityLike | npt.ArrayLike | None] | None = None) -> FrictionResult:
     """Friction torque and power loss of one bearing at one or many operating points.
 
     The catalogue friction model of the Schaeffler rolling bearing catalogue
@@ -292,10 +298,10 @@ def friction_torque(designation: str | None = None, *, n, nu, lubrication: str |
         "C0": _optional(C0, "N", "C0"),
         "alpha": _optional(alpha, "deg", "alpha"),
     }
-    for name, value in zip(_LENGTHS, (d, D, B)):
-        inputs[name] = _optional(value, "mm", name)
-    for name, value in zip(_FACTORS, (Y, e, X0, Y0, f0, f1, f2)):
-        inputs[name] = _dimensionless(value, name)
+    for name, length in zip(_LENGTHS, (d, D, B)):
+        inputs[name] = _optional(length, "mm", name)
+    for name, factor in zip(_FACTORS, (Y, e, X0, Y0, f0, f1, f2)):
+        inputs[name] = _dimensionless(factor, name)
 
     index = next((v.index for v in inputs.values() if isinstance(v, pd.Series)), None)
     arrays = {k: (v.to_numpy(dtype=float) if isinstance(v, pd.Series) else np.asarray(v, dtype=float))
@@ -338,29 +344,36 @@ def friction_torque(designation: str | None = None, *, n, nu, lubrication: str |
             raise FrictionInputError(f"{name}: the result is not a finite number for these inputs; check their "
                                      f"magnitudes and units{where(i, shape)}")
 
-    def out(name, unit):
+    def number(name: str) -> Magnitude:
+        """A dimensionless result in the shape of the arguments."""
         values = np.broadcast_to(results.get(name, np.nan), (int(np.prod(shape)),)).reshape(shape)
         if index is not None:
-            series = pd.Series(values, index=index)
-            return series if unit is None else quantity(series, unit)
-        if unit is None:
-            return values if shape else float(values)
+            return pd.Series(values, index=index)
+        return values if shape else float(values)
+
+    def out(name: str, unit: str) -> QuantityLike:
+        """A result in ``unit`` in the shape of the arguments."""
+        values = np.broadcast_to(results.get(name, np.nan), (int(np.prod(shape)),)).reshape(shape)
+        if index is not None:
+            return quantity(pd.Series(values, index=index), unit)
         return quantity(values if shape else float(values), unit)
 
     return FrictionResult(
-        f0=out("f0", None), f1=out("f1", None), P0=out("P0", "N"), P1=out("P1", "N"),
+        f0=number("f0"), f1=number("f1"), P0=out("P0", "N"), P1=out("P1", "N"),
         M0=out("M0", "N*mm"), M1=out("M1", "N*mm"), M2=out("M2", "N*mm"), MR=out("MR", "N*mm"),
-        NR=out("NR", "W"), Fa_over_A=out("Fa_over_A", None), nu_n_dM=out("nu_n_dM", "mm^3/(s*min)"),
+        NR=out("NR", "W"), Fa_over_A=number("Fa_over_A"), nu_n_dM=out("nu_n_dM", "mm^3/(s*min)"),
         status=status, messages=messages,
         bearing_type=str(supports.bearing_type), series=str(supports.series),
-        model_results={name: out(name, None if unit in ("", "1") else unit) for name, unit in MODEL_REPORT_UNITS.items()
+        model_results={name: number(name) if unit in ("", "1") else out(name, unit)
+                       for name, unit in MODEL_REPORT_UNITS.items()
                        if name in results and name in friction_model.outputs},
     )
 
 
-def _model_inputs(values: dict, accepted: tuple[str, ...]) -> dict:
+def _model_inputs(values: Mapping[str, QuantityLike | npt.ArrayLike | None], accepted: tuple[str, ...]
+                  ) -> dict[str, Magnitude | npt.ArrayLike | None]:
     """Model-specific arguments in catalogue units: Quantities converted by their contract unit, text kept."""
-    out = {}
+    out: dict[str, Magnitude | npt.ArrayLike | None] = {}
     for name, value in values.items():
         if name not in accepted:
             raise FrictionInputError(f"model_inputs: {name!r} is not an input of this model; it reads "

@@ -8,9 +8,11 @@ are :mod:`bearingheat.calc.thermal`, the formulas
 """
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
+import numpy.typing as npt
 import pandas as pd
 
 from bearingheat.api._checks import check_ranges
@@ -22,7 +24,7 @@ from bearingheat.calc.thermal import (OPERATING_TEMPERATURE_LIMIT, SPEED_FACTOR_
                                       fill_viscosity, heat_balance_rows, thermal_reference_speed_rows)
 from bearingheat.errors import HeatBalanceError
 from bearingheat.kernels.thermal import friction_power
-from bearingheat.units import celsius, magnitude, quantity
+from bearingheat.units import Magnitude, Quantity, QuantityLike, celsius, magnitude, quantity
 
 __all__ = ["HeatBalanceResult", "heat_balance", "thermal_reference_speed"]
 
@@ -38,25 +40,25 @@ class HeatBalanceResult(Result):
 
     Parameters
     ----------
-    n_thr : pint.Quantity [1/min]
+    n_thr : pint.Quantity or pandas.Series [1/min]
         Thermal reference speed n_θr (ISO 15312; Schaeffler catalogue HR 1
         "Rolling bearings", edition June 2006); NaN where the method does not
         apply or neither B nor T is given.
-    n_per : pint.Quantity [1/min]
+    n_per : pint.Quantity or pandas.Series [1/min]
         Thermally permissible speed n_θr·f_n at ``T_bearing`` (needs
         T_bearing and T_amb), capped at n_G where that is given.
-    T_op : pint.Quantity [degC]
+    T_op : pint.Quantity or pandas.Series [degC]
         Operating temperature at the speed n, where the friction heat and
         the heat carried away balance (needs T_amb).
-    nu_op : pint.Quantity [mm²/s]
+    nu_op : pint.Quantity or pandas.Series [mm²/s]
         Oil viscosity at T_op (from nu40/nu100 or iso_vg, or the given nu).
-    Q_S : pint.Quantity [W]
+    Q_S : pint.Quantity or pandas.Series [W]
         Heat carried away through the bearing seat, at T_bearing where given,
         else at T_op.
-    Q_L : pint.Quantity [W]
+    Q_L : pint.Quantity or pandas.Series [W]
         Heat carried away by circulating oil, at the same temperature
         (0 without V_oil).
-    NR : pint.Quantity [W]
+    NR : pint.Quantity or pandas.Series [W]
         Friction power at the operating point, (π·n/30)·1e-3·M_R.
     status : list of str
         Per operating point: 'ok', 'warning' or 'error'.
@@ -78,27 +80,28 @@ class HeatBalanceResult(Result):
     (32.9, 14.93, nan)
     """
 
-    n_thr: object
-    n_per: object
-    T_op: object
-    nu_op: object
-    Q_S: object
-    Q_L: object
-    NR: object
-    status: list
-    messages: list
+    n_thr: QuantityLike
+    n_per: QuantityLike
+    T_op: QuantityLike
+    nu_op: QuantityLike
+    Q_S: QuantityLike
+    Q_L: QuantityLike
+    NR: QuantityLike
+    status: list[str]
+    messages: list[str]
 
 
-def _plain_number(value, name):
+def _plain_number(value: QuantityLike | npt.ArrayLike, name: str) -> np.ndarray:
     return np.asarray(getattr(value, "magnitude", value), dtype=float)
 
 
 #: catalogue unit -> converter of the arguments in it that are no multiplicative unit (absolute
 #: temperatures) or no unit at all (ISO VG grade, viscosity index); every other unit goes through magnitude
-_CONVERTERS = {"degC": celsius, "1": _plain_number}
+_CONVERTERS: dict[str, Callable[[QuantityLike | npt.ArrayLike, str], Magnitude]] = {
+    "degC": celsius, "1": _plain_number}
 
 
-def _frame_column(value, unit, name):
+def _frame_column(value: QuantityLike | npt.ArrayLike | None, unit: str, name: str) -> Magnitude | None:
     if value is None:
         return None
     convert = _CONVERTERS.get(unit)
@@ -118,11 +121,17 @@ _API_COLUMNS = {
 }
 
 
-def heat_balance(designation: str | None = None, *, d=None, D=None, n=None, C0=None, B=None, T=None, Fr=None, Fa=None,
-                 lubrication: str = "oil_bath", nu=None, nu40=None, nu100=None, iso_vg=None, VI=None,
-                 T_amb=None, T_bearing=None, k_q=None, V_oil=None, dT_oil=None, Q_E=None, n_G=None,
-                 n_thr_catalogue=None, viscosity_at: str = "auto", method: str = "exact",
-                 t_limit=None, bearing_type: str | None = None, series: str | None = None) -> HeatBalanceResult:
+def heat_balance(designation: str | None = None, *, d: QuantityLike | None = None, D: QuantityLike | None = None,
+                 n: QuantityLike | None = None, C0: QuantityLike | None = None, B: QuantityLike | None = None,
+                 T: QuantityLike | None = None, Fr: QuantityLike | None = None, Fa: QuantityLike | None = None,
+                 lubrication: str = "oil_bath", nu: QuantityLike | None = None, nu40: QuantityLike | None = None,
+                 nu100: QuantityLike | None = None, iso_vg: float | None = None, VI: float | None = None,
+                 T_amb: Quantity | None = None, T_bearing: Quantity | None = None, k_q: QuantityLike | None = None,
+                 V_oil: QuantityLike | None = None, dT_oil: QuantityLike | None = None,
+                 Q_E: QuantityLike | None = None, n_G: QuantityLike | None = None,
+                 n_thr_catalogue: QuantityLike | None = None, viscosity_at: str = "auto", method: str = "exact",
+                 t_limit: Quantity | None = None, bearing_type: str | None = None,
+                 series: str | None = None) -> HeatBalanceResult:
     """Thermal reference speed, permissible speed and operating temperature of a bearing (Quantities).
 
     The heat balance NR + Q_E = Q_S + Q_L of the Schaeffler catalogue HR 1
@@ -259,8 +268,8 @@ def heat_balance(designation: str | None = None, *, d=None, D=None, n=None, C0=N
             "T_amb": T_amb, "T_bearing": T_bearing, "k_q": k_q, "V_oil": V_oil, "dT_oil": dT_oil,
             "Q_E": Q_E, "nu40": nu40, "nu100": nu100, "iso_vg": iso_vg, "VI": VI,
             "n_G": n_G, "n_thr_catalogue": n_thr_catalogue}
-    columns = {}
-    index = None
+    columns: dict[str, float | np.ndarray] = {}
+    index: pd.Index | None = None
     for name, value in args.items():
         column, unit = _API_COLUMNS[name]
         mag = _frame_column(value, unit, name)
@@ -305,7 +314,7 @@ def heat_balance(designation: str | None = None, *, d=None, D=None, n=None, C0=N
             status[position] = "warning"
     failed = np.array([s == "error" for s in status])
 
-    def out(name, unit):
+    def out(name: str, unit: str) -> QuantityLike:
         values = extra[name].to_numpy(dtype=float) if name in extra.columns else np.full(size, np.nan)
         values = np.where(failed, np.nan, values)
         if index is not None:
@@ -321,8 +330,9 @@ def heat_balance(designation: str | None = None, *, d=None, D=None, n=None, C0=N
                              status=status, messages=["; ".join(m) for m in messages])
 
 
-def thermal_reference_speed(designation: str | None = None, *, d, D, C0, B=None, T=None,
-                            bearing_type: str | None = None, series: str | None = None):
+def thermal_reference_speed(designation: str | None = None, *, d: Quantity, D: Quantity, C0: Quantity,
+                            B: Quantity | None = None, T: Quantity | None = None, bearing_type: str | None = None,
+                            series: str | None = None) -> Quantity:
     """Thermal reference speed n_θr of catalogue bearings as a Quantity [1/min].
 
     The speed at which the friction heat under the reference conditions of

@@ -13,13 +13,15 @@ from bearingheat.catalogue.viscosity import iso_vg_grades
 from bearingheat.errors import ViscosityError, ViscosityRangeWarning
 from bearingheat.kernels.viscosity import (DEFAULT_VISCOSITY_INDEX, iso_vg_nu40, iso_vg_viscosity,
                                            viscosity_from_two_points, viscosity_range_messages)
-from bearingheat.units import celsius, magnitude, quantity
+from bearingheat.units import Quantity, celsius, magnitude, quantity
 
 __all__ = ["oil_viscosity"]
 
 
-def oil_viscosity(temperature, *, nu40=None, nu100=None, points=None, iso_vg=None,
-                  viscosity_index=DEFAULT_VISCOSITY_INDEX, pour_point=None):
+def oil_viscosity(temperature: Quantity, *, nu40: Quantity | None = None, nu100: Quantity | None = None,
+                  points: tuple[tuple[Quantity, Quantity], tuple[Quantity, Quantity]] | None = None,
+                  iso_vg: float | None = None, viscosity_index: float = DEFAULT_VISCOSITY_INDEX,
+                  pour_point: Quantity | None = None) -> Quantity:
     """Kinematic viscosity of an oil at ``temperature`` (pint Quantities in and out).
 
     The viscosity-temperature line of ASTM D341 (Walther),
@@ -94,7 +96,7 @@ def oil_viscosity(temperature, *, nu40=None, nu100=None, points=None, iso_vg=Non
              "iso_vg": iso_vg is not None}
     theta = celsius(temperature, "temperature")
     if given["iso_vg"] and not (given["nu40"] or given["nu100"] or given["points"]):
-        grade = np.asarray(iso_vg.magnitude if hasattr(iso_vg, "magnitude") else iso_vg, dtype=float)
+        grade = np.asarray(getattr(iso_vg, "magnitude", iso_vg), dtype=float)
         unknown = np.ravel(grade)[np.isnan(np.ravel(iso_vg_nu40(grade)))]
         if unknown.size:
             raise ViscosityError(f"iso_vg: {unknown[0]:g} is not an ISO VG grade; expected one of "
@@ -107,7 +109,7 @@ def oil_viscosity(temperature, *, nu40=None, nu100=None, points=None, iso_vg=Non
     elif given["nu40"] and given["nu100"] and not (given["points"] or given["iso_vg"]):
         nu = viscosity_from_two_points(magnitude(nu40, "mm^2/s", "nu40"), 40.0,
                                        magnitude(nu100, "mm^2/s", "nu100"), 100.0, theta)
-    elif given["points"] and not (given["nu40"] or given["nu100"] or given["iso_vg"]):
+    elif points is not None and not (given["nu40"] or given["nu100"] or given["iso_vg"]):
         (nu1, t1), (nu2, t2) = points
         nu = viscosity_from_two_points(magnitude(nu1, "mm^2/s", "points[0] viscosity"), celsius(t1, "points[0] temperature"),
                                        magnitude(nu2, "mm^2/s", "points[1] viscosity"), celsius(t2, "points[1] temperature"),
