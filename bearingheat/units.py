@@ -11,6 +11,7 @@ and an angular speed in rad/s is divided by 2π (see :func:`speed_rpm`).
 """
 from __future__ import annotations
 
+import functools
 import math
 import re
 import threading
@@ -340,31 +341,39 @@ def convert_column(numbers: np.ndarray, unit_text: str | None, target: str, *, n
     """
     header = header or (f"{name} [{unit_text}]" if unit_text else name)
     numbers = np.asarray(numbers, dtype=float)
+    if target == "1" and (unit_text is None or unit_text.strip() in ("", "-", "1")):
+        return numbers, 1.0
+    factor = _column_factor(unit_text, target, name, header)
+    if math.isnan(factor):  # an absolute temperature (K, degC, degF): offset conversion of the whole column
+        unit = parse_unit(str(unit_text), name=header)
+        return np.asarray(ureg().Quantity(numbers, unit).to(target).magnitude, dtype=float), math.nan
+    return numbers * factor, factor
+
+
+@functools.lru_cache(maxsize=1024)
+def _column_factor(unit_text: str | None, target: str, name: str, header: str) -> float:
+    """Catalogue units per header unit of :func:`convert_column` (NaN: an offset conversion), once per header:
+    calc reads a big table in blocks, and pint's parse takes milliseconds. Errors are not cached."""
     if target == "1":
-        if unit_text is None or unit_text.strip() in ("", "-", "1"):
-            return numbers, 1.0
-        one = ureg().Quantity(1.0, parse_unit(unit_text, name=header))
+        one = ureg().Quantity(1.0, parse_unit(str(unit_text), name=header))
         if not one.dimensionless:
             raise UnitError(f"{name} is dimensionless, {unit_text!r} is not")
-        factor = float(one.to("dimensionless").magnitude)
-        return numbers * factor, factor
+        return float(one.to("dimensionless").magnitude)
     if unit_text is None or unit_text.strip() in ("", "-"):
         raise UnitError(f"needs a unit, e.g. '{name} [{target}]'")
     unit = parse_unit(unit_text, name=header)
     if target == "1/min":
         try:
-            factor = float(speed_rpm(ureg().Quantity(1.0, unit), header))
+            return float(speed_rpm(ureg().Quantity(1.0, unit), header))
         except UnitError as exc:
             raise UnitError(f"{unit_text} is not a shaft speed; expected revolutions per time "
                             "(1/min, rpm, Hz) or an angular speed (rad/s)") from exc
-        return numbers * factor, factor
     one = ureg().Quantity(1.0, unit)
     try:
         if one._is_multiplicative and ureg().Quantity(1.0, target)._is_multiplicative:
-            factor = float(one.to(target).magnitude)
-            return numbers * factor, factor
-        # an absolute temperature (K, degC, degF): offset conversion of the whole column
-        return np.asarray(ureg().Quantity(numbers, unit).to(target).magnitude, dtype=float), math.nan
+            return float(one.to(target).magnitude)
+        ureg().Quantity(np.zeros(1), unit).to(target)  # an absolute temperature: the offset conversion must work
+        return math.nan
     except (pint.errors.DimensionalityError, pint.errors.OffsetUnitCalculusError) as exc:
         if one.dimensionality == ureg().kg.dimensionality and target == "N":
             raise UnitError(f"{one.units} is a mass, not a force; for kilogram-force write kgf") from exc

@@ -14,7 +14,7 @@ from typing import Callable
 import numpy as np
 import pandas as pd
 
-from bearingheat.calc.supports import number_column, text_column
+from bearingheat.calc.supports import group_codes, number_column, text_column
 from bearingheat.catalogue.friction import ResolvedBearing, resolve
 from bearingheat.catalogue.thermal import THERMAL_KIND, THERMAL_KINDS, method_refusal, reference_conditions
 from bearingheat.errors import DesignationError
@@ -54,12 +54,12 @@ def thermal_reference_speed_details(frame: pd.DataFrame, *, f0_scale=1.0, f1_sca
         return _details(frame, f0_scale, f1_scale)
     if not keys or len(frame) < 2:
         return _details(frame)
-    codes = frame[keys].groupby(keys, dropna=False, sort=False).ngroup().to_numpy()
+    codes = group_codes(frame, keys)
     _, first = np.unique(codes, return_index=True)
     if len(first) == len(frame):
         return _details(frame)
     distinct = _details(frame.iloc[first])
-    out = distinct.iloc[np.searchsorted(np.unique(codes), codes)]
+    out = distinct.iloc[codes]  # codes number the groups in order of first appearance, as first is sorted
     out.index = frame.index
     return out
 

@@ -25,7 +25,7 @@ from bearingheat.catalogue.friction import LUBRICATION_F0_COLUMN, ResolvedBearin
 from bearingheat.errors import DesignationError
 
 __all__ = ["SupportArrays", "build_support_arrays", "bearing_constants", "NUMBER_INPUTS", "KEY_INPUTS",
-           "text_column", "number_column", "text_codes", "distinct_keys"]
+           "text_column", "number_column", "text_codes", "distinct_keys", "group_codes"]
 
 #: numeric inputs of the friction model, in catalogue units
 NUMBER_INPUTS = ("d", "D", "B", "C0", "Y", "e", "X0", "Y0", "alpha", "f0", "f1", "f2", "n", "nu", "Fr", "Fa")
@@ -242,6 +242,25 @@ def text_codes(frame: pd.DataFrame, name: str) -> tuple[np.ndarray, list[str | N
     return np.where(codes < 0, len(raw), codes), texts
 
 
+def _combined_codes(parts: list[tuple[np.ndarray, int]], size: int) -> np.ndarray:
+    """One code per row for the combination of the columns' codes ((codes, number of codes) per column),
+    re-factorized after each column so the codes stay below the row count; in order of first appearance."""
+    combined = np.zeros(size, dtype=np.int64)
+    for column_codes, count in parts:
+        combined = pd.factorize(combined * count + column_codes, sort=False)[0].astype(np.int64)
+    return combined
+
+
+def group_codes(frame: pd.DataFrame, names: list[str]) -> np.ndarray:
+    """One code per row for its values in the columns ``names`` (missing values are one value), numbered in
+    order of first appearance: ``groupby(names).ngroup()`` without pandas' groupby machinery."""
+    parts = []
+    for name in names:
+        codes, uniques = _factorized(frame[name])
+        parts.append((np.where(codes < 0, len(uniques), codes), len(uniques) + 1))
+    return _combined_codes(parts, len(frame))
+
+
 def distinct_keys(parts: list[tuple[np.ndarray, list]]) -> tuple[np.ndarray, list[tuple]]:
     """Per row the code of its key, and the distinct keys (tuples) in order of first appearance.
 
@@ -250,9 +269,7 @@ def distinct_keys(parts: list[tuple[np.ndarray, list]]) -> tuple[np.ndarray, lis
     they stay below the row count: no Python object per row.
     """
     size = len(parts[0][0])
-    combined = np.zeros(size, dtype=np.int64)
-    for column_codes, values in parts:
-        combined = pd.factorize(combined * len(values) + column_codes, sort=False)[0].astype(np.int64)
+    combined = _combined_codes([(column_codes, len(values)) for column_codes, values in parts], size)
     first_row = np.empty(int(combined.max()) + 1 if size else 0, dtype=np.intp)
     first_row[combined[::-1]] = np.arange(size)[::-1]
     uniques = [tuple(values[column_codes[row]] for column_codes, values in parts) for row in first_row.tolist()]

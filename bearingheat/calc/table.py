@@ -459,41 +459,47 @@ def _add_messages(results: pd.DataFrame, items: list[tuple[int, str, str, bool]]
 
 
 def _assemble(table: pd.DataFrame, results: pd.DataFrame, extension_columns) -> pd.DataFrame:
-    out = table.copy()
-    written: list[str] = []
+    """The input columns followed by the result columns (a result header the input has replaces its values in
+    place); the columns are collected first and joined in one step."""
+    written: dict[str, np.ndarray] = {}
     for name, unit in RESULT_UNITS.items():
-        written.append(output_header(name, unit))
-        out[written[-1]] = results[name].to_numpy()
+        written[output_header(name, unit)] = results[name].to_numpy()
     for name, unit in {**M2_REPORT_UNITS, **PLAIN_REPORT_UNITS, **MODEL_REPORT_UNITS}.items():
         if name in results.columns:
-            written.append(output_header(name, unit))
-            out[written[-1]] = results[name].to_numpy()
+            written[output_header(name, unit)] = results[name].to_numpy()
     failed = (results["status"] == "error").to_numpy()
     for columns, units in extension_columns:
         for name in columns.columns:
             values = columns[name].to_numpy()
             if values.dtype.kind == "f":
                 values = np.where(failed, np.nan, values)
-            written.append(output_header(name, units.get(name, "")))
-            out[written[-1]] = values
-    _refuse_non_finite(out, results, written)
-    out["status"] = results["status"].to_numpy()
-    out["message"] = results["message"].to_numpy()
+            written[output_header(name, units.get(name, ""))] = values
+    _refuse_non_finite(written, results)
+    written["status"] = results["status"].to_numpy()
+    written["message"] = results["message"].to_numpy()
+    fresh = {header: values for header, values in written.items() if header not in table.columns}
+    out = pd.concat([table, pd.DataFrame(fresh, index=table.index)], axis=1)
+    for header in written.keys() - fresh.keys():
+        out[header] = written[header]
     return out
 
 
-def _refuse_non_finite(out: pd.DataFrame, results: pd.DataFrame, written: list[str]) -> None:
-    """No result leaves calc as inf, nor MR/NR as NaN, on a row not in error: such a row becomes one."""
+def _refuse_non_finite(written: dict[str, np.ndarray], results: pd.DataFrame) -> None:
+    """No result leaves calc as inf, nor MR/NR as NaN, on a row not in error: such a row becomes one (its
+    numeric results NaN in ``written``, the message in ``results``)."""
     failed = (results["status"] == "error").to_numpy()
-    numeric = [h for h in written if pd.api.types.is_float_dtype(out[h].dtype)]
+    numeric = [header for header, values in written.items() if values.dtype.kind == "f"]
     bad: dict[int, str] = {}
     for header in numeric:
-        for i in np.flatnonzero(np.isinf(out[header].to_numpy(dtype=float)) & ~failed):
+        for i in np.flatnonzero(np.isinf(written[header]) & ~failed):
             bad.setdefault(int(i), header)
     for header in (output_header("MR"), output_header("NR")):
-        for i in np.flatnonzero(np.isnan(out[header].to_numpy(dtype=float)) & ~failed):
+        for i in np.flatnonzero(np.isnan(written[header]) & ~failed):
             bad.setdefault(int(i), header)
     _add_messages(results, [(i, "error", f"{header}: the result is not a finite number for these inputs; "
                                          "check their magnitudes and units", False) for i, header in sorted(bad.items())])
     if bad:
-        out.loc[out.index[sorted(bad)], numeric] = np.nan
+        rows = np.zeros(len(results), dtype=bool)
+        rows[sorted(bad)] = True
+        for header in numeric:
+            written[header] = np.where(rows, np.nan, written[header])

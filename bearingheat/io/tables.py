@@ -98,8 +98,8 @@ def cite_rows(result: pd.DataFrame, lines: list[int] | None) -> pd.DataFrame:
     """
     if lines is None or "message" not in result.columns or len(lines) != len(result):
         return result
+    flagged = np.flatnonzero((result["message"].fillna("") != "").to_numpy())  # vectorised: no str accessor per row
     messages = result["message"].to_numpy(dtype=object, copy=True)
-    flagged = np.flatnonzero(pd.Series(messages, dtype=object).str.len().fillna(0).to_numpy() > 0)  # text only
     if len(flagged) == 0:  # only the rows with a message are visited
         return result
     ids = result["id"].to_numpy(dtype=object) if "id" in result.columns else None
