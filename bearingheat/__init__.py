@@ -9,14 +9,65 @@ over a table of supports, and the errors of :mod:`bearingheat.errors`.
 - The layers below (``catalogue``, ``kernels``, ``calc``, ``analysis``, ``io``) are documented in
   ``docs/architecture.md``.
 """
+from __future__ import annotations
+
+import copyreg
+import importlib
+import sys
+import types
+from typing import TYPE_CHECKING, Any
+
 from bearingheat import errors
-from bearingheat.api import *  # noqa: F401,F403  (the public API is api.__all__)
-from bearingheat.api import __all__ as _api_all
-from bearingheat.calc.duty import duty_cycle
-from bearingheat.calc.table import calc
+from bearingheat.api import _EXPORTS as _API_EXPORTS
 from bearingheat.errors import *  # noqa: F401,F403  (every error and warning class)
 from bearingheat.errors import __all__ as _errors_all
 
 __version__ = "0.1.0"
 
-__all__ = [*_api_all, "calc", "duty_cycle", "errors", *_errors_all]
+#: public name -> the module that defines it, imported on first use (PEP 562): the command line and a script
+#: that needs one function do not load the rest (scipy.stats, the Excel bridge)
+_EXPORTS = {**_API_EXPORTS, "calc": "bearingheat.calc.table", "duty_cycle": "bearingheat.calc.duty"}
+
+__all__ = [*_EXPORTS, "errors", *_errors_all]
+
+if TYPE_CHECKING:  # what type checkers and IDEs see; at run time each name is imported on first use
+    from bearingheat.api import *  # noqa: F401,F403
+    from bearingheat.calc.duty import duty_cycle
+    from bearingheat.calc.table import calc
+
+
+def __getattr__(name: str) -> Any:
+    module = _EXPORTS.get(name)
+    if module is None:
+        raise AttributeError(f"module 'bearingheat' has no attribute {name!r}")
+    value = getattr(importlib.import_module(module), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted({*globals(), *_EXPORTS})
+
+
+class _Package(types.ModuleType):
+    """The package's module object. ``bearingheat.calc`` is the function :func:`calc`, not the subpackage of the
+    same name: importing ``bearingheat.calc.*`` sets the package's ``calc`` attribute to the subpackage, which
+    the setter ignores (the subpackage stays in ``sys.modules``, where imports look it up)."""
+
+    @property
+    def calc(self) -> Any:
+        return importlib.import_module("bearingheat.calc.table").calc
+
+    @calc.setter
+    def calc(self, value: Any) -> None:
+        if not isinstance(value, types.ModuleType):
+            raise AttributeError("bearingheat.calc is the function calc; it cannot be replaced")
+
+
+sys.modules[__name__].__class__ = _Package
+# pickled by name, as plain modules are (cloudpickle and dask ship functions that refer to ``bearingheat``)
+def _reduce_package(package: _Package) -> tuple[Any, tuple[str]]:
+    return importlib.import_module, (package.__name__,)
+
+
+copyreg.pickle(_Package, _reduce_package)

@@ -27,10 +27,8 @@ friction model (each candidate applies itself, :meth:`Candidate.apply`).
 """
 from __future__ import annotations
 
-import json
 import math
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -38,7 +36,8 @@ import numpy.typing as npt
 import pandas as pd
 from scipy import stats
 
-from bearingheat.analysis.effects import CANDIDATES, EFFECT_NAMES, ModelData, bearing_keys, catalogue_arrays
+from bearingheat.analysis.effects import (CANDIDATES, EFFECT_NAMES, FittedEffect, ModelData, bearing_keys,
+                                          catalogue_arrays, format_value)
 from bearingheat.calc.contract import parse_header
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.fill import fill_from_catalogue
@@ -489,66 +488,3 @@ def key_regressor(diagnosis: Diagnosis) -> str:
         if entry["statistic"] == "spearman_rho" and entry["value"] is not None and abs(entry["value"]) > best_rho:
             best, best_rho = entry["regressor"], abs(entry["value"])
     return best
-
-
-def format_value(value: Any, digits: int = 4) -> str:
-    """A number, None or a dict of them as the report and the calc messages show it ('–' for none).
-
-    >>> format_value({"k": 2.123456, "tau [h]": None})
-    'k: 2.123, tau [h]: –'
-    """
-    if value is None or (isinstance(value, float) and not math.isfinite(value)):
-        return "–"
-    if isinstance(value, dict):
-        return ", ".join(f"{k}: {format_value(v)}" for k, v in value.items())
-    if isinstance(value, float):
-        return f"{value:.{digits}g}"
-    return str(value)
-
-
-# ---------------------------------------------------------------------------------------------
-# The fitted effect, applied by calc
-# ---------------------------------------------------------------------------------------------
-
-@dataclass
-class FittedEffect:
-    """An effect fitted by ``diagnose``, applied to calc results (MR, NR in place).
-
-    >>> effect = FittedEffect("f0_scale", {"k": 2.0})
-    >>> frame = pd.DataFrame({"designation": ["6205"], "d": [25.0], "D": [52.0], "n": [3000.0], "nu": [12.0]})
-    >>> results = pd.DataFrame({"M0": [12.0], "M1": [8.0], "M2": [0.0], "MR": [20.0], "NR": [6.28],
-    ...                         "f0": [2.0], "status": ["ok"], "message": [""]})
-    >>> effect.apply(frame, results)
-    >>> float(results.at[0, "MR"]), round(float(results.at[0, "NR"]), 4)
-    (32.0, 10.0524)
-    """
-
-    effect: str
-    parameters: dict[str, Any]
-
-    def __post_init__(self) -> None:
-        if self.effect not in CANDIDATES:
-            raise DiagnoseError(f"effect {self.effect!r} is not one of {', '.join(EFFECT_NAMES)}")
-        for name in CANDIDATES[self.effect].required:
-            if name not in self.parameters:
-                raise DiagnoseError(f"effect {self.effect!r} needs the parameter {name!r}")
-
-    @classmethod
-    def from_summary(cls, path: str | Path) -> FittedEffect:
-        """Load the effect of a ``diagnose`` summary.json."""
-        text = Path(path).read_text(encoding="utf-8")
-        try:
-            summary = json.loads(text)
-        except json.JSONDecodeError as exc:
-            raise DiagnoseError(f"not a JSON file ({exc})") from exc
-        if not isinstance(summary, dict) or "effect" not in summary:
-            raise DiagnoseError("no 'effect' in the summary; expected the summary.json of bearingheat diagnose")
-        return cls(str(summary["effect"]), dict(summary.get("parameters") or {}))
-
-    def describe(self) -> str:
-        return f"diagnose effect {self.effect} ({format_value(self.parameters)})" if self.parameters else \
-            f"diagnose effect {self.effect}"
-
-    def apply(self, frame: pd.DataFrame, results: pd.DataFrame) -> None:
-        """Add the effect to MR and recompute NR for every row that is not in error (the candidate applies itself)."""
-        CANDIDATES[self.effect].apply(frame, results, self.parameters, self.describe())

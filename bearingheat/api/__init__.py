@@ -23,23 +23,51 @@ message; the heat balance gives a point it cannot solve (no equilibrium, a
 method that does not apply) status 'error' and NaN, and the other points
 their values.
 """
-from bearingheat.api.bearings import BearingData, bearing, bearing_table, designations
-from bearingheat.api.bushing import BushingSize, ThrustWasherSize, size_bushing, size_thrust_washer
-from bearingheat.api.coastdown import analyse_coastdown, analyse_spindle_coastdown
-from bearingheat.api.contact import BallContact, ball_bearing_contact, contact_angle_from_clearance
-from bearingheat.api.friction import FrictionResult, friction_torque
-from bearingheat.api.thermal import HeatBalanceResult, heat_balance, thermal_reference_speed
-from bearingheat.api.viscosity import oil_viscosity
-from bearingheat.catalogue.designation import decode_gost, parse_designation
-from bearingheat.catalogue.f2chart import F2Chart
-from bearingheat.catalogue.vm_chart import VMChart
+from __future__ import annotations
 
-__all__ = [
-    "friction_torque", "FrictionResult",
-    "heat_balance", "HeatBalanceResult", "thermal_reference_speed", "oil_viscosity",
-    "ball_bearing_contact", "BallContact", "contact_angle_from_clearance",
-    "size_bushing", "BushingSize", "size_thrust_washer", "ThrustWasherSize",
-    "analyse_coastdown", "analyse_spindle_coastdown",
-    "bearing", "BearingData", "bearing_table", "designations",
-    "parse_designation", "decode_gost", "F2Chart", "VMChart",
-]
+import importlib
+from typing import TYPE_CHECKING, Any
+
+#: public name -> the module that defines it; imported on first use (PEP 562), so ``import bearingheat`` and the
+#: command line load only what they use (scipy.stats alone takes 0.6 s)
+_EXPORTS = {
+    "friction_torque": "bearingheat.api.friction", "FrictionResult": "bearingheat.api.friction",
+    "heat_balance": "bearingheat.api.thermal", "HeatBalanceResult": "bearingheat.api.thermal",
+    "thermal_reference_speed": "bearingheat.api.thermal", "oil_viscosity": "bearingheat.api.viscosity",
+    "ball_bearing_contact": "bearingheat.api.contact", "BallContact": "bearingheat.api.contact",
+    "contact_angle_from_clearance": "bearingheat.api.contact",
+    "size_bushing": "bearingheat.api.bushing", "BushingSize": "bearingheat.api.bushing",
+    "size_thrust_washer": "bearingheat.api.bushing", "ThrustWasherSize": "bearingheat.api.bushing",
+    "analyse_coastdown": "bearingheat.api.coastdown", "analyse_spindle_coastdown": "bearingheat.api.coastdown",
+    "bearing": "bearingheat.api.bearings", "BearingData": "bearingheat.api.bearings",
+    "bearing_table": "bearingheat.api.bearings", "designations": "bearingheat.api.bearings",
+    "parse_designation": "bearingheat.catalogue.designation", "decode_gost": "bearingheat.catalogue.designation",
+    "F2Chart": "bearingheat.catalogue.f2chart", "VMChart": "bearingheat.catalogue.vm_chart",
+}
+
+__all__ = list(_EXPORTS)
+
+if TYPE_CHECKING:  # what type checkers and IDEs see; at run time each name is imported on first use
+    from bearingheat.api.bearings import BearingData, bearing, bearing_table, designations
+    from bearingheat.api.bushing import BushingSize, ThrustWasherSize, size_bushing, size_thrust_washer
+    from bearingheat.api.coastdown import analyse_coastdown, analyse_spindle_coastdown
+    from bearingheat.api.contact import BallContact, ball_bearing_contact, contact_angle_from_clearance
+    from bearingheat.api.friction import FrictionResult, friction_torque
+    from bearingheat.api.thermal import HeatBalanceResult, heat_balance, thermal_reference_speed
+    from bearingheat.api.viscosity import oil_viscosity
+    from bearingheat.catalogue.designation import decode_gost, parse_designation
+    from bearingheat.catalogue.f2chart import F2Chart
+    from bearingheat.catalogue.vm_chart import VMChart
+
+
+def __getattr__(name: str) -> Any:
+    module = _EXPORTS.get(name)
+    if module is None:
+        raise AttributeError(f"module 'bearingheat.api' has no attribute {name!r}")
+    value = getattr(importlib.import_module(module), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted({*globals(), *_EXPORTS})

@@ -1,9 +1,9 @@
 """``bearingheat`` command line: one subcommand per module, looked up in a registry.
 
-Each subcommand module defines ``HELP`` (one line), ``DESCRIPTION`` (the
-long help: columns, units, exit codes), ``add_arguments(parser)`` and
-``run(args) -> int``. Modules import their heavy dependencies inside ``run``
-so that ``bearingheat --help`` stays fast.
+Each subcommand module defines ``DESCRIPTION`` (the long help: columns,
+units, exit codes), ``add_arguments(parser)`` and ``run(args) -> int``; its
+one-line help is in :data:`COMMANDS`. Only the module of the command that
+runs is imported, so ``bearingheat --help`` and ``--version`` stay fast.
 
 Exit codes shared by all subcommands: 0 success (rows ok or warning),
 1 some rows had errors, 2 unusable input (missing file, missing column,
@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import argparse
 import importlib
+from collections.abc import Collection
 import importlib.metadata
 import sys
 import xml.etree.ElementTree as ElementTree
@@ -36,22 +37,35 @@ FAULTS: tuple[type[BaseException], ...] = (OSError, zipfile.BadZipFile, zlib.err
 #: the arguments that name a command's input file, in the order they are looked for
 _INPUT_ARGUMENTS = ("input", "data", "table", "reference_speeds", "csv")
 
-# name -> module implementing it
-COMMANDS: dict[str, str] = {
-    "calc": "bearingheat.cli.calc",
-    "coastdown": "bearingheat.cli.coastdown",
-    "bushing": "bearingheat.cli.bushing",
-    "contact": "bearingheat.cli.contact",
-    "template": "bearingheat.cli.template",
-    "plot": "bearingheat.cli.plot",
-    "lab": "bearingheat.cli.lab",
-    "audit": "bearingheat.cli.audit",
-    "diagnose": "bearingheat.cli.diagnose",
-    "lookup": "bearingheat.cli.lookup",
+#: name -> (module implementing it, the one line of ``bearingheat --help``); a command's module is imported only
+#: when that command runs or shows its help, so the command line starts without loading the others
+COMMANDS: dict[str, tuple[str, str]] = {
+    "calc": ("bearingheat.cli.calc",
+        "friction torque, power loss (and thermal speeds) of supports in a CSV or Excel table"),
+    "coastdown": ("bearingheat.cli.coastdown",
+        "coast-down (run-down) analysis: reduced friction coefficient and torque components (the TMM-7M lab sheet)"),
+    "bushing": ("bearingheat.cli.bushing",
+        "size a DU/DP self-lubricating bushing or thrust washer by pV and [p] (the DU/DP bushing handbook)"),
+    "contact": ("bearingheat.cli.contact",
+        "contact angle from clearance, working angle under Fa, stiffness C*, minimum axial load (Zaitsev & Voronkin)"),
+    "template": ("bearingheat.cli.template",
+        "write an Excel template (.xlsx) to fill in with shaft supports"),
+    "plot": ("bearingheat.cli.plot",
+        "plot friction heat and heat carried away of one support against speed and temperature (PNG, SVG, PDF)"),
+    "lab": ("bearingheat.cli.lab",
+        "process DP11A lab rig readings (the DP11A manual): mu, f0 and T_F, f and T0, tables 4 and 5, plots"),
+    "audit": ("bearingheat.cli.audit",
+        "fit f0, f1 (f2) to measured torque with 95-percent intervals; audit n_thr against a catalogue list"),
+    "diagnose": ("bearingheat.cli.diagnose",
+        "trace the residuals of measured torque to a missing effect; model error before and after"),
+    "lookup": ("bearingheat.cli.lookup",
+        "a bearing's dimensions, load ratings, e, Y, Y0 and speeds by designation (Schaeffler HR 1, 2006)"),
 }
 
 
-def build_parser() -> argparse.ArgumentParser:
+def build_parser(commands: Collection[str] | None = None) -> argparse.ArgumentParser:
+    """The parser with the arguments of ``commands`` (None: every command); the others are listed by name and
+    help line only, their modules not imported."""
     parser = argparse.ArgumentParser(
         prog="bearingheat",
         description="Friction torque, power loss and thermal speed limits of shaft supports.",
@@ -59,12 +73,13 @@ def build_parser() -> argparse.ArgumentParser:
     )
     parser.add_argument("--version", action="version", version=f"bearingheat {_version()}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
-    for name, module_path in COMMANDS.items():
+    for name, (module_path, help_line) in COMMANDS.items():
+        if commands is not None and name not in commands:
+            sub.add_parser(name, help=help_line)
+            continue
         module = importlib.import_module(module_path)
-        cmd = sub.add_parser(
-            name, help=module.HELP, description=module.DESCRIPTION,
-            formatter_class=argparse.RawDescriptionHelpFormatter,
-        )
+        cmd = sub.add_parser(name, help=help_line, description=module.DESCRIPTION,
+                             formatter_class=argparse.RawDescriptionHelpFormatter)
         module.add_arguments(cmd)
         cmd.set_defaults(_module=module)
     return parser
@@ -113,8 +128,10 @@ def describe_fault(exc: BaseException, args: argparse.Namespace | None = None) -
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = build_parser()
-    args = parser.parse_args(argv)
+    arguments = sys.argv[1:] if argv is None else list(argv)
+    command = next((a for a in arguments if not a.startswith("-")), None)  # the options before it are --help, --version
+    parser = build_parser([command] if command in COMMANDS else [])  # --help and --version load no command
+    args = parser.parse_args(arguments)
     try:
         return int(args._module.run(args))
     except BearingheatError as exc:  # unusable input or argument (UsageError included): exit 2

@@ -22,7 +22,6 @@ from bearingheat.io.reports.audit import (REFERENCE_SPEED_FILES, coefficient_lin
                                           write_coefficients, write_reference_speeds)
 from bearingheat.io.tables import read_table
 
-HELP = "fit f0, f1 (f2) to measured torque with 95-percent intervals; audit n_thr against a catalogue list"
 
 DESCRIPTION = """\
 Two audits; DATA may be either kind (told apart by its columns), and a catalogue

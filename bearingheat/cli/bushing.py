@@ -17,7 +17,6 @@ from bearingheat.errors import BearingheatError, OutsideMethodError, UnitError
 from bearingheat.kernels.bushing import oscillating_speed_seed004
 from bearingheat.units import magnitude, parse_quantity, quantity, speed_rpm
 
-HELP = "size a DU/DP self-lubricating bushing or thrust washer by pV and [p] (the DU/DP bushing handbook)"
 
 DESCRIPTION = """\
 Size a self-lubricating DU/DP bushing (length) or thrust washer (outer

@@ -6,7 +6,7 @@ import os
 import sys
 from pathlib import Path
 
-from bearingheat.analysis.diagnose import FittedEffect
+from bearingheat.analysis.effects import FittedEffect
 from bearingheat.calc.contract import help_text
 from bearingheat.calc.duty import duty_cycle, has_duty_cycle
 from bearingheat.calc.models import DEFAULT_MODEL, MODELS
@@ -30,7 +30,6 @@ from bearingheat.io.excel.writer import write_results_workbook
 from bearingheat.io.files import safe_output, workbook_lock
 from bearingheat.io.tables import calc_csv, check_table_suffix, write_csv, write_table
 
-HELP = "friction torque, power loss (and thermal speeds) of supports in a CSV or Excel table"
 
 DESCRIPTION = f"""\
 Compute a friction model for one support per row: the catalogue model of the

@@ -13,7 +13,6 @@ from bearingheat.io.files import check_outputs
 from bearingheat.io.reports.coastdown import coastdown_summary, render_report, write_coastdown_outputs
 from bearingheat.units import parse_quantity
 
-HELP = "coast-down (run-down) analysis: reduced friction coefficient and torque components (the TMM-7M lab sheet)"
 
 DESCRIPTION = """\
 Analyse a run-down diagram n(t) of a rotor after its drive is disconnected

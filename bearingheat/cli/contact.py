@@ -18,7 +18,6 @@ from bearingheat.io.console import print_record
 from bearingheat.io.tables import escape_cell, read_text, sniff_format
 from bearingheat.units import parse_quantity, parse_unit, ureg
 
-HELP = "contact angle from clearance, working angle under Fa, stiffness C*, minimum axial load (Zaitsev & Voronkin)"
 
 DESCRIPTION = """\
 Contact of a ball bearing after Zaitsev & Voronkin (2009): the initial contact

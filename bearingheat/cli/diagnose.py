@@ -16,7 +16,6 @@ from bearingheat.io.reports.comparison import COMPARISON_FILES, comparison_lines
 from bearingheat.io.reports.diagnose import summary_lines, write_outputs
 from bearingheat.io.tables import read_table
 
-HELP = "trace the residuals of measured torque to a missing effect; model error before and after"
 
 DESCRIPTION = """\
 Compare measured friction torque with the catalogue model of the Schaeffler rolling

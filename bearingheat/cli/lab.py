@@ -15,7 +15,6 @@ from bearingheat.io.reports.lab import write_lab_outputs
 from bearingheat.io.tables import read_table
 from bearingheat.units import magnitude, parse_quantity
 
-HELP = "process DP11A lab rig readings (the DP11A manual): mu, f0 and T_F, f and T0, tables 4 and 5, plots"
 
 DESCRIPTION = """\
 Process friction torque readings of the DP11A rig (the DP11A manual).

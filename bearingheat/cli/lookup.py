@@ -11,7 +11,6 @@ from bearingheat.cli.options import add_json, add_quiet
 from bearingheat.errors import DesignationError
 from bearingheat.io.console import print_record
 
-HELP = "a bearing's dimensions, load ratings, e, Y, Y0 and speeds by designation (Schaeffler HR 1, 2006)"
 
 DESCRIPTION = """\
 Look a bearing up in the bearing table of the package (Schaeffler HR 1, June 2006:

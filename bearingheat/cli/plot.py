@@ -11,7 +11,6 @@ from bearingheat.io.files import atomic_write, safe_output
 from bearingheat.io.reports.thermal import FIGURE_FORMATS, draw_heat_balance, figure_format, heat_balance_curves
 from bearingheat.io.tables import read_csv
 
-HELP = "plot friction heat and heat carried away of one support against speed and temperature (PNG, SVG, PDF)"
 
 DESCRIPTION = """\
 Draws, for one support of a calc table (CSV, the columns of 'bearingheat calc'),

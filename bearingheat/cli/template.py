@@ -9,7 +9,6 @@ from bearingheat.cli.options import add_force, add_output, add_quiet
 from bearingheat.io.excel.template import build_template
 from bearingheat.io.files import atomic_write, safe_output
 
-HELP = "write an Excel template (.xlsx) to fill in with shaft supports"
 
 DESCRIPTION = """\
 Write a workbook a designer fills in without reading docs (-o FILE.xlsx), then

@@ -47,7 +47,7 @@ from bearingheat.io.files import WorkbookLock, safe_output, workbook_lock
 from bearingheat.io.tables import write_csv
 
 if TYPE_CHECKING:
-    from bearingheat.analysis.diagnose import FittedEffect
+    from bearingheat.analysis.effects import FittedEffect
     from bearingheat.catalogue.f2chart import F2Chart
     from bearingheat.catalogue.vm_chart import VMChart
     from bearingheat.io.console import Progress
