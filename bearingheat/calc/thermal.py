@@ -107,6 +107,8 @@ def _viscosity_of_rows(frame: pd.DataFrame, A, B):
     """ν(θ) for every row: Walther where A, B are known, the constant ``nu`` column otherwise."""
     nu_fixed = number_column(frame, "nu")
     has_model = ~np.isnan(A)
+    if not has_model.any():  # no row has oil data: ν does not depend on the temperature
+        return lambda theta: np.broadcast_arrays(np.asarray(theta, dtype=float), nu_fixed)[1].copy()
 
     def nu_at(theta):
         with np.errstate(invalid="ignore", over="ignore"):
