@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING, Any
 
 from bearingheat import errors
 from bearingheat.api import _EXPORTS as _API_EXPORTS
+from bearingheat.api import lazy_exports
 from bearingheat.errors import *  # noqa: F401,F403  (every error and warning class)
 from bearingheat.errors import __all__ as _errors_all
 
@@ -36,17 +37,7 @@ if TYPE_CHECKING:  # what type checkers and IDEs see; at run time each name is i
     from bearingheat.calc.table import calc
 
 
-def __getattr__(name: str) -> Any:
-    module = _EXPORTS.get(name)
-    if module is None:
-        raise AttributeError(f"module 'bearingheat' has no attribute {name!r}")
-    value = getattr(importlib.import_module(module), name)
-    globals()[name] = value
-    return value
-
-
-def __dir__() -> list[str]:
-    return sorted({*globals(), *_EXPORTS})
+__getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)
 
 
 class _Package(types.ModuleType):
