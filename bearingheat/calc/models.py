@@ -32,8 +32,8 @@ from bearingheat.calc.friction import EXCEL_FORMULAS, RESULTS, evaluate_catalogu
 from bearingheat.calc.skf import RESULTS as SKF_RESULTS
 from bearingheat.calc.skf import evaluate_skf_model
 from bearingheat.calc.messages import Labels, Problem
-from bearingheat.calc.supports import KEY_INPUTS, NUMBER_INPUTS, SupportArrays, _stripped_or_none, \
-    build_support_arrays, number_column, per_distinct
+from bearingheat.calc.supports import KEY_INPUTS, NUMBER_INPUTS, SupportArrays, build_support_arrays, number_column, \
+    text_or_default
 from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.errors import ModelError
 from bearingheat.kernels.friction import mean_diameter
@@ -164,10 +164,7 @@ def get_model(name: str) -> FrictionModel:
 def _row_models(frame: pd.DataFrame, default: str) -> tuple[np.ndarray, np.ndarray]:
     """The model name of every row (the ``model`` column, else ``default``) and the rows' errors ('' if none),
     as object arrays; each distinct name is looked up once."""
-    if "model" in frame.columns:
-        names = per_distinct(frame["model"], lambda v: _stripped_or_none(v) or default)
-    else:
-        names = np.full(len(frame), default, dtype=object)
+    names = text_or_default(frame, "model", default)
     codes, distinct = pd.factorize(names)
     errors = np.array(["" if name in MODELS else f"model: {name!r} is not one of {', '.join(MODELS)}"
                        for name in distinct], dtype=object)

@@ -22,8 +22,8 @@ import pandas as pd
 
 from bearingheat.calc import contract
 from bearingheat.calc.messages import Labels, Problem, at
-from bearingheat.calc.supports import SupportArrays, _stripped_or_none, distinct_keys, number_column, per_distinct, \
-    text_codes
+from bearingheat.calc.supports import SupportArrays, distinct_keys, number_column, per_distinct, text_codes, \
+    text_or_default, value_codes
 from bearingheat.catalogue import skf as catalogue
 from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.catalogue.vm_chart import VMChart
@@ -134,9 +134,8 @@ def _resolve(x: _Extra, supports: SupportArrays, size: int):
     if all(np.ndim(v) == 0 for v in (designation, bearing_type, series)) and not plain.any():
         one = _constants_of(designation, bearing_type, series)
         return {k: one[k] for k in (*_CONSTANTS, *_TEXTS, "seals", "error")}, False
-    keys = pd.Series(list(zip(*(_per_row(v, size) for v in (designation, bearing_type, series)), plain)),
-                     dtype=object)
-    codes, uniques = pd.factorize(keys, sort=False)
+    codes, uniques = distinct_keys([value_codes(_per_row(v, size)) for v in (designation, bearing_type, series)]
+                                   + [value_codes(plain)])
     per_key = [_constants_of(*key[:3]) if not key[3] else _blank("") for key in uniques]
     out = {}
     for name in (*_CONSTANTS, "seals"):
@@ -470,8 +469,7 @@ def fill_vm_from_chart(frame: pd.DataFrame, chart: VMChart, skf_rows: np.ndarray
     """
     n_rows = len(frame)
     read = np.full(n_rows, np.nan)
-    lubrication = per_distinct(frame["lubrication"], _stripped_or_none) if "lubrication" in frame.columns \
-        else np.full(n_rows, None, dtype=object)
+    lubrication = text_or_default(frame, "lubrication", None)
     VM, H = number_column(frame, "VM"), number_column(frame, "oil_level")
     d, D = number_column(frame, "d"), number_column(frame, "D")
     rows = skf_rows & np.equal(lubrication, "oil_bath") & np.isnan(VM) & ~np.isnan(H) & ~np.isnan(d) & ~np.isnan(D)

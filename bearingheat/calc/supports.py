@@ -25,7 +25,8 @@ from bearingheat.catalogue.friction import LUBRICATION_F0_COLUMN, ResolvedBearin
 from bearingheat.errors import DesignationError
 
 __all__ = ["SupportArrays", "build_support_arrays", "bearing_constants", "NUMBER_INPUTS", "KEY_INPUTS",
-           "text_column", "number_column", "text_codes", "distinct_keys", "group_codes"]
+           "text_column", "number_column", "text_codes", "distinct_keys", "group_codes", "text_or_default",
+           "value_codes"]
 
 #: numeric inputs of the friction model, in catalogue units
 NUMBER_INPUTS = ("d", "D", "B", "C0", "Y", "e", "X0", "Y0", "alpha", "f0", "f1", "f2", "n", "nu", "Fr", "Fa")
@@ -230,6 +231,21 @@ def _constants_of_key(designation, bearing_type, series, lubrication, arrangemen
 def _fill_blank(given, printed):
     """``given`` where it is a number, ``printed`` where it is NaN (scalars stay scalars)."""
     return np.where(np.isnan(given), printed, given)
+
+
+def text_or_default(frame: pd.DataFrame, name: str, default: str | None) -> np.ndarray:
+    """A text column as stripped strings, ``default`` for blank cells and where the column is absent (an object
+    array; each distinct cell is cleaned once)."""
+    if name not in frame.columns:
+        return np.full(len(frame), default, dtype=object)
+    return per_distinct(frame[name], lambda v: _stripped_or_none(v) or default)
+
+
+def value_codes(values: np.ndarray) -> tuple[np.ndarray, list]:
+    """An array of values as codes into its distinct values (missing values are one value, None), for
+    :func:`distinct_keys`."""
+    codes, uniques = pd.factorize(np.asarray(values, dtype=object), use_na_sentinel=True)
+    return np.where(codes < 0, len(uniques), codes), [*uniques.tolist(), None]
 
 
 def text_codes(frame: pd.DataFrame, name: str) -> tuple[np.ndarray, list[str | None]]:

@@ -47,7 +47,7 @@ import pandas as pd
 from bearingheat.calc.contract import columns, register_choices
 from bearingheat.calc.models import FrictionPower, compute_supports
 from bearingheat.calc.reference_speed import thermal_reference_speed_details, thermal_reference_speed_rows
-from bearingheat.calc.supports import _stripped_or_none, number_column, per_distinct
+from bearingheat.calc.supports import number_column, text_or_default
 from bearingheat.calc.viscosity import viscosity_model_rows
 from bearingheat.catalogue.thermal import THERMAL_KINDS
 from bearingheat.errors import HeatBalanceError
@@ -430,10 +430,7 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
 
 def _row_choices(frame: pd.DataFrame, column: str, default: str, choices, problems: list) -> np.ndarray:
     """Every row's ``column`` cell, else ``default``; a name not in ``choices`` is a row error (and the default)."""
-    if column in frame.columns:
-        names = per_distinct(frame[column], lambda v: _stripped_or_none(v) or default)
-    else:
-        names = np.full(len(frame), default, dtype=object)
+    names = text_or_default(frame, column, default)
     for i in np.flatnonzero(~np.isin(names, list(choices))):
         problems.append((int(i), "error", f"{column}: {names[i]!r} is not one of {', '.join(choices)}"))
         names[i] = default

@@ -18,8 +18,8 @@ from bearingheat.io.json import json_safe
 from bearingheat.errors import AuditError, DiagnoseError
 from bearingheat.io.files import check_outputs
 from bearingheat.io.reports.comparison import COMPARISON_FILES, comparison_lines, write_comparison
-from bearingheat.io.reports.audit import (REFERENCE_SPEED_FILES, coefficient_lines, reference_speed_lines,
-                                          write_coefficients, write_reference_speeds)
+from bearingheat.io.reports.audit import (COEFFICIENT_TITLE, REFERENCE_SPEED_FILES, excluded_lines,
+                                          reference_speed_lines, write_coefficients, write_reference_speeds)
 from bearingheat.io.tables import read_table
 
 
@@ -116,10 +116,9 @@ def run(args: argparse.Namespace) -> int:
         for kind, table in jobs:
             if kind == "coefficients":
                 result = audit_coefficients(table)
-                title, _, *excluded = coefficient_lines(result)  # the title, the table as text, excluded rows
                 if not silent:
-                    print_table(result, float_format=".4g", title=title)
-                for line in excluded:
+                    print_table(result, float_format=".4g", title=COEFFICIENT_TITLE)
+                for line in excluded_lines(result):
                     say(line)
                 flagged |= bool((result["flag"] != "").any() or (result["status"] != "ok").any())
                 printed["coefficients"] = result.to_dict(orient="records")

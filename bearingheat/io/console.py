@@ -112,8 +112,7 @@ def _rich_table(frame: pd.DataFrame, float_format: Callable[[float], str] | None
         table.add_column(Text(str(name)), justify="right" if numeric else "left", no_wrap=numeric)
     for row in frame.itertuples(index=False):
         cells = [_cell(value, float_format) for value in row]
-        table.add_row(*(Text(text, style=STATUS_STYLES.get(text, "") if name == "status" else "")
-                        for name, text in zip(frame.columns, cells)))
+        table.add_row(*(_status(text) if name == "status" else Text(text) for name, text in zip(frame.columns, cells)))
     return table
 
 

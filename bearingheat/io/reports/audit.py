@@ -23,7 +23,7 @@ from bearingheat.io.files import write_outputs
 from bearingheat.io.tables import escape_formulas
 from bearingheat.io.reports import FIGURE_DPI, matplotlib_figure
 
-__all__ = ["coefficient_lines", "reference_speed_lines", "write_coefficients", "write_reference_speeds",
+__all__ = ["coefficient_lines", "excluded_lines", "COEFFICIENT_TITLE", "reference_speed_lines", "write_coefficients", "write_reference_speeds",
            "draw_reference_speeds", "REFERENCE_SPEED_FILES"]
 
 #: at most this many excluded rows are listed under the coefficient table
@@ -33,12 +33,19 @@ REFERENCE_SPEED_FILES = ("reference_speeds.csv", "reference_speed_series.csv", "
 #: resolution of the figure [dots per inch]
 
 
+#: the line before the table of fitted coefficients
+COEFFICIENT_TITLE = "Coefficients fitted to the measured torque (95 % confidence intervals):"
+
+
+def excluded_lines(result: pd.DataFrame) -> list[str]:
+    """The rows the coefficient fit left out, a line each (at most :data:`SHOWN_EXCLUDED`)."""
+    return [f"excluded: {message}" for message in result.attrs.get("excluded", [])[:SHOWN_EXCLUDED]]
+
+
 def coefficient_lines(result: pd.DataFrame) -> list[str]:
-    """The coefficient audit as text lines: the table, then the rows that were excluded."""
-    lines = ["Coefficients fitted to the measured torque (95 % confidence intervals):",
-             result.to_string(index=False, float_format=lambda x: f"{x:.4g}")]
-    lines += [f"excluded: {message}" for message in result.attrs.get("excluded", [])[:SHOWN_EXCLUDED]]
-    return lines
+    """The coefficient audit as text lines: the title, the table, then the rows that were excluded."""
+    return [COEFFICIENT_TITLE, result.to_string(index=False, float_format=lambda x: f"{x:.4g}"),
+            *excluded_lines(result)]
 
 
 def _percent(value: float) -> str:
