@@ -15,7 +15,6 @@ import pandas as pd
 from bearingheat.calc.contract import columns
 from bearingheat.catalogue.designation import parse_designation
 from bearingheat.errors import ContactInputError, DesignationError
-from bearingheat.kernels.contact import minimum_axial_load
 
 __all__ = ["prepare", "extend"]
 
@@ -45,6 +44,7 @@ def extend(frame: pd.DataFrame, results: pd.DataFrame):
     """
     if not all(col in frame.columns for col in _GEOMETRY):
         return pd.DataFrame(index=frame.index), []
+    from bearingheat.kernels.contact import minimum_axial_load  # scipy (0.3 s to import): for ball geometry only
     z, dw, pitch = (frame[c].to_numpy(dtype=float) for c in _GEOMETRY)
     alpha = frame["alpha"].to_numpy(dtype=float) if "alpha" in frame.columns else np.full(len(frame), np.nan)
     designations = frame["designation"] if "designation" in frame.columns else [None] * len(frame)

@@ -33,7 +33,7 @@ from bearingheat.calc.skf import RESULTS as SKF_RESULTS
 from bearingheat.calc.skf import evaluate_skf_model
 from bearingheat.calc.messages import Labels, Problem
 from bearingheat.calc.supports import KEY_INPUTS, NUMBER_INPUTS, SupportArrays, build_support_arrays, number_column, \
-    text_or_default
+    object_column, text_codes
 from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.errors import ModelError
 from bearingheat.kernels.friction import mean_diameter
@@ -161,19 +161,21 @@ def get_model(name: str) -> FrictionModel:
         raise ModelError(f"model: {name!r} is not one of {', '.join(MODELS)}") from None
 
 
-def _row_models(frame: pd.DataFrame, default: str) -> tuple[np.ndarray, np.ndarray]:
-    """The model name of every row (the ``model`` column, else ``default``) and the rows' errors ('' if none),
-    as object arrays; each distinct name is looked up once."""
-    names = text_or_default(frame, "model", default)
-    codes, distinct = pd.factorize(names)
-    errors = np.array(["" if name in MODELS else f"model: {name!r} is not one of {', '.join(MODELS)}"
-                       for name in distinct], dtype=object)
-    return names, errors[codes]
+def _row_models(frame: pd.DataFrame, default: str) -> tuple[np.ndarray, list[str]]:
+    """Per row the code of its model name (its ``model`` cell, else ``default``), and the names the codes
+    stand for (a name may appear under two codes: cells that differ only in blanks)."""
+    codes, texts = text_codes(frame, "model")
+    return codes, [text or default for text in texts]
 
 
 def row_model_names(frame: pd.DataFrame, default: str) -> np.ndarray:
     """The model name of every row: its ``model`` cell, else ``default`` (an object array)."""
-    return _row_models(frame, default)[0]
+    codes, names = _row_models(frame, default)
+    return np.array(names, dtype=object)[codes]
+
+
+def _model_error(name: str) -> str:
+    return f"model: {name!r} is not one of {', '.join(MODELS)}"
 
 
 def _message_at(problem: Problem, position: dict[int, int], row: int) -> str:
@@ -188,11 +190,13 @@ def _scatter(results: dict, part: dict, rows: np.ndarray, size: int) -> None:
         results[name][rows] = values
 
 
-def evaluate_models(supports: SupportArrays, names: np.ndarray, labels: Labels, f2_chart: F2Chart | None):
-    """Each row by its own model; returns (results, problems) over all rows."""
+def evaluate_models(supports: SupportArrays, model_codes: np.ndarray, model_names: list[str], labels: Labels,
+                    f2_chart: F2Chart | None):
+    """Each row by its own model (``model_names[model_codes]``); returns (results, problems) over all rows."""
     size = supports.size
-    present = [name for name in MODELS if np.any(names == name)]
-    if len(present) == 1 and np.all(names == present[0]):
+    used = set(np.unique(model_codes).tolist())
+    present = [name for name in MODELS if any(model_names[k] == name for k in used)]
+    if len(present) == 1 and all(model_names[k] == present[0] for k in used):
         with np.errstate(all="ignore"):
             one_model, one_model_problems = MODELS[present[0]].evaluate(supports, labels, f2_chart)
         filled = {k: np.array(np.broadcast_to(v, (size,)), dtype=float) for k, v in one_model.items()}
@@ -202,7 +206,7 @@ def evaluate_models(supports: SupportArrays, names: np.ndarray, labels: Labels, 
     results: dict[str, np.ndarray] = {}
     problems: list[Problem] = []
     for name in present:
-        rows = np.flatnonzero(names == name)
+        rows = np.flatnonzero(np.array([n == name for n in model_names], dtype=bool)[model_codes])
         with np.errstate(all="ignore"):
             part, part_problems = MODELS[name].evaluate(supports.take(rows), labels, f2_chart)
         _scatter(results, part, rows, size)
@@ -230,25 +234,25 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
     labels = labels or Labels()
     n_rows = len(frame)
     supports = support_arrays_of(frame)
-    names, model_error = _row_models(frame, model)
+    model_codes, model_names = _row_models(frame, model)
+    names = np.array(model_names, dtype=object)[model_codes]
     plain = supports.plain
-    catalogue_rows = np.ones(n_rows, dtype=bool)
-    for name in MODELS:  # rows of a model with its own tables skip the catalogue's resolution errors
-        if not MODELS[name].catalogue_keys:
-            catalogue_rows &= names != name
-    model_ok = model_error == ""
+    # rows of a model with its own tables skip the catalogue's resolution errors
+    catalogue_rows = np.array([name not in MODELS or MODELS[name].catalogue_keys for name in model_names],
+                              dtype=bool)[model_codes]
+    model_ok = np.array([name in MODELS for name in model_names], dtype=bool)[model_codes]
     own = np.broadcast_to(np.asarray(supports.error, dtype=object), (n_rows,))
     # rows with messages only: error and warning lists keyed by row position
     row_errors: defaultdict[int, list[str]] = defaultdict(list)
     for i in np.flatnonzero(~model_ok & ~plain).tolist():
-        row_errors[i].append(model_error[i])
+        row_errors[i].append(_model_error(names[i]))
     own_error = model_ok & catalogue_rows & ~plain
     for i in np.flatnonzero(own_error & (own != "") & (own != None)).tolist():  # noqa: E711 (element-wise)
         row_errors[i].append(own[i])
     # a row whose bearing did not resolve has its error already; rows of a model with its own tables report theirs
     resolved = (np.broadcast_to(supports.resolved, (n_rows,)) | ~catalogue_rows) & model_ok
 
-    results, problems = evaluate_models(supports, names, labels, f2_chart)
+    results, problems = evaluate_models(supports, model_codes, model_names, labels, f2_chart)
     warnings_by_row: defaultdict[int, list[str]] = defaultdict(list)
     if plain.any():
         plain_rows(frame, plain, results, row_errors, warnings_by_row)
@@ -262,8 +266,8 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
     notes_of = np.broadcast_to(supports.notes, (n_rows,))
     for i in np.flatnonzero(notes_of.astype(bool) & ~plain).tolist():  # a designation's notes, after the warnings
         warnings_by_row[i].append("; ".join(notes_of[i]))
-    status = np.full(n_rows, "ok", dtype=object)
-    message = np.full(n_rows, "", dtype=object)
+    status = object_column(n_rows, "ok")
+    message = object_column(n_rows, "")
     for i, texts in warnings_by_row.items():
         if texts:
             status[i], message[i] = "warning", "; ".join(texts)
@@ -284,7 +288,7 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
                     "series": np.broadcast_to(supports.series, (n_rows,)), "model": names}
     columns.update({name: pd.Series(np.asarray(values, dtype=object), index=frame.index, dtype=object)
                     for name, values in text_columns.items()})
-    return pd.DataFrame(columns, index=frame.index)
+    return pd.DataFrame(columns, index=frame.index, copy=False)  # calc's own arrays: no copy into one block
 
 
 class FrictionPower:
@@ -301,7 +305,7 @@ class FrictionPower:
     def __init__(self, frame: pd.DataFrame, results: pd.DataFrame):
         self.size = len(frame)
         names = results["model"].to_numpy(dtype=object) if "model" in results.columns \
-            else np.full(self.size, DEFAULT_MODEL, dtype=object)
+            else object_column(self.size, DEFAULT_MODEL)
         self.f0 = results["f0"].to_numpy(dtype=float)
         self.load_torque = results["M1"].to_numpy(dtype=float) + np.nan_to_num(results["M2"].to_numpy(dtype=float))
         self.dM = mean_diameter(number_column(frame, "d"), number_column(frame, "D"))

@@ -23,7 +23,7 @@ import pandas as pd
 from bearingheat.calc import contract
 from bearingheat.calc.messages import Labels, Problem, at
 from bearingheat.calc.supports import SupportArrays, distinct_keys, number_column, per_distinct, text_codes, \
-    text_or_default, value_codes
+    object_column, text_or_default, value_codes
 from bearingheat.catalogue import skf as catalogue
 from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.catalogue.vm_chart import VMChart
@@ -476,7 +476,7 @@ def fill_vm_from_chart(frame: pd.DataFrame, chart: VMChart, skf_rows: np.ndarray
     if not rows.any():
         return frame, [], read
     edition = per_distinct(frame["skf_edition"], lambda v: _clean(v, False) or catalogue.DEFAULT_EDITION) \
-        if "skf_edition" in frame.columns else np.full(n_rows, catalogue.DEFAULT_EDITION, dtype=object)
+        if "skf_edition" in frame.columns else object_column(n_rows, catalogue.DEFAULT_EDITION)
     codes, distinct = distinct_keys([text_codes(frame, c) for c in ("designation", "type", "series")])
     kind = np.array([_kind(_constants_of(*key)) for key in distinct], dtype=object)[codes]
     rows &= (kind != "") & np.isin(edition, catalogue.EDITIONS)  # else the model's own message says why

@@ -26,7 +26,7 @@ from bearingheat.errors import DesignationError
 
 __all__ = ["SupportArrays", "build_support_arrays", "bearing_constants", "NUMBER_INPUTS", "KEY_INPUTS",
            "text_column", "number_column", "text_codes", "distinct_keys", "group_codes", "text_or_default",
-           "value_codes"]
+           "value_codes", "text_categorical", "blanks_filled", "object_column"]
 
 #: numeric inputs of the friction model, in catalogue units
 NUMBER_INPUTS = ("d", "D", "B", "C0", "Y", "e", "X0", "Y0", "alpha", "f0", "f1", "f2", "n", "nu", "Fr", "Fa")
@@ -127,8 +127,19 @@ class SupportArrays:
         return dataclasses.replace(self, **values)
 
 
+def object_column(size: int, value: Any) -> np.ndarray:
+    """An object array of ``size`` cells that all hold ``value``. ``np.full`` converts a text value cell by cell:
+    76 ms for 10^6 cells against 4 ms here."""
+    column = np.empty(size, dtype=object)
+    column.fill(value)
+    return column
+
+
 def _factorized(values: pd.Series) -> tuple[np.ndarray, np.ndarray]:
-    """pd.factorize of a column (missing values: code -1), fast on Arrow columns of many chunks."""
+    """pd.factorize of a column (missing values: code -1), fast on Arrow columns of many chunks; a categorical
+    column (calc's text columns, :func:`text_categorical`) gives its own codes and categories."""
+    if isinstance(values.dtype, pd.CategoricalDtype):
+        return values.cat.codes.to_numpy(), values.cat.categories.to_numpy(dtype=object)
     arrow = getattr(values.array, "__arrow_array__", None)
     if arrow is not None and getattr(arrow(), "num_chunks", 1) > 16:
         # pandas factorizes an Arrow array chunk by chunk: a column concatenated from many frames holds one
@@ -144,6 +155,27 @@ def per_distinct(values: pd.Series, convert: Callable) -> np.ndarray:
     codes, uniques = _factorized(values)
     converted = np.array([convert(v) for v in uniques] + [convert(None)], dtype=object)
     return converted[codes]  # code -1 (missing) takes the last entry
+
+
+def text_categorical(values: pd.Series, clean: Callable[[Any], str | None]) -> pd.Categorical:
+    """A text column as a categorical of its cleaned distinct texts (``clean(value)``, None for a blank cell:
+    a missing value), each distinct cell cleaned once. calc's text columns are kept so: every later
+    factorization reads the codes instead of hashing the strings again."""
+    codes, uniques = _factorized(values)
+    cleaned = np.array([clean(v) for v in uniques] + [None], dtype=object)
+    texts_codes, texts = pd.factorize(cleaned, use_na_sentinel=True)  # cleaning can merge cells ('62', ' 62')
+    return pd.Categorical.from_codes(texts_codes[codes], categories=pd.Index(texts, dtype=object))
+
+
+def blanks_filled(frame: pd.DataFrame, name: str, default: str) -> pd.Categorical:
+    """A text column of calc (categorical, :func:`text_categorical`) with its blank cells ``default`` (a
+    column of ``default`` where it is absent)."""
+    if name not in frame.columns:
+        return pd.Categorical.from_codes(np.zeros(len(frame), dtype=np.int8), categories=pd.Index([default]))
+    cells = pd.Categorical(frame[name])
+    if default not in cells.categories:
+        cells = cells.add_categories([default])
+    return cells.fillna(default)
 
 
 def _stripped_or_none(value):
@@ -237,7 +269,7 @@ def text_or_default(frame: pd.DataFrame, name: str, default: str | None) -> np.n
     """A text column as stripped strings, ``default`` for blank cells and where the column is absent (an object
     array; each distinct cell is cleaned once)."""
     if name not in frame.columns:
-        return np.full(len(frame), default, dtype=object)
+        return object_column(len(frame), default)
     return per_distinct(frame[name], lambda v: _stripped_or_none(v) or default)
 
 

@@ -34,7 +34,7 @@ from bearingheat.calc.thermal import (DEFAULT_SPEED_FACTOR_METHOD, DEFAULT_VISCO
 from bearingheat.calc.contract import (PLAIN_TYPES, input_units, output_header, output_units, parse_header,
                                        range_problems)
 from bearingheat.calc.messages import Labels
-from bearingheat.calc.supports import number_column, per_distinct, text_column
+from bearingheat.calc.supports import blanks_filled, number_column, per_distinct, text_categorical, text_column
 from bearingheat.calc.distributed import calc_dask, is_dask_frame
 from bearingheat.calc.fill import fill_from_catalogue
 from bearingheat.calc.uncertainty import fill_from_coefficients, has_uncertainty, uncertainty_bands
@@ -127,6 +127,8 @@ def _convert_column(values: pd.Series, header: str, unit_text: str | None, targe
         converted, factor = convert_column(numeric, unit_text, target, name=name, header=header)
     except UnitError as exc:
         raise InputError(f"column {header!r}: {exc}") from exc
+    if np.shares_memory(converted, numeric) and not converted.flags.owndata:  # a view of the user's table
+        converted = converted.copy()
     shown_unit = {"1": "", "delta_degC": "K"}.get(target, target)
 
     def describe(i):
@@ -177,14 +179,15 @@ def to_catalogue_units(table: pd.DataFrame, *, units: dict[str, str] | None = No
         target = known[name]
         display = f"{name} [{unit_text}]" if unit_text not in (None, "", "-", "1") else name
         if target == "":
-            # an object Series: pandas would otherwise build an Arrow string column of it (0.02 s a column of 2*10^5)
-            columns[name] = pd.Series(per_distinct(table[header], lambda v: None if _blank(v) else _text_cell(v)),
-                                      index=table.index, dtype=object)
+            columns[name] = pd.Series(text_categorical(table[header], lambda v: None if _blank(v) else _text_cell(v)),
+                                      index=table.index)
             continue
         columns[name], factor = _convert_column(table[header], display, unit_text, target, cell, name, errors,
                                                 warnings)
         headers[name] = (display, factor)
-    frame = pd.DataFrame(columns, index=table.index)
+    # the arrays are calc's own (converted, or copied below): the frame takes them as they are, not stacked into
+    # one block (a copy of every column, 0.08 s for 14 columns of 10^6 rows)
+    frame = pd.DataFrame(columns, index=table.index, copy=False)
     return ConvertedTable(frame, Labels(headers, cell), dict(errors), dict(warnings))
 
 
@@ -341,11 +344,9 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
     converted = to_catalogue_units(table, units=units, cell=cell)
     frame = converted.frame
     if n_per_method != DEFAULT_SPEED_FACTOR_METHOD:  # the table's default for blank n_per_method cells
-        cells = frame["n_per_method"] if "n_per_method" in frame.columns else pd.Series(None, index=frame.index)
-        frame = frame.assign(n_per_method=cells.where(cells.notna(), n_per_method))
+        frame = frame.assign(n_per_method=blanks_filled(frame, "n_per_method", n_per_method))
     if viscosity_at != DEFAULT_VISCOSITY_AT:  # the table's default for blank viscosity_at cells
-        cells = frame["viscosity_at"] if "viscosity_at" in frame.columns else pd.Series(None, index=frame.index)
-        frame = frame.assign(viscosity_at=cells.where(cells.notna(), viscosity_at))
+        frame = frame.assign(viscosity_at=blanks_filled(frame, "viscosity_at", viscosity_at))
     frame, fill_problems, from_table = fill_from_catalogue(frame, converted.labels)
     vm_read = None
     if vm_chart is not None:  # SKF model: a blank VM of an oil bath from the digitised diagram
@@ -477,8 +478,11 @@ def _assemble(table: pd.DataFrame, results: pd.DataFrame, extension_columns) -> 
     _refuse_non_finite(written, results)
     written["status"] = results["status"].to_numpy()
     written["message"] = results["message"].to_numpy()
-    fresh = {header: values for header, values in written.items() if header not in table.columns}
-    out = pd.concat([table, pd.DataFrame(fresh, index=table.index)], axis=1)
+    # the caller's frame holds the arrays as they are (no copy into one block); a read-only view of calc's
+    # internal frames is copied, so that the caller can change the cells
+    fresh = {header: values if values.flags.writeable else values.copy()
+             for header, values in written.items() if header not in table.columns}
+    out = pd.concat([table, pd.DataFrame(fresh, index=table.index, copy=False)], axis=1)
     for header in written.keys() - fresh.keys():
         out[header] = written[header]
     return out

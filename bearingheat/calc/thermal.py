@@ -151,8 +151,9 @@ def _heat_flow_setup(frame: pd.DataFrame):
     return details, k_q, T_amb, Q_E, Q_S, Q_L
 
 
-def _operating_point(frame, results, nu_at, Q_S, Q_L, Q_E, T_amb, t_limit):
-    """(T_op, status) at the operating speed: N_R(ν(T)) + Q_E = Q_S(T) + Q_L(T), N_R by each row's model."""
+def _operating_point(frame, results, nu_at, nu_varies, Q_S, Q_L, Q_E, T_amb, t_limit):
+    """(T_op, status) at the operating speed: N_R(ν(T)) + Q_E = Q_S(T) + Q_L(T), N_R by each row's model;
+    ``nu_varies`` marks the rows whose ν follows T (Walther), ``nu_at`` gives ν(T) of every row."""
     n = number_column(frame, "n")
     power = FrictionPower(frame, results)
 
@@ -167,12 +168,14 @@ def _operating_point(frame, results, nu_at, Q_S, Q_L, Q_E, T_amb, t_limit):
     # (rows with a missing input compare as NaN: their balance is NaN at the ends, status 2 whatever the scan)
     with np.errstate(invalid="ignore", over="ignore"):
         falling = power.closed & ~(Q_S(T_amb + 1.0) <= Q_S(T_amb)) & ~(nu_at(T_high) > nu_at(T_low))
-    T_op, status = lowest_operating_temperature(balance, T_low, T_high, single_root=falling)
+    # where ν does not depend on T (no oil data) N_R does not either: the balance is a straight line in T
+    affine = power.closed & ~nu_varies
+    T_op, status = lowest_operating_temperature(balance, T_low, T_high, single_root=falling, affine=affine)
     return T_op, status, balance
 
 
 def lowest_operating_temperature(balance, T_low, T_high, *, cells: int = OPERATING_TEMPERATURE_CELLS,
-                                 single_root=False):
+                                 single_root=False, affine=False):
     """The lowest temperature in [T_low, T_high] where the bearing stops heating up, for all rows at once.
 
     ``balance(T)`` is N_R + Q_E − Q_S − Q_L [W] per row (positive while the
@@ -187,7 +190,10 @@ def lowest_operating_temperature(balance, T_low, T_high, *, cells: int = OPERATI
     root is never missed. Rows marked ``single_root`` (a balance known to
     fall strictly) are refined between the ends of the range whatever the
     other rows are, so a row's T does not depend on the rows computed with
-    it; where every row is, the scan is skipped.
+    it; where every row is, the scan is skipped. Rows marked ``affine`` (a
+    balance that is a straight line in T, and falls) take the secant of the
+    range's ends, which is their root; where every row is, nothing is
+    refined.
 
     >>> T, status = lowest_operating_temperature(
     ...     lambda T: -(T - 40.0) * (T - 90.0) * (T - 120.0), np.array([0.0, 0.0]), np.array([150.0, 30.0]))
@@ -196,7 +202,9 @@ def lowest_operating_temperature(balance, T_low, T_high, *, cells: int = OPERATI
     """
     T_low = np.asarray(T_low, dtype=float)
     T_high = np.asarray(T_high, dtype=float)
-    single = np.broadcast_to(np.asarray(single_root, dtype=bool), np.broadcast_shapes(T_low.shape, T_high.shape))
+    shape = np.broadcast_shapes(T_low.shape, T_high.shape)
+    affine = np.broadcast_to(np.asarray(affine, dtype=bool), shape)
+    single = np.broadcast_to(np.asarray(single_root, dtype=bool), shape) | affine
     if single.all():
         cells = 1
     grid = T_low + np.linspace(0.0, 1.0, cells + 1)[:, None] * (T_high - T_low)
@@ -213,9 +221,15 @@ def lowest_operating_temperature(balance, T_low, T_high, *, cells: int = OPERATI
     status = np.where(np.isnan(f_low) | np.isnan(f_high), 2, status)
     low = np.where(found, np.where(single, T_low, grid[first, rows]), T_low)
     high = np.where(found, np.where(single, T_high, grid[first + 1, rows]), T_low)
-    with np.errstate(invalid="ignore", over="ignore"):
-        T, _ = bracketed_root(balance, low, high, rtol=1e-14)
-    T = np.where(at_low, T_low, T)
+    f_at_low = np.where(found, np.where(single, f_low, values[first, rows]), f_low)
+    f_at_high = np.where(found, np.where(single, f_high, values[first + 1, rows]), f_low)
+    with np.errstate(invalid="ignore", over="ignore", divide="ignore"):
+        if affine.all():
+            T = np.full(shape, np.nan)
+        else:
+            T, _ = bracketed_root(balance, low, high, rtol=1e-14, f_low=f_at_low, f_high=f_at_high)
+        secant = np.where(f_high == 0, T_high, T_low + f_low * ((T_high - T_low) / (f_low - f_high)))
+    T = np.where(at_low, T_low, np.where(affine & found, secant, T))
     return np.where(status == 0, T, np.nan), status
 
 
@@ -297,7 +311,7 @@ def _solve_operating_temperature(frame, A, B, rows, t_limit, problems, unsolved)
     results = compute_supports(provisional)
     details, k_q, T_amb, Q_E, Q_S, Q_L = _heat_flow_setup(provisional)
     nu_at = _viscosity_of_rows(provisional, A, B)
-    T, status, _ = _operating_point(provisional, results, nu_at, Q_S, Q_L, Q_E, T_amb, t_limit)
+    T, status, _ = _operating_point(provisional, results, nu_at, ~np.isnan(A), Q_S, Q_L, Q_E, T_amb, t_limit)
     failed = (results["status"].to_numpy() == "error") | _plain_rows(results)
     reasons = details["reason"].to_numpy(dtype=object)
     for i in np.flatnonzero(rows):
@@ -393,7 +407,7 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
             problems.append((int(i), "error", f"V_oil [l/min]: {values[i]:g} must be >= 0"))
 
     # --- operating temperature at the operating speed
-    T_op, status, _ = _operating_point(frame, results, nu_at, Q_S, Q_L, Q_E, T_amb, t_limit)
+    T_op, status, _ = _operating_point(frame, results, nu_at, ~np.isnan(A), Q_S, Q_L, Q_E, T_amb, t_limit)
     usable = ~failed & ~np.isnan(T_amb) & ~np.isnan(details["A_r"].to_numpy(dtype=float))
     for i in np.flatnonzero(usable & (status != 0)):
         problems.append((int(i), "warning", f"T_op: {_no_equilibrium_text(status[i], T_amb[i], t_limit)}"))

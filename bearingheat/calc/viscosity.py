@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from bearingheat.calc.supports import number_column
+from bearingheat.calc.supports import number_column, object_column
 from bearingheat.catalogue.viscosity import iso_vg_grades
 from bearingheat.kernels.viscosity import (DEFAULT_VISCOSITY_INDEX, MIN_VISCOSITY, iso_vg_nu40,
                                            nu100_from_viscosity_index, walther_constants)
@@ -41,7 +41,7 @@ def viscosity_model_rows(frame: pd.DataFrame):
     has40, has100, has_grade = ~np.isnan(nu40), ~np.isnan(nu100), ~np.isnan(grade)
     A = np.full(n_rows, np.nan)
     B = np.full(n_rows, np.nan)
-    messages = np.full(n_rows, "", dtype=object)
+    messages = object_column(n_rows, "")
 
     def tell(rows: np.ndarray, text) -> None:
         """The message of each flagged row (``text(i)``), built only for those rows."""

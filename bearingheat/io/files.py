@@ -50,7 +50,11 @@ from bearingheat.errors import OutputFileError, WorkbookChangedError, WorkbookLo
 
 __all__ = ["safe_output", "atomic_write", "atomic_write_text", "workbook_lock", "WorkbookLock",
            "remove_stale_temps", "temp_name", "check_outputs", "write_outputs", "file_fingerprint",
-           "STALE_SECONDS"]
+           "STALE_SECONDS", "EXCEL_SUFFIXES"]
+
+#: the workbook suffixes the Excel bridge reads and writes (here, so that code that only tells a workbook from a
+#: table does not import the bridge and openpyxl)
+EXCEL_SUFFIXES = (".xlsx", ".xlsm")
 
 #: temporary files of dead processes older than this are removed by :func:`remove_stale_temps`
 STALE_SECONDS = 60.0

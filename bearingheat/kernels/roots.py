@@ -23,7 +23,7 @@ __all__ = ["bracketed_root"]
 
 
 def bracketed_root(func: Callable[[np.ndarray], np.ndarray], low, high, *, rtol: float = 1e-12,
-                   iterations: int = 200) -> tuple[np.ndarray, np.ndarray]:
+                   iterations: int = 200, f_low=None, f_high=None) -> tuple[np.ndarray, np.ndarray]:
     """Roots of ``func`` (one per row) inside [low, high], and a status per row.
 
     ``func`` takes an array of x (one per row) and returns f(x) per row.
@@ -31,7 +31,9 @@ def bracketed_root(func: Callable[[np.ndarray], np.ndarray], low, high, *, rtol:
     both ends, -1 where f < 0 at both ends, 2 where f is NaN at an end (x
     is NaN wherever status is not 0). A root at an end of the bracket is
     returned as it is. Converged when the bracket is narrower than
-    ``rtol`` times the magnitude of x, or f is exactly 0.
+    ``rtol`` times the magnitude of x, or f is exactly 0. ``f_low`` and
+    ``f_high``, where the caller has them, are f at the ends (not evaluated
+    again).
 
     >>> x, status = bracketed_root(lambda x: x ** 3 - 8.0, np.array([0.0, 3.0]), np.array([10.0, 10.0]))
     >>> np.round(x, 12).tolist(), status.tolist()
@@ -41,8 +43,8 @@ def bracketed_root(func: Callable[[np.ndarray], np.ndarray], low, high, *, rtol:
     b = np.array(high, dtype=float, copy=True)
     a, b = np.broadcast_arrays(a, b)
     a, b = a.copy(), b.copy()
-    fa = np.asarray(func(a), dtype=float).copy()
-    fb = np.asarray(func(b), dtype=float).copy()
+    fa = np.array(func(a) if f_low is None else np.broadcast_to(f_low, a.shape), dtype=float)
+    fb = np.array(func(b) if f_high is None else np.broadcast_to(f_high, b.shape), dtype=float)
     status = np.where(np.isnan(fa) | np.isnan(fb), 2,
                       np.where((fa > 0) & (fb > 0), 1, np.where((fa < 0) & (fb < 0), -1, 0)))
     x = np.where(fa == 0, a, np.where(fb == 0, b, np.nan))

@@ -50,8 +50,10 @@ def test_a_secant_landing_on_the_root_closes_the_bracket_at_once():
 
 def test_rows_with_one_root_skip_the_scan_and_give_the_same_temperature(monkeypatch):
     """With the catalogue speed law (N_R falls with T through ν, Q_S and Q_L rise) the balance has one root:
-    the ends of the range bracket it. The demo's T_op is the same as with the full 24-cell scan, to 1e-12, and
-    the heat balance calls the friction model at most 7 times instead of 29."""
+    the ends of the range bracket it. The demo's rows give ν itself (no oil data), so N_R does not depend on T
+    and the balance is a straight line: its root is the secant of the ends. T_op is the same as with the full
+    24-cell scan and refinement, to 1e-12, and the heat balance calls the friction model twice (the ends)
+    instead of 27 times (25 grid points, 2 refining steps)."""
     import bearingheat as bh
     from bearingheat.calc import models, thermal
 
@@ -74,7 +76,7 @@ def test_rows_with_one_root_skip_the_scan_and_give_the_same_temperature(monkeypa
     monkeypatch.setattr(thermal, "lowest_operating_temperature", scan_every_row)
     calls.clear()
     scanned = bh.calc(table)
-    assert fast_calls <= 7 and len(calls) == 29
+    assert fast_calls == 2 and len(calls) == 27
     np.testing.assert_allclose(fast["T_op [degC]"], scanned["T_op [degC]"], rtol=1e-12)
     assert fast["T_op [degC]"].notna().sum() >= 5
 
@@ -111,3 +113,28 @@ def test_rows_of_a_model_without_the_speed_law_keep_the_scan(monkeypatch):
     monkeypatch.setattr(thermal, "lowest_operating_temperature", recorded)
     bh.calc(table, model="skf")
     assert marked and not any(m.any() for m in marked)
+
+
+def test_rows_with_oil_data_beside_rows_without_give_the_scanned_temperatures(monkeypatch):
+    """Rows whose ν follows T (an ISO VG oil: Walther) are refined by bracketing, rows that give ν take the secant
+    of a straight line; in one table together each row's T_op is the full scan's to 1e-12, and the same as when
+    the row is computed alone."""
+    import bearingheat as bh
+    from bearingheat.calc import thermal
+
+    table = pd.read_csv(EXAMPLES / "gearbox_shaft.csv")
+    table = table[table["arrangement"] == "single"].reset_index(drop=True)
+    table["iso_vg"] = np.where(np.arange(len(table)) % 2 == 0, 68.0, np.nan)
+    table.loc[table["iso_vg"].notna(), "nu [mm^2/s]"] = np.nan
+    fast = bh.calc(table)
+    alone = pd.concat([bh.calc(table.iloc[[i]]) for i in range(len(table))])
+    original_search = thermal.lowest_operating_temperature
+
+    def scan_every_row(balance, T_low, T_high, **options):
+        return original_search(balance, T_low, T_high, cells=options.get("cells", 24), single_root=False)
+
+    monkeypatch.setattr(thermal, "lowest_operating_temperature", scan_every_row)
+    scanned = bh.calc(table)
+    assert fast["T_op [degC]"].notna().all() and (fast["nu_at"] == np.where(table["iso_vg"].notna(), "T_op", "given")).all()
+    np.testing.assert_allclose(fast["T_op [degC]"], scanned["T_op [degC]"], rtol=1e-12)
+    np.testing.assert_allclose(fast["T_op [degC]"], alone["T_op [degC]"], rtol=1e-12)

@@ -88,3 +88,22 @@ def test_plain_bushings_are_marked_and_not_resolved():
     s = sp.build_support_arrays(keys, {"n": np.array([100.0, 100.0])})
     assert s.plain.tolist() == [True, False]
     assert s.error[0] == "" and not s.resolved[0]
+
+
+def test_calc_result_cells_can_be_changed_and_the_input_stays_as_it_was():
+    """calc builds its frames from its own arrays without copying them into blocks: every cell of the result can
+    be set (no read-only view of calc's internal frames), and that changes neither the input table nor a second
+    result."""
+    import bearingheat as bh
+
+    table = pd.DataFrame({"designation": ["6205", "6206"], "d [mm]": [25.0, 30.0], "D [mm]": [52.0, 62.0],
+                          "C0 [kN]": [7.8, 11.2], "lubrication": ["oil_bath", "grease"], "n [rpm]": [3000.0, 1500.0],
+                          "Fr [kN]": [2.0, 3.0], "nu [mm^2/s]": [12.0, 20.0], "f1": [np.nan, np.nan],
+                          "T_amb [degC]": [20.0, 20.0], "B [mm]": [15.0, 16.0]})
+    before = table.copy()
+    first, second = bh.calc(table), bh.calc(table)
+    for column in first.columns:
+        first.loc[0, column] = 0 if pd.api.types.is_numeric_dtype(first[column]) else "changed"
+    pd.testing.assert_frame_equal(table, before)
+    pd.testing.assert_frame_equal(second, bh.calc(table))
+    assert set(first.iloc[0].tolist()) == {0, "changed"} and second.loc[0, "status"] == "ok"

@@ -18,7 +18,7 @@ from pathlib import Path
 import pytest
 from excel_helpers import EXAMPLE_CSV, EXAMPLE_XLSX, make_workbook
 
-from bearingheat.cli import calc as calc_command
+from bearingheat.io.excel import workbook as excel_workbook
 from bearingheat.cli import main
 from bearingheat.io import files
 
@@ -115,7 +115,7 @@ def test_workbook_rewritten_during_the_read(tmp_path, capsys, monkeypatch):
     def rewritten(*args, **kwargs):
         raise zlib.error("Error -3 while decompressing data: invalid stored block lengths")
 
-    monkeypatch.setattr(calc_command, "calc_workbook", rewritten)
+    monkeypatch.setattr(excel_workbook, "calc_workbook", rewritten)
     assert main(["calc", str(path)]) == 2
     assert _error(capsys) == (f"{path}: damaged workbook, its zip package cannot be read (Error -3 while "
                               "decompressing data: invalid stored block lengths)")
@@ -127,7 +127,7 @@ def test_file_ending_too_early(tmp_path, capsys, monkeypatch):
     def truncated(*args, **kwargs):
         raise EOFError("Compressed file ended before the end-of-stream marker was reached")
 
-    monkeypatch.setattr(calc_command, "calc_workbook", truncated)
+    monkeypatch.setattr(excel_workbook, "calc_workbook", truncated)
     assert main(["calc", str(path)]) == 2
     assert _error(capsys) == f"{path}: the file ends too early (truncated, or still being written)"
 
@@ -177,7 +177,7 @@ def test_oserror_without_a_file_name_names_the_input(tmp_path, capsys, monkeypat
     def broken(*args, **kwargs):
         raise OSError(errno.EIO, os.strerror(errno.EIO))
 
-    monkeypatch.setattr(calc_command, "calc_workbook", broken)
+    monkeypatch.setattr(excel_workbook, "calc_workbook", broken)
     assert main(["calc", str(path)]) == 2
     assert _error(capsys) == f"{path}: Input/output error"
 

@@ -41,3 +41,15 @@ def test_the_function_calc_survives_the_import_of_its_subpackage():
     import bearingheat.calc.models  # noqa: F401  (sets the package's 'calc' attribute to the subpackage, ignored)
     from bearingheat.calc.table import calc
     assert bh.calc is calc and callable(bh.calc)
+
+
+def test_calc_of_a_table_loads_neither_the_excel_bridge_nor_scipy_optimize(tmp_path):
+    """A CSV calc without ball geometry or --effects does not import openpyxl (the Excel bridge) or
+    scipy.optimize (the contact kernel, the fitted effects): 0.4 s of start-up a run."""
+    table = tmp_path / "in.csv"
+    table.write_text("designation,d [mm],D [mm],C0 [kN],lubrication,n [rpm],Fr [kN],nu [mm^2/s]\n"
+                     "6205,25,52,7.8,oil_bath,3000,2,12\n")
+    probe = (f"import sys\nfrom bearingheat.cli import main\nstatus = main(['calc', {str(table)!r}, '-q'])\n"
+             "print(status, 'openpyxl' in sys.modules, 'scipy.optimize' in sys.modules)")
+    out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True).stdout
+    assert out.split() == ["0", "False", "False"]

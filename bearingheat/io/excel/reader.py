@@ -41,6 +41,7 @@ from openpyxl.worksheet.worksheet import Worksheet
 from bearingheat.calc.contract import input_units, parse_header
 from bearingheat.errors import ExcelError, InputError, UnitError
 from bearingheat.io.excel.ownership import read_marks
+from bearingheat.io.files import EXCEL_SUFFIXES
 from bearingheat.units import parse_unit, quantity
 
 if TYPE_CHECKING:
@@ -64,7 +65,6 @@ DEFAULT_SHEET = "Supports"
 RESULTS_SHEET = "Results"
 #: the header row is searched for in the first rows of a sheet (title rows may sit above it)
 HEADER_SEARCH_ROWS = 20
-EXCEL_SUFFIXES = (".xlsx", ".xlsm")
 _TEXT_UNITS = ("", "-")
 
 #: (row, column) of a cell covered by a merge -> (the merge's value, its first row, its first column)
