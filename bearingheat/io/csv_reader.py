@@ -59,10 +59,14 @@ _ARROW_KINDS = (pa.types.is_integer, pa.types.is_floating, pa.types.is_boolean, 
                 pa.types.is_string, pa.types.is_large_string)
 #: bytes decoded at a time to check that a file is UTF-8
 _CHECK_BYTES = 1 << 24
+#: bytes scanned at a time for line breaks and spaces
+_SCAN_BYTES = 1 << 20
 
 
 def _utf8(raw: bytes) -> bool:
     """True when ``raw`` is UTF-8 text (checked a slice at a time, without holding the whole text)."""
+    if raw.isascii():  # ASCII is UTF-8, and this test is five times as fast as decoding
+        return True
     decoder = codecs.getincrementaldecoder("utf-8")()
     view = memoryview(raw)
     try:
@@ -175,11 +179,19 @@ def _quoted_records(text: str, sep: str) -> tuple[list[str], list[int]]:
     return header or [], lines
 
 
+def _positions(data: np.ndarray, byte: int) -> np.ndarray:
+    """The positions of ``byte`` in ``data``, found a slice of :data:`_SCAN_BYTES` at a time (the mask of a slice
+    stays in the processor's cache: 0.06 s for 120 MB, 0.2 s in one piece)."""
+    parts = [np.flatnonzero(data[start:start + _SCAN_BYTES] == byte) + start
+             for start in range(0, len(data), _SCAN_BYTES)]
+    return np.concatenate(parts) if parts else np.zeros(0, dtype=np.intp)
+
+
 def _unquoted_records(raw: bytes, sep: str) -> tuple[list[str], np.ndarray]:
     """:func:`_quoted_records` of a UTF-8 text without quotes (so without line breaks inside cells), in arrays:
     10^6 lines in a fraction of a second."""
     data = np.frombuffer(raw, dtype=np.uint8)
-    ends = np.flatnonzero(data == ord("\n"))
+    ends = _positions(data, ord("\n"))
     if len(data) and data[-1] != ord("\n"):
         ends = np.append(ends, len(data))
     if len(ends) == 0:
@@ -202,7 +214,8 @@ def _unquoted_records(raw: bytes, sep: str) -> tuple[list[str], np.ndarray]:
 
 def _records(raw: bytes, sep: str, text: str | None = None) -> tuple[list[str], list[int] | np.ndarray]:
     """The raw header cells and the file line number of each data row (blank lines skipped, as pandas does)."""
-    if b'"' not in raw and raw.count(b"\r") == raw.count(b"\r\n"):  # no quoted cells: a row is a line
+    # no quoted cells: a row is a line (one byte is looked for at memchr speed; counting pairs takes 0.1 s)
+    if b'"' not in raw and (b"\r" not in raw or raw.count(b"\r") == raw.count(b"\r\n")):
         return _unquoted_records(raw, sep)
     return _quoted_records(text if text is not None else raw.decode("utf-8"), sep)
 
@@ -285,8 +298,8 @@ def _space_after_separator(raw: bytes, sep: str) -> bool:
     data = np.frombuffer(raw, dtype=np.uint8)
     if len(data) and data[0] in (ord(" "), ord("\t")):
         return True
-    for start in range(1, len(data), _CHECK_BYTES):  # a slice at a time: no arrays the size of the file
-        part = data[start:start + _CHECK_BYTES]
+    for start in range(1, len(data), _SCAN_BYTES):  # a slice at a time: no arrays the size of the file
+        part = data[start:start + _SCAN_BYTES]
         spaces = np.flatnonzero((part == ord(" ")) | ((part == ord("\t")) if sep != "\t" else False)) + start
         before = data[spaces - 1]
         if ((before == ord(sep)) | (before == ord("\n")) | (before == ord("\r"))).any():
@@ -308,14 +321,9 @@ def _read_with_pyarrow(raw: bytes, sep: str, decimal: str, header: list[str], te
                                                          decimal_point=decimal,
                                                          column_types={h: pa.large_string() for h in text_columns}))
     try:
-        # block by block: the file and its table, not the threaded reader's buffers (HWM 415 MB, not 621 MB, for a
-        # 120 MB file); it fixes each column's type from the first block, so a later block that does not fit ...
-        table = pa_csv.open_csv(io.BytesIO(raw), **options).read_all()
+        table = pa_csv.read_csv(io.BytesIO(raw), **options)
     except (pa.ArrowInvalid, pa.ArrowNotImplementedError):
-        try:  # ... is read again by the reader that infers the types of the whole file
-            table = pa_csv.read_csv(io.BytesIO(raw), **options)
-        except (pa.ArrowInvalid, pa.ArrowNotImplementedError):
-            return None
+        return None
     pa.default_memory_pool().release_unused()  # the reader's freed buffers, back to the system
     if table.column_names != header:
         return None

@@ -236,8 +236,8 @@ def test_pyarrow_and_pandas_read_a_file_alike(tmp_path):
 
 
 def test_a_column_whose_type_changes_after_the_first_block_is_read_whole(tmp_path):
-    """pyarrow's block reader fixes a column's type from its first block (1 MB): a number with a decimal point
-    or a word far down the file makes the file be read again, whole (not a row lost, not a number cut)."""
+    """A column's type is the type of the whole file, not of its first block (1 MB): a number with a decimal
+    point or a word far down the file loses no row and cuts no number."""
     path = tmp_path / "long.csv"
     rows = 150_000  # 2 MB: two blocks
     loads = ["2"] * rows
