@@ -32,8 +32,8 @@ from bearingheat.calc.friction import EXCEL_FORMULAS, RESULTS, evaluate_catalogu
 from bearingheat.calc.skf import RESULTS as SKF_RESULTS
 from bearingheat.calc.skf import evaluate_skf_model
 from bearingheat.calc.messages import Labels, Problem
-from bearingheat.calc.supports import KEY_INPUTS, NUMBER_INPUTS, SupportArrays, build_support_arrays, number_column, \
-    object_column, text_codes
+from bearingheat.calc.supports import KEY_INPUTS, NUMBER_INPUTS, SupportArrays, build_support_arrays, column_codes, \
+    number_column, object_column, text_codes
 from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.errors import ModelError
 from bearingheat.kernels.friction import mean_diameter
@@ -235,7 +235,6 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
     n_rows = len(frame)
     supports = support_arrays_of(frame)
     model_codes, model_names = _row_models(frame, model)
-    names = np.array(model_names, dtype=object)[model_codes]
     plain = supports.plain
     # rows of a model with its own tables skip the catalogue's resolution errors
     catalogue_rows = np.array([name not in MODELS or MODELS[name].catalogue_keys for name in model_names],
@@ -245,7 +244,7 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
     # rows with messages only: error and warning lists keyed by row position
     row_errors: defaultdict[int, list[str]] = defaultdict(list)
     for i in np.flatnonzero(~model_ok & ~plain).tolist():
-        row_errors[i].append(_model_error(names[i]))
+        row_errors[i].append(_model_error(model_names[model_codes[i]]))
     own_error = model_ok & catalogue_rows & ~plain
     for i in np.flatnonzero(own_error & (own != "") & (own != None)).tolist():  # noqa: E711 (element-wise)
         row_errors[i].append(own[i])
@@ -285,9 +284,12 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
     # text columns stay object arrays: an internal frame, no Arrow strings to build
     text_columns = {"status": status, "message": message,
                     "bearing_type": np.where(plain, "plain_bushing", np.broadcast_to(supports.bearing_type, (n_rows,))),
-                    "series": np.broadcast_to(supports.series, (n_rows,)), "model": names}
+                    "series": np.broadcast_to(supports.series, (n_rows,))}
     columns.update({name: pd.Series(np.asarray(values, dtype=object), index=frame.index, dtype=object)
                     for name, values in text_columns.items()})
+    name_codes, distinct_names = pd.factorize(np.array(model_names, dtype=object))  # two cells may name one model
+    columns["model"] = pd.Series(pd.Categorical.from_codes(name_codes[model_codes], categories=distinct_names),
+                                 index=frame.index)
     return pd.DataFrame(columns, index=frame.index, copy=False)  # calc's own arrays: no copy into one block
 
 
@@ -304,20 +306,26 @@ class FrictionPower:
 
     def __init__(self, frame: pd.DataFrame, results: pd.DataFrame):
         self.size = len(frame)
-        names = results["model"].to_numpy(dtype=object) if "model" in results.columns \
-            else object_column(self.size, DEFAULT_MODEL)
+        if "model" in results.columns:  # a categorical (compute_supports): its codes, no hashing of names
+            codes, distinct = column_codes(results["model"])
+        else:
+            codes, distinct = np.zeros(self.size, dtype=np.intp), np.array([DEFAULT_MODEL], dtype=object)
         self.f0 = results["f0"].to_numpy(dtype=float)
         self.load_torque = results["M1"].to_numpy(dtype=float) + np.nan_to_num(results["M2"].to_numpy(dtype=float))
         self.dM = mean_diameter(number_column(frame, "d"), number_column(frame, "D"))
-        codes, distinct = pd.factorize(names)
-        self.closed = np.array([MODELS[m].speed_exponent is not None if m in MODELS else True for m in distinct] +
-                               [True], dtype=bool)[codes]  # the last entry: rows without a model name
+        self.closed = np.array(self.closed_of(distinct) + [True], dtype=bool)[codes]  # last: rows without a name
         self.generic: dict[str, tuple[np.ndarray, SupportArrays]] = {}
         if not self.closed.all():
             supports = support_arrays_of(frame)
-            for name in sorted(set(names[~self.closed])):
-                rows = np.flatnonzero(names == name)
+            for name in sorted({str(m) for m, closed in zip(distinct, self.closed_of(distinct)) if not closed}):
+                rows = np.flatnonzero(np.array([m == name for m in distinct] + [False], dtype=bool)[codes])
                 self.generic[name] = (rows, supports.take(rows))
+
+    @staticmethod
+    def closed_of(names) -> list[bool]:
+        """Whether each model name has the catalogue speed law (an unknown name counts as closed: its rows
+        are in error)."""
+        return [MODELS[m].speed_exponent is not None if m in MODELS else True for m in names]
 
     def __call__(self, n, nu) -> np.ndarray:
         """N_R [W] of every row at speeds ``n`` [1/min] and viscosities ``nu`` [mm²/s] (one per row)."""

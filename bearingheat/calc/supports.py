@@ -26,7 +26,7 @@ from bearingheat.errors import DesignationError
 
 __all__ = ["SupportArrays", "build_support_arrays", "bearing_constants", "NUMBER_INPUTS", "KEY_INPUTS",
            "text_column", "number_column", "text_codes", "distinct_keys", "group_codes", "text_or_default",
-           "value_codes", "text_categorical", "blanks_filled", "object_column"]
+           "value_codes", "text_categorical", "blanks_filled", "object_column", "column_codes"]
 
 #: numeric inputs of the friction model, in catalogue units
 NUMBER_INPUTS = ("d", "D", "B", "C0", "Y", "e", "X0", "Y0", "alpha", "f0", "f1", "f2", "n", "nu", "Fr", "Fa")
@@ -135,7 +135,7 @@ def object_column(size: int, value: Any) -> np.ndarray:
     return column
 
 
-def _factorized(values: pd.Series) -> tuple[np.ndarray, np.ndarray]:
+def column_codes(values: pd.Series) -> tuple[np.ndarray, np.ndarray]:
     """pd.factorize of a column (missing values: code -1), fast on Arrow columns of many chunks; a categorical
     column (calc's text columns, :func:`text_categorical`) gives its own codes and categories."""
     if isinstance(values.dtype, pd.CategoricalDtype):
@@ -152,7 +152,7 @@ def _factorized(values: pd.Series) -> tuple[np.ndarray, np.ndarray]:
 def per_distinct(values: pd.Series, convert: Callable) -> np.ndarray:
     """``convert(value)`` of every cell as an object array, computed once per distinct value (NaN, None and
     pandas' missing values are one value: ``convert(None)``)."""
-    codes, uniques = _factorized(values)
+    codes, uniques = column_codes(values)
     converted = np.array([convert(v) for v in uniques] + [convert(None)], dtype=object)
     return converted[codes]  # code -1 (missing) takes the last entry
 
@@ -161,7 +161,7 @@ def text_categorical(values: pd.Series, clean: Callable[[Any], str | None]) -> p
     """A text column as a categorical of its cleaned distinct texts (``clean(value)``, None for a blank cell:
     a missing value), each distinct cell cleaned once. calc's text columns are kept so: every later
     factorization reads the codes instead of hashing the strings again."""
-    codes, uniques = _factorized(values)
+    codes, uniques = column_codes(values)
     cleaned = np.array([clean(v) for v in uniques] + [None], dtype=object)
     texts_codes, texts = pd.factorize(cleaned, use_na_sentinel=True)  # cleaning can merge cells ('62', ' 62')
     return pd.Categorical.from_codes(texts_codes[codes], categories=pd.Index(texts, dtype=object))
@@ -285,7 +285,7 @@ def text_codes(frame: pd.DataFrame, name: str) -> tuple[np.ndarray, list[str | N
     it is absent), factorized once."""
     if name not in frame.columns:
         return np.zeros(len(frame), dtype=np.int64), [None]
-    codes, raw = _factorized(frame[name])
+    codes, raw = column_codes(frame[name])
     texts = [_stripped_or_none(v) for v in raw] + [None]  # code -1 (missing) takes the last entry
     return np.where(codes < 0, len(raw), codes), texts
 
@@ -304,7 +304,7 @@ def group_codes(frame: pd.DataFrame, names: list[str]) -> np.ndarray:
     order of first appearance: ``groupby(names).ngroup()`` without pandas' groupby machinery."""
     parts = []
     for name in names:
-        codes, uniques = _factorized(frame[name])
+        codes, uniques = column_codes(frame[name])
         parts.append((np.where(codes < 0, len(uniques), codes), len(uniques) + 1))
     return _combined_codes(parts, len(frame))
 

@@ -115,7 +115,10 @@ def _convert_column(values: pd.Series, header: str, unit_text: str | None, targe
         return f"{cell(name, i)}: " if cell else ""
 
     missing = np.flatnonzero(np.isnan(numeric))
-    blank = per_distinct(values.iloc[missing], _blank).astype(bool) if len(missing) else np.zeros(0, dtype=bool)
+    if values.dtype.kind == "f" or not len(missing):  # a missing number is a blank cell
+        blank = np.ones(len(missing), dtype=bool)
+    else:
+        blank = per_distinct(values.iloc[missing], _blank).astype(bool)
     for i in missing[~blank | logical[missing]].tolist():  # cells that are no numbers; blank cells are not given
         raw = values.iloc[i]
         raw = raw.item() if isinstance(raw, np.generic) else raw  # as typed: True, not np.True_
@@ -468,14 +471,14 @@ def _assemble(table: pd.DataFrame, results: pd.DataFrame, extension_columns) -> 
     for name, unit in {**M2_REPORT_UNITS, **PLAIN_REPORT_UNITS, **MODEL_REPORT_UNITS}.items():
         if name in results.columns:
             written[output_header(name, unit)] = results[name].to_numpy()
-    failed = (results["status"] == "error").to_numpy()
+    failed = _failed(results)
     for columns, units in extension_columns:
         for name in columns.columns:
             values = columns[name].to_numpy()
             if values.dtype.kind == "f":
                 values = np.where(failed, np.nan, values)
             written[output_header(name, units.get(name, ""))] = values
-    _refuse_non_finite(written, results)
+    _refuse_non_finite(written, results, failed)
     written["status"] = results["status"].to_numpy()
     written["message"] = results["message"].to_numpy()
     # the caller's frame holds the arrays as they are (no copy into one block); a read-only view of calc's
@@ -488,10 +491,14 @@ def _assemble(table: pd.DataFrame, results: pd.DataFrame, extension_columns) -> 
     return out
 
 
-def _refuse_non_finite(written: dict[str, np.ndarray], results: pd.DataFrame) -> None:
-    """No result leaves calc as inf, nor MR/NR as NaN, on a row not in error: such a row becomes one (its
-    numeric results NaN in ``written``, the message in ``results``)."""
-    failed = (results["status"] == "error").to_numpy()
+def _failed(results: pd.DataFrame) -> np.ndarray:
+    """The rows in error (numpy's comparison of the object column: a quarter of the time of pandas')."""
+    return results["status"].to_numpy(dtype=object) == "error"
+
+
+def _refuse_non_finite(written: dict[str, np.ndarray], results: pd.DataFrame, failed: np.ndarray) -> None:
+    """No result leaves calc as inf, nor MR/NR as NaN, on a row not in error (``failed``): such a row becomes
+    one (its numeric results NaN in ``written``, the message in ``results``)."""
     numeric = [header for header, values in written.items() if values.dtype.kind == "f"]
     bad: dict[int, str] = {}
     for header in numeric:

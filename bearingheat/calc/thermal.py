@@ -118,8 +118,11 @@ def _viscosity_of_rows(frame: pd.DataFrame, A, B):
 
 
 def _walther_columns(frame: pd.DataFrame):
+    """The Walther constants A, B of every row (NaN without oil data) and the problems of the oil data."""
     if "_walther_A" in frame.columns:
         return number_column(frame, "_walther_A"), number_column(frame, "_walther_B"), []
+    if not (OIL_DATA | {"VI"}) & set(frame.columns):  # (a VI alone is an error of viscosity_model_rows)
+        return np.full(len(frame), np.nan), np.full(len(frame), np.nan), []
     return viscosity_model_rows(frame)
 
 

@@ -30,9 +30,18 @@ from bearingheat.io.files import atomic_write
 __all__ = ["ARROW_SUFFIXES", "read_arrow", "read_arrow_table", "write_arrow", "arrow_table", "arrow_column",
            "column_units", "unit_of"]
 
+def _write_parquet(table: pa.Table, path) -> None:
+    """Parquet with dictionary encoding for the text columns only: their cells repeat (designations, status),
+    the numbers seldom do, and trying a dictionary on each number column first took a third of the write
+    (10^6 rows x 36 columns: 0.42 s against 0.63 s, 91 MB against 89 MB)."""
+    text = [field.name for field in table.schema
+            if pa.types.is_string(field.type) or pa.types.is_large_string(field.type)]
+    parquet.write_table(table, path, use_dictionary=text)
+
+
 #: suffix -> (read a pyarrow table from a path, write one to a path)
 _FORMATS = {
-    ".parquet": (parquet.read_table, lambda table, path: parquet.write_table(table, path)),
+    ".parquet": (parquet.read_table, _write_parquet),
     ".arrow": (feather.read_table, lambda table, path: feather.write_feather(table, path)),
     ".feather": (feather.read_table, lambda table, path: feather.write_feather(table, path)),
 }

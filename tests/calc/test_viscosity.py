@@ -24,3 +24,15 @@ def test_viscosity_model_rows_problems():
         (5, "error", "iso_vg: give either iso_vg or nu40 and nu100, not both"),
         (6, "error", "VI: given without iso_vg; the viscosity index only serves an ISO VG grade"),
     ]
+
+
+def test_a_viscosity_index_without_oil_data_is_a_row_error_of_calc():
+    """A table with a VI column but no nu40, nu100 or iso_vg still has its VI checked (calc skips the
+    viscosity-temperature lines only where no oil column is given at all)."""
+    import bearingheat as bh
+
+    rows = pd.DataFrame({"designation": ["6205"], "D [mm]": [52.0], "lubrication": ["oil_bath"], "n [rpm]": [3000.0],
+                         "Fr [kN]": [2.0], "nu [mm^2/s]": [12.0], "T_amb [degC]": [20.0], "VI": [95.0]})
+    out = bh.calc(rows)
+    assert out["status"].tolist() == ["error"]
+    assert out["message"].iloc[0] == "VI: given without iso_vg; the viscosity index only serves an ISO VG grade"
