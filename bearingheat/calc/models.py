@@ -288,8 +288,8 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
     columns.update({name: pd.Series(np.asarray(values, dtype=object), index=frame.index, dtype=object)
                     for name, values in text_columns.items()})
     name_codes, distinct_names = pd.factorize(np.array(model_names, dtype=object))  # two cells may name one model
-    columns["model"] = pd.Series(pd.Categorical.from_codes(name_codes[model_codes], categories=distinct_names),
-                                 index=frame.index)
+    model_column = pd.Categorical.from_codes(name_codes[model_codes], categories=pd.Index(distinct_names, dtype=object))
+    columns["model"] = pd.Series(model_column, index=frame.index)
     return pd.DataFrame(columns, index=frame.index, copy=False)  # calc's own arrays: no copy into one block
 
 

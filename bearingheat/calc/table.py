@@ -27,6 +27,7 @@ from typing import Callable
 
 import numpy as np
 import pandas as pd
+import pyarrow as pa
 
 from bearingheat.calc import contact, thermal
 from bearingheat.calc.thermal import (DEFAULT_SPEED_FACTOR_METHOD, DEFAULT_VISCOSITY_AT, SPEED_FACTOR_METHODS,
@@ -474,7 +475,8 @@ def _assemble(table: pd.DataFrame, results: pd.DataFrame, extension_columns) -> 
     failed = _failed(results)
     for columns, units in extension_columns:
         for name in columns.columns:
-            values = columns[name].to_numpy()
+            values = columns[name].array if isinstance(columns[name].dtype, pd.CategoricalDtype) \
+                else columns[name].to_numpy()
             if values.dtype.kind == "f":
                 values = np.where(failed, np.nan, values)
             written[output_header(name, units.get(name, ""))] = values
@@ -483,12 +485,34 @@ def _assemble(table: pd.DataFrame, results: pd.DataFrame, extension_columns) -> 
     written["message"] = results["message"].to_numpy()
     # the caller's frame holds the arrays as they are (no copy into one block); a read-only view of calc's
     # internal frames is copied, so that the caller can change the cells
-    fresh = {header: values if values.flags.writeable else values.copy()
+    fresh = {header: _text(values) if isinstance(values, pd.Categorical) or values.dtype == object
+             else values if values.flags.writeable else values.copy()
              for header, values in written.items() if header not in table.columns}
     out = pd.concat([table, pd.DataFrame(fresh, index=table.index, copy=False)], axis=1)
     for header in written.keys() - fresh.keys():
         out[header] = written[header]
     return out
+
+
+#: the dtype pandas gives a column of text (its Arrow-backed 'str' since pandas 3)
+_TEXT_DTYPE = pd.Series(["text"]).dtype
+
+
+def _text(values: np.ndarray | pd.Categorical) -> np.ndarray | pd.api.extensions.ExtensionArray:
+    """A text result (object array or categorical) as the column pandas makes of text, built by pyarrow from the
+    cells (a categorical from its codes): a third of the time of pandas' own conversion (a sixth for a
+    categorical). Object cells stay as they are where pandas keeps text as objects (pandas 2) or a cell is no
+    text."""
+    if _TEXT_DTYPE == object:
+        return np.asarray(values, dtype=object)
+    try:
+        if isinstance(values, pd.Categorical):
+            dictionary = pa.array(values.categories.to_numpy(dtype=object), type=pa.large_string())
+            arrow = pa.DictionaryArray.from_arrays(pa.array(values.codes, mask=values.codes < 0), dictionary)
+            return pd.array(arrow.cast(pa.large_string()), dtype=_TEXT_DTYPE)
+        return pd.array(pa.array(values, type=pa.large_string(), from_pandas=True), dtype=_TEXT_DTYPE)
+    except (pa.ArrowInvalid, pa.ArrowTypeError):
+        return np.asarray(values, dtype=object)
 
 
 def _failed(results: pd.DataFrame) -> np.ndarray:

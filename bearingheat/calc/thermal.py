@@ -47,7 +47,7 @@ import pandas as pd
 from bearingheat.calc.contract import columns, register_choices
 from bearingheat.calc.models import FrictionPower, compute_supports
 from bearingheat.calc.reference_speed import thermal_reference_speed_details, thermal_reference_speed_rows
-from bearingheat.calc.supports import number_column, text_or_default
+from bearingheat.calc.supports import number_column, text_codes
 from bearingheat.calc.viscosity import viscosity_model_rows
 from bearingheat.catalogue.thermal import THERMAL_KINDS
 from bearingheat.errors import HeatBalanceError
@@ -268,7 +268,7 @@ def fill_viscosity(frame: pd.DataFrame, *, viscosity_at: str = "auto",
     solvable = ~np.isnan(number_column(frame, "T_amb")) & ~np.isnan(number_column(frame, "n"))
     # auto: T_op where it can be solved; without T_bearing, T_op is the only way (its refusals name what is missing)
     at_operating = need & ((modes == "operating") | ((modes == "auto") & (solvable | np.isnan(T_bearing))))
-    at_bearing = need & ~at_operating & np.isin(modes, ("auto", "bearing")) & ~np.isnan(T_bearing)
+    at_bearing = need & ~at_operating & modes.isin(("auto", "bearing")) & ~np.isnan(T_bearing)
     for i in np.flatnonzero(need & (modes == "bearing") & np.isnan(T_bearing)):
         problems.append((int(i), "error", "T_bearing [degC]: missing; the viscosity is to be taken at the "
                                           "bearing temperature"))
@@ -364,7 +364,7 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
     has = set(frame.columns)
     # rows whose friction failed, and plain bushings (no rolling bearing heat balance), are skipped
     failed = (results["status"].to_numpy() == "error") | _plain_rows(results)
-    columns: dict[str, np.ndarray] = {}
+    columns: dict[str, np.ndarray | pd.Categorical] = {}
     wants_thr = bool({"B", "T", "d1", "D1"} & has) or "n_thr_catalogue" in has
     wants_balance = "T_amb" in has
     if not (wants_thr or wants_balance):
@@ -437,24 +437,28 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
     if "T_bearing" in has:
         columns["n_per"] = _permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue,
                                                    T_bearing, T_amb, Q_S, Q_L, Q_E, usable, methods, problems)
-        method_codes, method_names = pd.factorize(methods)
-        titles = np.array([SPEED_FACTOR_METHODS[m].title for m in method_names] + [""], dtype=object)[method_codes]
-        columns["n_per_method_used"] = np.where(np.isnan(columns["n_per"]), "", titles).astype(object)
+        titles = [SPEED_FACTOR_METHODS[m].title for m in methods.categories] + [""]  # the last: no n_per
+        used = np.where(np.isnan(columns["n_per"]), len(titles) - 1, methods.codes)
+        columns["n_per_method_used"] = pd.Categorical.from_codes(used, categories=pd.Index(titles, dtype=object))
     _assumed_oil_outlet(frame, usable, problems)
     ordered = [c for c in ("n_thr", "n_per", "n_per_method_used", "T_op", "nu_op", "Q_S", "Q_L") if c in columns]
     return pd.DataFrame({c: columns[c] for c in ordered}, index=frame.index), problems
 
 
-def _row_choices(frame: pd.DataFrame, column: str, default: str, choices, problems: list) -> np.ndarray:
-    """Every row's ``column`` cell, else ``default``; a name not in ``choices`` is a row error (and the default)."""
-    names = text_or_default(frame, column, default)
-    for i in np.flatnonzero(~np.isin(names, list(choices))):
-        problems.append((int(i), "error", f"{column}: {names[i]!r} is not one of {', '.join(choices)}"))
-        names[i] = default
-    return names
+def _row_choices(frame: pd.DataFrame, column: str, default: str, choices, problems: list) -> pd.Categorical:
+    """Every row's ``column`` cell, else ``default``, as a categorical (compared by its codes); a name not in
+    ``choices`` is a row error (and the default). Each distinct cell is looked at once."""
+    codes, texts = text_codes(frame, column)
+    names = [text or default for text in texts]
+    unknown = np.array([name not in choices for name in names], dtype=bool)
+    for i in np.flatnonzero(unknown[codes]):
+        problems.append((int(i), "error", f"{column}: {names[codes[i]]!r} is not one of {', '.join(choices)}"))
+    chosen_codes, chosen = pd.factorize(np.array([default if bad else name for name, bad in zip(names, unknown)],
+                                                 dtype=object))
+    return pd.Categorical.from_codes(chosen_codes[codes], categories=pd.Index(chosen, dtype=object))
 
 
-def _row_methods(frame: pd.DataFrame, default: str, problems: list) -> np.ndarray:
+def _row_methods(frame: pd.DataFrame, default: str, problems: list) -> pd.Categorical:
     """The n_per method of every row: its ``n_per_method`` cell, else ``default``; unknown names are row errors."""
     return _row_choices(frame, "n_per_method", default, SPEED_FACTOR_METHODS, problems)
 
