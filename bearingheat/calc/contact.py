@@ -13,8 +13,9 @@ import numpy as np
 import pandas as pd
 
 from bearingheat.calc.contract import columns
+from bearingheat.calc.supports import text_codes
 from bearingheat.catalogue.designation import parse_designation
-from bearingheat.errors import ContactInputError, DesignationError
+from bearingheat.errors import DesignationError
 
 __all__ = ["prepare", "extend"]
 
@@ -44,11 +45,11 @@ def extend(frame: pd.DataFrame, results: pd.DataFrame):
     """
     if not all(col in frame.columns for col in _GEOMETRY):
         return pd.DataFrame(index=frame.index), []
-    from bearingheat.kernels.contact import minimum_axial_load  # scipy (0.3 s to import): for ball geometry only
+    from bearingheat.kernels.contact import minimum_axial_load_rows  # scipy (0.3 s to import): ball geometry only
     z, dw, pitch = (frame[c].to_numpy(dtype=float) for c in _GEOMETRY)
     alpha = frame["alpha"].to_numpy(dtype=float) if "alpha" in frame.columns else np.full(len(frame), np.nan)
-    designations = frame["designation"] if "designation" in frame.columns else [None] * len(frame)
-    nominal = np.array([_nominal_angle(d) for d in designations], dtype=float)
+    codes, designations = text_codes(frame, "designation")  # each distinct designation parsed once
+    nominal = np.array([_nominal_angle(d) for d in designations], dtype=float)[codes]
     alpha = np.where(np.isnan(alpha), nominal, alpha)
     n = frame["n"].to_numpy(dtype=float)
     Fa = frame["Fa"].to_numpy(dtype=float) if "Fa" in frame.columns else np.zeros(len(frame))
@@ -57,18 +58,20 @@ def extend(frame: pd.DataFrame, results: pd.DataFrame):
     ok = (results["status"] != "error").to_numpy()
     has_geometry = ~np.isnan(z) & ~np.isnan(dw) & ~np.isnan(pitch)
     fa_min = np.full(len(frame), np.nan)
-    problems = []
-    for i in np.flatnonzero(has_geometry & is_ball & ok):
+    checked = has_geometry & is_ball & ok
+    rows = np.flatnonzero(checked & ~np.isnan(alpha))
+    fa_min[rows], reasons = minimum_axial_load_rows(z[rows], dw[rows], pitch[rows], n[rows], alpha[rows])
+    refused = np.zeros(len(frame), dtype=bool)
+    refused[rows] = reasons != ""
+    reason_of = dict(zip(rows.tolist(), reasons.tolist()))
+    problems = []  # messages only for the rows that have them, in row order
+    for i in np.flatnonzero((checked & np.isnan(alpha)) | refused | (Fa < fa_min)).tolist():
         if np.isnan(alpha[i]):
             problems.append((i, "warning", "Fa_min: give alpha [deg] (the contact angle) to check the minimum "
                                            "axial load against ball skidding (Zaitsev & Voronkin)"))
-            continue
-        try:
-            fa_min[i] = minimum_axial_load(z[i], dw[i], pitch[i], n[i], alpha[i])
-        except ContactInputError as exc:
-            problems.append((i, "error", f"Fa_min: {exc}"))
-            continue
-        if Fa[i] < fa_min[i]:
+        elif refused[i]:
+            problems.append((i, "error", f"Fa_min: {reason_of[i]}"))
+        else:
             problems.append((i, "warning", f"Fa = {Fa[i]:.4g} N is below the minimum axial load "
                                            f"{fa_min[i]:.4g} N at {n[i]:g} 1/min: the balls may skid (Zaitsev & Voronkin)"))
     return pd.DataFrame({"Fa_min": fa_min}, index=frame.index), problems

@@ -19,8 +19,8 @@ import numpy as np
 import pandas as pd
 
 from bearingheat.calc.messages import Labels
-from bearingheat.calc.supports import number_column, text_column
-from bearingheat.catalogue.bearings import CATALOGUE, bearing, disagreeing
+from bearingheat.calc.supports import number_column, text_codes
+from bearingheat.catalogue.bearings import CATALOGUE, bearing, disagreeing, half_steps
 from bearingheat.errors import DesignationError
 
 __all__ = ["FILLED", "fill_from_catalogue", "fill_arrays", "catalogue_values"]
@@ -35,9 +35,16 @@ def catalogue_values(designations: Sequence[str | None] | np.ndarray
     lookup's error message for designations it does not know (None where found or blank); each distinct
     designation is looked up once."""
     codes, uniques = pd.factorize(np.asarray(designations, dtype=object), use_na_sentinel=True)
-    per_key = {name: np.full(len(uniques) + 1, np.nan) for name in FILLED}  # the last entry: blank designation
-    messages = np.full(len(uniques) + 1, None, dtype=object)
-    for code, text in enumerate(uniques.tolist()):
+    per_key, messages = _catalogue_entries([*uniques.tolist(), None])  # code -1 (blank) takes the last entry
+    return {name: column[codes] for name, column in per_key.items()}, messages[codes].tolist()
+
+
+def _catalogue_entries(designations: Sequence[str | None]) -> tuple[dict[str, np.ndarray], np.ndarray]:
+    """The bearing table's :data:`FILLED` values of each designation (NaN where it has none, or where the
+    designation is blank or unknown) and the lookup's error message of each unknown one (else None)."""
+    per_key = {name: np.full(len(designations), np.nan) for name in FILLED}
+    messages = np.full(len(designations), None, dtype=object)
+    for code, text in enumerate(designations):
         if not text:
             continue
         try:
@@ -47,7 +54,7 @@ def catalogue_values(designations: Sequence[str | None] | np.ndarray
             continue
         for name in FILLED:
             per_key[name][code] = getattr(entry, name)
-    return {name: column[codes] for name, column in per_key.items()}, messages[codes].tolist()
+    return per_key, messages
 
 
 def fill_from_catalogue(frame: pd.DataFrame, labels: Labels
@@ -57,28 +64,29 @@ def fill_from_catalogue(frame: pd.DataFrame, labels: Labels
     filled column the mask of the rows whose value came from the table."""
     if "designation" not in frame.columns or len(frame) == 0:
         return frame, [], {}
-    designations = text_column(frame, "designation")
-    values, lookup_errors = catalogue_values(designations)
+    codes, designations = text_codes(frame, "designation")  # each distinct designation looked up once
+    per_key, lookup_errors = _catalogue_entries(designations)
     problems: list[tuple[int, str, str]] = []
     filled: dict[str, np.ndarray] = {}
     from_table: dict[str, np.ndarray] = {}
     for name in FILLED:
-        catalogue = values[name]
-        if name not in frame.columns and np.isnan(catalogue).all():
+        if name not in frame.columns and np.isnan(per_key[name]).all():
             continue
+        catalogue = per_key[name][codes]
         given = number_column(frame, name)
         blank = np.isnan(given)
         filled[name] = np.where(blank, catalogue, given)
         from_table[name] = blank & ~np.isnan(catalogue)
-        for i in np.flatnonzero(~blank & disagreeing(name, given, catalogue)):
+        steps = half_steps(name, per_key[name])[codes]
+        for i in np.flatnonzero(~blank & disagreeing(name, given, catalogue, steps)):
             problems.append((int(i), "warning",
                              f"{labels.name(name, int(i))}: {labels.value(name, given[i])} differs from "
-                             f"{catalogue[i]:g} {_unit(name)}of {designations[i]} in the bearing table "
+                             f"{catalogue[i]:g} {_unit(name)}of {designations[codes[i]]} in the bearing table "
                              f"({CATALOGUE}); the value given is used"))
     D = filled.get("D", number_column(frame, "D"))
-    for i in np.flatnonzero(np.isnan(D)):
-        if lookup_errors[i] is not None:
-            problems.append((int(i), "error", f"{lookup_errors[i]}; or type the dimensions d, D (and C0)"))
+    unknown = np.array([message is not None for message in lookup_errors], dtype=bool)[codes]
+    for i in np.flatnonzero(np.isnan(D) & unknown):
+        problems.append((int(i), "error", f"{lookup_errors[codes[i]]}; or type the dimensions d, D (and C0)"))
     if not filled:
         return frame, problems, from_table
     return frame.assign(**filled), problems, from_table

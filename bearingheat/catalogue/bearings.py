@@ -455,11 +455,15 @@ def disagrees(name: str, given: float, catalogue_value: float) -> bool:
     return bool(disagreeing(name, np.asarray(given, dtype=float), np.asarray(catalogue_value, dtype=float)))
 
 
-def disagreeing(name: str, given: np.ndarray, catalogue_values: np.ndarray) -> np.ndarray:
-    """:func:`disagrees` of arrays: False where either value is NaN.
+def disagreeing(name: str, given: np.ndarray, catalogue_values: np.ndarray, steps: np.ndarray | None = None
+                ) -> np.ndarray:
+    """:func:`disagrees` of arrays: False where either value is NaN. ``steps`` are the :func:`half_steps` of the
+    catalogue values where the caller has them (a table repeats few values: their steps computed once each).
 
     >>> disagreeing("C", np.array([32540.0, 33000.0, np.nan]), np.array([32500.0, 32500.0, 1.0])).tolist()
     [False, True, False]
     """
+    if steps is None:
+        steps = half_steps(name, catalogue_values)
     with np.errstate(invalid="ignore"):
-        return np.abs(given - catalogue_values) > half_steps(name, catalogue_values) * (1 + 1e-9)
+        return np.abs(given - catalogue_values) > steps * (1 + 1e-9)

@@ -53,6 +53,7 @@ __all__ = [
     "HERTZ_COMPLIANCE_CM_KGF",
     "HERTZ_COMPLIANCE_MM_N",
     "GYROSCOPIC_CONSTANT_KGF",
+    "minimum_axial_load_rows",
     "initial_contact_angle",
     "initial_contact_angle_052",
     "RaceCurvatures",
@@ -157,8 +158,15 @@ def _kernel(func):
     return wrapper
 
 
+def _ball_refusal(d_w):
+    """(bad, message template, values) of a check: the kernels raise on the first bad element
+    (:func:`_refuse`), :func:`minimum_axial_load_rows` tells each bad row."""
+    return d_w <= 0, "d_w = {d_w:g} mm: the ball diameter must be positive", {"d_w": d_w}
+
+
 def _check_ball(d_w):
-    _refuse(d_w <= 0, "d_w = {d_w:g} mm: the ball diameter must be positive", d_w=d_w)
+    bad, template, values = _ball_refusal(d_w)
+    _refuse(bad, template, **values)
 
 
 def _check_groove_sum(r_i, r_o, d_w):
@@ -179,10 +187,14 @@ def _check_grooves(r_i, r_o, d_w):
             r=r_o, half=half)
 
 
+def _pitch_refusal(d_m, d_w, name="d_m"):
+    return (d_m <= d_w, "impossible geometry: pitch diameter " + name + " = {d_m:g} mm must exceed d_w = {d_w:g} mm",
+            {"d_m": d_m, "d_w": d_w})
+
+
 def _check_pitch(d_m, d_w, name="d_m"):
-    _refuse(d_m <= d_w,
-            "impossible geometry: pitch diameter " + name + " = {d_m:g} mm must exceed d_w = {d_w:g} mm",
-            d_m=d_m, d_w=d_w)
+    bad, template, values = _pitch_refusal(d_m, d_w, name)
+    _refuse(bad, template, **values)
 
 
 def _check_alpha0(alpha0):
@@ -190,9 +202,13 @@ def _check_alpha0(alpha0):
             "alpha0 = {a:g} deg must lie in [0, 90) deg", a=alpha0)
 
 
+def _balls_refusal(z):
+    return (z < 1) | (z != np.round(z)), "z = {z:g}: the number of balls must be a whole number of at least 1", {"z": z}
+
+
 def _check_balls(z):
-    _refuse((z < 1) | (z != np.round(z)),
-            "z = {z:g}: the number of balls must be a whole number of at least 1", z=z)
+    bad, template, values = _balls_refusal(z)
+    _refuse(bad, template, **values)
 
 
 # --------------------------------------------------------------------------- initial contact angle
@@ -632,11 +648,37 @@ def minimum_axial_load(z, d_w, d_pitch, n, alpha):
     0.1039
     """
     z, d_w, d_pitch, n, alpha = _broadcast(z, d_w, d_pitch, n, alpha)
-    _check_balls(z)
-    _check_ball(d_w)
-    _check_pitch(d_pitch, d_w, name="D0")
-    _refuse(n < 0, "n = {n:g} 1/min: the speed must not be negative", n=n)
-    _refuse((alpha < 0) | (alpha > 90), "alpha = {a:g} deg must lie in [0, 90] deg", a=alpha)
+    for bad, template, values in _minimum_axial_load_refusals(z, d_w, d_pitch, n, alpha):
+        _refuse(bad, template, **values)
+    return _minimum_axial_load(z, d_w, d_pitch, n, alpha)
+
+
+def _minimum_axial_load_refusals(z, d_w, d_pitch, n, alpha):
+    return [_balls_refusal(z), _ball_refusal(d_w), _pitch_refusal(d_pitch, d_w, name="D0"),
+            (n < 0, "n = {n:g} 1/min: the speed must not be negative", {"n": n}),
+            ((alpha < 0) | (alpha > 90), "alpha = {a:g} deg must lie in [0, 90] deg", {"a": alpha})]
+
+
+def minimum_axial_load_rows(z, d_w, d_pitch, n, alpha) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`minimum_axial_load` of many rows in one call, each row refused on its own: (Fa_min [N], reason),
+    Fa_min NaN and the reason the message :func:`minimum_axial_load` would raise where a row is refused ('' where
+    it is not). The messages are built for the refused rows only.
+
+    >>> Fa_min, reasons = minimum_axial_load_rows([7, 0], 2.0, 8.7355, 30000, 12.0)
+    >>> np.round(Fa_min / KGF, 4).tolist(), reasons.tolist()
+    ([0.1039, nan], ['', 'z = 0: the number of balls must be a whole number of at least 1'])
+    """
+    z, d_w, d_pitch, n, alpha = _broadcast(z, d_w, d_pitch, n, alpha)
+    reasons = np.full(z.shape, "", dtype=object)
+    for bad, template, values in _minimum_axial_load_refusals(z, d_w, d_pitch, n, alpha):
+        for i in np.flatnonzero(np.asarray(bad, dtype=bool) & (reasons == "")):  # the first refusal of a row
+            reasons[i] = template.format(**{k: np.broadcast_to(v, z.shape)[i] for k, v in values.items()})
+    refused = reasons != ""
+    with np.errstate(invalid="ignore"):
+        return np.where(refused, np.nan, _minimum_axial_load(z, d_w, d_pitch, n, alpha)), reasons
+
+
+def _minimum_axial_load(z, d_w, d_pitch, n, alpha):
     a = alpha * _DEG
     load_kgf = (GYROSCOPIC_CONSTANT_KGF * z * d_w**3 * d_pitch * n**2 * np.sin(a) ** 2
                 * (1.0 - (d_w / d_pitch) ** 2 * np.cos(a) ** 2))

@@ -27,3 +27,21 @@ def test_no_geometry_no_column():
     table = pd.DataFrame({"designation": ["6205"], "d [mm]": [25], "D [mm]": [52], "C0 [N]": [7800],
                           "lubrication": ["grease"], "n [rpm]": [3000], "Fr [N]": [100], "nu [mm^2/s]": [20]})
     assert "Fa_min [N]" not in calc(table).columns
+
+
+def test_rows_the_formula_refuses_are_errors_of_their_own_and_the_others_are_computed():
+    """Fa_min is computed for all rows in one call: a row with an impossible geometry gets the kernel's own
+    refusal as its error, the rows beside it their values (as one row at a time would give them)."""
+    base = {"designation": "7205", "d [mm]": 25, "D [mm]": 52, "C0 [N]": 9300, "alpha [deg]": 30, "z": 12,
+            "Dw [mm]": 7.9, "dm_pitch [mm]": 38.5, "lubrication": "grease", "n [rpm]": 12000, "Fr [N]": 100,
+            "nu [mm^2/s]": 20, "Fa [N]": 500}
+    table = pd.DataFrame([base, {**base, "z": 11.5}, {**base, "dm_pitch [mm]": 7.0}, {**base, "n [rpm]": 6000}])
+    out = calc(table)
+    assert out["status"].tolist() == ["ok", "error", "error", "ok"]
+    assert out.loc[1, "message"] == "Fa_min: z = 11.5: the number of balls must be a whole number of at least 1"
+    assert out.loc[2, "message"] == ("Fa_min: impossible geometry: pitch diameter D0 = 7 mm must exceed "
+                                     "d_w = 7.9 mm")
+    alone = [calc(table.iloc[[i]])["Fa_min [N]"].iloc[0] for i in (0, 3)]
+    assert out.loc[[0, 3], "Fa_min [N]"].tolist() == pytest.approx(alone, rel=1e-15)
+    assert alone == pytest.approx([minimum_axial_load(12, 7.9, 38.5, 12000, 30.0),
+                                   minimum_axial_load(12, 7.9, 38.5, 6000, 30.0)], rel=1e-12)
