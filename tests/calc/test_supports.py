@@ -107,3 +107,18 @@ def test_calc_result_cells_can_be_changed_and_the_input_stays_as_it_was():
     pd.testing.assert_frame_equal(table, before)
     pd.testing.assert_frame_equal(second, bh.calc(table))
     assert set(first.iloc[0].tolist()) == {0, "changed"} and second.loc[0, "status"] == "ok"
+
+
+@pytest.mark.parametrize("distinct", [3, 50_000])
+def test_group_codes_are_pandas_groups_in_order_of_first_appearance(distinct):
+    """group_codes mixes the columns' codes as digits of one integer (factorized once, or again before it could
+    pass 2^62: five columns of 50 000 distinct numbers): the groups of pandas' groupby, numbered as they first
+    appear, missing values one group."""
+    rng = np.random.default_rng(7)
+    rows = 60_000
+    frame = pd.DataFrame({f"x{k}": rng.integers(0, distinct, rows).astype(float) for k in range(5)})
+    frame.loc[rng.integers(0, rows, 500), "x2"] = np.nan
+    frame["text"] = pd.Categorical.from_codes(rng.integers(-1, 3, rows), categories=["a", "b", "c"])
+    names = [*frame.columns]
+    expected = frame.groupby(names, sort=False, dropna=False, observed=True).ngroup().to_numpy()
+    assert np.array_equal(sp.group_codes(frame, names), expected)
