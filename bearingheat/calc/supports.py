@@ -13,7 +13,6 @@ Numbers are in catalogue units (mm, N, 1/min, mm²/s, deg) with NaN for
 from __future__ import annotations
 
 import dataclasses
-import functools
 import math
 from dataclasses import dataclass, field
 from typing import Any, Callable, TypeAlias
@@ -366,7 +365,9 @@ def build_support_arrays(keys: pd.DataFrame, numbers: dict[str, Any]) -> Support
     if len(uniques) == 1 and len(keys) == 1:
         def spread(name, dtype):
             return np.asarray(per_key[0][name], dtype=dtype)[()]
-        spread_text = functools.partial(spread, dtype=object)
+
+        def spread_text(name):
+            return spread(name, object)
         plain = np.broadcast_to(plain_keys[0], (size,))
         notes = notes_of_key
     else:
