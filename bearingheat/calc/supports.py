@@ -193,9 +193,13 @@ def text_column(frame: pd.DataFrame, name: str) -> list:
 
 
 def number_column(frame: pd.DataFrame, name: str, default: float = math.nan) -> np.ndarray:
-    """A numeric column as floats (NaN for blanks and text), or ``default`` where it is absent."""
+    """A numeric column as floats (NaN for blanks and text), or ``default`` where it is absent. A float column
+    gives its own values, read-only (as pd.to_numeric's would be), without the copy to_numeric makes."""
     if name in frame.columns:
-        return pd.to_numeric(frame[name], errors="coerce").to_numpy(dtype=float)
+        column = frame[name]
+        if column.dtype == np.float64:
+            return column.to_numpy()
+        return pd.to_numeric(column, errors="coerce").to_numpy(dtype=float)
     return np.full(len(frame), default, dtype=float)
 
 
