@@ -28,21 +28,29 @@ def _describe(name: str, values: np.ndarray) -> Callable[[int], str]:
     return lambda i: f"{name}: {values[i]:g}"
 
 
+def _range_warnings(name: str, values: float | np.ndarray, shape: tuple[int, ...], error: type[BearingheatError]
+                    ) -> list[tuple[int, str]]:
+    """Raise for a number that is NaN, infinite or outside its valid range; return the plausibility warnings as
+    (flat index, message). A scalar argument is checked once, not once per point it is broadcast to."""
+    scalar = np.ndim(values) == 0
+    flat = np.asarray(values, dtype=float).reshape(1) if scalar or not shape else \
+        np.broadcast_to(values, shape).ravel()
+    if np.isnan(flat).any():
+        i = int(np.flatnonzero(np.isnan(flat))[0])
+        raise error(f"{name}: nan is not a number; leave the argument out where it is not known{where(i, shape)}")
+    errors, found = range_problems(name, flat, _describe(name, flat))
+    if errors:
+        i, message = errors[0]
+        raise error(message + where(i, shape))
+    return found
+
+
 def check_ranges(arrays: Mapping[str, float | np.ndarray], shape: tuple[int, ...], error: type[BearingheatError]
                  ) -> list[str]:
     """Raise for a given number that is NaN, infinite or outside its valid range; return the plausibility warnings."""
     warnings = []
     for name, values in arrays.items():
-        flat = np.broadcast_to(values, shape).ravel() if shape else np.asarray(values, dtype=float).reshape(1)
-        if np.isnan(flat).any():
-            i = int(np.flatnonzero(np.isnan(flat))[0])
-            raise error(f"{name}: nan is not a number; leave the argument out where it is not known"
-                        f"{where(i, shape)}")
-        errors, found = range_problems(name, flat, _describe(name, flat))
-        if errors:
-            i, message = errors[0]
-            raise error(message + where(i, shape))
-        warnings += [message + where(i, shape) for i, message in found[:1]]
+        warnings += [message + where(i, shape) for i, message in _range_warnings(name, values, shape, error)[:1]]
     return warnings
 
 
@@ -52,13 +60,10 @@ def point_warnings(arrays: Mapping[str, float | np.ndarray], shape: tuple[int, .
     scalar arguments (every point's) and, for array arguments, those of the points that have them."""
     every: list[str] = []
     some: dict[int, list[str]] = {}
-    check_ranges(arrays, shape, error)  # the refusals
     for name, values in arrays.items():
-        flat = np.broadcast_to(values, shape).ravel() if shape else np.asarray(values, dtype=float).reshape(1)
-        scalar = np.ndim(values) == 0
-        _, found = range_problems(name, flat[:1] if scalar else flat, _describe(name, flat))
+        found = _range_warnings(name, values, shape, error)
         for i, message in found:
-            if scalar:
+            if np.ndim(values) == 0:
                 every.append(message)
             else:
                 some.setdefault(i, []).append(message)

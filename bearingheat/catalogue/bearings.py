@@ -389,8 +389,10 @@ def _same_values_of(name: str, a: BearingData, b: BearingData) -> bool:
     return x == y or (math.isnan(x) and math.isnan(y))
 
 
+@functools.lru_cache(maxsize=256)
 def _unknown_message(text: str, body: str, suffixes: tuple[str, ...]) -> str:
-    """Close full designations: those with the same number first (closest first), then difflib's."""
+    """Close full designations: those with the same number first (closest first), then difflib's (remembered:
+    the search takes 25 ms, and a program may ask for the same unknown designation at every call)."""
     probe = "-".join((body, *suffixes))
     names = designations()
     same_body = [n for n in names if _canonical(n)[0] == body]
