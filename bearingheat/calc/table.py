@@ -485,12 +485,12 @@ def _assemble(table: pd.DataFrame, results: pd.DataFrame, extension_columns) -> 
     written["message"] = results["message"].to_numpy()
     # the caller's frame holds the arrays as they are (no copy into one block); a read-only view of calc's
     # internal frames is copied, so that the caller can change the cells
-    fresh = {header: _text(values) if isinstance(values, pd.Categorical) or values.dtype == object
-             else values if values.flags.writeable else values.copy()
-             for header, values in written.items() if header not in table.columns}
+    columns_out = {header: _text(values) if isinstance(values, pd.Categorical) or values.dtype == object
+                   else values if values.flags.writeable else values.copy() for header, values in written.items()}
+    fresh = {header: values for header, values in columns_out.items() if header not in table.columns}
     out = pd.concat([table, pd.DataFrame(fresh, index=table.index, copy=False)], axis=1)
-    for header in written.keys() - fresh.keys():
-        out[header] = written[header]
+    for header in columns_out.keys() - fresh.keys():
+        out[header] = columns_out[header]
     return out
 
 

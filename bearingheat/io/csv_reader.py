@@ -11,7 +11,7 @@ with a decimal comma (``1,5``) are read as such when no number in the file
 has a decimal point (:func:`sniff_format`).
 
 The cells are read by pyarrow's multi-threaded CSV reader where it gives
-pandas' result (10^6 rows in about 1 s), else by pandas' own parser: when a
+pandas' result (10^6 rows in about half a second on two cores), else by pandas' own parser: when a
 cell begins with white space (pandas skips it), a header cell is blank, or a
 column would be read as dates. The file line of each row is found in arrays
 when no cell is quoted (no cell can then span lines), else with Python's csv

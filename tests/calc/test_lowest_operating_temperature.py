@@ -135,6 +135,7 @@ def test_rows_with_oil_data_beside_rows_without_give_the_scanned_temperatures(mo
 
     monkeypatch.setattr(thermal, "lowest_operating_temperature", scan_every_row)
     scanned = bh.calc(table)
-    assert fast["T_op [degC]"].notna().all() and (fast["nu_at"] == np.where(table["iso_vg"].notna(), "T_op", "given")).all()
+    assert fast["T_op [degC]"].notna().all()
+    assert (fast["nu_at"] == np.where(table["iso_vg"].notna(), "T_op", "given")).all()
     np.testing.assert_allclose(fast["T_op [degC]"], scanned["T_op [degC]"], rtol=1e-12)
     np.testing.assert_allclose(fast["T_op [degC]"], alone["T_op [degC]"], rtol=1e-12)
