@@ -32,7 +32,7 @@ from scipy import optimize, stats
 from bearingheat.analysis.diagnose import (MIN_ROWS, MeasuredData, assign_folds, error_metrics, operating_point_groups,
                                            read_measurements)
 from bearingheat.analysis.effects import bearing_keys
-from bearingheat.calc.models import DEFAULT_MODEL, MODELS, compute_supports, get_model
+from bearingheat.calc.models import DEFAULT_MODEL, MODELS, compute_supports, failed_rows, get_model
 from bearingheat.calc.supports import number_column
 from bearingheat.calc.table import calc
 from bearingheat.errors import DiagnoseError
@@ -125,7 +125,7 @@ def model_names(model: str) -> tuple[str, ...]:
 def _evaluate(measured: MeasuredData, name: str) -> tuple[np.ndarray, dict[str, np.ndarray], np.ndarray, list[str]]:
     """(MR, fit terms, usable mask, exclusion messages) of one model on every measured row."""
     results = compute_supports(measured.frame, labels=measured.labels, model=name)
-    failed = (results["status"] == "error").to_numpy()
+    failed = failed_rows(results)
     messages = [f"row {i + 1} ({name}): {results['message'].iat[i]}" for i in map(int, np.flatnonzero(failed))]
     MR = results["MR"].to_numpy(dtype=float)
     model = get_model(name)

@@ -44,7 +44,7 @@ from scipy import optimize
 
 from bearingheat.calc.friction import evaluate_catalogue_model
 from bearingheat.calc.messages import Labels
-from bearingheat.calc.models import support_arrays_of
+from bearingheat.calc.models import failed_rows, support_arrays_of
 from bearingheat.calc.supports import SupportArrays
 from bearingheat.errors import DiagnoseError
 from bearingheat.kernels import friction
@@ -261,7 +261,7 @@ class Candidate:
         ``message``; changed in place), ``parameters`` the public parameters
         of summary.json. Each changed row's message gets ``note``.
         """
-        ok = (results["status"] != "error").to_numpy()
+        ok = ~failed_rows(results)
         if not ok.any():
             return
         frame = frame.reset_index(drop=True)

@@ -13,6 +13,7 @@ import numpy as np
 import pandas as pd
 
 from bearingheat.calc.contract import columns
+from bearingheat.calc.models import failed_rows
 from bearingheat.calc.supports import text_codes
 from bearingheat.catalogue.designation import parse_designation
 from bearingheat.errors import DesignationError
@@ -55,7 +56,7 @@ def extend(frame: pd.DataFrame, results: pd.DataFrame):
     Fa = frame["Fa"].to_numpy(dtype=float) if "Fa" in frame.columns else np.zeros(len(frame))
     Fa = np.nan_to_num(Fa, nan=0.0)
     is_ball = results["bearing_type"].str.contains("ball").to_numpy()
-    ok = (results["status"] != "error").to_numpy()
+    ok = ~failed_rows(results)
     has_geometry = ~np.isnan(z) & ~np.isnan(dw) & ~np.isnan(pitch)
     fa_min = np.full(len(frame), np.nan)
     checked = has_geometry & is_ball & ok

@@ -26,7 +26,7 @@ from bearingheat.errors import DesignationError
 
 __all__ = ["SupportArrays", "build_support_arrays", "bearing_constants", "NUMBER_INPUTS", "KEY_INPUTS",
            "text_column", "number_column", "text_codes", "distinct_keys", "group_codes", "text_or_default",
-           "value_codes", "text_categorical", "blanks_filled", "object_column", "column_codes"]
+           "value_codes", "text_categorical", "blanks_filled", "object_column", "column_codes", "coded_categorical"]
 
 #: numeric inputs of the friction model, in catalogue units
 NUMBER_INPUTS = ("d", "D", "B", "C0", "Y", "e", "X0", "Y0", "alpha", "f0", "f1", "f2", "n", "nu", "Fr", "Fa")
@@ -157,14 +157,20 @@ def per_distinct(values: pd.Series, convert: Callable) -> np.ndarray:
     return converted[codes]  # code -1 (missing) takes the last entry
 
 
+def coded_categorical(codes: np.ndarray, values: list) -> pd.Categorical:
+    """``values[codes]`` per row as a categorical: equal values share one category (two codes may stand for one
+    value), a None value is missing. ``values`` is short (one entry per distinct key); no Python object per row."""
+    value_codes, distinct = pd.factorize(np.array(values, dtype=object), use_na_sentinel=True)
+    return pd.Categorical.from_codes(value_codes[codes], categories=pd.Index(distinct, dtype=object))
+
+
 def text_categorical(values: pd.Series, clean: Callable[[Any], str | None]) -> pd.Categorical:
     """A text column as a categorical of its cleaned distinct texts (``clean(value)``, None for a blank cell:
     a missing value), each distinct cell cleaned once. calc's text columns are kept so: every later
     factorization reads the codes instead of hashing the strings again."""
     codes, uniques = column_codes(values)
-    cleaned = np.array([clean(v) for v in uniques] + [None], dtype=object)
-    texts_codes, texts = pd.factorize(cleaned, use_na_sentinel=True)  # cleaning can merge cells ('62', ' 62')
-    return pd.Categorical.from_codes(texts_codes[codes], categories=pd.Index(texts, dtype=object))
+    # code -1 (missing) takes the last entry; cleaning can merge cells ('62', ' 62')
+    return coded_categorical(codes, [clean(v) for v in uniques] + [None])
 
 
 def blanks_filled(frame: pd.DataFrame, name: str, default: str) -> pd.Categorical:
@@ -381,8 +387,7 @@ def build_support_arrays(keys: pd.DataFrame, numbers: dict[str, Any]) -> Support
         def spread_text(name):
             # a categorical: numpy compares it by its codes (np.equal(s.seal, 'contact') 0.1 ms, not 20 ms, for
             # 10^6 rows) and takes rows of it without touching a Python object
-            text_codes_of_key, texts = pd.factorize(np.array([c[name] for c in per_key], dtype=object))
-            return pd.Categorical.from_codes(text_codes_of_key[codes], categories=pd.Index(texts, dtype=object))
+            return coded_categorical(codes, [c[name] for c in per_key])
         plain = plain_keys[codes]
         notes = notes_of_key[codes]
     constants = {name: spread_text(name) for name in _TEXT}

@@ -41,7 +41,7 @@ from bearingheat.calc.fill import fill_from_catalogue
 from bearingheat.calc.uncertainty import fill_from_coefficients, has_uncertainty, uncertainty_bands
 from bearingheat.catalogue.bearings import CATALOGUE
 from bearingheat.calc.models import (DEFAULT_MODEL, M2_REPORT_UNITS, MODEL_REPORT_UNITS, PLAIN_REPORT_UNITS,
-                                     RESULT_UNITS, SKF, compute_supports, row_model_names)
+                                     RESULT_UNITS, SKF, compute_supports, failed_rows, row_model_names)
 from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.catalogue.vm_chart import VMChart
 from bearingheat.calc.skf import fill_vm_from_chart
@@ -472,7 +472,7 @@ def _assemble(table: pd.DataFrame, results: pd.DataFrame, extension_columns) -> 
     for name, unit in {**M2_REPORT_UNITS, **PLAIN_REPORT_UNITS, **MODEL_REPORT_UNITS}.items():
         if name in results.columns:
             written[output_header(name, unit)] = results[name].to_numpy()
-    failed = _failed(results)
+    failed = failed_rows(results)
     for columns, units in extension_columns:
         for name in columns.columns:
             values = columns[name].array if isinstance(columns[name].dtype, pd.CategoricalDtype) \
@@ -513,11 +513,6 @@ def _text(values: np.ndarray | pd.Categorical) -> np.ndarray | pd.api.extensions
         return pd.array(pa.array(values, type=pa.large_string(), from_pandas=True), dtype=_TEXT_DTYPE)
     except (pa.ArrowInvalid, pa.ArrowTypeError):
         return np.asarray(values, dtype=object)
-
-
-def _failed(results: pd.DataFrame) -> np.ndarray:
-    """The rows in error (numpy's comparison of the object column: a quarter of the time of pandas')."""
-    return results["status"].to_numpy(dtype=object) == "error"
 
 
 def _refuse_non_finite(written: dict[str, np.ndarray], results: pd.DataFrame, failed: np.ndarray) -> None:

@@ -45,9 +45,9 @@ import numpy as np
 import pandas as pd
 
 from bearingheat.calc.contract import columns, register_choices
-from bearingheat.calc.models import FrictionPower, compute_supports
+from bearingheat.calc.models import FrictionPower, compute_supports, failed_rows
 from bearingheat.calc.reference_speed import thermal_reference_speed_details, thermal_reference_speed_rows
-from bearingheat.calc.supports import number_column, text_codes
+from bearingheat.calc.supports import coded_categorical, number_column, text_codes
 from bearingheat.calc.viscosity import viscosity_model_rows
 from bearingheat.catalogue.thermal import THERMAL_KINDS
 from bearingheat.errors import HeatBalanceError
@@ -315,7 +315,7 @@ def _solve_operating_temperature(frame, A, B, rows, t_limit, problems, unsolved)
     details, k_q, T_amb, Q_E, Q_S, Q_L = _heat_flow_setup(provisional)
     nu_at = _viscosity_of_rows(provisional, A, B)
     T, status, _ = _operating_point(provisional, results, nu_at, ~np.isnan(A), Q_S, Q_L, Q_E, T_amb, t_limit)
-    failed = (results["status"].to_numpy() == "error") | _plain_rows(results)
+    failed = failed_rows(results) | _plain_rows(results)
     reasons = details["reason"].to_numpy(dtype=object)
     for i in np.flatnonzero(rows):
         if failed[i]:
@@ -363,7 +363,7 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
     methods = _row_methods(frame, method, problems)
     has = set(frame.columns)
     # rows whose friction failed, and plain bushings (no rolling bearing heat balance), are skipped
-    failed = (results["status"].to_numpy() == "error") | _plain_rows(results)
+    failed = failed_rows(results) | _plain_rows(results)
     columns: dict[str, np.ndarray | pd.Categorical] = {}
     wants_thr = bool({"B", "T", "d1", "D1"} & has) or "n_thr_catalogue" in has
     wants_balance = "T_amb" in has
@@ -439,7 +439,7 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
                                                    T_bearing, T_amb, Q_S, Q_L, Q_E, usable, methods, problems)
         titles = [SPEED_FACTOR_METHODS[m].title for m in methods.categories] + [""]  # the last: no n_per
         used = np.where(np.isnan(columns["n_per"]), len(titles) - 1, methods.codes)
-        columns["n_per_method_used"] = pd.Categorical.from_codes(used, categories=pd.Index(titles, dtype=object))
+        columns["n_per_method_used"] = coded_categorical(used, titles)
     _assumed_oil_outlet(frame, usable, problems)
     ordered = [c for c in ("n_thr", "n_per", "n_per_method_used", "T_op", "nu_op", "Q_S", "Q_L") if c in columns]
     return pd.DataFrame({c: columns[c] for c in ordered}, index=frame.index), problems
@@ -453,9 +453,7 @@ def _row_choices(frame: pd.DataFrame, column: str, default: str, choices, proble
     unknown = np.array([name not in choices for name in names], dtype=bool)
     for i in np.flatnonzero(unknown[codes]):
         problems.append((int(i), "error", f"{column}: {names[codes[i]]!r} is not one of {', '.join(choices)}"))
-    chosen_codes, chosen = pd.factorize(np.array([default if bad else name for name, bad in zip(names, unknown)],
-                                                 dtype=object))
-    return pd.Categorical.from_codes(chosen_codes[codes], categories=pd.Index(chosen, dtype=object))
+    return coded_categorical(codes, [default if bad else name for name, bad in zip(names, unknown)])
 
 
 def _row_methods(frame: pd.DataFrame, default: str, problems: list) -> pd.Categorical:

@@ -170,9 +170,14 @@ def _task1(result: LabResult, g: pd.DataFrame, bearing: str, d: float,
                       xlabel="P0 [N]", lines="lines: T = μ_slope·P0·d/2 + T_intercept\n(intercept fitted)"))
 
 
+def _rows_of(task: pd.DataFrame, bearing: str) -> pd.DataFrame:
+    """The rows of one bearing in a task's results (an empty table, which may lack the column, as it is)."""
+    return task[task["bearing"] == bearing] if not task.empty else task
+
+
 def _task2(result: LabResult, g: pd.DataFrame, bearing: str, dm: float,
            writers: dict[str, Callable[[Path], object]]) -> list[str]:
-    t2 = result.task2[result.task2["bearing"] == bearing] if not result.task2.empty else result.task2
+    t2 = _rows_of(result.task2, bearing)
     if not len(t2):
         return []
     series = []
@@ -193,7 +198,7 @@ def _task2(result: LabResult, g: pd.DataFrame, bearing: str, dm: float,
 
 def _task3(result: LabResult, g: pd.DataFrame, bearing: str, dm: float, C0: float,
            writers: dict[str, Callable[[Path], object]]) -> list[str]:
-    t3 = result.task3[result.task3["bearing"] == bearing] if not result.task3.empty else result.task3
+    t3 = _rows_of(result.task3, bearing)
     if not len(t3):
         return []
     series = []
