@@ -21,7 +21,7 @@ from bearingheat.calc.fill import fill_from_catalogue
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.models import compute_supports
 from bearingheat.calc.thermal import (OPERATING_TEMPERATURE_LIMIT, SPEED_FACTOR_METHODS, VISCOSITY_AT,
-                                      fill_viscosity, heat_balance_rows, thermal_reference_speed_rows)
+                                      fill_viscosity, heat_balance_rows, settle_viscosity, thermal_reference_speed_rows)
 from bearingheat.errors import HeatBalanceError
 from bearingheat.kernels.thermal import friction_power
 from bearingheat.units import Magnitude, Quantity, QuantityLike, celsius, magnitude, quantity
@@ -295,10 +295,11 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
     limit = OPERATING_TEMPERATURE_LIMIT
     if t_limit is not None:
         limit = float(celsius(t_limit, "t_limit"))
-    frame, problems = fill_viscosity(frame, viscosity_at=viscosity_at, t_limit=limit)
+    frame, problems = fill_viscosity(frame, viscosity_at=viscosity_at)
     if "nu" not in frame.columns:
         raise HeatBalanceError("nu: missing; give nu, or nu40 and nu100, or iso_vg")
-    results = compute_supports(frame)
+    frame, results, settled = settle_viscosity(frame, compute_supports(frame), t_limit=limit)
+    problems += settled
     extra, more = heat_balance_rows(frame, results, method=method, t_limit=limit)
     problems = fill_problems + problems + more
     status = results["status"].tolist()

@@ -17,7 +17,8 @@ from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.catalogue.contact import y0_for_contact_angle
 from bearingheat.kernels import friction
 
-__all__ = ["RESULTS", "EXCEL_FORMULAS", "P1_EXCEL", "F0_EXCEL", "F1_EXCEL", "evaluate_catalogue_model"]
+__all__ = ["RESULTS", "EXCEL_FORMULAS", "P1_EXCEL", "F0_EXCEL", "F1_EXCEL", "evaluate_catalogue_model",
+           "catalogue_model_at_viscosity"]
 
 #: the results of the catalogue model, in the order calc writes them
 RESULTS = ("f0", "f1", "P0", "P1", "M0", "M1", "M2", "MR", "NR")
@@ -201,6 +202,19 @@ def evaluate_catalogue_model(s: SupportArrays, labels: Labels, f2_chart: F2Chart
         "NR": friction.power_loss(MR, n), "Fa_over_A": Fa_over_A, "nu_n_dM": nu_n_dM,
     }
     return {k: np.broadcast_to(np.asarray(v, dtype=float), shape) for k, v in results.items()}, problems
+
+
+def catalogue_model_at_viscosity(s: SupportArrays, results: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
+    """M0, MR and NR of the catalogue model at the viscosity ``s.nu``, from the results of an evaluation at
+    another viscosity (:func:`evaluate_catalogue_model`) of rows without M2.
+
+    Only M0 depends on ν (the Schaeffler catalogue, p. 64: M0 = f0·(ν·n)^(2/3)·dM³·10⁻⁷); f0, M1 and the checks
+    do not. M2 does where f2 is read off the chart at ν·n·dM (p. 70): rows with M2 are evaluated again instead.
+    The same kernels as :func:`evaluate_catalogue_model`, so the numbers are those of a new evaluation.
+    """
+    M0 = s.bearings * friction.speed_dependent_torque(results["f0"], s.nu, s.n, friction.mean_diameter(s.d, s.D))
+    MR = friction.total_torque(M0, results["M1"], results["M2"])
+    return {"M0": M0, "MR": MR, "NR": friction.power_loss(MR, s.n)}
 
 
 def _angular_contact_y0(s, Y0, add, shape):

@@ -39,6 +39,14 @@ class Labels:
             return f"{self.cell(column, row)} {header}"
         return header
 
+    def subset(self, rows: np.ndarray) -> Labels:
+        """The labels of the rows at positions ``rows`` of the table, as a table of their own (row k of the
+        subset is named as row ``rows[k]`` of the table)."""
+        if self.cell is None:
+            return self
+        cell, positions = self.cell, np.asarray(rows)
+        return Labels(self.headers, lambda column, k: cell(column, int(positions[k])))
+
     def value(self, column: str, value: float) -> str:
         factor = self.headers.get(column, (None, 1.0))[1]
         return f"{value / factor:g}"

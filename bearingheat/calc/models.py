@@ -28,7 +28,7 @@ import pandas as pd
 
 from bearingheat.calc import contract
 from bearingheat.calc.bushing import plain_rows
-from bearingheat.calc.friction import EXCEL_FORMULAS, RESULTS, evaluate_catalogue_model
+from bearingheat.calc.friction import EXCEL_FORMULAS, RESULTS, catalogue_model_at_viscosity, evaluate_catalogue_model
 from bearingheat.calc.skf import RESULTS as SKF_RESULTS
 from bearingheat.calc.skf import evaluate_skf_model
 from bearingheat.calc.messages import Labels, Problem
@@ -41,7 +41,7 @@ from bearingheat.kernels.thermal import friction_heat, friction_power
 
 __all__ = ["FrictionModel", "FrictionPower", "MODELS", "DEFAULT_MODEL", "get_model", "compute_supports",
            "RESULT_UNITS", "M2_REPORT_UNITS", "PLAIN_REPORT_UNITS", "MODEL_REPORT_UNITS", "EXTRA_INPUTS",
-           "model_inputs", "support_arrays_of", "row_model_names", "SKF", "failed_rows"]
+           "model_inputs", "support_arrays_of", "row_model_names", "SKF", "failed_rows", "results_at_viscosity"]
 
 Evaluation = Callable[[SupportArrays, Labels, "F2Chart | None"], "tuple[dict[str, np.ndarray], list[Problem]]"]
 
@@ -66,7 +66,12 @@ class FrictionModel:
     ``fit_terms(results) -> {name: torque [N*mm]}`` gives the terms of MR
     that a fit to measured torque scales (the catalogue model's M0 and M1:
     a fitted f0 and f1); MR minus their sum stays as computed
-    (:mod:`bearingheat.analysis.comparison`).
+    (:mod:`bearingheat.analysis.comparison`). ``at_viscosity(supports,
+    results) -> {name: array}`` gives the results that change when only the
+    viscosity does (supports at the new ν, results of an evaluation at the
+    old one; rows without M2), so that a viscosity taken at the solved
+    operating temperature costs no second evaluation
+    (:func:`results_at_viscosity`); None means the rows are evaluated again.
     """
 
     name: str
@@ -79,6 +84,7 @@ class FrictionModel:
     catalogue_keys: bool = True
     fit_terms: Callable[[pd.DataFrame], dict[str, np.ndarray]] | None = None
     no_formulas: str = ""
+    at_viscosity: Callable[[SupportArrays, dict[str, np.ndarray]], dict[str, np.ndarray]] | None = None
 
 
 SCHAEFFLER = FrictionModel(
@@ -91,6 +97,7 @@ SCHAEFFLER = FrictionModel(
     speed_exponent=2.0 / 3.0,
     excel_formulas=EXCEL_FORMULAS,
     fit_terms=lambda results: {"M0": results["M0"].to_numpy(dtype=float), "M1": results["M1"].to_numpy(dtype=float)},
+    at_viscosity=catalogue_model_at_viscosity,
 )
 
 def _evaluate_skf(supports: SupportArrays, labels: Labels, f2_chart: F2Chart | None):
@@ -295,6 +302,54 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
                     for name, values in text_columns.items()})
     columns["model"] = pd.Series(coded_categorical(model_codes, model_names), index=frame.index)
     return pd.DataFrame(columns, index=frame.index, copy=False)  # calc's own arrays: no copy into one block
+
+
+def results_at_viscosity(frame: pd.DataFrame, results: pd.DataFrame, changed: np.ndarray, *,
+                         f2_chart: F2Chart | None = None, labels: Labels | None = None,
+                         model: str = DEFAULT_MODEL) -> pd.DataFrame:
+    """The friction results of ``frame`` whose rows ``changed`` have a new ``nu``, from ``results``
+    (:func:`compute_supports` of the frame at the old ν; the arguments of that call again).
+
+    A changed row whose model has an ``at_viscosity`` update and which carries no M2 gets it: the model is not
+    evaluated again. The other changed rows (another model, M2 with f2 read off the chart at ν·n·dM, a row in
+    error or whose ν is now missing: its messages may change) are computed again, messages and all; their
+    messages name the cells of the whole table. Returns ``results`` with those rows replaced (the same frame).
+    """
+    changed = np.asarray(changed, dtype=bool)
+    if not changed.any():
+        return results
+    codes, names = column_codes(results["model"])
+    updates = [MODELS[name].at_viscosity if name in MODELS else None for name in names] + [None]
+    with_m2 = (~np.isnan(results["nu_n_dM"].to_numpy(dtype=float)) if "nu_n_dM" in results.columns
+               else np.zeros(len(results), dtype=bool))
+    again = changed & (failed_rows(results) | np.isnan(number_column(frame, "nu")) | with_m2
+                       | (results["bearing_type"].to_numpy(dtype=object) == "plain_bushing")
+                       | np.array([u is None for u in updates], dtype=bool)[codes])
+    for code in np.unique(codes[changed & ~again]).tolist():
+        rows = np.flatnonzero(changed & ~again & (codes == code))
+        supports = support_arrays_of(frame.iloc[rows])
+        with np.errstate(all="ignore"):
+            part = updates[code](supports, {name: results[name].to_numpy(dtype=float)[rows] for name in RESULTS})
+        for name, values in part.items():
+            column = results[name].to_numpy(dtype=float).copy()
+            column[rows] = values
+            results[name] = column
+    rows = np.flatnonzero(again)
+    if len(rows):
+        part = compute_supports(frame.iloc[rows].reset_index(drop=True), f2_chart=f2_chart,
+                                labels=(labels or Labels()).subset(rows), model=model)
+        for name in part.columns.drop(["model", "bearing_type", "series"]):
+            kind = object if part[name].dtype == object else float
+            column = (results[name].to_numpy(dtype=kind).copy() if name in results.columns
+                      else np.full(len(results), np.nan))
+            column[rows] = part[name].to_numpy(dtype=kind)
+            results[name] = column
+        for name in results.columns.difference(part.columns):  # a result none of these rows has any more
+            if results[name].dtype == np.float64:
+                column = results[name].to_numpy(dtype=float).copy()
+                column[rows] = np.nan
+                results[name] = column
+    return results
 
 
 class FrictionPower:

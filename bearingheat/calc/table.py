@@ -56,19 +56,23 @@ class Extension:
     """A calc extension: it reads and writes the contract columns of its ``owner``.
 
     ``prepare(frame) -> (frame, problems)`` runs before the friction model,
-    ``extend(frame, results) -> (columns, problems)`` after it; problems
-    are (row position, 'error' | 'warning', message).
+    ``settle(frame, results, f2_chart=, labels=, model=) -> (frame, results,
+    problems)`` right after it (an input that needs the friction results,
+    such as a viscosity at the operating temperature; None: nothing to
+    settle), ``extend(frame, results) -> (columns, problems)`` after the
+    messages; problems are (row position, 'error' | 'warning', message).
     """
 
     owner: str
     prepare: Callable
     extend: Callable
+    settle: Callable | None = None
 
 
 #: the extensions in the order their columns are written; keys are the contract owners
 EXTENSIONS: dict[str, Extension] = {e.owner: e for e in (
     Extension("contact", contact.prepare, contact.extend),
-    Extension("thermal", thermal.prepare, thermal.extend),
+    Extension("thermal", thermal.prepare, thermal.extend, thermal.settle),
 )}
 
 
@@ -362,8 +366,15 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
             frame, problems = ext.prepare(frame)
         extra_problems.extend(problems)
     require_columns(frame)
-    results = compute_supports(frame.reset_index(drop=True), f2_chart=f2_chart, labels=converted.labels,
-                               model=model)
+    positions = frame.reset_index(drop=True)
+    results = compute_supports(positions, f2_chart=f2_chart, labels=converted.labels, model=model)
+    for ext in EXTENSIONS.values():
+        if ext.settle is not None:
+            with np.errstate(all="ignore"):
+                positions, results, problems = ext.settle(positions, results, f2_chart=f2_chart,
+                                                          labels=converted.labels, model=model)
+            extra_problems.extend(problems)
+    frame = positions.set_axis(frame.index)
     results.index = table.index
     # the cell's own fault leads, before the model's message; an unknown designation without dimensions (why the
     # model's inputs are missing) leads before that

@@ -45,7 +45,7 @@ import numpy as np
 import pandas as pd
 
 from bearingheat.calc.contract import columns, register_choices
-from bearingheat.calc.models import FrictionPower, compute_supports, failed_rows
+from bearingheat.calc.models import DEFAULT_MODEL, FrictionPower, failed_rows, results_at_viscosity
 from bearingheat.calc.reference_speed import thermal_reference_speed_details, thermal_reference_speed_rows
 from bearingheat.calc.supports import coded_categorical, number_column, text_codes
 from bearingheat.calc.viscosity import viscosity_model_rows
@@ -71,19 +71,26 @@ __all__ = [
     "thermal_reference_speed_details",
     "thermal_reference_speed_rows",
     "fill_viscosity",
+    "settle_viscosity",
     "heat_balance_rows",
     "heat_flow_curves",
     "prepare",
     "extend",
 ]
 
-#: why a paired row has no heat balance: the sources define it for single bearings only
 #: upper end of the search for the operating temperature [°C]; above it the heat is said to run away
 OPERATING_TEMPERATURE_LIMIT = 150.0
 #: the search for the operating temperature starts this far below the ambient temperature [K]
 BELOW_AMBIENT_SEARCH = 50.0
 #: the search range is scanned in this many steps (about 8 K each) for the lowest equilibrium
 OPERATING_TEMPERATURE_CELLS = 24
+#: the temperature [°C] of the provisional viscosity of the friction pass for rows whose ν is taken at T_op (only
+#: M0 depends on it, and M0 is computed again at ν(T_op))
+PROVISIONAL_TEMPERATURE = 70.0
+#: T_op of rows whose f2 is read off the chart at ν·n·dM is solved again until it moves less than this [K] ...
+SETTLED_TEMPERATURE = 1e-9
+#: ... in at most this many passes
+SETTLE_PASSES = 20
 #: the columns a viscosity-temperature law comes from (:func:`~bearingheat.calc.viscosity.viscosity_model_rows`)
 OIL_DATA = frozenset({"nu40", "nu100", "iso_vg"})
 #: where the operating viscosity is taken when it comes from nu40/nu100 or iso_vg
@@ -236,8 +243,7 @@ def lowest_operating_temperature(balance, T_low, T_high, *, cells: int = OPERATI
     return np.where(status == 0, T, np.nan), status
 
 
-def fill_viscosity(frame: pd.DataFrame, *, viscosity_at: str = "auto",
-                   t_limit: float = OPERATING_TEMPERATURE_LIMIT):
+def fill_viscosity(frame: pd.DataFrame, *, viscosity_at: str = "auto"):
     """Fill an empty ``nu`` from ``nu40``/``nu100`` or ``iso_vg`` (catalogue units); returns (frame, problems).
 
     ``viscosity_at`` (a key of :data:`VISCOSITY_AT`) is the temperature of
@@ -250,6 +256,12 @@ def fill_viscosity(frame: pd.DataFrame, *, viscosity_at: str = "auto",
     is never replaced. The Walther constants stay in the hidden columns
     ``_walther_A`` and ``_walther_B`` for the heat balance; ``_nu_at`` says
     where each row's ``nu`` comes from ('given', 'T_bearing', 'T_op').
+
+    T_op needs the friction results, so a row to be taken at T_op gets a
+    provisional ν (at :data:`PROVISIONAL_TEMPERATURE`) for the one friction
+    pass and is marked in the hidden column ``_nu_pending``;
+    :func:`settle_viscosity` then solves its T_op from that pass and puts in
+    ν(T_op) (``_nu_fallback`` marks the rows that fall back to T_bearing).
     """
     if viscosity_at not in VISCOSITY_AT:
         raise HeatBalanceError(f"viscosity_at: {viscosity_at!r} is not one of {', '.join(VISCOSITY_AT)}")
@@ -263,70 +275,110 @@ def fill_viscosity(frame: pd.DataFrame, *, viscosity_at: str = "auto",
         return frame, problems
     modes = _row_choices(frame, "viscosity_at", viscosity_at, VISCOSITY_AT, problems)
     nu = number_column(frame, "nu")
-    need = np.isnan(nu) & ~np.isnan(A)
+    given = ~np.isnan(nu)
+    need = ~given & ~np.isnan(A)
     T_bearing = number_column(frame, "T_bearing")
-    solvable = ~np.isnan(number_column(frame, "T_amb")) & ~np.isnan(number_column(frame, "n"))
+    T_amb, n = number_column(frame, "T_amb"), number_column(frame, "n")
+    solvable = ~np.isnan(T_amb) & ~np.isnan(n)
     # auto: T_op where it can be solved; without T_bearing, T_op is the only way (its refusals name what is missing)
     at_operating = need & ((modes == "operating") | ((modes == "auto") & (solvable | np.isnan(T_bearing))))
     at_bearing = need & ~at_operating & modes.isin(("auto", "bearing")) & ~np.isnan(T_bearing)
     for i in np.flatnonzero(need & (modes == "bearing") & np.isnan(T_bearing)):
         problems.append((int(i), "error", "T_bearing [degC]: missing; the viscosity is to be taken at the "
                                           "bearing temperature"))
-    source = np.where(~np.isnan(nu), "given", "")
-    if at_operating.any():
-        # auto rows with T_bearing fall back to it where T_op has no solution: their refusals become warnings
-        fallback = at_operating & (modes == "auto") & ~np.isnan(T_bearing)
-        unsolved: list[tuple[int, str, str]] = []
-        T_op = _solve_operating_temperature(frame, A, B, at_operating, t_limit, problems, unsolved)
-        # a row falling back to T_bearing says so in nu_at; the heat balance tells why T_op has no solution
-        problems += [(i, "error", f"nu [mm^2/s]: cannot be taken at T_op; {why}; give T_bearing")
-                     for i, _, why in unsolved if not fallback[i]]
-        with np.errstate(invalid="ignore", over="ignore"):
-            nu = np.where(at_operating, walther_viscosity(A, B, T_op), nu)
-        source = np.where(at_operating & ~np.isnan(T_op), "T_op", source)
-        at_bearing |= fallback & np.isnan(T_op)
-    with np.errstate(invalid="ignore", over="ignore"):
-        nu = np.where(at_bearing, walther_viscosity(A, B, T_bearing), nu)
-    source = np.where(at_bearing, "T_bearing", source)
-    frame["nu"] = nu
-    frame["_nu_at"] = source
-    return frame, problems
-
-
-def _solve_operating_temperature(frame, A, B, rows, t_limit, problems, unsolved):
-    """T_op of the selected rows before the friction pass (f0, M1, M2 do not depend on ν); ``unsolved`` gets
-    (row, 'error', why T_op has no solution) for the rows it cannot solve, ``problems`` row errors for a
-    missing T_amb or n."""
-    T_op = np.full(len(frame), np.nan)
-    T_amb = number_column(frame, "T_amb")
-    n = number_column(frame, "n")
-    for i in np.flatnonzero(rows & (np.isnan(T_amb) | np.isnan(n))):
+    for i in np.flatnonzero(at_operating & ~solvable):
         missing = "T_amb [degC]" if np.isnan(T_amb[i]) else "n [1/min]"
         problems.append((int(i), "error", f"{missing}: missing; nu from nu40/nu100 or iso_vg is taken at the "
                                           "operating temperature T_op, which needs n and T_amb (or give T_bearing)"))
-    rows = rows & ~np.isnan(T_amb) & ~np.isnan(n)
-    if not rows.any() or not {"D"} <= set(frame.columns):
-        return T_op
-    provisional = frame.reset_index(drop=True).copy()
+    # without D no row has friction results to solve T_op from (and calc refuses the table)
+    pending = at_operating & solvable & ("D" in frame.columns)
     with np.errstate(invalid="ignore", over="ignore"):
-        provisional["nu"] = np.where(np.isnan(number_column(frame, "nu")),
-                                     walther_viscosity(A, B, np.full(len(frame), 70.0)), number_column(frame, "nu"))
-    results = compute_supports(provisional)
-    details, k_q, T_amb, Q_E, Q_S, Q_L = _heat_flow_setup(provisional)
-    nu_at = _viscosity_of_rows(provisional, A, B)
-    T, status, _ = _operating_point(provisional, results, nu_at, ~np.isnan(A), Q_S, Q_L, Q_E, T_amb, t_limit)
-    failed = failed_rows(results) | _plain_rows(results)
-    reasons = details["reason"].to_numpy(dtype=object)
-    for i in np.flatnonzero(rows):
-        if failed[i]:
-            continue  # the friction pass reports the row's own error
-        if reasons[i]:
-            unsolved.append((int(i), "error", reasons[i]))
-        elif status[i] != 0:
-            unsolved.append((int(i), "error", _no_equilibrium_text(status[i], T_amb[i], t_limit)))
+        nu = np.where(at_operating, np.where(pending, walther_viscosity(A, B, PROVISIONAL_TEMPERATURE), np.nan), nu)
+        nu = np.where(at_bearing, walther_viscosity(A, B, T_bearing), nu)
+    frame["_nu_at"] = np.where(at_bearing, "T_bearing", np.where(given, "given", ""))
+    frame["nu"] = nu
+    if pending.any():
+        frame["_nu_pending"] = pending
+        # auto rows with T_bearing fall back to it where T_op has no solution: their refusals become warnings
+        frame["_nu_fallback"] = pending & (modes == "auto") & ~np.isnan(T_bearing)
+    return frame, problems
+
+
+def settle_viscosity(frame: pd.DataFrame, results: pd.DataFrame, *, t_limit: float = OPERATING_TEMPERATURE_LIMIT,
+                     f2_chart=None, labels=None, model: str = DEFAULT_MODEL):
+    """The viscosity at T_op of the rows :func:`fill_viscosity` left pending, from the one friction pass.
+
+    ``results`` are the friction results of ``frame``
+    (:func:`~bearingheat.calc.models.compute_supports`, whose ``f2_chart``,
+    ``labels`` and ``model`` are passed again). Each pending row's T_op is
+    solved from its results, ``nu`` becomes ν(T_op) and the results follow
+    it (:func:`~bearingheat.calc.models.results_at_viscosity`: M0, MR, NR
+    of the catalogue model without a second evaluation). Where f2 is read
+    off the chart at ν·n·dM, M2 depends on ν too: T_op and ν are solved
+    again until T_op moves less than :data:`SETTLED_TEMPERATURE`. Returns
+    (frame, results, problems); a row whose T_op has no solution is an
+    error, or falls back to T_bearing in 'auto' mode.
+    """
+    if "_nu_pending" not in frame.columns:
+        return frame, results, []
+    pending = frame["_nu_pending"].to_numpy(dtype=bool)
+    fallback = frame["_nu_fallback"].to_numpy(dtype=bool)
+    A, B = number_column(frame, "_walther_A"), number_column(frame, "_walther_B")
+    frame = frame.drop(columns=["_nu_pending", "_nu_fallback"])
+    why_unsolved: dict[int, str] = {}
+    T_op = np.full(len(frame), np.nan)
+    balance_T = balance_status = None  # the heat balance's T_op of every row, kept for heat_balance_rows
+    solving = pending
+    for _ in range(SETTLE_PASSES):
+        T_new, unsolved, T_all, status_all = _solve_operating_temperature(frame, results, solving, t_limit)
+        if balance_T is None:
+            balance_T, balance_status = T_all, status_all
         else:
-            T_op[i] = T[i]
-    return T_op
+            balance_T, balance_status = np.where(solving, T_all, balance_T), np.where(solving, status_all, balance_status)
+        why_unsolved = {i: why for i, why in why_unsolved.items() if not solving[i]} | unsolved
+        moved = solving & ~(np.abs(T_new - T_op) <= SETTLED_TEMPERATURE)
+        T_op = np.where(solving, T_new, T_op)
+        nu = number_column(frame, "nu").copy()
+        back = fallback & np.isnan(T_op)
+        with np.errstate(invalid="ignore", over="ignore"):
+            nu[moved] = np.where(back, walther_viscosity(A, B, number_column(frame, "T_bearing")),
+                                 walther_viscosity(A, B, T_op))[moved]
+        frame["nu"] = nu
+        results = results_at_viscosity(frame, results, moved, f2_chart=f2_chart, labels=labels, model=model)
+        # M2 read off the f2 chart at nu*n*dM makes N_R depend on ν beyond the closed form: those rows again
+        solving = moved & ~np.isnan(T_op) & (results["M2"].to_numpy(dtype=float) > 0) & ~failed_rows(results)
+        if not solving.any():
+            break
+    problems = [(i, "error", f"nu [mm^2/s]: cannot be taken at T_op; {why}; give T_bearing")
+                for i, why in sorted(why_unsolved.items()) if not fallback[i]]
+    problems += [(int(i), "warning", f"T_op: did not settle within {SETTLED_TEMPERATURE:g} K in {SETTLE_PASSES} "
+                                     "passes (f2 read off the chart at nu*n*dM depends on the viscosity)")
+                 for i in np.flatnonzero(solving)]
+    source = frame["_nu_at"].to_numpy(dtype=object).copy()
+    source[pending & ~np.isnan(T_op)] = "T_op"
+    source[pending & fallback & np.isnan(T_op)] = "T_bearing"
+    frame["_nu_at"] = source
+    # the friction results the heat balance will solve T_op from are these (f0, M1, M2 as solved with): its T_op
+    # is this one, not solved again
+    frame["_T_op"], frame["_T_op_status"] = balance_T, balance_status
+    return frame, results, problems
+
+
+def _solve_operating_temperature(frame, results, rows, t_limit):
+    """T_op of the selected rows from their friction results (the other rows NaN), {row: why} of the selected
+    rows whose T_op has no solution (a row in error is left to its own message), and the heat balance's T_op
+    and status of every row (:func:`_operating_point`)."""
+    details, k_q, T_amb, Q_E, Q_S, Q_L = _heat_flow_setup(frame)
+    A = number_column(frame, "_walther_A")
+    nu_at = _viscosity_of_rows(frame, A, number_column(frame, "_walther_B"))
+    T, status, _ = _operating_point(frame, results, nu_at, ~np.isnan(A), Q_S, Q_L, Q_E, T_amb, t_limit)
+    reasons = details["reason"].to_numpy(dtype=object)
+    asked = rows & ~(failed_rows(results) | _plain_rows(results))
+    refused = asked & reasons.astype(bool)
+    no_equilibrium = asked & ~refused & (status != 0)
+    unsolved = {int(i): reasons[i] for i in np.flatnonzero(refused)}
+    unsolved.update({int(i): _no_equilibrium_text(status[i], T_amb[i], t_limit) for i in np.flatnonzero(no_equilibrium)})
+    return np.where(asked & ~refused & (status == 0), T, np.nan), unsolved, T, status
 
 
 def _plain_rows(results: pd.DataFrame) -> np.ndarray:
@@ -409,8 +461,11 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
         for i in np.flatnonzero(~failed & (values < 0)):
             problems.append((int(i), "error", f"V_oil [l/min]: {values[i]:g} must be >= 0"))
 
-    # --- operating temperature at the operating speed
-    T_op, status, _ = _operating_point(frame, results, nu_at, ~np.isnan(A), Q_S, Q_L, Q_E, T_amb, t_limit)
+    # --- operating temperature at the operating speed (solved already where the viscosity was taken at it)
+    if "_T_op" in has:
+        T_op, status = number_column(frame, "_T_op"), frame["_T_op_status"].to_numpy()
+    else:
+        T_op, status, _ = _operating_point(frame, results, nu_at, ~np.isnan(A), Q_S, Q_L, Q_E, T_amb, t_limit)
     usable = ~failed & ~np.isnan(T_amb) & ~np.isnan(details["A_r"].to_numpy(dtype=float))
     for i in np.flatnonzero(usable & (status != 0)):
         problems.append((int(i), "warning", f"T_op: {_no_equilibrium_text(status[i], T_amb[i], t_limit)}"))
@@ -585,8 +640,15 @@ def _generic_speed(power: FrictionPower, nu: np.ndarray, Q: np.ndarray) -> np.nd
 
 def prepare(frame: pd.DataFrame):
     """Fill ``nu`` from nu40/nu100 or iso_vg (at the row's ``viscosity_at``: T_op by default where it can be
-    solved, else T_bearing); returns (frame, problems)."""
-    return fill_viscosity(frame, viscosity_at=DEFAULT_VISCOSITY_AT, t_limit=OPERATING_TEMPERATURE_LIMIT)
+    solved, else T_bearing; rows at T_op provisionally, see :func:`settle`); returns (frame, problems)."""
+    return fill_viscosity(frame, viscosity_at=DEFAULT_VISCOSITY_AT)
+
+
+def settle(frame: pd.DataFrame, results: pd.DataFrame, **compute):
+    """After the friction pass: ν at T_op of the rows :func:`prepare` left pending, and the results at it
+    (:func:`settle_viscosity`; ``compute`` are the friction pass's f2_chart, labels and model); returns
+    (frame, results, problems)."""
+    return settle_viscosity(frame, results, t_limit=OPERATING_TEMPERATURE_LIMIT, **compute)
 
 
 def extend(frame: pd.DataFrame, results: pd.DataFrame):

@@ -64,3 +64,78 @@ def test_a_bad_viscosity_at_is_named():
     out = bh.calc(table(viscosity_at="oil"))
     assert out["status"].tolist() == ["error"]
     assert out["message"].iat[0].startswith("viscosity_at: 'oil' is not one of auto, bearing, operating")
+
+
+def _counting(monkeypatch, name):
+    """Count the rows each evaluation of model ``name`` gets (the registry entry wrapped, nothing else changed)."""
+    import dataclasses
+
+    from bearingheat.calc import models
+    sizes = []
+    model = models.MODELS[name]
+
+    def evaluate(supports, labels, f2_chart):
+        sizes.append(supports.size)
+        return model.evaluate(supports, labels, f2_chart)
+
+    monkeypatch.setitem(models.MODELS, name, dataclasses.replace(model, evaluate=evaluate))
+    return sizes
+
+
+def test_the_catalogue_model_runs_once_per_row_when_nu_is_taken_at_T_op(monkeypatch):
+    sizes = _counting(monkeypatch, "schaeffler")
+    rows = pd.concat([table(), table(**{"n [rpm]": 1500}), table(**{"Fr [kN]": 4.0})], ignore_index=True)
+    out = bh.calc(rows)
+    assert sizes == [3]  # one evaluation of the three rows; M0, MR, NR follow nu(T_op) by the kernels
+    assert out["nu_at"].tolist() == ["T_op"] * 3
+    # the same numbers as the model evaluated at that viscosity
+    given = bh.calc(rows.drop(columns=["nu40 [mm^2/s]", "nu100 [mm^2/s]"]).assign(**{"nu [mm^2/s]": out["nu_used [mm^2/s]"]}))
+    for column in ("M0 [N*mm]", "M1 [N*mm]", "MR [N*mm]", "NR [W]", "T_op [degC]"):
+        np.testing.assert_allclose(out[column], given[column], rtol=1e-12)
+    np.testing.assert_allclose(out["nu_used [mm^2/s]"], out["nu_op [mm^2/s]"], rtol=1e-12)
+
+
+def test_the_skf_model_gives_its_own_operating_state():
+    # the viscosity at T_op is that of the SKF model's heat balance (it was the catalogue model's until 2026-11)
+    out = bh.calc(table(**{"oil_level [mm]": 2.5, "VM": 3e-5}), model="skf")
+    assert out["nu_at"].tolist() == ["T_op"]
+    assert out["nu_used [mm^2/s]"].iat[0] == pytest.approx(out["nu_op [mm^2/s]"].iat[0], rel=1e-12)
+    given = bh.calc(table(**{"nu [mm^2/s]": out["nu_used [mm^2/s]"].iat[0], "oil_level [mm]": 2.5, "VM": 3e-5})
+                    .drop(columns=["nu40 [mm^2/s]", "nu100 [mm^2/s]"]), model="skf")
+    assert given["MR [N*mm]"].iat[0] == pytest.approx(out["MR [N*mm]"].iat[0], rel=1e-12)
+    assert given["T_op [degC]"].iat[0] == pytest.approx(out["T_op [degC]"].iat[0], rel=1e-12)
+
+
+def _axially_loaded(**cells):
+    row = {"designation": "NJ206-E-XL", "d [mm]": 30, "D [mm]": 62, "B [mm]": 16, "C0 [kN]": 36,
+           "lubrication": "oil_bath", "n [rpm]": 100, "Fr [kN]": 5.0, "Fa [kN]": 0.05, "nu40 [mm^2/s]": 68,
+           "nu100 [mm^2/s]": 8.6, "T_amb [degC]": 20, "T_bearing [degC]": 70}
+    return pd.DataFrame([{**row, **cells}])
+
+
+def test_f2_read_off_the_chart_settles_with_the_operating_temperature():
+    # M2 = f2*Fa*dM with f2 read at nu*n*dM (the Schaeffler catalogue, p. 70): nu, T_op and M2 are solved together
+    chart = "docs/f2_chart_example.csv"
+    out = bh.calc(_axially_loaded(), f2_chart=chart)
+    assert out["status"].tolist() == ["ok"] and out["nu_at"].tolist() == ["T_op"]
+    assert out["M2 [N*mm]"].iat[0] > 0
+    assert out["nu_used [mm^2/s]"].iat[0] == pytest.approx(out["nu_op [mm^2/s]"].iat[0], rel=1e-10)
+    given = bh.calc(_axially_loaded(**{"nu [mm^2/s]": out["nu_used [mm^2/s]"].iat[0]})
+                    .drop(columns=["nu40 [mm^2/s]", "nu100 [mm^2/s]"]), f2_chart=chart)
+    for column in ("M2 [N*mm]", "MR [N*mm]", "T_op [degC]"):
+        assert given[column].iat[0] == pytest.approx(out[column].iat[0], rel=1e-9), column
+
+
+def test_a_row_computed_again_names_its_own_cell():
+    rows = pd.concat([table(), table(**{"n [rpm]": 60000, "T_bearing [degC]": np.nan})], ignore_index=True)
+
+    def cell(name, row):
+        return f"Supports!{name}{row + 7}"
+
+    out = bh.calc(rows, viscosity_at="operating", cell=cell)
+    assert out["status"].tolist() == ["ok", "error"]
+    assert out["message"].iat[1] == (
+        "Supports!nu8 nu [mm^2/s]: missing; the operating viscosity (base oil viscosity for grease) is needed; "
+        "nu [mm^2/s]: cannot be taken at T_op; no equilibrium below 150 degC: the friction heat exceeds the heat "
+        "carried away (the temperature runs away); give T_bearing; Supports!n8 n [rpm]: 60000 is above the "
+        "limiting speed n_G = 17000 1/min of 6205 (Schaeffler HR 1, 2006); check the speed and its unit")

@@ -18,7 +18,7 @@ import pandas as pd
 
 from bearingheat.calc.models import compute_supports
 from bearingheat.calc.table import require_columns, to_catalogue_units
-from bearingheat.calc.thermal import fill_viscosity, heat_balance_rows, heat_flow_curves
+from bearingheat.calc.thermal import fill_viscosity, heat_balance_rows, heat_flow_curves, settle_viscosity
 from bearingheat.errors import InputError
 from bearingheat.io.reports import FIGURE_DPI, matplotlib_figure
 
@@ -47,10 +47,12 @@ def heat_balance_curves(table: pd.DataFrame, points: int = 200) -> dict:
     A table that cannot be used at all raises
     :class:`~bearingheat.errors.InputError`.
     """
-    converted = to_catalogue_units(table.reset_index(drop=True))
+    converted = to_catalogue_units(table.iloc[:1].reset_index(drop=True))
     frame, problems = fill_viscosity(converted.frame)
     require_columns(frame)
-    results = compute_supports(frame, labels=converted.labels)
+    frame, results, settled = settle_viscosity(frame, compute_supports(frame, labels=converted.labels),
+                                               labels=converted.labels)
+    problems += settled
     columns, more = heat_balance_rows(frame, results)
     messages = [m for m in [results["message"].iloc[0]] if m] + [m for _, _, m in problems + more]
     status = results["status"].iloc[0]

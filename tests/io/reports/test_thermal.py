@@ -29,3 +29,13 @@ def test_the_heat_balance_figure_is_written(tmp_path):
     target = tmp_path / "thermal_heat_balance.png"
     draw_heat_balance(heat_balance_curves(table), target)
     assert target.stat().st_size < 100_000
+
+
+def test_the_curves_are_those_of_the_first_row_of_a_longer_table():
+    # oil data on several rows: the curves are the first row's alone (ν(T) of every row broke the figure once)
+    table = supports(**{"nu40 [mm^2/s]": [68, 68], "nu100 [mm^2/s]": [8.6, 8.6], "T_amb [degC]": [20, 20],
+                        "T_bearing [degC]": [70, 70]})
+    both, first = heat_balance_curves(table), heat_balance_curves(table.iloc[[0]])
+    assert both["status"] == "ok"
+    np.testing.assert_array_equal(both["friction_vs_temperature"], first["friction_vs_temperature"])
+    assert both["T_op"] == first["T_op"] == pytest.approx(calc(table)["T_op [degC]"].iat[0], rel=1e-12)
