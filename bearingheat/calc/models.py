@@ -33,7 +33,7 @@ from bearingheat.calc.skf import RESULTS as SKF_RESULTS
 from bearingheat.calc.skf import evaluate_skf_model
 from bearingheat.calc.messages import Labels, Problem
 from bearingheat.calc.supports import KEY_INPUTS, NUMBER_INPUTS, SupportArrays, build_support_arrays, \
-    coded_categorical, column_codes, number_column, object_column, text_codes
+    coded_categorical, column_codes, nonblank, number_column, object_column, text_codes
 from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.errors import ModelError
 from bearingheat.kernels.friction import mean_diameter
@@ -253,14 +253,13 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
     catalogue_rows = np.array([name not in MODELS or MODELS[name].catalogue_keys for name in model_names],
                               dtype=bool)[model_codes]
     model_ok = np.array([name in MODELS for name in model_names], dtype=bool)[model_codes]
-    own = np.broadcast_to(np.asarray(supports.error, dtype=object), (n_rows,))
     # rows with messages only: error and warning lists keyed by row position
     row_errors: defaultdict[int, list[str]] = defaultdict(list)
     for i in np.flatnonzero(~model_ok & ~plain).tolist():
         row_errors[i].append(_model_error(model_names[model_codes[i]]))
     own_error = model_ok & catalogue_rows & ~plain
-    for i in np.flatnonzero(own_error & (own != "") & (own != None)).tolist():  # noqa: E711 (element-wise)
-        row_errors[i].append(own[i])
+    for i in np.flatnonzero(own_error & nonblank(supports.error, n_rows)).tolist():
+        row_errors[i].append(supports.error if np.ndim(supports.error) == 0 else supports.error[i])
     # a row whose bearing did not resolve has its error already; rows of a model with its own tables report theirs
     resolved = (np.broadcast_to(supports.resolved, (n_rows,)) | ~catalogue_rows) & model_ok
 
@@ -276,30 +275,36 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
             else:
                 warnings_by_row[i].append(problem.message(i))
     notes_of = np.broadcast_to(supports.notes, (n_rows,))
-    for i in np.flatnonzero(notes_of.astype(bool) & ~plain).tolist():  # a designation's notes, after the warnings
-        warnings_by_row[i].append("; ".join(notes_of[i]))
+    for i in np.flatnonzero(np.broadcast_to(supports.noted, (n_rows,)) & ~plain).tolist():  # after the warnings
+        warnings_by_row[i].append("; ".join(notes_of[i]))  # a designation's notes
     status = object_column(n_rows, "ok")
     message = object_column(n_rows, "")
+    failed = np.zeros(n_rows, dtype=bool)
     for i, texts in warnings_by_row.items():
         if texts:
             status[i], message[i] = "warning", "; ".join(texts)
     for i, texts in row_errors.items():  # an error replaces the row's warnings
         if texts:
-            status[i], message[i] = "error", "; ".join(texts)
-    failed = status == "error"
+            status[i], message[i], failed[i] = "error", "; ".join(texts), True
     reported = list(RESULT_UNITS)
     if "nu_n_dM" in results and np.any(~np.isnan(results["nu_n_dM"]) & ~failed):
         reported += list(M2_REPORT_UNITS)
     if plain.any():
         reported += list(PLAIN_REPORT_UNITS)
     reported += [col for col in MODEL_REPORT_UNITS if col in results]  # other models' results, where a row uses one
-    columns: dict[str, Any] = {col: np.where(failed, np.nan, results[col]) for col in reported}
-    # text columns stay object arrays: an internal frame, no Arrow strings to build
-    text_columns = {"status": status, "message": message,
-                    "bearing_type": np.where(plain, "plain_bushing", np.broadcast_to(supports.bearing_type, (n_rows,))),
-                    "series": np.broadcast_to(supports.series, (n_rows,))}
-    columns.update({name: pd.Series(np.asarray(values, dtype=object), index=frame.index, dtype=object)
-                    for name, values in text_columns.items()})
+    any_failed = failed.any()  # (the arrays of evaluate_models are its own: no copy where no row failed)
+    columns: dict[str, Any] = {col: np.where(failed, np.nan, results[col]) if any_failed else results[col]
+                               for col in reported}
+    # status and message stay object arrays (the messages of later steps are written into them); the bearing
+    # type and series stay categoricals where the support arrays hold them so
+    columns.update({name: pd.Series(values, index=frame.index, dtype=object, copy=False)
+                    for name, values in (("status", status), ("message", message))})
+    for name, values in (("bearing_type", supports.bearing_type), ("series", supports.series)):
+        if name == "bearing_type" and plain.any():
+            values = np.where(plain, "plain_bushing", np.broadcast_to(np.asarray(values, dtype=object), (n_rows,)))
+        columns[name] = pd.Series(values if isinstance(values, pd.Categorical) else
+                                  np.asarray(np.broadcast_to(np.asarray(values, dtype=object), (n_rows,)), dtype=object),
+                                  index=frame.index, copy=False)
     columns["model"] = pd.Series(coded_categorical(model_codes, model_names), index=frame.index)
     return pd.DataFrame(columns, index=frame.index, copy=False)  # calc's own arrays: no copy into one block
 
@@ -323,7 +328,7 @@ def results_at_viscosity(frame: pd.DataFrame, results: pd.DataFrame, changed: np
     with_m2 = (~np.isnan(results["nu_n_dM"].to_numpy(dtype=float)) if "nu_n_dM" in results.columns
                else np.zeros(len(results), dtype=bool))
     again = changed & (failed_rows(results) | np.isnan(number_column(frame, "nu")) | with_m2
-                       | (results["bearing_type"].to_numpy(dtype=object) == "plain_bushing")
+                       | (results["bearing_type"] == "plain_bushing").to_numpy(dtype=bool)
                        | np.array([u is None for u in updates], dtype=bool)[codes])
     for code in np.unique(codes[changed & ~again]).tolist():
         rows = np.flatnonzero(changed & ~again & (codes == code))

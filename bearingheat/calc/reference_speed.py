@@ -14,7 +14,7 @@ from typing import Callable
 import numpy as np
 import pandas as pd
 
-from bearingheat.calc.supports import group_codes, number_column, text_column
+from bearingheat.calc.supports import coded_categorical, first_rows, group_codes, number_column, text_column
 from bearingheat.catalogue.friction import ResolvedBearing, resolve
 from bearingheat.catalogue.thermal import THERMAL_KIND, THERMAL_KINDS, method_refusal, reference_conditions
 from bearingheat.errors import DesignationError
@@ -55,13 +55,14 @@ def thermal_reference_speed_details(frame: pd.DataFrame, *, f0_scale=1.0, f1_sca
     if not keys or len(frame) < 2:
         return _details(frame)
     codes = group_codes(frame, keys)
-    _, first = np.unique(codes, return_index=True)
+    first = first_rows(codes)
     if len(first) == len(frame):
         return _details(frame)
     distinct = _details(frame.iloc[first])
-    out = distinct.iloc[codes]  # codes number the groups in order of first appearance, as first is sorted
-    out.index = frame.index
-    return out
+    # spread to the rows: numbers by their codes, texts as categoricals of the distinct rows' texts
+    return pd.DataFrame({name: coded_categorical(codes, column.tolist()) if column.dtype.kind in "OUT"
+                         or isinstance(column.dtype, pd.StringDtype) else column.to_numpy()[codes]
+                         for name, column in distinct.items()}, index=frame.index, copy=False)
 
 
 def _details(frame: pd.DataFrame, f0_scale=1.0, f1_scale=1.0) -> pd.DataFrame:
@@ -197,5 +198,5 @@ def thermal_reference_speed_rows(frame: pd.DataFrame) -> pd.Series:
     """
     details = thermal_reference_speed_details(frame)
     out = details["n_thr"].astype(float).rename("n_thr")
-    out.attrs["reason"] = details["reason"].rename("reason")
+    out.attrs["reason"] = details["reason"].astype(object).rename("reason")
     return out

@@ -102,6 +102,8 @@ class SupportArrays:
     plain: np.ndarray
     #: per row the notes of its designation (a tuple of texts; one entry where one bearing spans the rows)
     notes: np.ndarray = field(default_factory=lambda: np.empty(0, dtype=object))
+    #: whether ``notes`` has a note, in the same shape (a bool per row, without looking at the tuples)
+    noted: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=bool))
     #: model-specific inputs by contract name (per-row arrays or one value), e.g. the SKF model's oil level
     extra: dict = field(default_factory=dict)
 
@@ -113,8 +115,8 @@ class SupportArrays:
             value = getattr(self, f.name)
             if f.name == "size":
                 changes["size"] = len(rows)
-            elif f.name == "notes":
-                changes["notes"] = value[rows] if len(value) == self.size else value
+            elif f.name in ("notes", "noted"):
+                changes[f.name] = value[rows] if len(value) == self.size else value
             elif f.name == "extra":
                 changes["extra"] = {k: (v[rows] if np.ndim(v) == 1 and len(v) == self.size else v)
                                     for k, v in value.items()}
@@ -317,12 +319,60 @@ def _combined_codes(parts: list[tuple[np.ndarray, int]], size: int) -> np.ndarra
 
 def group_codes(frame: pd.DataFrame, names: list[str]) -> np.ndarray:
     """One code per row for its values in the columns ``names`` (missing values are one value), numbered in
-    order of first appearance: ``groupby(names).ngroup()`` without pandas' groupby machinery."""
+    order of first appearance: ``groupby(names).ngroup()`` without pandas' groupby machinery. The float
+    columns among them are factorized together (:func:`_float_codes`)."""
     parts = []
+    floats = [frame[name].to_numpy() for name in names if frame[name].dtype == np.float64]
+    if len(floats) > 1:
+        codes = _float_codes(floats)
+        parts.append((codes, int(codes.max()) + 1 if len(codes) else 1))
     for name in names:
+        if len(floats) > 1 and frame[name].dtype == np.float64:
+            continue
         codes, uniques = column_codes(frame[name])
         parts.append((np.where(codes < 0, len(uniques), codes), len(uniques) + 1))
     return _combined_codes(parts, len(frame))
+
+
+#: odd 64-bit multiplier of the hash that mixes float columns (2^64 / golden ratio)
+_MIX = np.uint64(0x9E3779B97F4A7C15)
+
+
+def _float_codes(columns: list[np.ndarray]) -> np.ndarray:
+    """One code per row for its values in the float ``columns``, in order of first appearance: the bit patterns
+    mixed into one 64-bit hash, factorized once (one pass instead of one per column). Rows of one code are
+    checked to hold the same bits in every column; on a hash collision each column is factorized on its own.
+    Equal values of other bits (0.0 and -0.0, NaNs of other payloads) get codes of their own: more groups,
+    never fewer."""
+    bits = [np.ascontiguousarray(c).view(np.uint64) for c in columns]
+    mixed = np.zeros(len(bits[0]), dtype=np.uint64)
+    for column in bits:
+        mixed = (mixed ^ column) * _MIX  # wraps modulo 2^64; a product carries bits upwards only ...
+        mixed ^= mixed >> np.uint64(31)  # ... so the high ones (a float's exponent) are folded down
+    codes = pd.factorize(mixed, sort=False)[0].astype(np.int64)
+    first = first_rows(codes)
+    if all(np.array_equal(column, column[first][codes]) for column in bits):
+        return codes
+    parts = [(c, int(c.max()) + 1 if len(c) else 1) for c in (pd.factorize(column, sort=False)[0] for column in bits)]
+    return _combined_codes(parts, len(bits[0]))
+
+
+def nonblank(values: Any, size: int) -> np.ndarray:
+    """Where a per-row text (a categorical by its codes, an object array, or one value for all rows) is neither
+    missing nor empty, as a bool array of ``size``."""
+    if isinstance(values, pd.Categorical):
+        filled = np.array([bool(c) for c in values.categories] + [False], dtype=bool)  # code -1: missing
+        return filled[values.codes]
+    cells = np.broadcast_to(np.asarray(values, dtype=object), (size,))
+    return (cells != "") & (cells != None)  # noqa: E711 (element-wise)
+
+
+def first_rows(codes: np.ndarray) -> np.ndarray:
+    """The position of the first row of each code, for codes numbered 0, 1, ... in order of first appearance
+    (:func:`group_codes`): one pass, no sort."""
+    first = np.empty(int(codes.max()) + 1 if len(codes) else 0, dtype=np.intp)
+    first[codes[::-1]] = np.arange(len(codes))[::-1]
+    return first
 
 
 def distinct_keys(parts: list[tuple[np.ndarray, list]]) -> tuple[np.ndarray, list[tuple]]:
@@ -334,9 +384,8 @@ def distinct_keys(parts: list[tuple[np.ndarray, list]]) -> tuple[np.ndarray, lis
     """
     size = len(parts[0][0])
     combined = _combined_codes([(column_codes, len(values)) for column_codes, values in parts], size)
-    first_row = np.empty(int(combined.max()) + 1 if size else 0, dtype=np.intp)
-    first_row[combined[::-1]] = np.arange(size)[::-1]
-    uniques = [tuple(values[column_codes[row]] for column_codes, values in parts) for row in first_row.tolist()]
+    uniques = [tuple(values[column_codes[row]] for column_codes, values in parts)
+               for row in first_rows(combined).tolist()]
     return combined, uniques
 
 
@@ -371,6 +420,7 @@ def build_support_arrays(keys: pd.DataFrame, numbers: dict[str, Any]) -> Support
     notes_of_key = np.empty(len(per_key), dtype=object)
     for k, constants_of_key in enumerate(per_key):  # one by one: numpy would read a list of tuples as 2-D
         notes_of_key[k] = tuple(constants_of_key["notes"])
+    noted_key = np.array([bool(n) for n in notes_of_key], dtype=bool)
 
     if len(uniques) == 1 and len(keys) == 1:
         def spread(name, dtype):
@@ -379,7 +429,7 @@ def build_support_arrays(keys: pd.DataFrame, numbers: dict[str, Any]) -> Support
         def spread_text(name):
             return spread(name, object)
         plain = np.broadcast_to(plain_keys[0], (size,))
-        notes = notes_of_key
+        notes, noted = notes_of_key, noted_key
     else:
         def spread(name, dtype):
             return np.array([c[name] for c in per_key], dtype=dtype)[codes]
@@ -389,7 +439,7 @@ def build_support_arrays(keys: pd.DataFrame, numbers: dict[str, Any]) -> Support
             # 10^6 rows) and takes rows of it without touching a Python object
             return coded_categorical(codes, [c[name] for c in per_key])
         plain = plain_keys[codes]
-        notes = notes_of_key[codes]
+        notes, noted = notes_of_key[codes], noted_key[codes]
     constants = {name: spread_text(name) for name in _TEXT}
     constants.update({name: spread(name, float) for name in _FLOAT})
     constants.update({name: spread(name, bool) for name in _BOOL})
@@ -399,4 +449,5 @@ def build_support_arrays(keys: pd.DataFrame, numbers: dict[str, Any]) -> Support
     num["B"] = _fill_blank(num["B"], spread("width", float))
     if np.ndim(num["n"]) == 0:
         num["n"] = np.full(size, num["n"])  # the speed spans the rows
-    return SupportArrays(size=size, **num, **constants, plain=np.asarray(plain, dtype=bool), notes=notes)
+    return SupportArrays(size=size, **num, **constants, plain=np.asarray(plain, dtype=bool), notes=notes,
+                         noted=noted)

@@ -37,7 +37,6 @@ is kept as it is.
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import Callable
 
@@ -52,7 +51,7 @@ from bearingheat.calc.viscosity import viscosity_model_rows
 from bearingheat.catalogue.thermal import THERMAL_KINDS
 from bearingheat.errors import HeatBalanceError
 from bearingheat.kernels import friction
-from bearingheat.kernels.thermal import (APPROXIMATION_RANGE, OIL_HEAT_CAPACITY_FLOW, balance_speed,
+from bearingheat.kernels.thermal import (APPROXIMATION_RANGE, OIL_HEAT_CAPACITY_FLOW,
                                          default_heat_transfer_coefficient, oil_heat_flow,
                                          permissible_speed_factor, seat_heat_flow,
                                          speed_factor_catalogue_approximation, speed_factor_coefficients)
@@ -73,7 +72,6 @@ __all__ = [
     "fill_viscosity",
     "settle_viscosity",
     "heat_balance_rows",
-    "heat_flow_curves",
     "prepare",
     "extend",
 ]
@@ -133,14 +131,15 @@ def _walther_columns(frame: pd.DataFrame):
     return viscosity_model_rows(frame)
 
 
-def _heat_flow_setup(frame: pd.DataFrame):
-    """A_r, k_q, reference-speed details and the heat flows as functions of the bearing temperature."""
-    details = thermal_reference_speed_details(frame)
-    kinds = details["kind"].to_numpy(dtype=object)
+def _heat_flow_setup(frame: pd.DataFrame, details: pd.DataFrame | None = None):
+    """A_r, k_q, reference-speed details and the heat flows as functions of the bearing temperature
+    (``details``: those of :func:`thermal_reference_speed_details` where the caller has them)."""
+    if details is None:
+        details = thermal_reference_speed_details(frame)
     A_r = details["A_r"].to_numpy(dtype=float)
     k_q_default = np.full(len(frame), np.nan)
     for k in THERMAL_KINDS:
-        rows = kinds == k
+        rows = (details["kind"] == k).to_numpy(dtype=bool)
         if rows.any():
             k_q_default[rows] = default_heat_transfer_coefficient(k, A_r[rows])
     k_q_user = number_column(frame, "k_q")
@@ -384,7 +383,7 @@ def _solve_operating_temperature(frame, results, rows, t_limit):
 def _plain_rows(results: pd.DataFrame) -> np.ndarray:
     if "bearing_type" not in results.columns:
         return np.zeros(len(results), dtype=bool)
-    return (results["bearing_type"].to_numpy(dtype=object) == "plain_bushing")
+    return (results["bearing_type"] == "plain_bushing").to_numpy(dtype=bool)
 
 
 def _no_equilibrium_text(status, T_amb, t_limit):
@@ -421,7 +420,7 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
     wants_balance = "T_amb" in has
     if not (wants_thr or wants_balance):
         return pd.DataFrame(index=frame.index), problems
-    details, k_q, T_amb, Q_E, Q_S, Q_L = _heat_flow_setup(frame)
+    details = thermal_reference_speed_details(frame)
     reasons = details["reason"].to_numpy(dtype=object)
     n_thr = details["n_thr"].to_numpy(dtype=float)
     n_thr_catalogue = number_column(frame, "n_thr_catalogue")
@@ -439,13 +438,14 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
 
     if wants_thr:
         columns["n_thr"] = n_thr
-        for i in np.flatnonzero(~failed & np.isnan(n_thr)):
+        for i in np.flatnonzero(~failed & np.isnan(n_thr)) if explicit else ():
             reason_once(i)
         for i in np.flatnonzero(~failed & (n_thr_catalogue <= 0)):
             problems.append((int(i), "error", f"n_thr_catalogue [1/min]: {n_thr_catalogue[i]:g} must be > 0"))
     if not wants_balance:
         return pd.DataFrame(columns, index=frame.index), problems
 
+    _, k_q, T_amb, Q_E, Q_S, Q_L = _heat_flow_setup(frame, details)
     A, B, model_problems = _walther_columns(frame)
     if "_walther_A" not in has:
         problems.extend(model_problems)
@@ -661,55 +661,3 @@ def extend(frame: pd.DataFrame, results: pd.DataFrame):
         columns.insert(0, "nu_at", np.where(frame["_nu_at"].to_numpy() == "", "-", frame["_nu_at"].to_numpy()))
         columns.insert(0, "nu_used", number_column(frame, "nu"))
     return columns, problems
-
-
-# ---- curves of one row (the figure of ``bearingheat plot``) ----------------------------------------
-
-def heat_flow_curves(frame: pd.DataFrame, results: pd.DataFrame, columns: pd.DataFrame, *,
-                     points: int = 200) -> dict | None:
-    """Friction heat and heat carried away of the first row against speed and temperature (catalogue units).
-
-    ``frame`` holds the calc inputs after :func:`fill_viscosity` (with
-    ``T_amb``), ``results`` the friction results of
-    :func:`bearingheat.calc.models.compute_supports` and ``columns`` those of
-    :func:`heat_balance_rows`. Returns None where the row has no heat flow
-    area A_r or no ambient temperature, otherwise a dict: ``n``, ``n_per``,
-    ``T_op``, ``T_amb``; ``theta`` (T_bearing, else T_op) and ``n_cross``,
-    the speed at which the friction heat equals Q_S + Q_L − Q_E at theta;
-    ``speeds`` [1/min] with ``friction_vs_speed`` and ``carried_vs_speed``
-    [W] at theta; ``temperatures`` [°C] with ``friction_vs_temperature``
-    (N_R(ν(T)) + Q_E) and ``carried_vs_temperature`` (Q_S + Q_L) [W] at the
-    speed n; ``heat_at_T_op`` [W].
-    """
-    details, k_q, T_amb, Q_E, Q_S, Q_L = _heat_flow_setup(frame)
-    if np.isnan(details["A_r"].iloc[0]) or np.isnan(T_amb[0]):
-        return None
-    A, B, _ = _walther_columns(frame)
-    nu_at = _viscosity_of_rows(frame, A, B)
-    power = FrictionPower(frame, results)
-    n = float(frame["n"].iloc[0])
-    T_op = float(columns["T_op"].iloc[0])
-    n_per = float(columns["n_per"].iloc[0]) if "n_per" in columns.columns else math.nan
-    T_bearing = float(frame["T_bearing"].iloc[0]) if "T_bearing" in frame.columns else math.nan
-    theta = T_bearing if not np.isnan(T_bearing) else T_op
-    nu_theta = float(nu_at(np.array([theta]))[0]) if not np.isnan(theta) else math.nan
-    carried_theta = float(Q_S(np.array([theta]))[0] + Q_L(np.array([theta]))[0] - Q_E[0])
-    n_cross = math.nan
-    if carried_theta > 0 and power.is_closed(0):
-        n_cross = float(balance_speed(power.f0[0], nu_theta, power.dM[0], power.load_torque[0], carried_theta))
-    elif carried_theta > 0:
-        n_cross = float(_generic_speed(power, np.full(power.size, nu_theta), np.full(power.size, carried_theta))[0])
-    n_top = 1.5 * np.nanmax([n, n_cross, n_per, 1.0])
-    speeds = np.linspace(0.0, n_top, points)
-    temperatures = np.linspace(T_amb[0], OPERATING_TEMPERATURE_LIMIT, points)
-    ones = np.ones(points)
-    return dict(
-        n=n, n_per=n_per, n_cross=n_cross, theta=theta, T_op=T_op, T_amb=float(T_amb[0]),
-        speeds=speeds,
-        friction_vs_speed=power.at_row(0, speeds, nu_theta),
-        carried_vs_speed=carried_theta * ones,
-        temperatures=temperatures,
-        friction_vs_temperature=power.at_row(0, n * ones, nu_at(temperatures)) + Q_E[0],
-        carried_vs_temperature=Q_S(temperatures) + Q_L(temperatures),
-        heat_at_T_op=float(Q_S(np.array([T_op]))[0] + Q_L(np.array([T_op]))[0]) if not np.isnan(T_op) else np.nan,
-    )

@@ -7,7 +7,7 @@ permissible speed n_per) and against temperature at the operating speed
 runs the calc rows of one support of a table (``name [unit]`` headers);
 :func:`draw_heat_balance` writes the PNG with matplotlib's Figure API (no
 pyplot, no global backend). The curves themselves are
-:func:`bearingheat.calc.thermal.heat_flow_curves`.
+:func:`bearingheat.calc.heat_flow_curves.heat_flow_curves`.
 """
 from __future__ import annotations
 
@@ -18,7 +18,8 @@ import pandas as pd
 
 from bearingheat.calc.models import compute_supports
 from bearingheat.calc.table import require_columns, to_catalogue_units
-from bearingheat.calc.thermal import fill_viscosity, heat_balance_rows, heat_flow_curves, settle_viscosity
+from bearingheat.calc.heat_flow_curves import heat_flow_curves
+from bearingheat.calc.thermal import fill_viscosity, heat_balance_rows, settle_viscosity
 from bearingheat.errors import InputError
 from bearingheat.io.reports import FIGURE_DPI, matplotlib_figure
 
@@ -43,7 +44,7 @@ def heat_balance_curves(table: pd.DataFrame, points: int = 200) -> dict:
 
     Returns a dict with ``status`` ('ok' | 'warning' | 'error'), ``message``
     and ``label`` (the row's id or designation), and where the row can be
-    drawn the curves of :func:`bearingheat.calc.thermal.heat_flow_curves`.
+    drawn the curves of :func:`bearingheat.calc.heat_flow_curves.heat_flow_curves`.
     A table that cannot be used at all raises
     :class:`~bearingheat.errors.InputError`.
     """

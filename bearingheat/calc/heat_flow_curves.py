@@ -1,0 +1,69 @@
+"""The curves of one row's heat balance, the figure of ``bearingheat plot`` (catalogue units).
+
+The friction heat and the heat carried away against speed (they cross at
+n_per) and against temperature (they cross at T_op), from the heat balance
+of :mod:`bearingheat.calc.thermal`.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pandas as pd
+
+from bearingheat.calc.models import FrictionPower
+from bearingheat.calc.thermal import (OPERATING_TEMPERATURE_LIMIT, _generic_speed, _heat_flow_setup,
+                                      _viscosity_of_rows, _walther_columns)
+from bearingheat.kernels.thermal import balance_speed
+
+__all__ = ["heat_flow_curves"]
+
+
+def heat_flow_curves(frame: pd.DataFrame, results: pd.DataFrame, columns: pd.DataFrame, *,
+                     points: int = 200) -> dict | None:
+    """Friction heat and heat carried away of the first row against speed and temperature (catalogue units).
+
+    ``frame`` holds the calc inputs after :func:`fill_viscosity` (with
+    ``T_amb``), ``results`` the friction results of
+    :func:`bearingheat.calc.models.compute_supports` and ``columns`` those of
+    :func:`heat_balance_rows`. Returns None where the row has no heat flow
+    area A_r or no ambient temperature, otherwise a dict: ``n``, ``n_per``,
+    ``T_op``, ``T_amb``; ``theta`` (T_bearing, else T_op) and ``n_cross``,
+    the speed at which the friction heat equals Q_S + Q_L − Q_E at theta;
+    ``speeds`` [1/min] with ``friction_vs_speed`` and ``carried_vs_speed``
+    [W] at theta; ``temperatures`` [°C] with ``friction_vs_temperature``
+    (N_R(ν(T)) + Q_E) and ``carried_vs_temperature`` (Q_S + Q_L) [W] at the
+    speed n; ``heat_at_T_op`` [W].
+    """
+    details, k_q, T_amb, Q_E, Q_S, Q_L = _heat_flow_setup(frame)
+    if np.isnan(details["A_r"].iloc[0]) or np.isnan(T_amb[0]):
+        return None
+    A, B, _ = _walther_columns(frame)
+    nu_at = _viscosity_of_rows(frame, A, B)
+    power = FrictionPower(frame, results)
+    n = float(frame["n"].iloc[0])
+    T_op = float(columns["T_op"].iloc[0])
+    n_per = float(columns["n_per"].iloc[0]) if "n_per" in columns.columns else math.nan
+    T_bearing = float(frame["T_bearing"].iloc[0]) if "T_bearing" in frame.columns else math.nan
+    theta = T_bearing if not np.isnan(T_bearing) else T_op
+    nu_theta = float(nu_at(np.array([theta]))[0]) if not np.isnan(theta) else math.nan
+    carried_theta = float(Q_S(np.array([theta]))[0] + Q_L(np.array([theta]))[0] - Q_E[0])
+    n_cross = math.nan
+    if carried_theta > 0 and power.is_closed(0):
+        n_cross = float(balance_speed(power.f0[0], nu_theta, power.dM[0], power.load_torque[0], carried_theta))
+    elif carried_theta > 0:
+        n_cross = float(_generic_speed(power, np.full(power.size, nu_theta), np.full(power.size, carried_theta))[0])
+    n_top = 1.5 * np.nanmax([n, n_cross, n_per, 1.0])
+    speeds = np.linspace(0.0, n_top, points)
+    temperatures = np.linspace(T_amb[0], OPERATING_TEMPERATURE_LIMIT, points)
+    ones = np.ones(points)
+    return dict(
+        n=n, n_per=n_per, n_cross=n_cross, theta=theta, T_op=T_op, T_amb=float(T_amb[0]),
+        speeds=speeds,
+        friction_vs_speed=power.at_row(0, speeds, nu_theta),
+        carried_vs_speed=carried_theta * ones,
+        temperatures=temperatures,
+        friction_vs_temperature=power.at_row(0, n * ones, nu_at(temperatures)) + Q_E[0],
+        carried_vs_temperature=Q_S(temperatures) + Q_L(temperatures),
+        heat_at_T_op=float(Q_S(np.array([T_op]))[0] + Q_L(np.array([T_op]))[0]) if not np.isnan(T_op) else np.nan,
+    )
