@@ -430,6 +430,11 @@ def range_problems(name: str, values: np.ndarray, describe: Callable[[int], str]
     """
     entry = column(name)
     values = np.asarray(values, dtype=float)
+    inner = entry.plausible or entry.valid  # the narrower range (plausible lies inside valid)
+    if inner is not None and len(values):
+        low, high = np.fmin.reduce(values), np.fmax.reduce(values)  # NaN (not given) left out; NaN if all are
+        if np.isfinite(low) and np.isfinite(high) and inner[0] <= low and high <= inner[1]:  # all finite, inside
+            return [], []
     unit = {"1": "", "delta_degC": "K"}.get(entry.unit, entry.unit)
     errors = [(int(i), f"{describe(int(i))} is not a finite number") for i in np.flatnonzero(np.isinf(values))]
     warnings: list[tuple[int, str]] = []

@@ -19,7 +19,7 @@ import numpy as np
 import pandas as pd
 
 from bearingheat.calc.messages import Labels
-from bearingheat.calc.supports import number_column, text_codes
+from bearingheat.calc.supports import first_rows, group_codes, number_column, text_codes
 from bearingheat.catalogue.bearings import CATALOGUE, bearing, disagreeing, half_steps
 from bearingheat.errors import DesignationError
 
@@ -66,23 +66,32 @@ def fill_from_catalogue(frame: pd.DataFrame, labels: Labels
         return frame, [], {}
     codes, designations = text_codes(frame, "designation")  # each distinct designation looked up once
     per_key, lookup_errors = _catalogue_entries(designations)
+    # rows alike in designation and in every given value of FILLED have one fill and one verdict: each such group
+    # is worked out on its first row and spread to its rows by the group codes
+    given_names = [name for name in FILLED if name in frame.columns]
+    groups = group_codes(frame, ["designation", *given_names])
+    first = first_rows(groups)
+    key = codes[first]
     problems: list[tuple[int, str, str]] = []
     filled: dict[str, np.ndarray] = {}
     from_table: dict[str, np.ndarray] = {}
     for name in FILLED:
         if name not in frame.columns and np.isnan(per_key[name]).all():
             continue
-        catalogue = per_key[name][codes]
         given = number_column(frame, name)
-        blank = np.isnan(given)
-        filled[name] = np.where(blank, catalogue, given)
-        from_table[name] = blank & ~np.isnan(catalogue)
-        steps = half_steps(name, per_key[name])[codes]
-        for i in np.flatnonzero(~blank & disagreeing(name, given, catalogue, steps)):
+        catalogue = per_key[name][key]
+        blank = np.isnan(given[first])
+        taken = blank & ~np.isnan(catalogue)
+        from_table[name] = taken[groups]
+        if taken.any():
+            filled[name] = np.where(np.isnan(given), per_key[name][codes], given)
+        steps = half_steps(name, per_key[name])[key]
+        differing = ~blank & disagreeing(name, given[first], catalogue, steps)
+        for i in np.flatnonzero(differing[groups]) if differing.any() else ():
             problems.append((int(i), "warning",
                              f"{labels.name(name, int(i))}: {labels.value(name, given[i])} differs from "
-                             f"{catalogue[i]:g} {_unit(name)}of {designations[codes[i]]} in the bearing table "
-                             f"({CATALOGUE}); the value given is used"))
+                             f"{per_key[name][codes[i]]:g} {_unit(name)}of {designations[codes[i]]} in the bearing "
+                             f"table ({CATALOGUE}); the value given is used"))
     D = filled.get("D", number_column(frame, "D"))
     unknown = np.array([message is not None for message in lookup_errors], dtype=bool)[codes]
     for i in np.flatnonzero(np.isnan(D) & unknown):

@@ -12,7 +12,7 @@ import numpy as np
 import pandas as pd
 
 from bearingheat.calc.messages import Labels, Problem, at
-from bearingheat.calc.supports import SupportArrays
+from bearingheat.calc.supports import SupportArrays, text_in
 from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.catalogue.contact import y0_for_contact_angle
 from bearingheat.kernels import friction
@@ -134,8 +134,7 @@ def evaluate_catalogue_model(s: SupportArrays, labels: Labels, f2_chart: F2Chart
     rules = s.p1_rule
     is_p1 = np.equal(s.m1_load, "P1") & np.not_equal(rules, "")
     for col, rule_names in (("Y", ("tapered_single", "tapered_paired")), ("e", ("spherical",))):
-        wanted = pd.Series(np.ravel(rules), dtype=object).isin(rule_names).to_numpy().reshape(np.shape(rules)) \
-            & (Fa > 0)
+        wanted = text_in(rules, rule_names) & (Fa > 0)
         missing(col, lambda i, c=col: f"P1 of {label(i)} under axial load needs the catalogue value {c} "
                                       "(the Schaeffler catalogue, p. 68)", wanted & np.isnan(getattr(s, col)))
         bad_value(col, "must be > 0", getattr(s, col) <= 0)
@@ -145,7 +144,13 @@ def evaluate_catalogue_model(s: SupportArrays, labels: Labels, f2_chart: F2Chart
         P1 = np.full(shape, np.nan)
         if is_p1.any():
             Y, e = (np.broadcast_to(getattr(s, c), shape) for c in ("Y", "e"))
-            P1[is_p1] = friction.effective_load(rules[is_p1], Fr[is_p1], Fa[is_p1], Y[is_p1], e[is_p1])
+            # the rows of each rule together (the kernel's own loop over rule names, without a text per row)
+            codes, names = (rules.codes, rules.categories) if isinstance(rules, pd.Categorical) \
+                else pd.factorize(np.asarray(rules, dtype=object))
+            for code, name in enumerate(names):
+                rows = is_p1 & (codes == code)
+                if rows.any():
+                    P1[rows] = friction.effective_load(name, Fr[rows], Fa[rows], Y[rows], e[rows])
     load = np.where(np.equal(s.m1_load, "Fa"), Fa, np.where(is_p1, P1, Fr))
 
     # --- f1

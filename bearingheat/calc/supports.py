@@ -367,6 +367,14 @@ def nonblank(values: Any, size: int) -> np.ndarray:
     return (cells != "") & (cells != None)  # noqa: E711 (element-wise)
 
 
+def text_in(values: Any, names) -> np.ndarray:
+    """Where a per-row text (a categorical by its codes, an object array, or one value) is one of ``names``."""
+    if isinstance(values, pd.Categorical):
+        member = np.isin(values.categories.to_numpy(dtype=object), list(names))
+        return np.append(member, False)[values.codes]  # code -1 (missing): the appended False
+    return np.isin(np.asarray(values, dtype=object), list(names))
+
+
 def first_rows(codes: np.ndarray) -> np.ndarray:
     """The position of the first row of each code, for codes numbered 0, 1, ... in order of first appearance
     (:func:`group_codes`): one pass, no sort."""

@@ -113,8 +113,11 @@ def _convert_column(values: pd.Series, header: str, unit_text: str | None, targe
         logical = per_distinct(values, lambda v: isinstance(v, (bool, np.bool_))).astype(bool)
     else:
         logical = np.zeros(len(values), dtype=bool)
-    numeric = pd.to_numeric(values.where(~logical, np.nan) if logical.any() else values,
-                            errors="coerce").to_numpy(dtype=float)
+    if values.dtype.kind in "iuf":  # numbers already (pd.to_numeric would copy them first)
+        numeric = values.to_numpy(dtype=float)
+    else:
+        numeric = pd.to_numeric(values.where(~logical, np.nan) if logical.any() else values,
+                                errors="coerce").to_numpy(dtype=float)
 
     def where(i):
         return f"{cell(name, i)}: " if cell else ""

@@ -99,3 +99,24 @@ def test_a_text_column_read_as_numbers_keeps_its_text():
     out = calc(rows)
     assert out["status"].iat[0] == "ok"
     assert out["message"].iat[1] == "series: missing; give type and series together"
+
+
+def test_every_plausible_range_lies_inside_the_valid_range():
+    # range_problems says nothing without looking further when the numbers lie inside the narrower range
+    from bearingheat.calc.contract import CONTRACT
+    for c in CONTRACT:
+        if c.valid and c.plausible:
+            assert c.valid[0] <= c.plausible[0] and c.plausible[1] <= c.valid[1], c.name
+
+
+def test_range_problems_finds_one_number_among_many_inside():
+    import numpy as np
+
+    from bearingheat.calc.contract import range_problems
+    values = np.full(1000, 25.0)
+    values[[3, 500]] = [np.nan, 250.0]
+    assert range_problems("T_amb", values, lambda i: f"T_amb: {values[i]:g}") == (
+        [(500, "T_amb: 250 is outside the valid range -60 to 200 degC")], [])
+    values[500] = np.inf
+    assert range_problems("T_amb", values, lambda i: "T_amb: inf")[0] == [(500, "T_amb: inf is not a finite number")]
+    assert range_problems("T_amb", np.full(4, np.nan), str) == ([], [])
