@@ -240,12 +240,25 @@ def _root_five_thirds(a, b):
     with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
         x0 = np.fmin(np.where(bv > 0, 1.0 / bv, np.inf), np.where(av > 0, np.power(av, -0.6), np.inf))
         y = np.cbrt(x0)
+        # Newton step ((a·y² + b)·y³ − 1) / ((5a·y² + 3b)·y²), written into preallocated arrays (same operations
+        # in the same order: the same numbers, without five new arrays a step)
+        a5, b3 = 5.0 * av, 3.0 * bv
+        y2, y3, step, slope, small = (np.empty_like(y) for _ in range(5))
         for _ in range(200):
-            y2 = y * y
-            y3 = y2 * y
-            step = ((av * y2 + bv) * y3 - 1.0) / ((5.0 * av * y2 + 3.0 * bv) * y2)
-            y = y - step
-            if not np.any(np.abs(step) > 1e-15 * y):
+            np.multiply(y, y, out=y2)
+            np.multiply(y2, y, out=y3)
+            np.multiply(av, y2, out=step)
+            step += bv
+            step *= y3
+            step -= 1.0
+            np.multiply(a5, y2, out=slope)
+            slope += b3
+            slope *= y2
+            step /= slope
+            y -= step
+            np.abs(step, out=step)
+            np.multiply(y, 1e-15, out=small)
+            if not np.any(step > small):
                 break
     if valid.all():
         x = y * y * y
