@@ -300,11 +300,13 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
     columns.update({name: pd.Series(values, index=frame.index, dtype=object, copy=False)
                     for name, values in (("status", status), ("message", message))})
     for name, values in (("bearing_type", supports.bearing_type), ("series", supports.series)):
-        if name == "bearing_type" and plain.any():
-            values = np.where(plain, "plain_bushing", np.broadcast_to(np.asarray(values, dtype=object), (n_rows,)))
-        columns[name] = pd.Series(values if isinstance(values, pd.Categorical) else
-                                  np.asarray(np.broadcast_to(np.asarray(values, dtype=object), (n_rows,)), dtype=object),
-                                  index=frame.index, copy=False)
+        if isinstance(values, pd.Categorical) and not (name == "bearing_type" and plain.any()):
+            columns[name] = pd.Series(values, index=frame.index, copy=False)
+            continue
+        cells = np.array(np.broadcast_to(np.asarray(values, dtype=object), (n_rows,)))  # its own, writeable
+        if name == "bearing_type":
+            cells[plain] = "plain_bushing"
+        columns[name] = pd.Series(cells, index=frame.index, dtype=object, copy=False)
     columns["model"] = pd.Series(coded_categorical(model_codes, model_names), index=frame.index)
     return pd.DataFrame(columns, index=frame.index, copy=False)  # calc's own arrays: no copy into one block
 

@@ -113,7 +113,7 @@ def _convert_column(values: pd.Series, header: str, unit_text: str | None, targe
         logical = per_distinct(values, lambda v: isinstance(v, (bool, np.bool_))).astype(bool)
     else:
         logical = np.zeros(len(values), dtype=bool)
-    if values.dtype.kind in "iuf":  # numbers already (pd.to_numeric would copy them first)
+    if isinstance(values.dtype, np.dtype) and values.dtype.kind in "iuf":  # numpy numbers (to_numeric would copy)
         numeric = values.to_numpy(dtype=float)
     else:
         numeric = pd.to_numeric(values.where(~logical, np.nan) if logical.any() else values,

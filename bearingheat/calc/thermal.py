@@ -228,14 +228,14 @@ def lowest_operating_temperature(balance, T_low, T_high, *, cells: int = OPERATI
     at_low = ~found & (f_low == 0) & ~(f_high > 0)  # in balance already at T_low
     status = np.where(found | at_low, 0, np.where(f_high > 0, 1, np.where(f_low < 0, -1, 2)))  # 2: NaN inside
     status = np.where(np.isnan(f_low) | np.isnan(f_high), 2, status)
-    low = np.where(found, np.where(single, T_low, grid[first, rows]), T_low)
-    high = np.where(found, np.where(single, T_high, grid[first + 1, rows]), T_low)
-    f_at_low = np.where(found, np.where(single, f_low, values[first, rows]), f_low)
-    f_at_high = np.where(found, np.where(single, f_high, values[first + 1, rows]), f_low)
     with np.errstate(invalid="ignore", over="ignore", divide="ignore"):
-        if affine.all():
+        if affine.all():  # every row takes the secant below: nothing to refine
             T = np.full(shape, np.nan)
         else:
+            low = np.where(found, np.where(single, T_low, grid[first, rows]), T_low)
+            high = np.where(found, np.where(single, T_high, grid[first + 1, rows]), T_low)
+            f_at_low = np.where(found, np.where(single, f_low, values[first, rows]), f_low)
+            f_at_high = np.where(found, np.where(single, f_high, values[first + 1, rows]), f_low)
             T, _ = bracketed_root(balance, low, high, rtol=1e-14, f_low=f_at_low, f_high=f_at_high)
         secant = np.where(f_high == 0, T_high, T_low + f_low * ((T_high - T_low) / (f_low - f_high)))
     T = np.where(at_low, T_low, np.where(affine & found, secant, T))
@@ -333,7 +333,8 @@ def settle_viscosity(frame: pd.DataFrame, results: pd.DataFrame, *, t_limit: flo
         if balance_T is None:
             balance_T, balance_status = T_all, status_all
         else:
-            balance_T, balance_status = np.where(solving, T_all, balance_T), np.where(solving, status_all, balance_status)
+            balance_T = np.where(solving, T_all, balance_T)
+            balance_status = np.where(solving, status_all, balance_status)
         why_unsolved = {i: why for i, why in why_unsolved.items() if not solving[i]} | unsolved
         moved = solving & ~(np.abs(T_new - T_op) <= SETTLED_TEMPERATURE)
         T_op = np.where(solving, T_new, T_op)
@@ -376,7 +377,8 @@ def _solve_operating_temperature(frame, results, rows, t_limit):
     refused = asked & reasons.astype(bool)
     no_equilibrium = asked & ~refused & (status != 0)
     unsolved = {int(i): reasons[i] for i in np.flatnonzero(refused)}
-    unsolved.update({int(i): _no_equilibrium_text(status[i], T_amb[i], t_limit) for i in np.flatnonzero(no_equilibrium)})
+    unsolved.update({int(i): _no_equilibrium_text(status[i], T_amb[i], t_limit)
+                     for i in np.flatnonzero(no_equilibrium)})
     return np.where(asked & ~refused & (status == 0), T, np.nan), unsolved, T, status
 
 

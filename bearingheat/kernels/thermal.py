@@ -216,6 +216,33 @@ def friction_heat(f0, nu, n, dM, load_torque):
 
 # ---- exact roots of the heat balance ---------------------------------------------------------
 
+#: rows the Newton iteration of :func:`_root_five_thirds` takes at a time (eight arrays of it fit a core's cache)
+_NEWTON_BLOCK = 1 << 14
+
+
+def _newton_five_thirds(a, b, y):
+    """Newton's method on a·y^5 + b·y^3 = 1 from the upper bound ``y`` (updated in place), until no step is
+    above 1e-15 of y. The step ((a·y² + b)·y³ − 1) / ((5a·y² + 3b)·y²) is written into arrays made once."""
+    a5, b3 = 5.0 * a, 3.0 * b
+    y2, y3, step, slope, small = (np.empty_like(y) for _ in range(5))
+    for _ in range(200):
+        np.multiply(y, y, out=y2)
+        np.multiply(y2, y, out=y3)
+        np.multiply(a, y2, out=step)
+        step += b
+        step *= y3
+        step -= 1.0
+        np.multiply(a5, y2, out=slope)
+        slope += b3
+        slope *= y2
+        step /= slope
+        y -= step
+        np.abs(step, out=step)
+        np.multiply(y, 1e-15, out=small)
+        if not np.any(step > small):
+            return
+
+
 def _root_five_thirds(a, b):
     """x > 0 with a·x^(5/3) + b·x = 1 for a, b >= 0 (not both 0), to machine precision.
 
@@ -240,26 +267,9 @@ def _root_five_thirds(a, b):
     with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
         x0 = np.fmin(np.where(bv > 0, 1.0 / bv, np.inf), np.where(av > 0, np.power(av, -0.6), np.inf))
         y = np.cbrt(x0)
-        # Newton step ((a·y² + b)·y³ − 1) / ((5a·y² + 3b)·y²), written into preallocated arrays (same operations
-        # in the same order: the same numbers, without five new arrays a step)
-        a5, b3 = 5.0 * av, 3.0 * bv
-        y2, y3, step, slope, small = (np.empty_like(y) for _ in range(5))
-        for _ in range(200):
-            np.multiply(y, y, out=y2)
-            np.multiply(y2, y, out=y3)
-            np.multiply(av, y2, out=step)
-            step += bv
-            step *= y3
-            step -= 1.0
-            np.multiply(a5, y2, out=slope)
-            slope += b3
-            slope *= y2
-            step /= slope
-            y -= step
-            np.abs(step, out=step)
-            np.multiply(y, 1e-15, out=small)
-            if not np.any(step > small):
-                break
+        for block in range(0, len(y), _NEWTON_BLOCK):  # a block's arrays stay in the cache for all its steps
+            part = slice(block, block + _NEWTON_BLOCK)
+            _newton_five_thirds(av[part], bv[part], y[part])
     if valid.all():
         x = y * y * y
     else:

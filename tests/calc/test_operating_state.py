@@ -89,7 +89,8 @@ def test_the_catalogue_model_runs_once_per_row_when_nu_is_taken_at_T_op(monkeypa
     assert sizes == [3]  # one evaluation of the three rows; M0, MR, NR follow nu(T_op) by the kernels
     assert out["nu_at"].tolist() == ["T_op"] * 3
     # the same numbers as the model evaluated at that viscosity
-    given = bh.calc(rows.drop(columns=["nu40 [mm^2/s]", "nu100 [mm^2/s]"]).assign(**{"nu [mm^2/s]": out["nu_used [mm^2/s]"]}))
+    given = bh.calc(rows.drop(columns=["nu40 [mm^2/s]", "nu100 [mm^2/s]"])
+                    .assign(**{"nu [mm^2/s]": out["nu_used [mm^2/s]"]}))
     for column in ("M0 [N*mm]", "M1 [N*mm]", "MR [N*mm]", "NR [W]", "T_op [degC]"):
         np.testing.assert_allclose(out[column], given[column], rtol=1e-12)
     np.testing.assert_allclose(out["nu_used [mm^2/s]"], out["nu_op [mm^2/s]"], rtol=1e-12)
