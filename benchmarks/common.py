@@ -75,10 +75,11 @@ def _demo_supports() -> pd.DataFrame:
     return demo[demo["arrangement"] == "single"]
 
 
-def demo_rows(rows: int, heat_balance: bool, seed: int = 3) -> pd.DataFrame:
+def demo_rows(rows: int, heat_balance: bool, seed: int = 3, oil: bool = False) -> pd.DataFrame:
     """The demo's single-bearing supports (examples/gearbox_shaft.csv) tiled to ``rows`` rows, loads and speeds
     varied by ±50 %; without the heat balance's columns (T_amb, T_bearing, B, T) when ``heat_balance`` is
-    false."""
+    false. ``oil``: ν not given but taken from an ISO VG 68 oil's nu40 and nu100 (68 and 8.6 mm²/s) at each
+    row's operating temperature."""
     demo = _demo_supports()
     table = demo.iloc[np.resize(np.arange(len(demo)), rows)].reset_index(drop=True)
     rng = np.random.default_rng(seed)
@@ -86,4 +87,6 @@ def demo_rows(rows: int, heat_balance: bool, seed: int = 3) -> pd.DataFrame:
         table[column] = table[column] * rng.uniform(0.5, 1.5, rows)
     if not heat_balance:
         table = table.drop(columns=["T_amb [degC]", "T_bearing [degC]", "B [mm]", "T [mm]"])
+    if oil:
+        table = table.drop(columns=["nu [mm^2/s]"]).assign(**{"nu40 [mm^2/s]": 68.0, "nu100 [mm^2/s]": 8.6})
     return table

@@ -34,6 +34,7 @@ def test_pipeline_benchmark_runs_on_a_small_table(capsys):
     printed = capsys.readouterr().out
     assert "minimal numpy version of the same formulas" in printed and "memory-bandwidth floor" in printed
     assert "bh.calc with heat-balance columns" in printed and "target <= 30x" in printed
+    assert "nu from nu40/nu100 at T_op" in printed and figures["calc_oil"] > 0
     assert "vs a bare pd.read_csv(engine='pyarrow') + to_parquet" in printed and "target <= 5x" in printed
     assert figures["cli_peak_mb"] > figures["peak_mb[python + package]"] > 0 and figures["kernel"] > 0
 

@@ -394,14 +394,21 @@ class FrictionPower:
         are in error)."""
         return [MODELS[m].speed_exponent is not None if m in MODELS else True for m in names]
 
-    def __call__(self, n, nu) -> np.ndarray:
-        """N_R [W] of every row at speeds ``n`` [1/min] and viscosities ``nu`` [mm²/s] (one per row)."""
-        n = np.broadcast_to(np.asarray(n, dtype=float), (self.size,))
-        nu = np.broadcast_to(np.asarray(nu, dtype=float), (self.size,))
+    def __call__(self, n, nu, rows: slice = slice(None)) -> np.ndarray:
+        """N_R [W] of every row, or of the block ``rows`` (a slice), at speeds ``n`` [1/min] and viscosities
+        ``nu`` [mm²/s] (one per row of the block)."""
+        start, stop, _ = rows.indices(self.size)
+        size = max(stop - start, 0)
+        n = np.broadcast_to(np.asarray(n, dtype=float), (size,))
+        nu = np.broadcast_to(np.asarray(nu, dtype=float), (size,))
         with np.errstate(invalid="ignore", over="ignore"):
-            out = friction_heat(self.f0, nu, n, self.dM, self.load_torque)
-        for name, (rows, supports) in self.generic.items():
-            out[rows] = self._evaluate(name, supports, n[rows], nu[rows])
+            out = friction_heat(self.f0[rows], nu, n, self.dM[rows], self.load_torque[rows])
+        for name, (model_rows, supports) in self.generic.items():
+            inside = np.flatnonzero((model_rows >= start) & (model_rows < stop))
+            if len(inside):
+                local = model_rows[inside] - start
+                block = supports if len(inside) == len(model_rows) else supports.take(inside)
+                out[local] = self._evaluate(name, block, n[local], nu[local])
         return out
 
     def at_row(self, i: int, n, nu) -> np.ndarray:

@@ -89,6 +89,9 @@ PROVISIONAL_TEMPERATURE = 70.0
 SETTLED_TEMPERATURE = 1e-9
 #: ... in at most this many passes
 SETTLE_PASSES = 20
+#: rows refined together by the root search when the balance can be evaluated block by block (the arrays of a
+#: block stay in a core's cache for all its steps; every row's steps are its own, so the roots are the same)
+ROOT_BLOCK = 1 << 14
 #: the columns a viscosity-temperature law comes from (:func:`~bearingheat.calc.viscosity.viscosity_model_rows`)
 OIL_DATA = frozenset({"nu40", "nu100", "iso_vg"})
 #: where the operating viscosity is taken when it comes from nu40/nu100 or iso_vg
@@ -113,11 +116,13 @@ def _viscosity_of_rows(frame: pd.DataFrame, A, B):
     nu_fixed = number_column(frame, "nu")
     has_model = ~np.isnan(A)
     if not has_model.any():  # no row has oil data: ν does not depend on the temperature
-        return lambda theta: np.broadcast_arrays(np.asarray(theta, dtype=float), nu_fixed)[1].copy()
+        return lambda theta, rows=slice(None): np.broadcast_arrays(np.asarray(theta, dtype=float),
+                                                                   nu_fixed[rows])[1].copy()
 
-    def nu_at(theta):
+    def nu_at(theta, rows=slice(None)):
+        """ν at θ of every row, or of the block ``rows`` (a slice)."""
         with np.errstate(invalid="ignore", over="ignore"):
-            return np.where(has_model, walther_viscosity(A, B, theta), nu_fixed)
+            return np.where(has_model[rows], walther_viscosity(A[rows], B[rows], theta), nu_fixed[rows])
 
     return nu_at
 
@@ -149,13 +154,14 @@ def _heat_flow_setup(frame: pd.DataFrame, details: pd.DataFrame | None = None):
     dT_oil = number_column(frame, "dT_oil")
     Q_E = np.nan_to_num(number_column(frame, "Q_E"), nan=0.0)
 
-    def Q_S(theta):
-        return seat_heat_flow(k_q, A_r, np.asarray(theta, dtype=float) - T_amb)
+    def Q_S(theta, rows=slice(None)):
+        """Heat flow through the seat at θ of every row, or of the block ``rows`` (a slice)."""
+        return seat_heat_flow(k_q[rows], A_r[rows], np.asarray(theta, dtype=float) - T_amb[rows])
 
-    def Q_L(theta):
+    def Q_L(theta, rows=slice(None)):
         # oil temperature rise: given dT_oil, otherwise oil fed at ambient and leaving at the bearing temperature
-        rise = np.where(np.isnan(dT_oil), np.asarray(theta, dtype=float) - T_amb, dT_oil)
-        return np.where(V_oil > 0, oil_heat_flow(V_oil, rise), 0.0)
+        rise = np.where(np.isnan(dT_oil[rows]), np.asarray(theta, dtype=float) - T_amb[rows], dT_oil[rows])
+        return np.where(V_oil[rows] > 0, oil_heat_flow(V_oil[rows], rise), 0.0)
 
     return details, k_q, T_amb, Q_E, Q_S, Q_L
 
@@ -166,9 +172,10 @@ def _operating_point(frame, results, nu_at, nu_varies, Q_S, Q_L, Q_E, T_amb, t_l
     n = number_column(frame, "n")
     power = FrictionPower(frame, results)
 
-    def balance(theta):
+    def balance(theta, rows=slice(None)):
+        """N_R + Q_E − Q_S − Q_L [W] at θ of every row, or of the block ``rows`` (a slice)."""
         with np.errstate(invalid="ignore", over="ignore"):
-            return power(n, nu_at(theta)) + Q_E - Q_S(theta) - Q_L(theta)
+            return power(n[rows], nu_at(theta, rows), rows) + Q_E[rows] - Q_S(theta, rows) - Q_L(theta, rows)
 
     T_low = T_amb - BELOW_AMBIENT_SEARCH
     T_high = np.full(len(frame), float(t_limit))
@@ -179,12 +186,13 @@ def _operating_point(frame, results, nu_at, nu_varies, Q_S, Q_L, Q_E, T_amb, t_l
         falling = power.closed & ~(Q_S(T_amb + 1.0) <= Q_S(T_amb)) & ~(nu_at(T_high) > nu_at(T_low))
     # where ν does not depend on T (no oil data) N_R does not either: the balance is a straight line in T
     affine = power.closed & ~nu_varies
-    T_op, status = lowest_operating_temperature(balance, T_low, T_high, single_root=falling, affine=affine)
+    T_op, status = lowest_operating_temperature(balance, T_low, T_high, single_root=falling, affine=affine,
+                                                blocks=True)
     return T_op, status, balance
 
 
 def lowest_operating_temperature(balance, T_low, T_high, *, cells: int = OPERATING_TEMPERATURE_CELLS,
-                                 single_root=False, affine=False):
+                                 single_root=False, affine=False, blocks: bool = False):
     """The lowest temperature in [T_low, T_high] where the bearing stops heating up, for all rows at once.
 
     ``balance(T)`` is N_R + Q_E − Q_S − Q_L [W] per row (positive while the
@@ -202,7 +210,8 @@ def lowest_operating_temperature(balance, T_low, T_high, *, cells: int = OPERATI
     it; where every row is, the scan is skipped. Rows marked ``affine`` (a
     balance that is a straight line in T, and falls) take the secant of the
     range's ends, which is their root; where every row is, nothing is
-    refined.
+    refined. With ``blocks`` the balance is ``balance(T, rows)`` for a slice
+    of the rows too, and rows are refined :data:`ROOT_BLOCK` at a time.
 
     >>> T, status = lowest_operating_temperature(
     ...     lambda T: -(T - 40.0) * (T - 90.0) * (T - 120.0), np.array([0.0, 0.0]), np.array([150.0, 30.0]))
@@ -236,7 +245,16 @@ def lowest_operating_temperature(balance, T_low, T_high, *, cells: int = OPERATI
             high = np.where(found, np.where(single, T_high, grid[first + 1, rows]), T_low)
             f_at_low = np.where(found, np.where(single, f_low, values[first, rows]), f_low)
             f_at_high = np.where(found, np.where(single, f_high, values[first + 1, rows]), f_low)
-            T, _ = bracketed_root(balance, low, high, rtol=1e-14, f_low=f_at_low, f_high=f_at_high)
+            if blocks and len(shape) == 1:
+                T = np.full(shape, np.nan)
+                refined = found & ~affine
+                for start in range(0, shape[0], ROOT_BLOCK):
+                    part = slice(start, start + ROOT_BLOCK)
+                    if refined[part].any():
+                        T[part], _ = bracketed_root(lambda x, part=part: balance(x, part), low[part], high[part],
+                                                    rtol=1e-14, f_low=f_at_low[part], f_high=f_at_high[part])
+            else:
+                T, _ = bracketed_root(balance, low, high, rtol=1e-14, f_low=f_at_low, f_high=f_at_high)
         secant = np.where(f_high == 0, T_high, T_low + f_low * ((T_high - T_low) / (f_low - f_high)))
     T = np.where(at_low, T_low, np.where(affine & found, secant, T))
     return np.where(status == 0, T, np.nan), status

@@ -140,3 +140,21 @@ def test_a_row_computed_again_names_its_own_cell():
         "nu [mm^2/s]: cannot be taken at T_op; no equilibrium below 150 degC: the friction heat exceeds the heat "
         "carried away (the temperature runs away); give T_bearing; Supports!n8 n [rpm]: 60000 is above the "
         "limiting speed n_G = 17000 1/min of 6205 (Schaeffler HR 1, 2006); check the speed and its unit")
+
+
+def test_blocks_of_rows_give_the_same_numbers(monkeypatch):
+    # the root searches take rows in blocks that stay in the cache (10^6-row tables); a block's rows are solved
+    # on their own, so blocks of 2 rows give what one block of all rows gives, to the last bit
+    import importlib
+
+    thermal = importlib.import_module("bearingheat.calc.thermal")
+    kernels = importlib.import_module("bearingheat.kernels.thermal")
+    skf = pd.read_csv("examples/gearbox_shaft_skf.csv")
+    rows = skf.drop(columns=["nu [mm^2/s]"]).assign(**{"nu40 [mm^2/s]": 68, "nu100 [mm^2/s]": 8.6})
+    rows["model"] = ["skf", "schaeffler"] * (len(rows) // 2) + ["skf"] * (len(rows) % 2)
+    whole = bh.calc(rows)
+    monkeypatch.setattr(thermal, "ROOT_BLOCK", 2)
+    monkeypatch.setattr(kernels, "_NEWTON_BLOCK", 3)
+    blocked = bh.calc(rows)
+    pd.testing.assert_frame_equal(blocked, whole, check_exact=True)
+    assert whole["nu_at"].eq("T_op").sum() >= 4 and whole["n_per [1/min]"].notna().sum() >= 4
