@@ -37,6 +37,7 @@ is kept as it is.
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from typing import Callable
 
@@ -248,10 +249,9 @@ def lowest_operating_temperature(balance, T_low, T_high, *, cells: int = OPERATI
             if blocks and len(shape) == 1:
                 T = np.full(shape, np.nan)
                 refined = found & ~affine
-                for start in range(0, shape[0], ROOT_BLOCK):
-                    part = slice(start, start + ROOT_BLOCK)
+                for part in (slice(start, start + ROOT_BLOCK) for start in range(0, shape[0], ROOT_BLOCK)):
                     if refined[part].any():
-                        T[part], _ = bracketed_root(lambda x, part=part: balance(x, part), low[part], high[part],
+                        T[part], _ = bracketed_root(functools.partial(balance, rows=part), low[part], high[part],
                                                     rtol=1e-14, f_low=f_at_low[part], f_high=f_at_high[part])
             else:
                 T, _ = bracketed_root(balance, low, high, rtol=1e-14, f_low=f_at_low, f_high=f_at_high)
