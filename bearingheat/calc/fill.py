@@ -87,11 +87,14 @@ def fill_from_catalogue(frame: pd.DataFrame, labels: Labels
             filled[name] = np.where(np.isnan(given), per_key[name][codes], given)
         steps = half_steps(name, per_key[name])[key]
         differing = ~blank & disagreeing(name, given[first], catalogue, steps)
-        for i in np.flatnonzero(differing[groups]) if differing.any() else ():
-            problems.append((int(i), "warning",
-                             f"{labels.name(name, int(i))}: {labels.value(name, given[i])} differs from "
-                             f"{per_key[name][codes[i]]:g} {_unit(name)}of {designations[codes[i]]} in the bearing "
-                             f"table ({CATALOGUE}); the value given is used"))
+        if differing.any():  # the words after the column's name, once a group; the name is the row's own cell
+            typed, printed, unit = given[first].tolist(), catalogue.tolist(), _unit(name)  # Python floats format fast
+            said = {g: f": {labels.value(name, typed[g])} differs from {printed[g]:g} {unit}of "
+                       f"{designations[key[g]]} in the bearing table ({CATALOGUE}); the value given is used"
+                    for g in np.flatnonzero(differing).tolist()}
+            header = labels.name(name) if labels.cell is None else None
+            problems.extend((i, "warning", f"{header or labels.name(name, i)}{said[groups[i]]}")
+                            for i in np.flatnonzero(differing[groups]).tolist())
     D = filled.get("D", number_column(frame, "D"))
     unknown = np.array([message is not None for message in lookup_errors], dtype=bool)[codes]
     for i in np.flatnonzero(np.isnan(D) & unknown):

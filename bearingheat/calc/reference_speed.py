@@ -9,12 +9,12 @@ builds the heat balance on it.
 from __future__ import annotations
 
 import math
-from typing import Callable
 
 import numpy as np
 import pandas as pd
 
-from bearingheat.calc.supports import coded_categorical, first_rows, group_codes, number_column, text_column
+from bearingheat.calc.supports import (coded_categorical, distinct_keys, first_rows, group_codes, number_column,
+                                       text_codes, text_column)
 from bearingheat.catalogue.friction import ResolvedBearing, resolve
 from bearingheat.catalogue.thermal import THERMAL_KIND, THERMAL_KINDS, method_refusal, reference_conditions
 from bearingheat.errors import DesignationError
@@ -31,18 +31,17 @@ PAIR_REASON = ("n_thr: the heat balance of a bearing pair is not in the sources 
 REFERENCE_KEYS = ("designation", "type", "series", "arrangement", "d", "D", "B", "T", "d1", "D1", "C0")
 
 
-def _resolve_rows(frame: pd.DataFrame) -> list[tuple[ResolvedBearing | None, str]]:
-    """Per row: (ResolvedBearing or None, reason)."""
-    designations = text_column(frame, "designation")
-    types = text_column(frame, "type")
-    series = text_column(frame, "series")
-    out: list[tuple[ResolvedBearing | None, str]] = []
-    for des, typ, ser in zip(designations, types, series):
+def _resolved_keys(frame: pd.DataFrame) -> tuple[np.ndarray, list[tuple[ResolvedBearing | None, str]]]:
+    """Per row the code of its (designation, type, series), and per code (ResolvedBearing or None, the reason
+    it did not resolve): each distinct bearing is resolved once."""
+    codes, keys = distinct_keys([text_codes(frame, name) for name in ("designation", "type", "series")])
+    resolved: list[tuple[ResolvedBearing | None, str]] = []
+    for designation, bearing_type, series in keys:
         try:
-            out.append((resolve(des, typ, ser), ""))
+            resolved.append((resolve(designation, bearing_type, series), ""))
         except DesignationError as exc:
-            out.append((None, str(exc)))
-    return out
+            resolved.append((None, str(exc)))
+    return codes, resolved
 
 
 def thermal_reference_speed_details(frame: pd.DataFrame, *, f0_scale=1.0, f1_scale=1.0) -> pd.DataFrame:
@@ -82,78 +81,73 @@ def _details(frame: pd.DataFrame, f0_scale=1.0, f1_scale=1.0) -> pd.DataFrame:
     reference load.
     """
     n_rows = len(frame)
-    resolved = _resolve_rows(frame)
-    d = number_column(frame, "d").copy()       # filled from the designation below
+    codes, resolved = _resolved_keys(frame)
+    entries = [res.entry if res is not None else None for res, _ in resolved]
+    ok = np.array([res is not None for res, _ in resolved], dtype=bool)[codes]
+    # the bore and width printed in the designation fill blank cells
+    d = _blank_filled(number_column(frame, "d"), [_printed(res, "bore") for res, _ in resolved], codes)
     D = number_column(frame, "D")
-    B = number_column(frame, "B").copy()
+    B = _blank_filled(number_column(frame, "B"), [_printed(res, "width") for res, _ in resolved], codes)
     T = number_column(frame, "T")
     d1 = number_column(frame, "d1")
     D1 = number_column(frame, "D1")
     C0 = number_column(frame, "C0")
-    reason = [r for _, r in resolved]
-    arrangement = text_column(frame, "arrangement")
-    kind = np.array([""] * n_rows, dtype=object)
-    f0 = np.full(n_rows, np.nan)
-    f1_a = np.full(n_rows, np.nan)
-    f1_x = np.full(n_rows, np.nan)
-    geometry_ok = np.zeros(n_rows, dtype=bool)
-    for i, (res, _) in enumerate(resolved):
-        if res is None:
+    # each row's reason is the first of these checks it fails, in this order (rows that fail none have '')
+    reason = np.array([why for _, why in resolved], dtype=object)[codes]
+    open_rows = ok.copy()
+
+    def refuse(mask, text):
+        """Rows still open where ``mask`` holds get ``text(i)`` (or the one text) as their reason."""
+        rows = np.flatnonzero(open_rows & mask)
+        for i in rows.tolist():
+            reason[i] = text(i) if callable(text) else text
+        open_rows[rows] = False
+
+    refusals = np.array([_refusal(res) for res, _ in resolved], dtype=object)
+    refuse(refusals.astype(bool)[codes], lambda i: refusals[codes[i]])
+    refuse(np.asarray(text_column(frame, "arrangement"), dtype=object) == "paired", PAIR_REASON)
+    kinds_of_key = np.array([THERMAL_KIND.get(e.bearing_type) or "" if e is not None else "" for e in entries],
+                            dtype=object)
+    kind = np.where(open_rows, kinds_of_key[codes], "").astype(object)
+    labels = [e.label if e is not None else "" for e in entries]
+    area_columns = {"B": (B, "width"), "T": (T, "total width"), "d1": (d1, "outside diameter d1 of the shaft washer"),
+                    "D1": (D1, "bore D1 of the housing washer")}
+    checks: dict[str, list] = {k: [] for k in THERMAL_KINDS}  # kind -> its rows' checks after d and D, in order
+    for k in THERMAL_KINDS:
+        of_kind = open_rows & (kind == k)
+        if not of_kind.any():
             continue
-        entry = res.entry
-        if np.isnan(d[i]) and res.designation is not None and res.designation.bore is not None:
-            d[i] = res.designation.bore
-        if np.isnan(B[i]) and res.designation is not None and res.designation.width is not None:
-            B[i] = res.designation.width
-        refusal = method_refusal(entry.bearing_type, res.seal)
-        if refusal:
-            reason[i] = f"n_thr: {refusal}"
-            continue
-        if arrangement[i] == "paired":
-            reason[i] = PAIR_REASON
-            continue
-        kind[i] = THERMAL_KIND[entry.bearing_type]
-        checks: tuple[tuple[str, float, str, Callable[[float], bool], str], ...] = (
-            ("d", d[i], "the bore d gives dM = (d + D)/2", lambda v: v > 0, "must be > 0"),
-            ("D", D[i], "the outside diameter D gives dM = (d + D)/2 and A_r", lambda v: v > d[i],
-             f"must be larger than d = {d[i]:g} mm"),
-        )
-        area_columns = {"B": (B[i], "width"), "T": (T[i], "total width"),
-                        "d1": (d1[i], "outside diameter d1 of the shaft washer"),
-                        "D1": (D1[i], "bore D1 of the housing washer")}
-        needed = HEAT_FLOW_AREA[kind[i]][2]
-        formula = HEAT_FLOW_AREA[kind[i]][1]
-        absent = [c for c in needed if np.isnan(area_columns[c][0])]
-        if len(absent) > 1:
-            reason[i] = (f"{' and '.join(c + ' [mm]' for c in absent)}: missing; the heat flow area A_r = {formula} "
-                         f"of {entry.label.split(' series')[0]}s needs them (HR 1, p. 64); the friction torque is "
-                         "computed without them")
-            continue
-        for width in needed:
-            value, what = area_columns[width]
-            checks += ((width, value, f"the heat flow area A_r = {formula} needs the {what}",
-                        lambda v: v > 0, "must be > 0"),)
-        for column, value, why, ok, condition in checks:
-            if np.isnan(value):
-                reason[i] = f"{column} [mm]: missing; {why}"
-                break
-            if not ok(value):
-                reason[i] = f"{column} [mm]: {value:g} {condition}"
-                break
-        if reason[i]:
-            continue
-        geometry_ok[i] = True
-        f0_oil = entry.f0_oil
-        if math.isnan(f0_oil):
-            reason[i] = f"n_thr: {entry.label} has no oil-bath f0 in the Schaeffler catalogue (the table prints a dash)"
-            continue
-        f0[i] = friction.f0_needle(f0_oil, B[i], d[i]) if entry.f0_basis == "B/(33+d)" else f0_oil
-        f1_a[i], f1_x[i] = entry.f1_a, entry.f1_x
-        if np.isnan(C0[i]):
-            reason[i] = "C0 [N]: missing; the reference load is a fraction of C0"
-        elif not C0[i] > 0:
-            reason[i] = f"C0 [N]: {C0[i]:g} must be > 0"
-    usable = np.array([r == "" for r in reason], dtype=bool)
+        formula, needed = HEAT_FLOW_AREA[k][1], HEAT_FLOW_AREA[k][2]
+        absent = np.array([np.isnan(area_columns[c][0]) for c in needed], dtype=bool).reshape(len(needed), n_rows)
+        several = of_kind & (absent.sum(axis=0) > 1)
+        refuse(several, lambda i, needed=needed, absent=absent, formula=formula: (
+            f"{' and '.join(c + ' [mm]' for c, gone in zip(needed, absent[:, i]) if gone)}: missing; the heat flow "
+            f"area A_r = {formula} of {labels[codes[i]].split(' series')[0]}s needs them (HR 1, p. 64); the "
+            "friction torque is computed without them"))
+        checks[k] = [(c, area_columns[c][0], f"the heat flow area A_r = {formula} needs the {area_columns[c][1]}")
+                     for c in needed]
+    refuse(np.isnan(d), "d [mm]: missing; the bore d gives dM = (d + D)/2")
+    with np.errstate(invalid="ignore"):
+        refuse(~(d > 0), lambda i: f"d [mm]: {d[i]:g} must be > 0")
+        refuse(np.isnan(D), "D [mm]: missing; the outside diameter D gives dM = (d + D)/2 and A_r")
+        refuse(~(D > d), lambda i: f"D [mm]: {D[i]:g} must be larger than d = {d[i]:g} mm")
+        for k, kind_checks in checks.items():
+            for column, values, why in kind_checks:
+                refuse((kind == k) & np.isnan(values), f"{column} [mm]: missing; {why}")
+                refuse((kind == k) & ~(values > 0), lambda i, c=column, v=values: f"{c} [mm]: {v[i]:g} must be > 0")
+    geometry_ok = open_rows.copy()
+    f0_oil = np.array([e.f0_oil if e is not None else np.nan for e in entries], dtype=float)[codes]
+    refuse(np.isnan(f0_oil), lambda i: f"n_thr: {labels[codes[i]]} has no oil-bath f0 in the Schaeffler catalogue "
+                                       "(the table prints a dash)")
+    needle = np.array([e is not None and e.f0_basis == "B/(33+d)" for e in entries], dtype=bool)[codes]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        f0 = np.where(open_rows, np.where(needle, friction.f0_needle(f0_oil, B, d), f0_oil), np.nan)
+    f1_a = np.where(open_rows, np.array([e.f1_a if e is not None else np.nan for e in entries])[codes], np.nan)
+    f1_x = np.where(open_rows, np.array([e.f1_x if e is not None else np.nan for e in entries])[codes], np.nan)
+    refuse(np.isnan(C0), "C0 [N]: missing; the reference load is a fraction of C0")
+    with np.errstate(invalid="ignore"):
+        refuse(~(C0 > 0), lambda i: f"C0 [N]: {C0[i]:g} must be > 0")
+    usable = ~reason.astype(bool)
     A_r = np.full(n_rows, np.nan)
     q_r = np.full(n_rows, np.nan)
     load_ratio = np.full(n_rows, np.nan)
@@ -183,6 +177,25 @@ def _details(frame: pd.DataFrame, f0_scale=1.0, f1_scale=1.0) -> pd.DataFrame:
         "regime": np.where(usable, np.where(low, "nu*n < 2000", "nu*n >= 2000"), ""),
         "reason": reason,
     }, index=frame.index)
+
+
+def _refusal(res: ResolvedBearing | None) -> str:
+    """'n_thr: why' where the thermal method does not apply to a resolved bearing ('' otherwise)."""
+    if res is None:
+        return ""
+    why = method_refusal(res.entry.bearing_type, res.seal)
+    return f"n_thr: {why}" if why else ""
+
+
+def _printed(res: ResolvedBearing | None, what: str) -> float:
+    """The bore or width a designation prints (NaN where it prints none)."""
+    value = getattr(res.designation, what, None) if res is not None and res.designation is not None else None
+    return math.nan if value is None else float(value)
+
+
+def _blank_filled(values: np.ndarray, printed: list[float], codes: np.ndarray) -> np.ndarray:
+    """``values`` with the blank cells taken from the designation's printed value (per code)."""
+    return np.where(np.isnan(values), np.array(printed, dtype=float)[codes], values)
 
 
 def thermal_reference_speed_rows(frame: pd.DataFrame) -> pd.Series:

@@ -260,3 +260,30 @@ def test_friction_only_tables_get_n_thr_quietly():
     assert out.loc[0, "n_thr [1/min]"] == pytest.approx(14416.18, rel=1e-6)
     # the blank C0 of the NU206-E comes from the bearing table (36 kN, as typed in the other tests)
     assert out.loc[1, "n_thr [1/min]"] == pytest.approx(9850.52, rel=1e-6)
+
+
+def test_reference_speed_details_of_a_table_are_those_of_each_row_alone():
+    # the checks run in arrays over all rows (each distinct bearing resolved once); every row's reason and numbers
+    # are what the row gets on its own, whatever its neighbours, for rows that pass and rows that fail each check
+    rng = np.random.default_rng(7)
+    n = 60
+    frame = pd.DataFrame({
+        "designation": rng.choice(np.array(["6205", "NU206-E", "51105", "30208-A", "K81104-TV", "6205-2RSR", "HK2016",
+                                            "29412-E1", "XYZ", None], dtype=object), n),
+        "arrangement": rng.choice(np.array(["single", "paired"], dtype=object), n, p=[0.8, 0.2]),
+        "d": rng.choice([25.0, 30.0, 40.0, 0.0, np.nan], n),
+        "D": rng.choice([52.0, 62.0, 80.0, 20.0, np.nan], n),
+        "B": rng.choice([15.0, 16.0, 0.0, np.nan], n),
+        "T": rng.choice([19.75, np.nan], n),
+        "d1": rng.choice([60.0, np.nan], n),
+        "D1": rng.choice([45.0, np.nan], n),
+        "C0": rng.choice([7800.0, 36000.0, -3.0, np.nan], n),
+    })
+    together = thermal_reference_speed_details(frame)
+    for i in range(n):
+        alone = thermal_reference_speed_details(frame.iloc[[i]])
+        assert together["reason"].iat[i] == alone["reason"].iat[0]
+        for column in ("n_thr", "A_r", "q_r", "f0", "f1", "P1", "M1"):
+            np.testing.assert_array_equal(together[column].iat[i], alone[column].iat[0])
+    reasons = together["reason"].astype(str)
+    assert reasons.eq("").any() and reasons.str.contains("must be > 0").any() and reasons.str.contains("pair").any()
