@@ -471,8 +471,10 @@ def _add_messages(results: pd.DataFrame, items: list[tuple[int, str, str, bool]]
             status[position] = "warning"
     failed = status == "error"
     newly_failed = failed & (results["status"].to_numpy(dtype=object) != "error")
-    results["message"] = messages
-    results["status"] = status
+    # object columns as compute_supports made them (pandas 3 would turn the arrays into Arrow strings, which the
+    # next steps turn back)
+    results["message"] = pd.Series(messages, index=results.index, dtype=object, copy=False)
+    results["status"] = pd.Series(status, index=results.index, dtype=object, copy=False)
     if newly_failed.any():
         results.loc[newly_failed, list(RESULT_UNITS)] = np.nan
 
