@@ -186,11 +186,10 @@ def magnitude(value: Any, unit: str, name: str) -> Magnitude:
     if unit == "1/min":
         return speed_rpm(value, name)
     q, index = _as_quantity(value, name, unit)
-    target = ureg().parse_units(unit)
+    target = _units(unit)
     try:
         if q._is_multiplicative:  # one scalar factor, one pass over an array
-            factor = ureg().Quantity(1.0, q.units).to(target).magnitude
-            return _restore_index(_scaled(q.magnitude, factor), index)
+            return _restore_index(_scaled(q.magnitude, _factor(q._REGISTRY, q.units._units, unit)), index)
         converted = q.to(target)
     except pint.errors.DimensionalityError as exc:
         if q.dimensionality == ureg().kg.dimensionality and target.dimensionality == ureg().N.dimensionality:
@@ -245,21 +244,49 @@ def speed_rpm(value: Any, name: str = "n") -> Magnitude:
     3000.0
     """
     q, index = _as_quantity(value, name, "1/min")
-    root = ureg().Quantity(1.0, q.units).to_root_units()
-    dims = dict(root._units)
-    radians = dims.pop("radian", 0)
-    if dims != {"second": -1} or radians not in (0, 1):
+    factor = _rpm_factor(q._REGISTRY, q.units._units)
+    if factor is None:
         raise UnitError(
             f"{name}: {_describe(q)} is not a shaft speed; expected revolutions per time "
             "(1/min, rpm, Hz) or an angular speed (rad/s)"
         )
+    return _restore_index(_scaled(q.magnitude, factor), index)
+
+
+@functools.lru_cache(maxsize=256)
+def _rpm_factor(registry: Any, units: Any) -> float | None:
+    """Revolutions per minute per one of ``units`` (a unit container of ``registry``; None where they are no
+    shaft speed), once per unit: pint's conversion takes tens of microseconds a call. The registry is part of
+    the key: pint refuses to compare units of two registries."""
+    root = registry.Quantity(1.0, units).to_root_units()
+    dims = dict(root._units)
+    radians = dims.pop("radian", 0)
+    if dims != {"second": -1} or radians not in (0, 1):
+        return None
     per_second = float(root.magnitude)
     if radians == 1:
         per_second /= TWO_PI  # rad/s -> rev/s
     factor = per_second * 60.0
-    if abs(factor - 1.0) < 1e-15:  # 1/min and rpm: exactly one revolution per minute
-        factor = 1.0
-    return _restore_index(_scaled(q.magnitude, factor), index)
+    return 1.0 if abs(factor - 1.0) < 1e-15 else factor  # 1/min and rpm: exactly one revolution per minute
+
+
+@functools.lru_cache(maxsize=256)
+def _factor(registry: Any, units: Any, unit: str) -> float:
+    """``unit`` per one of the multiplicative ``units`` (a unit container of ``registry``), once per pair (pint
+    raises DimensionalityError for units of another dimension; errors are not cached)."""
+    return float(registry.Quantity(1.0, units).to(unit).magnitude)
+
+
+def _units(unit: str) -> Any:
+    """The parsed ``unit`` of the application registry, parsed once per registry behind it (parsing a unit
+    string takes pint tens of microseconds)."""
+    return _parsed_units(pint.get_application_registry().get(), unit)
+
+
+@functools.lru_cache(maxsize=256)
+def _parsed_units(registry: Any, unit: str) -> Any:
+    ureg()  # the definitions loaded under the lock
+    return registry.parse_units(unit)
 
 
 @overload
@@ -288,7 +315,7 @@ def quantity(mag: float | np.ndarray | pd.Series, unit: str) -> Quantity | pd.Se
         return mag.astype(f"pint[{unit}]")  # type: ignore[call-overload]  # pint-pandas dtype by name
     if unit == "degC":
         return u.Quantity(mag, u.degC)
-    return u.Quantity(mag, unit)
+    return u.Quantity(mag, _units(unit))
 
 
 def parse_quantity(text: str, *, name: str = "value") -> Quantity:

@@ -29,6 +29,20 @@ def best_of(run, repeats: int = 3):
     return min(times), value
 
 
+def best_in_turns(runs: dict, repeats: int = 5) -> dict:
+    """{name: (the shortest wall-clock time [s], the value of its last call)} of each ``runs[name]()``, the runs
+    called in turns ``repeats`` times: a shared machine's load comes and goes, and every side of a ratio gets the
+    same chances."""
+    best: dict = {}
+    for _ in range(max(1, repeats)):
+        for name, run in runs.items():
+            start = time.perf_counter()
+            value = run()
+            elapsed = time.perf_counter() - start
+            best[name] = (min(best[name][0], elapsed) if name in best else elapsed, value)
+    return best
+
+
 def peak_run(code: str) -> tuple[float, float]:
     """(wall time [s], peak resident memory [MB]) of ``python -c code`` in a fresh process: it reports its own
     high-water mark VmHWM from /proc (ru_maxrss of the children would count the parent's memory at the fork).

@@ -68,3 +68,21 @@ def test_convert_column_refusals(unit, target, message):
     with pytest.raises(UnitError) as exc:
         convert_column(np.array([1.0]), unit, target, name="d")
     assert str(exc.value) == message
+
+
+def test_units_follow_a_switched_application_registry():
+    # parsed units and conversion factors are remembered; a new application registry gets its own units
+    import pint
+
+    from bearingheat.units import magnitude, quantity, speed_rpm
+    before = pint.get_application_registry().get()
+    fresh = pint.UnitRegistry()
+    pint.set_application_registry(fresh)
+    try:
+        torque = quantity(2.0, "N*mm")
+        assert torque._REGISTRY is fresh and torque.to("N*m").magnitude == pytest.approx(2e-3, rel=1e-15)
+        assert magnitude(2.5 * fresh.kN, "N", "Fr") == 2500.0
+        assert speed_rpm(50 * fresh.Hz) == 3000.0
+    finally:
+        pint.set_application_registry(before)
+    assert quantity(1.0, "N")._REGISTRY is before

@@ -12,7 +12,6 @@ from collections.abc import Callable, Mapping
 import numpy as np
 
 from bearingheat.calc.contract import range_problems
-from bearingheat.calc.supports import object_column
 from bearingheat.errors import BearingheatError
 
 __all__ = ["check_ranges", "point_warnings", "point_status", "where"]
@@ -74,9 +73,9 @@ def point_status(size: int, every: list[str], some: dict[int, list[str]]) -> tup
     """Per-point 'ok' | 'warning' and messages joined by '; ': the ``every`` messages on each point, then a point's
     own; strings are built once for the common text and only for the points with their own messages."""
     common = "; ".join(every)
-    status = object_column(size, "warning" if every else "ok")
-    messages = object_column(size, common)
+    status = ["warning" if every else "ok"] * size  # one string object shared by the points (list repetition)
+    messages = [common] * size
     for i, own in some.items():
         status[i] = "warning"
         messages[i] = "; ".join(([common] if common else []) + own)
-    return status.tolist(), messages.tolist()
+    return status, messages

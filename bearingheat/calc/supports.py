@@ -297,6 +297,8 @@ def text_codes(frame: pd.DataFrame, name: str) -> tuple[np.ndarray, list[str | N
     it is absent), factorized once."""
     if name not in frame.columns:
         return np.zeros(len(frame), dtype=np.int64), [None]
+    if len(frame) == 1:  # one bearing (the unit-aware API): no factorization machinery for one cell
+        return np.zeros(1, dtype=np.int64), [_stripped_or_none(frame[name].iat[0])]
     codes, raw = column_codes(frame[name])
     texts = [_stripped_or_none(v) for v in raw] + [None]  # code -1 (missing) takes the last entry
     return np.where(codes < 0, len(raw), codes), texts
