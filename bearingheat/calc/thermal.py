@@ -615,9 +615,11 @@ def _permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue, T_b
     # n_per is the speed at which the bearing reaches T_bearing: its oil has the viscosity of T_bearing there,
     # whatever temperature the friction results are reported at (a viscosity the user gives is used as it is)
     A, B = _walther_columns(frame)[:2]
-    with np.errstate(invalid="ignore", over="ignore"):
-        nu = np.where(~np.isnan(A) & ~np.isnan(T_bearing), walther_viscosity(A, B, T_bearing),
-                      number_column(frame, "nu"))
+    at_bearing = ~np.isnan(A) & ~np.isnan(T_bearing)
+    nu = number_column(frame, "nu")
+    if at_bearing.any():  # (no oil data: no Walther line to evaluate)
+        with np.errstate(invalid="ignore", over="ignore"):
+            nu = np.where(at_bearing, walther_viscosity(A, B, T_bearing), nu)
     f0 = results["f0"].to_numpy(dtype=float)
     load_torque = results["M1"].to_numpy(dtype=float) + np.nan_to_num(results["M2"].to_numpy(dtype=float))
     power = FrictionPower(frame, results)
