@@ -97,14 +97,18 @@ def _details(frame: pd.DataFrame, f0_scale=1.0, f1_scale=1.0) -> pd.DataFrame:
     open_rows = ok.copy()
 
     def refuse(mask, text):
-        """Rows still open where ``mask`` holds get ``text(i)`` (or the one text) as their reason."""
+        """Rows still open where ``mask`` holds get a reason: ``text(i)`` built for each such row (a number in
+        it), else ``text`` (one text, or a text per row)."""
         rows = np.flatnonzero(open_rows & mask)
-        for i in rows.tolist():
-            reason[i] = text(i) if callable(text) else text
+        if callable(text):
+            for i in rows.tolist():
+                reason[i] = text(i)
+        else:
+            reason[rows] = text if isinstance(text, str) else text[rows]
         open_rows[rows] = False
 
-    refusals = np.array([_refusal(res) for res, _ in resolved], dtype=object)
-    refuse(refusals.astype(bool)[codes], lambda i: refusals[codes[i]])
+    refusals = np.array([_refusal(res) for res, _ in resolved], dtype=object)[codes]
+    refuse(refusals.astype(bool), refusals)
     refuse(np.asarray(text_column(frame, "arrangement"), dtype=object) == "paired", PAIR_REASON)
     kinds_of_key = np.array([THERMAL_KIND.get(e.bearing_type) or "" if e is not None else "" for e in entries],
                             dtype=object)
