@@ -343,6 +343,7 @@ def settle_viscosity(frame: pd.DataFrame, results: pd.DataFrame, *, t_limit: flo
     A, B = number_column(frame, "_walther_A"), number_column(frame, "_walther_B")
     frame = frame.drop(columns=["_nu_pending", "_nu_fallback"])
     why_unsolved: dict[int, str] = {}
+    failed_at_provisional = failed_rows(results)
     T_op = np.full(len(frame), np.nan)
     balance_T = balance_status = None  # the heat balance's T_op of every row, kept for heat_balance_rows
     solving = pending
@@ -372,6 +373,12 @@ def settle_viscosity(frame: pd.DataFrame, results: pd.DataFrame, *, t_limit: flo
     problems += [(int(i), "warning", f"T_op: did not settle within {SETTLED_TEMPERATURE:g} K in {SETTLE_PASSES} "
                                      "passes (f2 read off the chart at nu*n*dM depends on the viscosity)")
                  for i in np.flatnonzero(solving)]
+    # a row the model refuses only at ν(T_op) (f2 off its chart at that nu*n*dM) is told where ν came from
+    nu = number_column(frame, "nu")
+    problems += [(int(i), "error", f"nu [mm^2/s]: {nu[i]:.4g}, taken at the operating temperature T_op = "
+                                   f"{T_op[i]:.4g} degC; give T_bearing and viscosity_at 'bearing', or nu, for "
+                                   "another viscosity")
+                 for i in np.flatnonzero(pending & ~np.isnan(T_op) & failed_rows(results) & ~failed_at_provisional)]
     source = frame["_nu_at"].to_numpy(dtype=object).copy()
     source[pending & ~np.isnan(T_op)] = "T_op"
     source[pending & fallback & np.isnan(T_op)] = "T_bearing"

@@ -158,3 +158,15 @@ def test_blocks_of_rows_give_the_same_numbers(monkeypatch):
     blocked = bh.calc(rows)
     pd.testing.assert_frame_equal(blocked, whole, check_exact=True)
     assert whole["nu_at"].eq("T_op").sum() >= 4 and whole["n_per [1/min]"].notna().sum() >= 4
+
+
+def test_a_row_off_the_f2_chart_at_T_op_is_told_where_nu_came_from():
+    out = bh.calc(_axially_loaded(**{"n [rpm]": 300}), f2_chart="docs/f2_chart_example.csv")
+    assert out["status"].tolist() == ["error"] and out["nu_at"].tolist() == ["T_op"]
+    assert out["message"].iat[0] == (
+        "f2: nu*n*dM = 2.567e+06 mm^3/(s*min) is outside curve 'A' (Fa/A = 0.5: 1000 to 1e+06); the Schaeffler "
+        "catalogue forbids extrapolating the chart; nu [mm^2/s]: 186, taken at the operating temperature T_op = "
+        "22.32 degC; give T_bearing and viscosity_at 'bearing', or nu, for another viscosity")
+    # at T_bearing (70 degC) the oil is thin enough for the chart
+    assert bh.calc(_axially_loaded(**{"n [rpm]": 300}), f2_chart="docs/f2_chart_example.csv",
+                   viscosity_at="bearing")["status"].tolist() == ["ok"]
