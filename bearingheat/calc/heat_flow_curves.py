@@ -23,7 +23,7 @@ def heat_flow_curves(frame: pd.DataFrame, results: pd.DataFrame, columns: pd.Dat
                      points: int = 200) -> dict | None:
     """Friction heat and heat carried away of the first row against speed and temperature (catalogue units).
 
-    ``frame`` holds the calc inputs after :func:`fill_viscosity` (with
+    ``frame`` holds the calc inputs after :func:`~bearingheat.calc.thermal.settle_viscosity` (with
     ``T_amb``), ``results`` the friction results of
     :func:`bearingheat.calc.models.compute_supports` and ``columns`` those of
     :func:`heat_balance_rows`. Returns None where the row has no heat flow

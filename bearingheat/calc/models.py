@@ -41,7 +41,8 @@ from bearingheat.kernels.thermal import friction_heat, friction_power
 
 __all__ = ["FrictionModel", "FrictionPower", "MODELS", "DEFAULT_MODEL", "get_model", "compute_supports",
            "RESULT_UNITS", "M2_REPORT_UNITS", "PLAIN_REPORT_UNITS", "MODEL_REPORT_UNITS", "EXTRA_INPUTS",
-           "model_inputs", "support_arrays_of", "row_model_names", "SKF", "failed_rows", "results_at_viscosity"]
+           "model_inputs", "support_arrays_of", "row_model_names", "SKF", "failed_rows", "plain_bushing_rows",
+           "results_at_viscosity"]
 
 Evaluation = Callable[[SupportArrays, Labels, "F2Chart | None"], "tuple[dict[str, np.ndarray], list[Problem]]"]
 
@@ -187,6 +188,22 @@ def failed_rows(results: pd.DataFrame) -> np.ndarray:
     return results["status"].to_numpy(dtype=object) == "error"
 
 
+def plain_bushing_rows(results: pd.DataFrame) -> np.ndarray:
+    """The rows of friction results (:func:`compute_supports`) that are plain bushings, not rolling bearings."""
+    if "bearing_type" not in results.columns:
+        return np.zeros(len(results), dtype=bool)
+    return (results["bearing_type"] == contract.PLAIN_TYPES[0]).to_numpy(dtype=bool)
+
+
+def _set_rows(results: pd.DataFrame, name: str, rows: np.ndarray, values, dtype=float) -> None:
+    """Write ``values`` into the rows ``rows`` of the column ``name`` of ``results`` (a new column of NaN where
+    it is absent); a text column stays an object column."""
+    column = (results[name].to_numpy(dtype=dtype).copy() if name in results.columns
+              else np.full(len(results), np.nan, dtype=dtype))
+    column[rows] = values
+    results[name] = pd.Series(column, index=results.index, dtype=dtype, copy=False)
+
+
 def _model_error(name: str) -> str:
     return f"model: {name!r} is not one of {', '.join(MODELS)}"
 
@@ -305,7 +322,7 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
             continue
         cells = np.array(np.broadcast_to(np.asarray(values, dtype=object), (n_rows,)))  # its own, writeable
         if name == "bearing_type":
-            cells[plain] = "plain_bushing"
+            cells[plain] = contract.PLAIN_TYPES[0]
         columns[name] = pd.Series(cells, index=frame.index, dtype=object, copy=False)
     columns["model"] = pd.Series(coded_categorical(model_codes, model_names), index=frame.index)
     return pd.DataFrame(columns, index=frame.index, copy=False)  # calc's own arrays: no copy into one block
@@ -330,32 +347,24 @@ def results_at_viscosity(frame: pd.DataFrame, results: pd.DataFrame, changed: np
     with_m2 = (~np.isnan(results["nu_n_dM"].to_numpy(dtype=float)) if "nu_n_dM" in results.columns
                else np.zeros(len(results), dtype=bool))
     again = changed & (failed_rows(results) | np.isnan(number_column(frame, "nu")) | with_m2
-                       | (results["bearing_type"] == "plain_bushing").to_numpy(dtype=bool)
-                       | np.array([u is None for u in updates], dtype=bool)[codes])
+                       | plain_bushing_rows(results) | np.array([u is None for u in updates], dtype=bool)[codes])
     for code in np.unique(codes[changed & ~again]).tolist():
         rows = np.flatnonzero(changed & ~again & (codes == code))
         supports = support_arrays_of(frame.iloc[rows])
         with np.errstate(all="ignore"):
             part = updates[code](supports, {name: results[name].to_numpy(dtype=float)[rows] for name in RESULTS})
         for name, values in part.items():
-            column = results[name].to_numpy(dtype=float).copy()
-            column[rows] = values
-            results[name] = column
+            _set_rows(results, name, rows, values)
     rows = np.flatnonzero(again)
     if len(rows):
         part = compute_supports(frame.iloc[rows].reset_index(drop=True), f2_chart=f2_chart,
                                 labels=(labels or Labels()).subset(rows), model=model)
         for name in part.columns.drop(["model", "bearing_type", "series"]):
             kind = object if part[name].dtype == object else float
-            column = (results[name].to_numpy(dtype=kind).copy() if name in results.columns
-                      else np.full(len(results), np.nan))
-            column[rows] = part[name].to_numpy(dtype=kind)
-            results[name] = column
+            _set_rows(results, name, rows, part[name].to_numpy(dtype=kind), kind)
         for name in results.columns.difference(part.columns):  # a result none of these rows has any more
             if results[name].dtype == np.float64:
-                column = results[name].to_numpy(dtype=float).copy()
-                column[rows] = np.nan
-                results[name] = column
+                _set_rows(results, name, rows, np.nan)
     return results
 
 

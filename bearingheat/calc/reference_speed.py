@@ -13,8 +13,8 @@ import math
 import numpy as np
 import pandas as pd
 
-from bearingheat.calc.supports import (coded_categorical, distinct_keys, first_rows, group_codes, number_column,
-                                       text_codes, text_column)
+from bearingheat.calc.supports import (coded_categorical, distinct_keys, fill_blank, first_rows, group_codes,
+                                       number_column, text_codes, text_column)
 from bearingheat.catalogue.friction import ResolvedBearing, resolve
 from bearingheat.catalogue.thermal import THERMAL_KIND, THERMAL_KINDS, method_refusal, reference_conditions
 from bearingheat.errors import DesignationError
@@ -85,9 +85,9 @@ def _details(frame: pd.DataFrame, f0_scale=1.0, f1_scale=1.0) -> pd.DataFrame:
     entries = [res.entry if res is not None else None for res, _ in resolved]
     ok = np.array([res is not None for res, _ in resolved], dtype=bool)[codes]
     # the bore and width printed in the designation fill blank cells
-    d = _blank_filled(number_column(frame, "d"), [_printed(res, "bore") for res, _ in resolved], codes)
+    d = fill_blank(number_column(frame, "d"), np.array([_printed(res, "bore") for res, _ in resolved])[codes])
     D = number_column(frame, "D")
-    B = _blank_filled(number_column(frame, "B"), [_printed(res, "width") for res, _ in resolved], codes)
+    B = fill_blank(number_column(frame, "B"), np.array([_printed(res, "width") for res, _ in resolved])[codes])
     T = number_column(frame, "T")
     d1 = number_column(frame, "d1")
     D1 = number_column(frame, "D1")
@@ -195,11 +195,6 @@ def _printed(res: ResolvedBearing | None, what: str) -> float:
     """The bore or width a designation prints (NaN where it prints none)."""
     value = getattr(res.designation, what, None) if res is not None and res.designation is not None else None
     return math.nan if value is None else float(value)
-
-
-def _blank_filled(values: np.ndarray, printed: list[float], codes: np.ndarray) -> np.ndarray:
-    """``values`` with the blank cells taken from the designation's printed value (per code)."""
-    return np.where(np.isnan(values), np.array(printed, dtype=float)[codes], values)
 
 
 def thermal_reference_speed_rows(frame: pd.DataFrame) -> pd.Series:

@@ -26,7 +26,8 @@ from bearingheat.errors import DesignationError
 
 __all__ = ["SupportArrays", "build_support_arrays", "bearing_constants", "NUMBER_INPUTS", "KEY_INPUTS",
            "text_column", "number_column", "text_codes", "distinct_keys", "group_codes", "text_or_default",
-           "value_codes", "text_categorical", "blanks_filled", "object_column", "column_codes", "coded_categorical"]
+           "value_codes", "text_categorical", "fill_blank", "blanks_filled", "object_column", "column_codes",
+           "coded_categorical", "first_rows", "nonblank", "text_in"]
 
 #: numeric inputs of the friction model, in catalogue units
 NUMBER_INPUTS = ("d", "D", "B", "C0", "Y", "e", "X0", "Y0", "alpha", "f0", "f1", "f2", "n", "nu", "Fr", "Fa")
@@ -272,7 +273,7 @@ def _constants_of_key(designation, bearing_type, series, lubrication, arrangemen
     return bearing_constants(resolved, lubrication, arrangement)
 
 
-def _fill_blank(given, printed):
+def fill_blank(given, printed):
     """``given`` where it is a number, ``printed`` where it is NaN (scalars stay scalars)."""
     return np.where(np.isnan(given), printed, given)
 
@@ -455,8 +456,8 @@ def build_support_arrays(keys: pd.DataFrame, numbers: dict[str, Any]) -> Support
     constants.update({name: spread(name, bool) for name in _BOOL})
     constants["f1_basis"] = spread("f1_basis", int)
     # bore and width printed in the designation fill empty cells (HK2016: d = 20, B = 16)
-    num["d"] = _fill_blank(num["d"], spread("bore", float))
-    num["B"] = _fill_blank(num["B"], spread("width", float))
+    num["d"] = fill_blank(num["d"], spread("bore", float))
+    num["B"] = fill_blank(num["B"], spread("width", float))
     if np.ndim(num["n"]) == 0:
         num["n"] = np.full(size, num["n"])  # the speed spans the rows
     return SupportArrays(size=size, **num, **constants, plain=np.asarray(plain, dtype=bool), notes=notes,

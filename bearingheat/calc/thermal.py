@@ -45,7 +45,7 @@ import numpy as np
 import pandas as pd
 
 from bearingheat.calc.contract import columns, register_choices
-from bearingheat.calc.models import DEFAULT_MODEL, FrictionPower, failed_rows, results_at_viscosity
+from bearingheat.calc.models import DEFAULT_MODEL, FrictionPower, failed_rows, plain_bushing_rows, results_at_viscosity
 from bearingheat.calc.reference_speed import thermal_reference_speed_details, thermal_reference_speed_rows
 from bearingheat.calc.supports import coded_categorical, number_column, text_codes
 from bearingheat.calc.viscosity import viscosity_model_rows
@@ -346,9 +346,12 @@ def settle_viscosity(frame: pd.DataFrame, results: pd.DataFrame, *, t_limit: flo
     failed_at_provisional = failed_rows(results)
     T_op = np.full(len(frame), np.nan)
     balance_T = balance_status = None  # the heat balance's T_op of every row, kept for heat_balance_rows
+    # the heat flows and ν(T) do not change from pass to pass (the pending rows' ν follows their Walther line)
+    flows, nu_at = _heat_flow_setup(frame), _viscosity_of_rows(frame, A, B)
     solving = pending
     for _ in range(SETTLE_PASSES):
-        T_new, unsolved, T_all, status_all = _solve_operating_temperature(frame, results, solving, t_limit)
+        T_new, unsolved, T_all, status_all = _solve_operating_temperature(frame, results, solving, t_limit,
+                                                                          flows, nu_at, ~np.isnan(A))
         if balance_T is None:
             balance_T, balance_status = T_all, status_all
         else:
@@ -389,28 +392,20 @@ def settle_viscosity(frame: pd.DataFrame, results: pd.DataFrame, *, t_limit: flo
     return frame, results, problems
 
 
-def _solve_operating_temperature(frame, results, rows, t_limit):
+def _solve_operating_temperature(frame, results, rows, t_limit, flows, nu_at, nu_varies):
     """T_op of the selected rows from their friction results (the other rows NaN), {row: why} of the selected
     rows whose T_op has no solution (a row in error is left to its own message), and the heat balance's T_op
-    and status of every row (:func:`_operating_point`)."""
-    details, k_q, T_amb, Q_E, Q_S, Q_L = _heat_flow_setup(frame)
-    A = number_column(frame, "_walther_A")
-    nu_at = _viscosity_of_rows(frame, A, number_column(frame, "_walther_B"))
-    T, status, _ = _operating_point(frame, results, nu_at, ~np.isnan(A), Q_S, Q_L, Q_E, T_amb, t_limit)
+    and status of every row (:func:`_operating_point`; ``flows`` of :func:`_heat_flow_setup`)."""
+    details, k_q, T_amb, Q_E, Q_S, Q_L = flows
+    T, status, _ = _operating_point(frame, results, nu_at, nu_varies, Q_S, Q_L, Q_E, T_amb, t_limit)
     reasons = details["reason"].to_numpy(dtype=object)
-    asked = rows & ~(failed_rows(results) | _plain_rows(results))
+    asked = rows & ~(failed_rows(results) | plain_bushing_rows(results))
     refused = asked & reasons.astype(bool)
     no_equilibrium = asked & ~refused & (status != 0)
     unsolved = {int(i): reasons[i] for i in np.flatnonzero(refused)}
     unsolved.update({int(i): _no_equilibrium_text(status[i], T_amb[i], t_limit)
                      for i in np.flatnonzero(no_equilibrium)})
     return np.where(asked & ~refused & (status == 0), T, np.nan), unsolved, T, status
-
-
-def _plain_rows(results: pd.DataFrame) -> np.ndarray:
-    if "bearing_type" not in results.columns:
-        return np.zeros(len(results), dtype=bool)
-    return (results["bearing_type"] == "plain_bushing").to_numpy(dtype=bool)
 
 
 def _no_equilibrium_text(status, T_amb, t_limit):
@@ -441,7 +436,7 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
     methods = _row_methods(frame, method, problems)
     has = set(frame.columns)
     # rows whose friction failed, and plain bushings (no rolling bearing heat balance), are skipped
-    failed = failed_rows(results) | _plain_rows(results)
+    failed = failed_rows(results) | plain_bushing_rows(results)
     columns: dict[str, np.ndarray | pd.Categorical] = {}
     wants_thr = bool({"B", "T", "d1", "D1"} & has) or "n_thr_catalogue" in has
     wants_balance = "T_amb" in has
