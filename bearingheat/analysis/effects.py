@@ -43,7 +43,7 @@ import pandas as pd
 from scipy import optimize
 
 from bearingheat.calc.friction import evaluate_catalogue_model
-from bearingheat.calc.messages import Labels
+from bearingheat.calc.messages import Labels, with_texts
 from bearingheat.calc.models import failed_rows, support_arrays_of
 from bearingheat.calc.supports import SupportArrays
 from bearingheat.errors import DiagnoseError
@@ -274,9 +274,10 @@ class Candidate:
         index = results.index
         results["MR"] = np.where(ok, rows.MR, results["MR"].to_numpy(dtype=float))
         results["NR"] = np.where(ok, friction.power_loss(rows.MR, rows.n), results["NR"].to_numpy(dtype=float))
-        for i, text in rows.notes.items():
-            current = str(results.at[index[i], "message"] or "")
-            results.at[index[i], "message"] = f"{current}; {text}" if current else text
+        current = results["message"].iloc[list(rows.notes)].tolist()
+        noted = [f"{now}; {text}" if now else text for now, text in zip(current, rows.notes.values())]
+        results["message"] = pd.Series(with_texts(results["message"], rows.notes.keys(), noted), index=index,
+                                       copy=False)
 
     def change(self, rows: CalcRows, parameters: dict[str, Any]) -> None:
         """Change ``rows.MR`` of the rows ``rows.ok`` by the fitted ``parameters`` (and ``rows.notes``)."""

@@ -41,6 +41,7 @@ __all__ = [
     "OWNERS",
     "PLAIN_TYPES",
     "ARRANGEMENTS",
+    "LABEL_COLUMNS",
     "column",
     "columns",
     "input_units",
@@ -71,6 +72,8 @@ OWNERS = {
 PLAIN_TYPES = ("plain_bushing",)
 #: how a bearing is mounted
 ARRANGEMENTS = ("single", "paired")
+#: input columns that label a row for the user: calc passes them through and no calculation reads them
+LABEL_COLUMNS = ("id",)
 
 
 @dataclass(frozen=True)

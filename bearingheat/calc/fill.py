@@ -61,7 +61,7 @@ def fill_from_catalogue(frame: pd.DataFrame, labels: Labels
                         ) -> tuple[pd.DataFrame, list[tuple[int, str, str]], dict[str, np.ndarray]]:
     """The frame (contract names, catalogue units) with blank :data:`FILLED` cells taken from the bearing
     table, (row position, 'error' | 'warning', message) problems for the rows that have them, and per
-    filled column the mask of the rows whose value came from the table."""
+    column the table filled somewhere the mask of the rows whose value came from the table."""
     if "designation" not in frame.columns or len(frame) == 0:
         return frame, [], {}
     codes, designations = text_codes(frame, "designation")  # each distinct designation looked up once
@@ -82,9 +82,9 @@ def fill_from_catalogue(frame: pd.DataFrame, labels: Labels
         catalogue = per_key[name][key]
         blank = np.isnan(given[first])
         taken = blank & ~np.isnan(catalogue)
-        from_table[name] = taken[groups]
-        if taken.any():
-            filled[name] = np.where(np.isnan(given), per_key[name][codes], given)
+        if taken.any():  # (a group's rows share their given values: each row takes its group's value)
+            from_table[name] = taken[groups]
+            filled[name] = np.where(blank, catalogue, given[first])[groups]
         steps = half_steps(name, per_key[name])[key]
         differing = ~blank & disagreeing(name, given[first], catalogue, steps)
         if differing.any():  # the words after the column's name, once a group; the name is the row's own cell

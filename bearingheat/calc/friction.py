@@ -149,7 +149,10 @@ def evaluate_catalogue_model(s: SupportArrays, labels: Labels, f2_chart: F2Chart
                 else pd.factorize(np.asarray(rules, dtype=object))
             for code, name in enumerate(names):
                 rows = is_p1 & (codes == code)
-                if rows.any():
+                count = np.count_nonzero(rows)
+                if count * 5 > n_rows:  # a rule of many rows: on all rows, kept where it applies (no gathering)
+                    np.copyto(P1, friction.effective_load(name, Fr, Fa, Y, e), where=rows)
+                elif count:
                     P1[rows] = friction.effective_load(name, Fr[rows], Fa[rows], Y[rows], e[rows])
     load = np.where(np.equal(s.m1_load, "Fa"), Fa, np.where(is_p1, P1, Fr))
 
@@ -206,7 +209,8 @@ def evaluate_catalogue_model(s: SupportArrays, labels: Labels, f2_chart: F2Chart
         "f0": f0, "f1": f1, "P0": P0, "P1": P1, "M0": M0, "M1": M1, "M2": M2, "MR": MR,
         "NR": friction.power_loss(MR, n), "Fa_over_A": Fa_over_A, "nu_n_dM": nu_n_dM,
     }
-    return {k: np.broadcast_to(np.asarray(v, dtype=float), shape) for k, v in results.items()}, problems
+    return {k: v if np.shape(v) == shape else np.broadcast_to(np.asarray(v, dtype=float), shape)
+            for k, v in results.items()}, problems
 
 
 def catalogue_model_at_viscosity(s: SupportArrays, results: dict[str, np.ndarray]) -> dict[str, np.ndarray]:

@@ -2,13 +2,19 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Callable
+from typing import Callable, Iterable
 
 import numpy as np
+import pandas as pd
 
 from bearingheat.calc.contract import input_units
 
-__all__ = ["Problem", "Labels", "at"]
+__all__ = ["Problem", "Labels", "at", "STATUS_LEVELS", "OK", "WARNING", "ERROR", "status_column", "status_codes",
+           "with_texts", "row_status"]
+
+#: a row's status in calc's ``status`` column, by its code (the order of severity)
+STATUS_LEVELS = ("ok", "warning", "error")
+OK, WARNING, ERROR = range(3)
 
 
 @dataclass
@@ -55,3 +61,49 @@ class Labels:
 def at(value, i):
     """Element i of a per-row array, or the value itself when it is one constant for all rows."""
     return value if np.ndim(value) == 0 else value[i]
+
+
+def status_column(codes: np.ndarray) -> pd.Categorical:
+    """The status of every row (codes OK, WARNING, ERROR) as the categorical calc keeps until it writes its
+    result: a comparison reads one byte a row, not a Python string."""
+    return pd.Categorical.from_codes(np.asarray(codes, dtype=np.int8), categories=pd.Index(STATUS_LEVELS))
+
+
+def status_codes(column: pd.Series) -> np.ndarray:
+    """OK, WARNING or ERROR of every row of a status column (:func:`status_column`, or text)."""
+    if isinstance(column.dtype, pd.CategoricalDtype) and tuple(column.cat.categories) == STATUS_LEVELS:
+        return column.cat.codes.to_numpy()
+    cells = column.to_numpy(dtype=object)
+    return np.select([cells == STATUS_LEVELS[ERROR], cells == STATUS_LEVELS[WARNING]], [ERROR, WARNING],
+                     OK).astype(np.int8)
+
+
+def with_texts(column: pd.Series | pd.Categorical, rows: Iterable[int], texts: Iterable[str]) -> pd.Categorical:
+    """A text column (categorical, or cells) as a categorical, with the cells at positions ``rows`` replaced by
+    ``texts``; the other rows keep their codes (no Python object per row)."""
+    cells = column.array if isinstance(column, pd.Series) else column
+    cells = cells if isinstance(cells, pd.Categorical) else pd.Categorical(np.asarray(cells, dtype=object))
+    categories = list(cells.categories)
+    code_of = {text: k for k, text in enumerate(categories)}
+    codes = cells.codes.astype(np.int32)
+    for row, text in zip(rows, texts):
+        code = code_of.get(text)
+        if code is None:
+            code = code_of[text] = len(categories)
+            categories.append(text)
+        codes[row] = code
+    return pd.Categorical.from_codes(codes, categories=pd.Index(categories, dtype=object))
+
+
+def row_status(size: int, warnings_by_row: dict[int, list[str]], errors_by_row: dict[int, list[str]]
+               ) -> tuple[pd.Categorical, pd.Categorical]:
+    """(status, message) of ``size`` rows from the messages of the rows that have some: a row with errors is
+    'error' and shows only them, a row with warnings 'warning'; the messages of a row are joined by '; '."""
+    codes = np.zeros(size, dtype=np.int8)
+    texts: dict[int, str] = {}
+    for level, by_row in ((WARNING, warnings_by_row), (ERROR, errors_by_row)):  # an error replaces the warnings
+        for i, found in by_row.items():
+            if found:
+                codes[i], texts[i] = level, "; ".join(found)
+    empty = pd.Categorical.from_codes(np.zeros(size, dtype=np.int8), categories=pd.Index([""], dtype=object))
+    return status_column(codes), with_texts(empty, texts.keys(), texts.values())

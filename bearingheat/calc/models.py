@@ -31,9 +31,9 @@ from bearingheat.calc.bushing import plain_rows
 from bearingheat.calc.friction import EXCEL_FORMULAS, RESULTS, catalogue_model_at_viscosity, evaluate_catalogue_model
 from bearingheat.calc.skf import RESULTS as SKF_RESULTS
 from bearingheat.calc.skf import evaluate_skf_model
-from bearingheat.calc.messages import Labels, Problem
-from bearingheat.calc.supports import KEY_INPUTS, NUMBER_INPUTS, SupportArrays, build_support_arrays, \
-    coded_categorical, column_codes, nonblank, number_column, object_column, text_codes
+from bearingheat.calc.messages import ERROR, Labels, Problem, row_status, status_codes, with_texts
+from bearingheat.calc.supports import BEARING_GROUP, KEY_INPUTS, NUMBER_INPUTS, SupportArrays, \
+    build_support_arrays, coded_categorical, column_codes, nonblank, number_column, text_codes
 from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.errors import ModelError
 from bearingheat.kernels.friction import mean_diameter
@@ -154,7 +154,7 @@ def model_inputs(frame: pd.DataFrame) -> dict:
 
 def support_arrays_of(frame: pd.DataFrame) -> SupportArrays:
     """The support arrays of a frame in catalogue units (contract names), with the models' extra inputs."""
-    keys = frame[[c for c in KEY_INPUTS if c in frame.columns]]
+    keys = frame[[c for c in (*KEY_INPUTS, BEARING_GROUP) if c in frame.columns]]
     supports = build_support_arrays(keys if len(keys.columns) else pd.DataFrame(index=frame.index),
                                     {c: number_column(frame, c) for c in NUMBER_INPUTS})
     supports.extra = model_inputs(frame)
@@ -183,9 +183,8 @@ def row_model_names(frame: pd.DataFrame, default: str) -> np.ndarray:
 
 
 def failed_rows(results: pd.DataFrame) -> np.ndarray:
-    """The rows of friction results (:func:`compute_supports`) in error (numpy's comparison of the object column:
-    a quarter of the time of pandas')."""
-    return results["status"].to_numpy(dtype=object) == "error"
+    """The rows of friction results (:func:`compute_supports`) in error."""
+    return status_codes(results["status"]) == ERROR
 
 
 def plain_bushing_rows(results: pd.DataFrame) -> np.ndarray:
@@ -195,13 +194,13 @@ def plain_bushing_rows(results: pd.DataFrame) -> np.ndarray:
     return (results["bearing_type"] == contract.PLAIN_TYPES[0]).to_numpy(dtype=bool)
 
 
-def _set_rows(results: pd.DataFrame, name: str, rows: np.ndarray, values, dtype=float) -> None:
-    """Write ``values`` into the rows ``rows`` of the column ``name`` of ``results`` (a new column of NaN where
-    it is absent); a text column stays an object column."""
-    column = (results[name].to_numpy(dtype=dtype).copy() if name in results.columns
-              else np.full(len(results), np.nan, dtype=dtype))
+def _set_rows(results: pd.DataFrame, name: str, rows: np.ndarray, values) -> None:
+    """Write ``values`` into the rows ``rows`` of the number column ``name`` of ``results`` (a new column of NaN
+    where it is absent)."""
+    column = (results[name].to_numpy(dtype=float).copy() if name in results.columns
+              else np.full(len(results), np.nan))
     column[rows] = values
-    results[name] = pd.Series(column, index=results.index, dtype=dtype, copy=False)
+    results[name] = pd.Series(column, index=results.index, copy=False)
 
 
 def _model_error(name: str) -> str:
@@ -220,16 +219,25 @@ def _scatter(results: dict, part: dict, rows: np.ndarray, size: int) -> None:
         results[name][rows] = values
 
 
+def _own_row_array(values, size: int) -> np.ndarray:
+    """``values`` (an array of ``size`` rows or one value) as a writeable float array of ``size`` rows: the model's
+    own array as it is, a copy of a view or of a broadcast value."""
+    if isinstance(values, np.ndarray) and values.shape == (size,) and values.dtype == np.float64 \
+            and values.flags.writeable and values.flags.owndata:
+        return values
+    return np.array(np.broadcast_to(values, (size,)), dtype=float)
+
+
 def evaluate_models(supports: SupportArrays, model_codes: np.ndarray, model_names: list[str], labels: Labels,
                     f2_chart: F2Chart | None):
     """Each row by its own model (``model_names[model_codes]``); returns (results, problems) over all rows."""
     size = supports.size
-    used = set(np.unique(model_codes).tolist())
+    used = np.flatnonzero(np.bincount(model_codes, minlength=len(model_names))).tolist()  # codes are 0, 1, ...
     present = [name for name in MODELS if any(model_names[k] == name for k in used)]
     if len(present) == 1 and all(model_names[k] == present[0] for k in used):
         with np.errstate(all="ignore"):
             one_model, one_model_problems = MODELS[present[0]].evaluate(supports, labels, f2_chart)
-        filled = {k: np.array(np.broadcast_to(v, (size,)), dtype=float) for k, v in one_model.items()}
+        filled = {k: _own_row_array(v, size) for k, v in one_model.items()}
         for name in RESULTS:
             filled.setdefault(name, np.full(size, np.nan))
         return filled, one_model_problems
@@ -294,15 +302,8 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
     notes_of = np.broadcast_to(supports.notes, (n_rows,))
     for i in np.flatnonzero(np.broadcast_to(supports.noted, (n_rows,)) & ~plain).tolist():  # after the warnings
         warnings_by_row[i].append("; ".join(notes_of[i]))  # a designation's notes
-    status = object_column(n_rows, "ok")
-    message = object_column(n_rows, "")
-    failed = np.zeros(n_rows, dtype=bool)
-    for i, texts in warnings_by_row.items():
-        if texts:
-            status[i], message[i] = "warning", "; ".join(texts)
-    for i, texts in row_errors.items():  # an error replaces the row's warnings
-        if texts:
-            status[i], message[i], failed[i] = "error", "; ".join(texts), True
+    status, message = row_status(n_rows, warnings_by_row, row_errors)
+    failed = status.codes == ERROR
     reported = list(RESULT_UNITS)
     if "nu_n_dM" in results and np.any(~np.isnan(results["nu_n_dM"]) & ~failed):
         reported += list(M2_REPORT_UNITS)
@@ -312,9 +313,9 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
     any_failed = failed.any()  # (the arrays of evaluate_models are its own: no copy where no row failed)
     columns: dict[str, Any] = {col: np.where(failed, np.nan, results[col]) if any_failed else results[col]
                                for col in reported}
-    # status and message stay object arrays (the messages of later steps are written into them); the bearing
-    # type and series stay categoricals where the support arrays hold them so
-    columns.update({name: pd.Series(values, index=frame.index, dtype=object, copy=False)
+    # status and message are categoricals (messages.row_status); the bearing type and series stay categoricals
+    # where the support arrays hold them so
+    columns.update({name: pd.Series(values, index=frame.index, copy=False)
                     for name, values in (("status", status), ("message", message))})
     for name, values in (("bearing_type", supports.bearing_type), ("series", supports.series)):
         if isinstance(values, pd.Categorical) and not (name == "bearing_type" and plain.any()):
@@ -360,8 +361,11 @@ def results_at_viscosity(frame: pd.DataFrame, results: pd.DataFrame, changed: np
         part = compute_supports(frame.iloc[rows].reset_index(drop=True), f2_chart=f2_chart,
                                 labels=(labels or Labels()).subset(rows), model=model)
         for name in part.columns.drop(["model", "bearing_type", "series"]):
-            kind = object if part[name].dtype == object else float
-            _set_rows(results, name, rows, part[name].to_numpy(dtype=kind), kind)
+            if part[name].dtype.kind in "fiub":
+                _set_rows(results, name, rows, part[name].to_numpy(dtype=float))
+            else:  # status, message: categoricals
+                results[name] = pd.Series(with_texts(results[name], rows.tolist(), part[name].tolist()),
+                                          index=results.index, copy=False)
         for name in results.columns.difference(part.columns):  # a result none of these rows has any more
             if results[name].dtype == np.float64:
                 _set_rows(results, name, rows, np.nan)

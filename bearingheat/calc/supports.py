@@ -27,7 +27,8 @@ from bearingheat.errors import DesignationError
 __all__ = ["SupportArrays", "build_support_arrays", "bearing_constants", "NUMBER_INPUTS", "KEY_INPUTS",
            "text_column", "number_column", "text_codes", "distinct_keys", "group_codes", "text_or_default",
            "value_codes", "text_categorical", "fill_blank", "blanks_filled", "object_column", "column_codes",
-           "coded_categorical", "first_rows", "nonblank", "text_in"]
+           "coded_categorical", "first_rows", "nonblank", "text_in", "BEARING_INPUTS", "BEARING_GROUP",
+           "with_bearing_groups"]
 
 #: numeric inputs of the friction model, in catalogue units
 NUMBER_INPUTS = ("d", "D", "B", "C0", "Y", "e", "X0", "Y0", "alpha", "f0", "f1", "f2", "n", "nu", "Fr", "Fa")
@@ -320,44 +321,66 @@ def _combined_codes(parts: list[tuple[np.ndarray, int]], size: int) -> np.ndarra
     return pd.factorize(combined, sort=False)[0].astype(np.int64)
 
 
+#: inputs that describe a bearing and how it is mounted and lubricated, not its operating point: calc numbers its
+#: rows by them once (:func:`with_bearing_groups`), and every later grouping by some of them reads those numbers
+BEARING_INPUTS = ("designation", "type", "series", "lubrication", "arrangement", "d", "D", "B", "T", "d1", "D1",
+                  "C0", "e", "Y", "X0", "Y0", "alpha", "n_G", "f0")
+#: the hidden column of calc's frame that holds those numbers
+BEARING_GROUP = "_bearing_group"
+
+
+def with_bearing_groups(frame: pd.DataFrame) -> pd.DataFrame:
+    """``frame`` (contract names) with the hidden column :data:`BEARING_GROUP`: one code per row for its values
+    in the :data:`BEARING_INPUTS` it has. Only what is a function of those values (the catalogue's fill) may
+    change them afterwards: :func:`group_codes` trusts the codes."""
+    names = [name for name in BEARING_INPUTS if name in frame.columns]
+    codes = group_codes(frame, names) if names else np.zeros(len(frame), dtype=np.int64)
+    return frame.assign(**{BEARING_GROUP: codes})
+
+
 def group_codes(frame: pd.DataFrame, names: list[str]) -> np.ndarray:
     """One code per row for its values in the columns ``names`` (missing values are one value), numbered in
-    order of first appearance: ``groupby(names).ngroup()`` without pandas' groupby machinery. The float
-    columns among them are factorized together (:func:`_float_codes`)."""
-    parts = []
-    floats = [frame[name].to_numpy() for name in names if frame[name].dtype == np.float64]
-    if len(floats) > 1:
-        codes = _float_codes(floats)
-        parts.append((codes, int(codes.max()) + 1 if len(codes) else 1))
+    order of first appearance: ``groupby(names).ngroup()`` without pandas' groupby machinery. The columns
+    are hashed together (:func:`_hashed_codes`). Where the frame numbers its bearings
+    (:func:`with_bearing_groups`) and ``names`` are all :data:`BEARING_INPUTS`, only the first row of each
+    bearing is looked at."""
+    if BEARING_GROUP in frame.columns and len(frame) > 1 and set(names) <= set(BEARING_INPUTS):
+        bearings = pd.factorize(frame[BEARING_GROUP].to_numpy(), sort=False)[0]  # dense again in a subset
+        return group_codes(frame.iloc[first_rows(bearings)][list(names)], names)[bearings]
+    columns = []  # float columns by their bits, the others by their codes (missing: one code of its own)
     for name in names:
-        if len(floats) > 1 and frame[name].dtype == np.float64:
-            continue
-        codes, uniques = column_codes(frame[name])
-        parts.append((np.where(codes < 0, len(uniques), codes), len(uniques) + 1))
-    return _combined_codes(parts, len(frame))
+        if frame[name].dtype == np.float64:
+            columns.append(np.ascontiguousarray(frame[name].to_numpy()).view(np.uint64))
+        else:
+            codes, _ = column_codes(frame[name])
+            columns.append(codes.astype(np.int64).view(np.uint64))
+    if not columns:
+        return np.zeros(len(frame), dtype=np.int64)
+    return _hashed_codes(columns)
 
 
-#: odd 64-bit multiplier of the hash that mixes float columns (2^64 / golden ratio)
+#: odd 64-bit multiplier of the hash that mixes key columns (2^64 / golden ratio)
 _MIX = np.uint64(0x9E3779B97F4A7C15)
 
 
-def _float_codes(columns: list[np.ndarray]) -> np.ndarray:
-    """One code per row for its values in the float ``columns``, in order of first appearance: the bit patterns
-    mixed into one 64-bit hash, factorized once (one pass instead of one per column). Rows of one code are
-    checked to hold the same bits in every column; on a hash collision each column is factorized on its own.
-    Equal values of other bits (0.0 and -0.0, NaNs of other payloads) get codes of their own: more groups,
-    never fewer."""
-    bits = [np.ascontiguousarray(c).view(np.uint64) for c in columns]
-    mixed = np.zeros(len(bits[0]), dtype=np.uint64)
-    for column in bits:
+def _hashed_codes(columns: list[np.ndarray]) -> np.ndarray:
+    """One code per row for its values in the 64-bit ``columns`` (a float's bits, a text's code), in order of
+    first appearance: the columns mixed into one 64-bit hash, factorized once (one pass instead of one per
+    column). Rows of one code are checked to hold the same bits in every column; on a hash collision the
+    columns are factorized one by one. Equal floats of other bits (0.0 and -0.0, NaNs of other payloads) get
+    codes of their own: more groups, never fewer."""
+    if len(columns) == 1:
+        return pd.factorize(columns[0], sort=False)[0].astype(np.int64)
+    mixed = np.zeros(len(columns[0]), dtype=np.uint64)
+    for column in columns:
         mixed = (mixed ^ column) * _MIX  # wraps modulo 2^64; a product carries bits upwards only ...
         mixed ^= mixed >> np.uint64(31)  # ... so the high ones (a float's exponent) are folded down
     codes = pd.factorize(mixed, sort=False)[0].astype(np.int64)
     first = first_rows(codes)
-    if all(np.array_equal(column, column[first][codes]) for column in bits):
+    if all(np.array_equal(column, column[first][codes]) for column in columns):
         return codes
-    parts = [(c, int(c.max()) + 1 if len(c) else 1) for c in (pd.factorize(column, sort=False)[0] for column in bits)]
-    return _combined_codes(parts, len(bits[0]))
+    parts = [(c, int(c.max()) + 1 if len(c) else 1) for c in (pd.factorize(column, sort=False)[0] for column in columns)]
+    return _combined_codes(parts, len(columns[0]))
 
 
 def nonblank(values: Any, size: int) -> np.ndarray:
@@ -422,10 +445,18 @@ def build_support_arrays(keys: pd.DataFrame, numbers: dict[str, Any]) -> Support
         f0_given = ~np.isnan(np.broadcast_to(num["f0"], (size,)))
     else:  # one bearing: f0 is given for all its points or for none
         f0_given = np.array([not np.all(np.isnan(num["f0"]))])
+    one_key_row = len(keys) == 1
+    bearings = None
+    if BEARING_GROUP in keys.columns and len(keys) == size > 1:  # calc's frame: the keys of each bearing's first row
+        bearings = pd.factorize(keys[BEARING_GROUP].to_numpy(), sort=False)[0]
+        first = first_rows(bearings)
+        keys, f0_given = keys.iloc[first], f0_given[first]
     parts = [text_codes(keys, name) for name in KEY_INPUTS]
     arrangement = KEY_INPUTS.index("arrangement")
     parts[arrangement] = (parts[arrangement][0], [text or "single" for text in parts[arrangement][1]])
     codes, uniques = distinct_keys([*parts, (f0_given.astype(np.int64), [False, True])])
+    if bearings is not None:
+        codes = codes[bearings]
     per_key = [_constants_of_key(*key) for key in uniques]
     plain_keys = np.array([(key[1] or "").lower() in PLAIN_TYPES for key in uniques], dtype=bool)
     notes_of_key = np.empty(len(per_key), dtype=object)
@@ -433,7 +464,7 @@ def build_support_arrays(keys: pd.DataFrame, numbers: dict[str, Any]) -> Support
         notes_of_key[k] = tuple(constants_of_key["notes"])
     noted_key = np.array([bool(n) for n in notes_of_key], dtype=bool)
 
-    if len(uniques) == 1 and len(keys) == 1:
+    if len(uniques) == 1 and one_key_row:
         def spread(name, dtype):
             return np.asarray(per_key[0][name], dtype=dtype)[()]
 

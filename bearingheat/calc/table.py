@@ -32,10 +32,11 @@ import pyarrow as pa
 from bearingheat.calc import contact, thermal
 from bearingheat.calc.thermal import (DEFAULT_SPEED_FACTOR_METHOD, DEFAULT_VISCOSITY_AT, SPEED_FACTOR_METHODS,
                                      VISCOSITY_AT)
-from bearingheat.calc.contract import (PLAIN_TYPES, input_units, output_header, output_units, parse_header,
+from bearingheat.calc.contract import (LABEL_COLUMNS, PLAIN_TYPES, input_units, output_header, output_units, parse_header,
                                        range_problems)
-from bearingheat.calc.messages import Labels
-from bearingheat.calc.supports import blanks_filled, number_column, per_distinct, text_categorical, text_column
+from bearingheat.calc.messages import ERROR, OK, WARNING, Labels, status_codes, status_column, with_texts
+from bearingheat.calc.supports import (blanks_filled, number_column, per_distinct, text_categorical, text_column,
+                                       with_bearing_groups)
 from bearingheat.calc.distributed import calc_dask, is_dask_frame
 from bearingheat.calc.fill import fill_from_catalogue
 from bearingheat.calc.uncertainty import fill_from_coefficients, has_uncertainty, uncertainty_bands
@@ -179,14 +180,18 @@ def to_catalogue_units(table: pd.DataFrame, *, units: dict[str, str] | None = No
     warnings: defaultdict[int, list[str]] = defaultdict(list)
     columns: dict[str, np.ndarray | pd.Series] = {}
     headers: dict[str, tuple[str, float]] = {}
+    seen: set[str] = set()
     for header in table.columns:
         name, unit_text = parse_header(header)
         if unit_text is None and units is not None:
             unit_text = units.get(header)
         if name not in known:
             continue
-        if name in columns:
+        if name in seen:
             raise InputError(f"column {header!r}: {name} appears twice")
+        seen.add(name)
+        if name in LABEL_COLUMNS:  # passed through as typed (the output keeps the input columns)
+            continue
         target = known[name]
         display = f"{name} [{unit_text}]" if unit_text not in (None, "", "-", "1") else name
         if target == "":
@@ -353,7 +358,7 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
     if viscosity_at not in VISCOSITY_AT:
         raise InputError(f"viscosity_at: {viscosity_at!r} is not one of {', '.join(VISCOSITY_AT)}")
     converted = to_catalogue_units(table, units=units, cell=cell)
-    frame = converted.frame
+    frame = with_bearing_groups(converted.frame)  # rows alike in every bearing input: one bearing
     if n_per_method != DEFAULT_SPEED_FACTOR_METHOD:  # the table's default for blank n_per_method cells
         frame = frame.assign(n_per_method=blanks_filled(frame, "n_per_method", n_per_method))
     if viscosity_at != DEFAULT_VISCOSITY_AT:  # the table's default for blank viscosity_at cells
@@ -457,24 +462,26 @@ def _flagged(row_messages: dict[int, list[str]]):
 def _add_messages(results: pd.DataFrame, items: list[tuple[int, str, str, bool]]) -> None:
     """Add (row position, 'error' | 'warning', message, first) to the rows' messages in order: ``first`` puts
     a message before the row's message so far. An error makes its row 'error' with NaN results, a warning
-    makes an 'ok' row 'warning'. One pass over the messages; the columns are written once."""
+    makes an 'ok' row 'warning'. One pass over the messages; the columns are written once, by their codes."""
     if not items:
         return
-    messages = results["message"].to_numpy(dtype=object).copy()
-    status = results["status"].to_numpy(dtype=object).copy()
+    before = status_codes(results["status"])
+    status = before.copy()
+    cells = results["message"].array
+    if not isinstance(cells, pd.Categorical):
+        cells = pd.Categorical(np.asarray(cells, dtype=object))
+    categories, codes = cells.categories, cells.codes
+    texts: dict[int, str] = {}
     for position, level, message, first in items:
-        current = messages[position]
-        messages[position] = (f"{message}; {current}" if first else f"{current}; {message}") if current else message
+        current = texts[position] if position in texts else categories[codes[position]]
+        texts[position] = (f"{message}; {current}" if first else f"{current}; {message}") if current else message
         if level == "error":
-            status[position] = "error"
-        elif status[position] == "ok":
-            status[position] = "warning"
-    failed = status == "error"
-    newly_failed = failed & (results["status"].to_numpy(dtype=object) != "error")
-    # object columns as compute_supports made them (pandas 3 would turn the arrays into Arrow strings, which the
-    # next steps turn back)
-    results["message"] = pd.Series(messages, index=results.index, dtype=object, copy=False)
-    results["status"] = pd.Series(status, index=results.index, dtype=object, copy=False)
+            status[position] = ERROR
+        elif status[position] == OK:
+            status[position] = WARNING
+    newly_failed = (status == ERROR) & (before != ERROR)
+    results["message"] = pd.Series(with_texts(cells, texts.keys(), texts.values()), index=results.index, copy=False)
+    results["status"] = pd.Series(status_column(status), index=results.index, copy=False)
     if newly_failed.any():
         results.loc[newly_failed, list(RESULT_UNITS)] = np.nan
 
@@ -497,8 +504,8 @@ def _assemble(table: pd.DataFrame, results: pd.DataFrame, extension_columns) -> 
                 values = np.where(failed, np.nan, values)
             written[output_header(name, units.get(name, ""))] = values
     _refuse_non_finite(written, results, failed)
-    written["status"] = results["status"].to_numpy()
-    written["message"] = results["message"].to_numpy()
+    written["status"] = results["status"].array
+    written["message"] = results["message"].array
     # the caller's frame holds the arrays as they are (no copy into one block); a read-only view of calc's
     # internal frames is copied, so that the caller can change the cells
     columns_out = {header: _text(values) if isinstance(values, pd.Categorical) or values.dtype == object

@@ -122,3 +122,43 @@ def test_group_codes_are_pandas_groups_in_order_of_first_appearance(distinct):
     names = [*frame.columns]
     expected = frame.groupby(names, sort=False, dropna=False, observed=True).ngroup().to_numpy()
     assert np.array_equal(sp.group_codes(frame, names), expected)
+
+
+def test_group_codes_survive_a_hash_collision(monkeypatch):
+    """Rows whose hashes collide are told apart by the check against their group's first row: with a hash that
+    maps everything to one value, group_codes still gives pandas' groups."""
+    rng = np.random.default_rng(11)
+    frame = pd.DataFrame({"a": rng.integers(0, 4, 1000).astype(float), "b": rng.integers(0, 3, 1000).astype(float),
+                          "text": pd.Categorical.from_codes(rng.integers(-1, 2, 1000), categories=["x", "y"])})
+    monkeypatch.setattr(sp, "_MIX", np.uint64(0))  # every row hashes to 0
+    names = [*frame.columns]
+    expected = frame.groupby(names, sort=False, dropna=False, observed=True).ngroup().to_numpy()
+    assert np.array_equal(sp.group_codes(frame, names), expected)
+
+
+def test_bearing_groups_give_the_groups_of_the_columns_themselves():
+    """A frame that numbers its bearings (with_bearing_groups) groups by any of the bearing inputs through those
+    numbers; the groups are the ones of the columns themselves, for the whole frame and for a subset of its rows
+    (whose numbers are no longer 0, 1, ...)."""
+    rng = np.random.default_rng(5)
+    rows = 3000
+    frame = pd.DataFrame({"designation": pd.Categorical.from_codes(rng.integers(-1, 4, rows),
+                                                                   categories=["6205", "6206", "NU208-E", "30208-A"]),
+                          "d": rng.integers(0, 3, rows) * 5.0 + 25, "C0": rng.choice([7.8, np.nan, 11.2], rows),
+                          "n": rng.uniform(0, 3000, rows)})
+    numbered = sp.with_bearing_groups(frame)
+    assert sp.BEARING_GROUP in numbered.columns and "n" not in sp.BEARING_INPUTS
+    subset = np.sort(rng.choice(rows, 700, replace=False))
+    for names in (["designation", "d", "C0"], ["designation"], ["d", "C0"], ["C0"]):
+        assert np.array_equal(sp.group_codes(numbered, names), sp.group_codes(frame, names))
+        assert np.array_equal(sp.group_codes(numbered.iloc[subset], names), sp.group_codes(frame.iloc[subset], names))
+    # a grouping by an operating input does not read the bearing numbers
+    assert np.array_equal(sp.group_codes(numbered, ["d", "n"]), sp.group_codes(frame, ["d", "n"]))
+    with_keys = numbered.assign(lubrication="oil_bath")
+    supports = sp.build_support_arrays(with_keys[["designation", "lubrication", sp.BEARING_GROUP]],
+                                       {"d": numbered["d"].to_numpy(), "n": numbered["n"].to_numpy()})
+    plain = sp.build_support_arrays(with_keys[["designation", "lubrication"]],
+                                    {"d": numbered["d"].to_numpy(), "n": numbered["n"].to_numpy()})
+    for name in ("f0_table", "f1_a", "f1_x", "X0_table", "Y0_table"):
+        assert np.array_equal(getattr(supports, name), getattr(plain, name), equal_nan=True), name
+    assert list(supports.bearing_type) == list(plain.bearing_type)

@@ -1,0 +1,39 @@
+"""Row status and messages as calc keeps them: categoricals written by their codes."""
+import numpy as np
+import pandas as pd
+
+import bearingheat as bh
+from bearingheat.calc import messages
+
+
+def test_row_status_joins_messages_and_an_error_replaces_warnings():
+    status, message = messages.row_status(4, {1: ["w1", "w2"], 2: ["w3"], 3: []}, {2: ["e1"]})
+    assert list(status) == ["ok", "warning", "error", "ok"]
+    assert list(message) == ["", "w1; w2", "e1", ""]
+    assert messages.status_codes(pd.Series(status)).tolist() == [messages.OK, messages.WARNING, messages.ERROR,
+                                                                  messages.OK]
+
+
+def test_status_codes_of_a_text_column():
+    column = pd.Series(["ok", "error", "warning", "ok"])
+    assert messages.status_codes(column).tolist() == [0, 2, 1, 0]
+
+
+def test_with_texts_replaces_only_the_given_rows():
+    column = pd.Series(pd.Categorical(["", "a", "", "b"]))
+    changed = messages.with_texts(column, [0, 3], ["c", "a"])
+    assert list(changed) == ["c", "a", "", "a"]
+    assert list(column) == ["", "a", "", "b"]  # the column itself is left as it was
+    assert list(messages.with_texts(np.array(["x", "y"], dtype=object), [1], ["z"])) == ["x", "z"]
+
+
+def test_calc_writes_status_and_message_as_text():
+    """The categoricals stay inside calc: the result has the text columns pandas makes of text."""
+    rows = pd.DataFrame({"designation": ["6205", "6205"], "d [mm]": [25, 25], "D [mm]": [52, 52],
+                         "C0 [kN]": [7.8, 7.8], "lubrication": ["oil_bath", "oil_bath"], "n [rpm]": [3000, 3000],
+                         "Fr [kN]": [2, -1], "nu [mm^2/s]": [12, 12]})
+    out = bh.calc(rows)
+    text = pd.Series(["text"]).dtype
+    assert out["status"].dtype == text and out["message"].dtype == text
+    assert out["status"].tolist() == ["ok", "error"]
+    assert out["message"].tolist() == ["", "Fr [kN]: -1 must be >= 0"]
