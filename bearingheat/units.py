@@ -340,7 +340,7 @@ def parse_quantity(text: str, *, name: str = "value") -> Quantity:
 
 
 def convert_column(numbers: np.ndarray, unit_text: str | None, target: str, *, name: str,
-                   header: str | None = None) -> tuple[np.ndarray, float]:
+                   header: str | None = None, copy: bool = True) -> tuple[np.ndarray, float]:
     """Numbers of a column headed ``name [unit_text]`` in the catalogue unit ``target``.
 
     The one converter of header units (calc tables, workbooks, measured
@@ -349,6 +349,8 @@ def convert_column(numbers: np.ndarray, unit_text: str | None, target: str, *, n
     the column), NaN for an absolute temperature (an offset conversion of
     the whole column). ``target`` ``'1'`` is a dimensionless number and
     ``'1/min'`` a shaft speed (revolutions per time; rad/s divided by 2π).
+    The values are ``numbers`` themselves for a dimensionless column, and
+    for the catalogue unit where ``copy`` is false; else a new array.
     Raises :class:`UnitError` saying what is wrong with the unit; callers
     prefix the column.
 
@@ -374,6 +376,8 @@ def convert_column(numbers: np.ndarray, unit_text: str | None, target: str, *, n
     if math.isnan(factor):  # an absolute temperature (K, degC, degF): offset conversion of the whole column
         unit = parse_unit(str(unit_text), name=header)
         return np.asarray(ureg().Quantity(numbers, unit).to(target).magnitude, dtype=float), math.nan
+    if factor == 1.0 and not copy:  # the catalogue unit itself: no pass over the column
+        return numbers, factor
     return numbers * factor, factor
 
 

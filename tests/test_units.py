@@ -47,6 +47,16 @@ def test_convert_column_values_and_factor(unit, target, values, expected, factor
     assert f == pytest.approx(factor, rel=1e-12)
 
 
+def test_convert_column_copies_unless_told_not_to():
+    """A column already in the catalogue unit is a new array by default (the caller may change it), and the
+    numbers themselves with copy=False (calc copies a view of the user's table itself)."""
+    numbers = np.array([25.0, 30.0])
+    copied, factor = convert_column(numbers, "mm", "mm", name="d")
+    assert factor == 1.0 and copied is not numbers and copied.tolist() == [25.0, 30.0]
+    assert convert_column(numbers, "mm", "mm", name="d", copy=False)[0] is numbers
+    assert convert_column(numbers, "m", "mm", name="d", copy=False)[0].tolist() == [25000.0, 30000.0]
+
+
 def test_convert_column_absolute_temperature_has_no_factor():
     out, f = convert_column(np.array([293.15, 373.15]), "K", "degC", name="T_amb")
     assert out == pytest.approx([20.0, 100.0], abs=1e-12)

@@ -19,6 +19,8 @@ from typing import Any, Callable, TypeAlias
 
 import numpy as np
 import pandas as pd
+import pyarrow as pa
+import pyarrow.compute as pc
 
 from bearingheat.calc.contract import ARRANGEMENTS, PLAIN_TYPES
 from bearingheat.catalogue.friction import LUBRICATION_F0_COLUMN, ResolvedBearing, resolve
@@ -140,12 +142,20 @@ def object_column(size: int, value: Any) -> np.ndarray:
 
 
 def column_codes(values: pd.Series) -> tuple[np.ndarray, np.ndarray]:
-    """pd.factorize of a column (missing values: code -1), fast on Arrow columns of many chunks; a categorical
+    """pd.factorize of a column (missing values: code -1), by pyarrow for an Arrow text column of one chunk, fast
+    on Arrow columns of many chunks; a categorical
     column (calc's text columns, :func:`text_categorical`) gives its own codes and categories."""
     if isinstance(values.dtype, pd.CategoricalDtype):
         return values.cat.codes.to_numpy(), values.cat.categories.to_numpy(dtype=object)
     arrow = getattr(values.array, "__arrow_array__", None)
-    if arrow is not None and getattr(arrow(), "num_chunks", 1) > 16:
+    chunked = arrow() if arrow is not None else None
+    if getattr(chunked, "num_chunks", 0) == 1 and (pa.types.is_string(chunked.type)
+                                                   or pa.types.is_large_string(chunked.type)):
+        # pyarrow's own hash of its strings: codes in order of first appearance as pd.factorize's, null -1
+        encoded = chunked.chunk(0).dictionary_encode()
+        codes = pc.fill_null(encoded.indices, -1).to_numpy().astype(np.intp)
+        return codes, np.array(encoded.dictionary.to_pylist(), dtype=object)
+    if chunked is not None and getattr(chunked, "num_chunks", 1) > 16:
         # pandas factorizes an Arrow array chunk by chunk: a column concatenated from many frames holds one
         # chunk per frame (10^6 rows in 4*10^4 chunks: 0.16 s a column), as Python objects 0.015 s
         values = pd.Series(values.to_numpy(dtype=object), index=values.index)
@@ -165,7 +175,10 @@ def coded_categorical(codes: np.ndarray, values: list) -> pd.Categorical:
     """``values[codes]`` per row as a categorical: equal values share one category (two codes may stand for one
     value), a None value is missing. ``values`` is short (one entry per distinct key); no Python object per row."""
     value_codes, distinct = pd.factorize(np.array(values, dtype=object), use_na_sentinel=True)
-    return pd.Categorical.from_codes(value_codes[codes], categories=pd.Index(distinct, dtype=object))
+    # the smallest signed code type (int8 up to 128 categories): an eighth of the bytes to take and write; the
+    # codes come from factorize (-1 or a category's position): nothing to validate
+    small = value_codes.astype(np.min_scalar_type(-max(len(distinct), 1)))
+    return pd.Categorical.from_codes(small[codes], categories=pd.Index(distinct, dtype=object), validate=False)
 
 
 def text_categorical(values: pd.Series, clean: Callable[[Any], str | None]) -> pd.Categorical:
@@ -346,7 +359,7 @@ def group_codes(frame: pd.DataFrame, names: list[str]) -> np.ndarray:
     bearing is looked at."""
     if BEARING_GROUP in frame.columns and len(frame) > 1 and set(names) <= set(BEARING_INPUTS):
         bearings = pd.factorize(frame[BEARING_GROUP].to_numpy(), sort=False)[0]  # dense again in a subset
-        return group_codes(frame.iloc[first_rows(bearings)][list(names)], names)[bearings]
+        return group_codes(frame[list(names)].iloc[first_rows(bearings)], names)[bearings]
     columns = []  # float columns by their bits, the others by their codes (missing: one code of its own)
     for name in names:
         if frame[name].dtype == np.float64:
@@ -361,6 +374,8 @@ def group_codes(frame: pd.DataFrame, names: list[str]) -> np.ndarray:
 
 #: odd 64-bit multiplier of the hash that mixes key columns (2^64 / golden ratio)
 _MIX = np.uint64(0x9E3779B97F4A7C15)
+#: rows hashed at a time (two arrays of it fit a core's cache)
+_HASH_BLOCK = 1 << 14
 
 
 def _hashed_codes(columns: list[np.ndarray]) -> np.ndarray:
@@ -371,10 +386,17 @@ def _hashed_codes(columns: list[np.ndarray]) -> np.ndarray:
     codes of their own: more groups, never fewer."""
     if len(columns) == 1:
         return pd.factorize(columns[0], sort=False)[0].astype(np.int64)
-    mixed = np.zeros(len(columns[0]), dtype=np.uint64)
-    for column in columns:
-        mixed = (mixed ^ column) * _MIX  # wraps modulo 2^64; a product carries bits upwards only ...
-        mixed ^= mixed >> np.uint64(31)  # ... so the high ones (a float's exponent) are folded down
+    size = len(columns[0])
+    mixed = np.zeros(size, dtype=np.uint64)
+    shifted = np.empty(min(size, _HASH_BLOCK), dtype=np.uint64)
+    for start in range(0, size, _HASH_BLOCK):  # a block stays in the cache through all the columns
+        block = mixed[start:start + _HASH_BLOCK]
+        high = shifted[:len(block)]
+        for column in columns:
+            block ^= column[start:start + _HASH_BLOCK]
+            block *= _MIX  # wraps modulo 2^64; a product carries bits upwards only ...
+            np.right_shift(block, np.uint64(31), out=high)
+            block ^= high  # ... so the high ones (a float's exponent) are folded down
     codes = pd.factorize(mixed, sort=False)[0].astype(np.int64)
     first = first_rows(codes)
     if all(np.array_equal(column, column[first][codes]) for column in columns):
@@ -481,14 +503,17 @@ def build_support_arrays(keys: pd.DataFrame, numbers: dict[str, Any]) -> Support
             # 10^6 rows) and takes rows of it without touching a Python object
             return coded_categorical(codes, [c[name] for c in per_key])
         plain = plain_keys[codes]
-        notes, noted = notes_of_key[codes], noted_key[codes]
+        noted = noted_key[codes]
+        # a key's notes on every row of it; where no key has notes, the empty notes of the first key on all rows
+        notes = notes_of_key[codes] if noted_key.any() else np.broadcast_to(notes_of_key[:1], (size,))
     constants = {name: spread_text(name) for name in _TEXT}
     constants.update({name: spread(name, float) for name in _FLOAT})
     constants.update({name: spread(name, bool) for name in _BOOL})
     constants["f1_basis"] = spread("f1_basis", int)
     # bore and width printed in the designation fill empty cells (HK2016: d = 20, B = 16)
-    num["d"] = fill_blank(num["d"], spread("bore", float))
-    num["B"] = fill_blank(num["B"], spread("width", float))
+    for name, printed in (("d", "bore"), ("B", "width")):
+        if np.isnan(num[name]).any():
+            num[name] = fill_blank(num[name], spread(printed, float))
     if np.ndim(num["n"]) == 0:
         num["n"] = np.full(size, num["n"])  # the speed spans the rows
     return SupportArrays(size=size, **num, **constants, plain=np.asarray(plain, dtype=bool), notes=notes,

@@ -123,7 +123,8 @@ def _convert_column(values: pd.Series, header: str, unit_text: str | None, targe
     def where(i):
         return f"{cell(name, i)}: " if cell else ""
 
-    missing = np.flatnonzero(np.isnan(numeric))
+    not_given = np.isnan(numeric)
+    missing = np.flatnonzero(not_given) if not_given.any() else np.zeros(0, dtype=np.intp)
     if values.dtype.kind == "f" or not len(missing):  # a missing number is a blank cell
         blank = np.ones(len(missing), dtype=bool)
     else:
@@ -136,7 +137,7 @@ def _convert_column(values: pd.Series, header: str, unit_text: str | None, targe
         elif not _blank(raw):
             errors[i].append(f"{where(i)}{raw!r} is not a number for {header}")
     try:
-        converted, factor = convert_column(numeric, unit_text, target, name=name, header=header)
+        converted, factor = convert_column(numeric, unit_text, target, name=name, header=header, copy=False)
     except UnitError as exc:
         raise InputError(f"column {header!r}: {exc}") from exc
     if np.shares_memory(converted, numeric) and not converted.flags.owndata:  # a view of the user's table

@@ -162,3 +162,14 @@ def test_bearing_groups_give_the_groups_of_the_columns_themselves():
     for name in ("f0_table", "f1_a", "f1_x", "X0_table", "Y0_table"):
         assert np.array_equal(getattr(supports, name), getattr(plain, name), equal_nan=True), name
     assert list(supports.bearing_type) == list(plain.bearing_type)
+
+
+@pytest.mark.parametrize("dtype", ["str", object, "string[python]", "string[pyarrow]"])
+def test_column_codes_are_pandas_factorize(dtype):
+    """column_codes hashes an Arrow text column of one chunk with pyarrow: the same codes and distinct values, in
+    order of first appearance, as pd.factorize; missing cells -1, an empty text a value of its own."""
+    column = pd.Series(["b", None, "a", "b", " b", "", np.nan, "a"], dtype=dtype)
+    codes, uniques = sp.column_codes(column)
+    expected_codes, expected_uniques = pd.factorize(column, use_na_sentinel=True)
+    assert codes.tolist() == expected_codes.tolist() == [0, -1, 1, 0, 2, 3, -1, 1]
+    assert list(uniques) == list(expected_uniques) == ["b", "a", " b", ""]
