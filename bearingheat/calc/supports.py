@@ -149,8 +149,8 @@ def column_codes(values: pd.Series) -> tuple[np.ndarray, np.ndarray]:
         return values.cat.codes.to_numpy(), values.cat.categories.to_numpy(dtype=object)
     arrow = getattr(values.array, "__arrow_array__", None)
     chunked = arrow() if arrow is not None else None
-    if getattr(chunked, "num_chunks", 0) == 1 and (pa.types.is_string(chunked.type)
-                                                   or pa.types.is_large_string(chunked.type)):
+    if chunked is not None and getattr(chunked, "num_chunks", 0) == 1 and (
+            pa.types.is_string(chunked.type) or pa.types.is_large_string(chunked.type)):
         # pyarrow's own hash of its strings: codes in order of first appearance as pd.factorize's, null -1
         encoded = chunked.chunk(0).dictionary_encode()
         codes = pc.fill_null(encoded.indices, -1).to_numpy().astype(np.intp)
