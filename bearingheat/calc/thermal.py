@@ -159,10 +159,14 @@ def _heat_flow_setup(frame: pd.DataFrame, details: pd.DataFrame | None = None):
         """Heat flow through the seat at θ of every row, or of the block ``rows`` (a slice)."""
         return seat_heat_flow(k_q[rows], A_r[rows], np.asarray(theta, dtype=float) - T_amb[rows])
 
-    def Q_L(theta, rows=slice(None)):
-        # oil temperature rise: given dT_oil, otherwise oil fed at ambient and leaving at the bearing temperature
-        rise = np.where(np.isnan(dT_oil[rows]), np.asarray(theta, dtype=float) - T_amb[rows], dT_oil[rows])
-        return np.where(V_oil[rows] > 0, oil_heat_flow(V_oil[rows], rise), 0.0)
+    if (V_oil > 0).any():
+        def Q_L(theta, rows=slice(None)):
+            # oil temperature rise: given dT_oil, otherwise oil fed at ambient and leaving at the bearing temperature
+            rise = np.where(np.isnan(dT_oil[rows]), np.asarray(theta, dtype=float) - T_amb[rows], dT_oil[rows])
+            return np.where(V_oil[rows] > 0, oil_heat_flow(V_oil[rows], rise), 0.0)
+    else:
+        def Q_L(theta, rows=slice(None)):  # no row has an oil flow: no heat leaves with oil
+            return np.zeros(np.broadcast_shapes(np.shape(theta), T_amb[rows].shape))
 
     return details, k_q, T_amb, Q_E, Q_S, Q_L
 
@@ -172,19 +176,26 @@ def _operating_point(frame, results, nu_at, nu_varies, Q_S, Q_L, Q_E, T_amb, t_l
     ``nu_varies`` marks the rows whose ν follows T (Walther), ``nu_at`` gives ν(T) of every row."""
     n = number_column(frame, "n")
     power = FrictionPower(frame, results)
-
-    def balance(theta, rows=slice(None)):
-        """N_R + Q_E − Q_S − Q_L [W] at θ of every row, or of the block ``rows`` (a slice)."""
-        with np.errstate(invalid="ignore", over="ignore"):
-            return power(n[rows], nu_at(theta, rows), rows) + Q_E[rows] - Q_S(theta, rows) - Q_L(theta, rows)
-
     T_low = T_amb - BELOW_AMBIENT_SEARCH
     T_high = np.full(len(frame), float(t_limit))
+    if nu_varies.any():
+        def balance(theta, rows=slice(None)):
+            """N_R + Q_E − Q_S − Q_L [W] at θ of every row, or of the block ``rows`` (a slice)."""
+            with np.errstate(invalid="ignore", over="ignore"):
+                return power(n[rows], nu_at(theta, rows), rows) + Q_E[rows] - Q_S(theta, rows) - Q_L(theta, rows)
+    else:  # ν, and so N_R, the same at every T: N_R + Q_E once (the same sum, the same bits)
+        with np.errstate(invalid="ignore", over="ignore"):
+            generated = power(n, nu_at(T_low)) + Q_E
+
+        def balance(theta, rows=slice(None)):
+            with np.errstate(invalid="ignore", over="ignore"):
+                return generated[rows] - Q_S(theta, rows) - Q_L(theta, rows)
     # With the catalogue speed law N_R grows with ν, ν(T) is monotone (Walther or constant), Q_S = k_q·A_r·(T − T_amb)
     # and Q_L grow with T: where ν does not rise with T and k_q·A_r > 0 the balance falls strictly and has one root
     # (rows with a missing input compare as NaN: their balance is NaN at the ends, status 2 whatever the scan)
     with np.errstate(invalid="ignore", over="ignore"):
-        falling = power.closed & ~(Q_S(T_amb + 1.0) <= Q_S(T_amb)) & ~(nu_at(T_high) > nu_at(T_low))
+        rising_nu = (nu_at(T_high) > nu_at(T_low)) if nu_varies.any() else False
+        falling = power.closed & ~(Q_S(T_amb + 1.0) <= Q_S(T_amb)) & ~rising_nu
     # where ν does not depend on T (no oil data) N_R does not either: the balance is a straight line in T
     affine = power.closed & ~nu_varies
     T_op, status = lowest_operating_temperature(balance, T_low, T_high, single_root=falling, affine=affine,

@@ -50,33 +50,43 @@ def test_a_secant_landing_on_the_root_closes_the_bracket_at_once():
 
 def test_rows_with_one_root_skip_the_scan_and_give_the_same_temperature(monkeypatch):
     """With the catalogue speed law (N_R falls with T through ν, Q_S and Q_L rise) the balance has one root:
-    the ends of the range bracket it. The demo's rows give ν itself (no oil data), so N_R does not depend on T
-    and the balance is a straight line: its root is the secant of the ends. T_op is the same as with the full
-    24-cell scan and refinement, to 1e-12, and the heat balance calls the friction model twice (the ends)
-    instead of 27 times (25 grid points, 2 refining steps)."""
+    the ends of the range bracket it. The demo's rows give ν itself (no oil data), so N_R does not depend on T:
+    the friction power is computed once, and the balance is a straight line whose root is the secant of the
+    ends. T_op is the same as with the full 24-cell scan and refinement, to 1e-12; the balance is evaluated
+    twice (the ends) instead of 27 times (25 grid points, 2 refining steps)."""
     import bearingheat as bh
     from bearingheat.calc import models, thermal
 
     table = pd.read_csv(EXAMPLES / "gearbox_shaft.csv")
-    calls = []
-    original = models.FrictionPower.__call__
+    power_calls, balance_calls = [], []
+    original_power = models.FrictionPower.__call__
 
-    def counted(self, *args):
-        calls.append(1)
-        return original(self, *args)
+    def counted_power(self, *args, **options):
+        power_calls.append(1)
+        return original_power(self, *args, **options)
 
-    monkeypatch.setattr(models.FrictionPower, "__call__", counted)
-    fast = bh.calc(table)
-    fast_calls = len(calls)
+    def counted(balance):
+        def wrapped(*args, **options):
+            balance_calls.append(1)
+            return balance(*args, **options)
+        return wrapped
+
+    monkeypatch.setattr(models.FrictionPower, "__call__", counted_power)
     original_search = thermal.lowest_operating_temperature
 
-    def scan_every_row(balance, T_low, T_high, **options):
-        return original_search(balance, T_low, T_high, cells=options.get("cells", 24), single_root=False)
+    def fast_search(balance, T_low, T_high, **options):
+        return original_search(counted(balance), T_low, T_high, **options)
 
+    def scan_every_row(balance, T_low, T_high, **options):
+        return original_search(counted(balance), T_low, T_high, cells=options.get("cells", 24), single_root=False)
+
+    monkeypatch.setattr(thermal, "lowest_operating_temperature", fast_search)
+    fast = bh.calc(table)
+    fast_counts = len(power_calls), len(balance_calls)
     monkeypatch.setattr(thermal, "lowest_operating_temperature", scan_every_row)
-    calls.clear()
+    power_calls.clear(), balance_calls.clear()
     scanned = bh.calc(table)
-    assert fast_calls == 2 and len(calls) == 27
+    assert fast_counts == (1, 2) and (len(power_calls), len(balance_calls)) == (1, 27)
     np.testing.assert_allclose(fast["T_op [degC]"], scanned["T_op [degC]"], rtol=1e-12)
     assert fast["T_op [degC]"].notna().sum() >= 5
 
@@ -139,3 +149,33 @@ def test_rows_with_oil_data_beside_rows_without_give_the_scanned_temperatures(mo
     assert (fast["nu_at"] == np.where(table["iso_vg"].notna(), "T_op", "given")).all()
     np.testing.assert_allclose(fast["T_op [degC]"], scanned["T_op [degC]"], rtol=1e-12)
     np.testing.assert_allclose(fast["T_op [degC]"], alone["T_op [degC]"], rtol=1e-12)
+
+
+def test_the_friction_power_computed_once_gives_the_bits_of_the_balance_at_every_temperature():
+    """Where no row's ν follows T, N_R + Q_E is summed once and the balance subtracts Q_S and Q_L from it: the
+    same operations in the same order as the balance that evaluates N_R at every temperature. T_op and status
+    of the demo's rows are bit for bit those of the general balance (forced by marking one row's ν as varying;
+    that row itself then takes the scan instead of the secant)."""
+    from bearingheat.calc import thermal
+    from bearingheat.calc.fill import fill_from_catalogue
+    from bearingheat.calc.models import compute_supports
+    from bearingheat.calc.table import to_catalogue_units
+
+    table = pd.read_csv(EXAMPLES / "gearbox_shaft.csv")
+    converted = to_catalogue_units(table)
+    frame = fill_from_catalogue(converted.frame, converted.labels)[0].reset_index(drop=True)
+    results = compute_supports(frame)
+    _, _, T_amb, Q_E, Q_S, Q_L = thermal._heat_flow_setup(frame)
+    A, B, _ = thermal._walther_columns(frame)
+    nu_at = thermal._viscosity_of_rows(frame, A, B)
+    constant = np.zeros(len(frame), dtype=bool)
+    marked = constant.copy()
+    marked[0] = True
+    once = thermal._operating_point(frame, results, nu_at, constant, Q_S, Q_L, Q_E, T_amb, 200.0)
+    every = thermal._operating_point(frame, results, nu_at, marked, Q_S, Q_L, Q_E, T_amb, 200.0)
+    assert np.array_equal(once[0][1:], every[0][1:], equal_nan=True) and np.isfinite(once[0][1:]).sum() >= 4
+    assert np.array_equal(once[1], every[1])
+    theta = np.array([30.0, 60.0, 90.0])
+    for T in theta:
+        at_T = np.full(len(frame), T)
+        assert np.array_equal(once[2](at_T), every[2](at_T), equal_nan=True)
