@@ -7,7 +7,9 @@ On the demo's supports (examples/gearbox_shaft.csv) tiled to ROWS rows with vari
    memory-bandwidth floor (copying its input arrays once);
 2. ``bh.calc(df)`` against the kernel on the same rows: the overhead of the table API (designations,
    units, checks, messages), without and with the heat-balance columns (targets 10x and 30x), and with ν taken
-   from oil data at each row's operating temperature (no target: T_op is bracketed there, not a secant);
+   from oil data at each row's operating temperature (no target: T_op is bracketed there, not a secant); and,
+   for scale, against the catalogue model's kernels without its checks (P0, P1, f1, M0, M1, MR, NR: what calc
+   computes per row; checked against calc's MR and NR to 1e-12);
 3. ``bearingheat calc big.csv -o out.parquet -q`` against a bare ``pd.read_csv(engine='pyarrow')`` +
    ``to_parquet`` of the same file (with the heat-balance columns), each in its own process (target 5x,
    peak memory under 1 GB at 10^6 rows);
@@ -46,6 +48,37 @@ def kernel_arrays(table, result):
     return f0, f1, load, dM, table["nu [mm^2/s]"].to_numpy(dtype=float), table["n [rpm]"].to_numpy(dtype=float)
 
 
+def model_arrays(table):
+    """The support arrays of ``table`` as calc resolves them (its unit boundary, fill and bearing keys; not timed)."""
+    from bearingheat.calc.fill import fill_from_catalogue
+    from bearingheat.calc.models import support_arrays_of
+    from bearingheat.calc.table import to_catalogue_units
+
+    converted = to_catalogue_units(table)
+    return support_arrays_of(fill_from_catalogue(converted.frame, converted.labels)[0].reset_index(drop=True))
+
+
+def model_kernels(s):
+    """MR and NR of the catalogue model from its kernels in the order the model applies them, without its checks,
+    messages or text columns: P0, P1 by each row's rule, f1 from its load ratio, M0, M1, MR, NR (the demo's rows:
+    f0 and f1 from the tables, no M2). What bh.calc computes per row, as a baseline for its overhead."""
+    X0 = np.where(np.isnan(s.X0), s.X0_table, s.X0)
+    Y0 = np.where(np.isnan(s.Y0), s.Y0_table, s.Y0)
+    P0 = friction.static_equivalent_load(s.Fr, s.Fa, X0, Y0)
+    rules = s.p1_rule
+    P1 = np.full(len(s.n), np.nan)
+    for code, name in enumerate(rules.categories):
+        if name:
+            np.copyto(P1, friction.effective_load(name, s.Fr, s.Fa, s.Y, s.e), where=rules.codes == code)
+    load = np.where(np.equal(s.m1_load, "Fa"), s.Fa, np.where(np.isnan(P1), s.Fr, P1))
+    ratio = np.where(s.f1_basis == 1, P0 / s.C0, np.where(s.f1_basis == 2, s.Fa / s.C0, 1.0))
+    f1 = friction.f1_from_load_ratio(s.f1_a, s.f1_x, ratio)
+    dM = friction.mean_diameter(s.d, s.D)
+    MR = friction.total_torque(s.bearings * friction.speed_dependent_torque(s.f0_table, s.nu, s.n, dM),
+                               friction.load_dependent_torque(f1, load, dM))
+    return MR, friction.power_loss(MR, s.n)
+
+
 def _peak_lines(rows: int, folder: Path) -> dict[str, str]:
     """The code of each peak-memory run, in a fresh process each."""
     source = folder / "big.csv"
@@ -69,6 +102,10 @@ def main(rows: int = 200_000, repeats: int = 3, cli: bool = True) -> dict[str, f
     table = demo_rows(rows, heat_balance=False)
     result = bh.calc(table)
     args = kernel_arrays(table, result)
+    supports = model_arrays(table)
+    MR, NR = model_kernels(supports)  # the baseline computes what calc reports
+    np.testing.assert_allclose(MR, result["MR [N*mm]"].to_numpy(), rtol=1e-12)
+    np.testing.assert_allclose(NR, result["NR [W]"].to_numpy(), rtol=1e-12)
     tables = {heat_balance: demo_rows(rows, heat_balance=heat_balance) for heat_balance in (False, True)}
     oil_table = demo_rows(rows, heat_balance=True, oil=True)
     # every side of every ratio runs in turns, the shortest of each counts (the machine's speed comes and goes)
@@ -76,6 +113,7 @@ def main(rows: int = 200_000, repeats: int = 3, cli: bool = True) -> dict[str, f
         "kernel": lambda: friction.catalogue_friction_torque(*args),
         "numpy_baseline": lambda: numpy_torque(*args),
         "memory_floor": lambda: [a.copy() for a in args],
+        "model_kernels": lambda: model_kernels(supports),
         "calc_friction": lambda: bh.calc(tables[False]),
         "calc_heat": lambda: bh.calc(tables[True]),
         "calc_oil": lambda: bh.calc(oil_table),
@@ -89,13 +127,17 @@ def main(rows: int = 200_000, repeats: int = 3, cli: bool = True) -> dict[str, f
           f"{baseline * 1e3:.1f} ms: {kernel / baseline:.2f}x (no target; 1x is the best)")
     print(f"  friction kernel vs the memory-bandwidth floor (copying its 6 input arrays, {floor * 1e3:.1f} ms): "
           f"{kernel / floor:.1f}x (no target)")
+    model = timed["model_kernels"][0]
+    print(f"  the catalogue model's kernels without checks (P0, P1, f1, M0, M1, MR, NR: what calc computes per row) "
+          f"{model * 1e3:.1f} ms: {model / kernel:.1f}x the friction kernel (no target)")
     for name, what, target in (("calc_friction", "without heat-balance columns", CALC_FRICTION_TARGET),
                                ("calc_heat", "with heat-balance columns", CALC_HEAT_TARGET),
                                ("calc_oil", "with heat-balance columns and nu from nu40/nu100 at T_op", None)):
         elapsed = timed[name][0]
         ratio = elapsed / kernel
         print(f"  bh.calc {what} {elapsed:.2f} s ({elapsed / rows * 1e6:.1f} us a row) vs the kernel on the same "
-              f"rows: {ratio:.0f}x ({verdict(ratio, target) if target else 'no target'})")
+              f"rows: {ratio:.0f}x ({verdict(ratio, target) if target else 'no target'}); "
+              f"{elapsed / model:.0f}x the model's kernels")
     with tempfile.TemporaryDirectory() as name:
         folder = Path(name)
         demo_rows(rows, heat_balance=True).to_csv(folder / "big.csv", index=False)
