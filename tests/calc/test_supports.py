@@ -173,3 +173,61 @@ def test_column_codes_are_pandas_factorize(dtype):
     expected_codes, expected_uniques = pd.factorize(column, use_na_sentinel=True)
     assert codes.tolist() == expected_codes.tolist() == [0, -1, 1, 0, 2, 3, -1, 1]
     assert list(uniques) == list(expected_uniques) == ["b", "a", " b", ""]
+
+
+def _oil(table):
+    return table.drop(columns=["nu [mm^2/s]"]).assign(**{"nu40 [mm^2/s]": 68.0, "nu100 [mm^2/s]": 8.6})
+
+
+@pytest.mark.parametrize("case", ["demo", "skf", "mixed", "oil", "filled"])
+def test_calc_groups_by_its_bearing_numbers_as_by_the_columns(case, monkeypatch):
+    """calc numbers its rows by bearing once and every later grouping reads those numbers: the fill, the
+    reference speed and the support arrays group exactly as they would by their own columns at that point
+    (nothing between the numbering and them changes a bearing input except the fill, which fills by bearing).
+    Checked on the demos, a mixed-model table, oil data and a table whose blank cells the catalogue fills."""
+    from pathlib import Path
+
+    import bearingheat as bh
+    from bearingheat.calc import fill, models, reference_speed
+
+    examples = Path(__file__).resolve().parents[2] / "examples"
+    demo = pd.read_csv(examples / "gearbox_shaft.csv")
+    skf = pd.read_csv(examples / "gearbox_shaft_skf.csv")
+    tables = {"demo": (pd.concat([demo] * 3, ignore_index=True), {}), "skf": (skf, {"model": "skf"}),
+              "mixed": (skf.assign(model=["skf", "schaeffler"] * (len(skf) // 2) + ["skf"] * (len(skf) % 2)), {}),
+              "oil": (_oil(pd.concat([demo] * 2, ignore_index=True)), {})}
+    filled = pd.concat([demo] * 4, ignore_index=True)
+    filled.loc[::3, "D [mm]"] = np.nan
+    filled.loc[1::4, "C0 [kN]"] = np.nan
+    filled.loc[::5, "B [mm]"] = 99.0
+    tables["filled"] = (filled, {})
+    checked = []
+
+    def checked_group_codes(frame, names):
+        codes = sp.group_codes(frame, names)
+        if sp.BEARING_GROUP in frame.columns:
+            assert np.array_equal(codes, sp.group_codes(frame.drop(columns=[sp.BEARING_GROUP]), names)), names
+            checked.append(tuple(names))
+        return codes
+
+    original_build = sp.build_support_arrays
+
+    def checked_build(keys, numbers):
+        supports = original_build(keys, numbers)
+        if sp.BEARING_GROUP in keys.columns:
+            plain = original_build(keys.drop(columns=[sp.BEARING_GROUP]), numbers)
+            for name in ("f0_table", "f1_a", "f1_x", "X0_table", "Y0_table", "kB", "bearings", "f1_basis", "m2"):
+                assert np.array_equal(np.broadcast_to(getattr(supports, name), (supports.size,)),
+                                      np.broadcast_to(getattr(plain, name), (plain.size,)), equal_nan=True), name
+            for name in ("bearing_type", "p1_rule", "f0_basis", "label", "error"):
+                assert list(np.broadcast_to(np.asarray(getattr(supports, name), dtype=object), (supports.size,))) \
+                    == list(np.broadcast_to(np.asarray(getattr(plain, name), dtype=object), (plain.size,))), name
+            checked.append("support arrays")
+        return supports
+
+    monkeypatch.setattr(fill, "group_codes", checked_group_codes)
+    monkeypatch.setattr(reference_speed, "group_codes", checked_group_codes)
+    monkeypatch.setattr(models, "build_support_arrays", checked_build)
+    table, options = tables[case]
+    assert (bh.calc(table, **options)["status"] != "error").all()
+    assert "support arrays" in checked and any(isinstance(c, tuple) for c in checked)
