@@ -401,7 +401,8 @@ def _hashed_codes(columns: list[np.ndarray]) -> np.ndarray:
     first = first_rows(codes)
     if all(np.array_equal(column, column[first][codes]) for column in columns):
         return codes
-    parts = [(c, int(c.max()) + 1 if len(c) else 1) for c in (pd.factorize(column, sort=False)[0] for column in columns)]
+    parts = [(c, int(c.max()) + 1 if len(c) else 1)
+             for c in (pd.factorize(column, sort=False)[0] for column in columns)]
     return _combined_codes(parts, len(columns[0]))
 
 

@@ -32,8 +32,8 @@ import pyarrow as pa
 from bearingheat.calc import contact, thermal
 from bearingheat.calc.thermal import (DEFAULT_SPEED_FACTOR_METHOD, DEFAULT_VISCOSITY_AT, SPEED_FACTOR_METHODS,
                                      VISCOSITY_AT)
-from bearingheat.calc.contract import (LABEL_COLUMNS, PLAIN_TYPES, input_units, output_header, output_units, parse_header,
-                                       range_problems)
+from bearingheat.calc.contract import (LABEL_COLUMNS, PLAIN_TYPES, input_units, output_header, output_units,
+                                       parse_header, range_problems)
 from bearingheat.calc.messages import ERROR, OK, WARNING, Labels, status_codes, status_column, with_texts
 from bearingheat.calc.supports import (blanks_filled, number_column, per_distinct, text_categorical, text_column,
                                        with_bearing_groups)
@@ -474,7 +474,10 @@ def _add_messages(results: pd.DataFrame, items: list[tuple[int, str, str, bool]]
     categories, codes = cells.categories, cells.codes
     texts: dict[int, str] = {}
     for position, level, message, first in items:
-        current = texts[position] if position in texts else categories[codes[position]]
+        if position in texts:
+            current = texts[position]
+        else:  # (code -1: a missing message, none so far)
+            current = categories[codes[position]] if codes[position] >= 0 else ""
         texts[position] = (f"{message}; {current}" if first else f"{current}; {message}") if current else message
         if level == "error":
             status[position] = ERROR

@@ -148,6 +148,10 @@ def test_bearing_groups_give_the_groups_of_the_columns_themselves():
                           "n": rng.uniform(0, 3000, rows)})
     numbered = sp.with_bearing_groups(frame)
     assert sp.BEARING_GROUP in numbered.columns and "n" not in sp.BEARING_INPUTS
+    # the support arrays read the numbers for their keys and f0_given, the reference speed and the fill for theirs
+    from bearingheat.calc.fill import FILLED
+    from bearingheat.calc.reference_speed import REFERENCE_KEYS
+    assert {*sp.KEY_INPUTS, "f0", *REFERENCE_KEYS, "designation", *FILLED} <= set(sp.BEARING_INPUTS)
     subset = np.sort(rng.choice(rows, 700, replace=False))
     for names in (["designation", "d", "C0"], ["designation"], ["d", "C0"], ["C0"]):
         assert np.array_equal(sp.group_codes(numbered, names), sp.group_codes(frame, names))
