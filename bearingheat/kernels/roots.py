@@ -50,6 +50,7 @@ def bracketed_root(func: Callable[[np.ndarray], np.ndarray], low, high, *, rtol:
     x = np.where(fa == 0, a, np.where(fb == 0, b, np.nan))
     active = (status == 0) & np.isnan(x)
     side = np.zeros(a.shape, dtype=int)  # which end stayed last time (Illinois halving)
+    # a, b, fa, fb, x and side are this function's own arrays: each step writes into them where rows move
     for _ in range(iterations):
         if not active.any():
             break
@@ -62,23 +63,26 @@ def bracketed_root(func: Callable[[np.ndarray], np.ndarray], low, high, *, rtol:
         inner_low, inner_high = np.fmin(a, b) + tol, np.fmax(a, b) - tol
         c = np.where(~np.isfinite(c) | (inner_low >= inner_high), 0.5 * (a + b),
                      np.minimum(np.maximum(c, inner_low), inner_high))
-        fc = np.full(a.shape, np.nan)
-        fc[active] = np.asarray(func(np.where(active, c, a)), dtype=float)[active]
+        # f at c for the rows still searching (the others keep their ends: their value is never read)
+        fc = np.asarray(func(np.where(active, c, a)), dtype=float)
         exact = active & (fc == 0)
-        x = np.where(exact, c, x)
+        np.copyto(x, c, where=exact)
         same_as_a = np.sign(fc) == np.sign(fa)
         # replace the end whose sign c shares; halve the value kept at the other end when it stays twice
-        move_a = active & ~exact & same_as_a
-        move_b = active & ~exact & ~same_as_a
-        fb = np.where(move_a & (side == -1), fb / 2.0, fb)
-        fa = np.where(move_b & (side == 1), fa / 2.0, fa)
-        a = np.where(move_a, c, a)
-        fa = np.where(move_a, fc, fa)
-        b = np.where(move_b, c, b)
-        fb = np.where(move_b, fc, fb)
-        side = np.where(move_a, -1, np.where(move_b, 1, side))
-        done = active & ~exact & (np.abs(b - a) <= rtol * np.fmax(np.abs(a), np.abs(b)))
-        x = np.where(done, np.where(np.abs(fa) <= np.abs(fb), a, b), x)
+        moving = active & ~exact
+        move_a = moving & same_as_a
+        move_b = moving & ~same_as_a
+        np.divide(fb, 2.0, out=fb, where=move_a & (side == -1))
+        np.divide(fa, 2.0, out=fa, where=move_b & (side == 1))
+        np.copyto(a, c, where=move_a)
+        np.copyto(fa, fc, where=move_a)
+        np.copyto(b, c, where=move_b)
+        np.copyto(fb, fc, where=move_b)
+        np.copyto(side, -1, where=move_a)
+        np.copyto(side, 1, where=move_b)
+        done = moving & (np.abs(b - a) <= rtol * np.fmax(np.abs(a), np.abs(b)))
+        if done.any():
+            np.copyto(x, np.where(np.abs(fa) <= np.abs(fb), a, b), where=done)
         active &= ~(exact | done)
     x = np.where(active, np.where(np.abs(fa) <= np.abs(fb), a, b), x)
     return np.where(status == 0, x, np.nan), status
