@@ -2,7 +2,7 @@
 
 The friction heat and the heat carried away against speed (they cross at
 n_per) and against temperature (they cross at T_op), from the heat balance
-of :mod:`bearingheat.calc.thermal`.
+of :mod:`bearingheat.calc.thermal` and the heat flows of :mod:`bearingheat.calc.heat_flows`.
 """
 from __future__ import annotations
 
@@ -12,8 +12,8 @@ import numpy as np
 import pandas as pd
 
 from bearingheat.calc.models import FrictionPower
-from bearingheat.calc.thermal import (OPERATING_TEMPERATURE_LIMIT, _generic_speed, _heat_flow_setup,
-                                      _viscosity_of_rows, _walther_columns)
+from bearingheat.calc.heat_flows import generic_speed, heat_flow_setup, viscosity_of_rows, walther_columns
+from bearingheat.calc.thermal import OPERATING_TEMPERATURE_LIMIT
 from bearingheat.kernels.thermal import balance_speed
 
 __all__ = ["heat_flow_curves"]
@@ -35,11 +35,11 @@ def heat_flow_curves(frame: pd.DataFrame, results: pd.DataFrame, columns: pd.Dat
     (N_R(ν(T)) + Q_E) and ``carried_vs_temperature`` (Q_S + Q_L) [W] at the
     speed n; ``heat_at_T_op`` [W].
     """
-    details, k_q, T_amb, Q_E, Q_S, Q_L = _heat_flow_setup(frame)
+    details, k_q, T_amb, Q_E, Q_S, Q_L = heat_flow_setup(frame)
     if np.isnan(details["A_r"].iloc[0]) or np.isnan(T_amb[0]):
         return None
-    A, B, _ = _walther_columns(frame)
-    nu_at = _viscosity_of_rows(frame, A, B)
+    A, B, _ = walther_columns(frame)
+    nu_at = viscosity_of_rows(frame, A, B)
     power = FrictionPower(frame, results)
     n = float(frame["n"].iloc[0])
     T_op = float(columns["T_op"].iloc[0])
@@ -52,7 +52,7 @@ def heat_flow_curves(frame: pd.DataFrame, results: pd.DataFrame, columns: pd.Dat
     if carried_theta > 0 and power.is_closed(0):
         n_cross = float(balance_speed(power.f0[0], nu_theta, power.dM[0], power.load_torque[0], carried_theta))
     elif carried_theta > 0:
-        n_cross = float(_generic_speed(power, np.full(power.size, nu_theta), np.full(power.size, carried_theta))[0])
+        n_cross = float(generic_speed(power, np.full(power.size, nu_theta), np.full(power.size, carried_theta))[0])
     n_top = 1.5 * np.nanmax([n, n_cross, n_per, 1.0])
     speeds = np.linspace(0.0, n_top, points)
     temperatures = np.linspace(T_amb[0], OPERATING_TEMPERATURE_LIMIT, points)

@@ -48,13 +48,10 @@ from bearingheat.calc.contract import columns, register_choices
 from bearingheat.calc.models import DEFAULT_MODEL, FrictionPower, failed_rows, plain_bushing_rows, results_at_viscosity
 from bearingheat.calc.reference_speed import thermal_reference_speed_details, thermal_reference_speed_rows
 from bearingheat.calc.supports import coded_categorical, number_column, text_codes
-from bearingheat.calc.viscosity import viscosity_model_rows
-from bearingheat.catalogue.thermal import THERMAL_KINDS
+from bearingheat.calc.heat_flows import OIL_DATA, generic_speed, heat_flow_setup, viscosity_of_rows, walther_columns
 from bearingheat.errors import HeatBalanceError
 from bearingheat.kernels import friction
-from bearingheat.kernels.thermal import (APPROXIMATION_RANGE, OIL_HEAT_CAPACITY_FLOW,
-                                         default_heat_transfer_coefficient, oil_heat_flow,
-                                         permissible_speed_factor, seat_heat_flow,
+from bearingheat.kernels.thermal import (APPROXIMATION_RANGE, OIL_HEAT_CAPACITY_FLOW, permissible_speed_factor,
                                          speed_factor_catalogue_approximation, speed_factor_coefficients)
 from bearingheat.kernels.roots import bracketed_root
 from bearingheat.kernels.viscosity import MIN_VISCOSITY, viscosity_range_messages, walther_viscosity
@@ -93,8 +90,6 @@ SETTLE_PASSES = 20
 #: rows refined together by the root search when the balance can be evaluated block by block (the arrays of a
 #: block stay in a core's cache for all its steps; every row's steps are its own, so the roots are the same)
 ROOT_BLOCK = 1 << 14
-#: the columns a viscosity-temperature law comes from (:func:`~bearingheat.calc.viscosity.viscosity_model_rows`)
-OIL_DATA = frozenset({"nu40", "nu100", "iso_vg"})
 #: where the operating viscosity is taken when it comes from nu40/nu100 or iso_vg
 VISCOSITY_AT = {
     "auto": ("the solved operating temperature T_op where T_amb and n are given (one operating state: the "
@@ -111,65 +106,6 @@ THERMAL_INPUTS = frozenset(columns(owner="thermal", kind="input"))
 
 
 # ---- rows: heat balance of supports (calc and the Python API) --------------------------------
-
-def _viscosity_of_rows(frame: pd.DataFrame, A, B):
-    """ν(θ) for every row: Walther where A, B are known, the constant ``nu`` column otherwise."""
-    nu_fixed = number_column(frame, "nu")
-    has_model = ~np.isnan(A)
-    if not has_model.any():  # no row has oil data: ν does not depend on the temperature
-        return lambda theta, rows=slice(None): np.broadcast_arrays(np.asarray(theta, dtype=float),
-                                                                   nu_fixed[rows])[1].copy()
-
-    def nu_at(theta, rows=slice(None)):
-        """ν at θ of every row, or of the block ``rows`` (a slice)."""
-        with np.errstate(invalid="ignore", over="ignore"):
-            return np.where(has_model[rows], walther_viscosity(A[rows], B[rows], theta), nu_fixed[rows])
-
-    return nu_at
-
-
-def _walther_columns(frame: pd.DataFrame):
-    """The Walther constants A, B of every row (NaN without oil data) and the problems of the oil data."""
-    if "_walther_A" in frame.columns:
-        return number_column(frame, "_walther_A"), number_column(frame, "_walther_B"), []
-    if not (OIL_DATA | {"VI"}) & set(frame.columns):  # (a VI alone is an error of viscosity_model_rows)
-        return np.full(len(frame), np.nan), np.full(len(frame), np.nan), []
-    return viscosity_model_rows(frame)
-
-
-def _heat_flow_setup(frame: pd.DataFrame, details: pd.DataFrame | None = None):
-    """A_r, k_q, reference-speed details and the heat flows as functions of the bearing temperature
-    (``details``: those of :func:`thermal_reference_speed_details` where the caller has them)."""
-    if details is None:
-        details = thermal_reference_speed_details(frame)
-    A_r = details["A_r"].to_numpy(dtype=float)
-    k_q_default = np.full(len(frame), np.nan)
-    for k in THERMAL_KINDS:
-        rows = (details["kind"] == k).to_numpy(dtype=bool)
-        if rows.any():
-            k_q_default[rows] = default_heat_transfer_coefficient(k, A_r[rows])
-    k_q_user = number_column(frame, "k_q")
-    k_q = np.where(np.isnan(k_q_user), k_q_default, k_q_user)
-    T_amb = number_column(frame, "T_amb")
-    V_oil = np.nan_to_num(number_column(frame, "V_oil"), nan=0.0)
-    dT_oil = number_column(frame, "dT_oil")
-    Q_E = np.nan_to_num(number_column(frame, "Q_E"), nan=0.0)
-
-    def Q_S(theta, rows=slice(None)):
-        """Heat flow through the seat at θ of every row, or of the block ``rows`` (a slice)."""
-        return seat_heat_flow(k_q[rows], A_r[rows], np.asarray(theta, dtype=float) - T_amb[rows])
-
-    if (V_oil > 0).any():
-        def Q_L(theta, rows=slice(None)):
-            # oil temperature rise: given dT_oil, otherwise oil fed at ambient and leaving at the bearing temperature
-            rise = np.where(np.isnan(dT_oil[rows]), np.asarray(theta, dtype=float) - T_amb[rows], dT_oil[rows])
-            return np.where(V_oil[rows] > 0, oil_heat_flow(V_oil[rows], rise), 0.0)
-    else:
-        def Q_L(theta, rows=slice(None)):  # no row has an oil flow: no heat leaves with oil
-            return np.zeros(np.broadcast_shapes(np.shape(theta), T_amb[rows].shape))
-
-    return details, k_q, T_amb, Q_E, Q_S, Q_L
-
 
 def _operating_point(frame, results, nu_at, nu_varies, Q_S, Q_L, Q_E, T_amb, t_limit):
     """(T_op, status) at the operating speed: N_R(ν(T)) + Q_E = Q_S(T) + Q_L(T), N_R by each row's model;
@@ -296,7 +232,7 @@ def fill_viscosity(frame: pd.DataFrame, *, viscosity_at: str = "auto"):
     if not OIL_DATA & set(frame.columns):  # nothing to fill from: the frame as it is (the heat balance sees no A, B)
         return frame, []
     frame = frame.copy()
-    A, B, problems = _walther_columns(frame)
+    A, B, problems = walther_columns(frame)
     frame["_walther_A"] = A
     frame["_walther_B"] = B
     if np.isnan(A).all():
@@ -358,7 +294,7 @@ def settle_viscosity(frame: pd.DataFrame, results: pd.DataFrame, *, t_limit: flo
     T_op = np.full(len(frame), np.nan)
     balance_T = balance_status = None  # the heat balance's T_op of every row, kept for heat_balance_rows
     # the heat flows and ν(T) do not change from pass to pass (the pending rows' ν follows their Walther line)
-    flows, nu_at = _heat_flow_setup(frame), _viscosity_of_rows(frame, A, B)
+    flows, nu_at = heat_flow_setup(frame), viscosity_of_rows(frame, A, B)
     solving = pending
     for _ in range(SETTLE_PASSES):
         T_new, unsolved, T_all, status_all = _solve_operating_temperature(frame, results, solving, t_limit,
@@ -406,7 +342,8 @@ def settle_viscosity(frame: pd.DataFrame, results: pd.DataFrame, *, t_limit: flo
 def _solve_operating_temperature(frame, results, rows, t_limit, flows, nu_at, nu_varies):
     """T_op of the selected rows from their friction results (the other rows NaN), {row: why} of the selected
     rows whose T_op has no solution (a row in error is left to its own message), and the heat balance's T_op
-    and status of every row (:func:`_operating_point`; ``flows`` of :func:`_heat_flow_setup`)."""
+    and status of every row (:func:`_operating_point`; ``flows`` of
+    :func:`~bearingheat.calc.heat_flows.heat_flow_setup`)."""
     details, k_q, T_amb, Q_E, Q_S, Q_L = flows
     T, status, _ = _operating_point(frame, results, nu_at, nu_varies, Q_S, Q_L, Q_E, T_amb, t_limit)
     reasons = details["reason"].to_numpy(dtype=object)
@@ -478,11 +415,11 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
     if not wants_balance:
         return pd.DataFrame(columns, index=frame.index), problems
 
-    _, k_q, T_amb, Q_E, Q_S, Q_L = _heat_flow_setup(frame, details)
-    A, B, model_problems = _walther_columns(frame)
+    _, k_q, T_amb, Q_E, Q_S, Q_L = heat_flow_setup(frame, details)
+    A, B, model_problems = walther_columns(frame)
     if "_walther_A" not in has:
         problems.extend(model_problems)
-    nu_at = _viscosity_of_rows(frame, A, B)
+    nu_at = viscosity_of_rows(frame, A, B)
     for i in np.flatnonzero(~failed & np.isnan(T_amb)):
         problems.append((int(i), "warning", "T_amb [degC]: missing; the heat balance (T_op, n_per) needs the "
                                             "ambient temperature"))
@@ -627,7 +564,7 @@ def _permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue, T_b
     dM = friction.mean_diameter(number_column(frame, "d"), number_column(frame, "D"))
     # n_per is the speed at which the bearing reaches T_bearing: its oil has the viscosity of T_bearing there,
     # whatever temperature the friction results are reported at (a viscosity the user gives is used as it is)
-    A, B = _walther_columns(frame)[:2]
+    A, B = walther_columns(frame)[:2]
     at_bearing = ~np.isnan(A) & ~np.isnan(T_bearing)
     nu = number_column(frame, "nu")
     if at_bearing.any():  # (no oil data: no Walther line to evaluate)
@@ -643,7 +580,7 @@ def _permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue, T_b
             out[sel] = f_n * n_used[sel]
     generic = rows & ~power.closed
     if generic.any():
-        out[generic] = _generic_speed(power, nu, Q)[generic]
+        out[generic] = generic_speed(power, nu, Q)[generic]
         for i in np.flatnonzero(generic & (methods != "exact")):
             problems.append((int(i), "warning", f"n_per: the {SPEED_FACTOR_METHODS[methods[i]].title} holds for "
                                                 "the catalogue model only; the exact root is used"))
@@ -653,22 +590,6 @@ def _permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue, T_b
         problems.append((int(i), "warning", f"n_per: the thermal value {out[i]:.5g} 1/min is above the limiting "
                                             f"speed n_G = {n_G[i]:g} 1/min; n_per = n_G"))
     return np.where(capped, n_G, out)
-
-
-def _generic_speed(power: FrictionPower, nu: np.ndarray, Q: np.ndarray) -> np.ndarray:
-    """The speed [1/min] at which each row's friction power equals Q [W], by bracketing.
-
-    N_R grows with the speed from 0 at standstill, so the bracket [0, n_high]
-    is widened by doubling until N_R(n_high) > Q (at most to 10^9 1/min).
-    """
-    n_high = np.full(power.size, 1000.0)
-    for _ in range(20):
-        short = power(n_high, nu) < Q
-        if not short.any():
-            break
-        n_high = np.where(short, n_high * 4.0, n_high)
-    speed, status = bracketed_root(lambda n: power(n, nu) - Q, np.zeros(power.size), n_high)
-    return np.where(status == 0, speed, np.nan)
 
 
 # ---- the calc extension ``thermal`` ----------------------------------------------------------------

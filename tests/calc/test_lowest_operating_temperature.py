@@ -156,7 +156,7 @@ def test_the_friction_power_computed_once_gives_the_bits_of_the_balance_at_every
     same operations in the same order as the balance that evaluates N_R at every temperature. T_op and status
     of the demo's rows are bit for bit those of the general balance (forced by marking one row's ν as varying;
     that row itself then takes the scan instead of the secant)."""
-    from bearingheat.calc import thermal
+    from bearingheat.calc import heat_flows, thermal
     from bearingheat.calc.fill import fill_from_catalogue
     from bearingheat.calc.models import compute_supports
     from bearingheat.calc.table import to_catalogue_units
@@ -165,9 +165,9 @@ def test_the_friction_power_computed_once_gives_the_bits_of_the_balance_at_every
     converted = to_catalogue_units(table)
     frame = fill_from_catalogue(converted.frame, converted.labels)[0].reset_index(drop=True)
     results = compute_supports(frame)
-    _, _, T_amb, Q_E, Q_S, Q_L = thermal._heat_flow_setup(frame)
-    A, B, _ = thermal._walther_columns(frame)
-    nu_at = thermal._viscosity_of_rows(frame, A, B)
+    _, _, T_amb, Q_E, Q_S, Q_L = heat_flows.heat_flow_setup(frame)
+    A, B, _ = heat_flows.walther_columns(frame)
+    nu_at = heat_flows.viscosity_of_rows(frame, A, B)
     constant = np.zeros(len(frame), dtype=bool)
     marked = constant.copy()
     marked[0] = True

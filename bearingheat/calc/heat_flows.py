@@ -1,0 +1,106 @@
+"""The heat flows of a table of supports as functions of the bearing temperature, and ν(T) of its rows.
+
+What the heat balance (:mod:`bearingheat.calc.thermal`) and the curves of
+``bearingheat plot`` (:mod:`bearingheat.calc.heat_flow_curves`) both solve
+with: the heat carried away through the seat Q_S(θ) and by circulating oil
+Q_L(θ) (Schaeffler HR 1, after ISO 15312 and DIN 732; the formulas are
+:mod:`bearingheat.kernels.thermal`), the viscosity of each row at θ
+(Walther's law where oil data are given), and the speed at which a model's
+friction power meets a heat flow where the model has no closed speed law.
+Catalogue units: mm, N, 1/min, mm²/s, °C, W.
+"""
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from bearingheat.calc.models import FrictionPower
+from bearingheat.calc.reference_speed import thermal_reference_speed_details
+from bearingheat.calc.supports import number_column
+from bearingheat.calc.viscosity import viscosity_model_rows
+from bearingheat.catalogue.thermal import THERMAL_KINDS
+from bearingheat.kernels.roots import bracketed_root
+from bearingheat.kernels.thermal import default_heat_transfer_coefficient, oil_heat_flow, seat_heat_flow
+from bearingheat.kernels.viscosity import walther_viscosity
+
+__all__ = ["OIL_DATA", "viscosity_of_rows", "walther_columns", "heat_flow_setup", "generic_speed"]
+
+#: the columns a viscosity-temperature law comes from (:func:`~bearingheat.calc.viscosity.viscosity_model_rows`)
+OIL_DATA = frozenset({"nu40", "nu100", "iso_vg"})
+
+
+def viscosity_of_rows(frame: pd.DataFrame, A, B):
+    """ν(θ) for every row: Walther where A, B are known, the constant ``nu`` column otherwise."""
+    nu_fixed = number_column(frame, "nu")
+    has_model = ~np.isnan(A)
+    if not has_model.any():  # no row has oil data: ν does not depend on the temperature
+        return lambda theta, rows=slice(None): np.broadcast_arrays(np.asarray(theta, dtype=float),
+                                                                   nu_fixed[rows])[1].copy()
+
+    def nu_at(theta, rows=slice(None)):
+        """ν at θ of every row, or of the block ``rows`` (a slice)."""
+        with np.errstate(invalid="ignore", over="ignore"):
+            return np.where(has_model[rows], walther_viscosity(A[rows], B[rows], theta), nu_fixed[rows])
+
+    return nu_at
+
+
+def walther_columns(frame: pd.DataFrame):
+    """The Walther constants A, B of every row (NaN without oil data) and the problems of the oil data."""
+    if "_walther_A" in frame.columns:
+        return number_column(frame, "_walther_A"), number_column(frame, "_walther_B"), []
+    if not (OIL_DATA | {"VI"}) & set(frame.columns):  # (a VI alone is an error of viscosity_model_rows)
+        return np.full(len(frame), np.nan), np.full(len(frame), np.nan), []
+    return viscosity_model_rows(frame)
+
+
+def heat_flow_setup(frame: pd.DataFrame, details: pd.DataFrame | None = None):
+    """A_r, k_q, reference-speed details and the heat flows as functions of the bearing temperature
+    (``details``: those of
+    :func:`~bearingheat.calc.reference_speed.thermal_reference_speed_details` where the caller has them)."""
+    if details is None:
+        details = thermal_reference_speed_details(frame)
+    A_r = details["A_r"].to_numpy(dtype=float)
+    k_q_default = np.full(len(frame), np.nan)
+    for k in THERMAL_KINDS:
+        rows = (details["kind"] == k).to_numpy(dtype=bool)
+        if rows.any():
+            k_q_default[rows] = default_heat_transfer_coefficient(k, A_r[rows])
+    k_q_user = number_column(frame, "k_q")
+    k_q = np.where(np.isnan(k_q_user), k_q_default, k_q_user)
+    T_amb = number_column(frame, "T_amb")
+    V_oil = np.nan_to_num(number_column(frame, "V_oil"), nan=0.0)
+    dT_oil = number_column(frame, "dT_oil")
+    Q_E = np.nan_to_num(number_column(frame, "Q_E"), nan=0.0)
+
+    def Q_S(theta, rows=slice(None)):
+        """Heat flow through the seat at θ of every row, or of the block ``rows`` (a slice)."""
+        return seat_heat_flow(k_q[rows], A_r[rows], np.asarray(theta, dtype=float) - T_amb[rows])
+
+    if (V_oil > 0).any():
+        def Q_L(theta, rows=slice(None)):
+            # oil temperature rise: given dT_oil, otherwise oil fed at ambient and leaving at the bearing temperature
+            rise = np.where(np.isnan(dT_oil[rows]), np.asarray(theta, dtype=float) - T_amb[rows], dT_oil[rows])
+            return np.where(V_oil[rows] > 0, oil_heat_flow(V_oil[rows], rise), 0.0)
+    else:
+        def Q_L(theta, rows=slice(None)):  # no row has an oil flow: no heat leaves with oil
+            return np.zeros(np.broadcast_shapes(np.shape(theta), T_amb[rows].shape))
+
+    return details, k_q, T_amb, Q_E, Q_S, Q_L
+
+
+def generic_speed(power: FrictionPower, nu: np.ndarray, Q: np.ndarray) -> np.ndarray:
+    """The speed [1/min] at which each row's friction power equals Q [W], by bracketing.
+
+    N_R grows with the speed from 0 at standstill, so the bracket [0, n_high]
+    is widened fourfold until N_R(n_high) > Q (from 1000 1/min, at most 20
+    times); a row still short of Q there has no root (NaN).
+    """
+    n_high = np.full(power.size, 1000.0)
+    for _ in range(20):
+        short = power(n_high, nu) < Q
+        if not short.any():
+            break
+        n_high = np.where(short, n_high * 4.0, n_high)
+    speed, status = bracketed_root(lambda n: power(n, nu) - Q, np.zeros(power.size), n_high)
+    return np.where(status == 0, speed, np.nan)
