@@ -80,19 +80,19 @@ def status_codes(column: pd.Series) -> np.ndarray:
 
 def with_texts(column: pd.Series | pd.Categorical, rows: Iterable[int], texts: Iterable[str]) -> pd.Categorical:
     """A text column (categorical, or cells) as a categorical, with the cells at positions ``rows`` replaced by
-    ``texts``; the other rows keep their codes (no Python object per row)."""
+    ``texts``; the other rows keep their codes (no Python object per row; the new texts are hashed once)."""
     cells = column.array if isinstance(column, pd.Series) else column
     cells = cells if isinstance(cells, pd.Categorical) else pd.Categorical(np.asarray(cells, dtype=object))
-    categories = list(cells.categories)
-    code_of = {text: k for k, text in enumerate(categories)}
+    rows = np.fromiter(rows, dtype=np.intp)
+    new_codes, new_texts = pd.factorize(np.fromiter(texts, dtype=object, count=len(rows)), use_na_sentinel=False)
+    code_of = {text: k for k, text in enumerate(cells.categories)}  # a text the column has keeps its category
+    known = np.fromiter((code_of.get(text, -1) for text in new_texts), dtype=np.intp, count=len(new_texts))
+    unknown = known < 0
+    categories = cells.categories.append(pd.Index(new_texts[unknown], dtype=object))
+    known[unknown] = len(cells.categories) + np.arange(np.count_nonzero(unknown))
     codes = cells.codes.astype(np.int32)
-    for row, text in zip(rows, texts):
-        code = code_of.get(text)
-        if code is None:
-            code = code_of[text] = len(categories)
-            categories.append(text)
-        codes[row] = code
-    return pd.Categorical.from_codes(codes, categories=pd.Index(categories, dtype=object))
+    codes[rows] = known[new_codes]
+    return pd.Categorical.from_codes(codes, categories=categories)
 
 
 def row_status(size: int, warnings_by_row: dict[int, list[str]], errors_by_row: dict[int, list[str]]

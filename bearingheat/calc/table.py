@@ -34,7 +34,7 @@ from bearingheat.calc.thermal import (DEFAULT_SPEED_FACTOR_METHOD, DEFAULT_VISCO
                                      VISCOSITY_AT)
 from bearingheat.calc.contract import (LABEL_COLUMNS, PLAIN_TYPES, input_units, output_header, output_units,
                                        parse_header, range_problems)
-from bearingheat.calc.messages import ERROR, OK, WARNING, Labels, status_codes, status_column, with_texts
+from bearingheat.calc.messages import ERROR, WARNING, Labels, status_codes, status_column, with_texts
 from bearingheat.calc.supports import (blanks_filled, number_column, per_distinct, text_categorical, text_column,
                                        with_bearing_groups)
 from bearingheat.calc.distributed import calc_dask, is_dask_frame
@@ -468,21 +468,20 @@ def _add_messages(results: pd.DataFrame, items: list[tuple[int, str, str, bool]]
         return
     before = status_codes(results["status"])
     status = before.copy()
+    positions = np.fromiter((item[0] for item in items), dtype=np.intp, count=len(items))
+    # an error makes its row 'error', a warning an 'ok' row 'warning': the highest level of each row wins
+    np.maximum.at(status, positions, np.array([ERROR if item[1] == "error" else WARNING for item in items],
+                                              dtype=status.dtype))
     cells = results["message"].array
     if not isinstance(cells, pd.Categorical):
         cells = pd.Categorical(np.asarray(cells, dtype=object))
-    categories, codes = cells.categories, cells.codes
-    texts: dict[int, str] = {}
-    for position, level, message, first in items:
-        if position in texts:
-            current = texts[position]
-        else:  # (code -1: a missing message, none so far)
-            current = categories[codes[position]] if codes[position] >= 0 else ""
-        texts[position] = (f"{message}; {current}" if first else f"{current}; {message}") if current else message
-        if level == "error":
-            status[position] = ERROR
-        elif status[position] == OK:
-            status[position] = WARNING
+    touched = pd.unique(positions)  # (hashed, not sorted: a dict of them is all the loop needs)
+    # each touched row's message so far (code -1, a missing message, takes the appended '': none)
+    current = np.append(cells.categories.to_numpy(dtype=object), "")[cells.codes[touched]]
+    texts = dict(zip(touched.tolist(), current.tolist()))
+    for position, _, message, first in items:
+        now = texts[position]
+        texts[position] = (f"{message}; {now}" if first else f"{now}; {message}") if now else message
     newly_failed = (status == ERROR) & (before != ERROR)
     results["message"] = pd.Series(with_texts(cells, texts.keys(), texts.values()), index=results.index, copy=False)
     results["status"] = pd.Series(status_column(status), index=results.index, copy=False)
