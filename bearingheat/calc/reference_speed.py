@@ -9,6 +9,7 @@ builds the heat balance on it.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 
 import numpy as np
 import pandas as pd
@@ -44,20 +45,26 @@ def _resolved_keys(frame: pd.DataFrame) -> tuple[np.ndarray, list[tuple[Resolved
     return codes, resolved
 
 
-def thermal_reference_speed_details(frame: pd.DataFrame, *, f0_scale=1.0, f1_scale=1.0) -> pd.DataFrame:
+def thermal_reference_speed_details(frame: pd.DataFrame, *, f0_scale=1.0, f1_scale=1.0,
+                                    names: Sequence[str] | None = None) -> pd.DataFrame:
     """Thermal reference speed of every row with the quantities behind it (see :func:`_details`); each distinct
     combination of the :data:`REFERENCE_KEYS` columns is computed once. ``f0_scale`` and ``f1_scale`` (per row
-    or one number) scale the table coefficients, for the uncertainty bands."""
+    or one number) scale the table coefficients, for the uncertainty bands. ``names``: the columns wanted
+    (all where None)."""
     keys = [c for c in REFERENCE_KEYS if c in frame.columns]
+
+    def chosen(details: pd.DataFrame) -> pd.DataFrame:
+        return details if names is None else details[list(names)]
+
     if np.ndim(f0_scale) or np.ndim(f1_scale) or f0_scale != 1.0 or f1_scale != 1.0:
-        return _details(frame, f0_scale, f1_scale)
+        return chosen(_details(frame, f0_scale, f1_scale))
     if not keys or len(frame) < 2:
-        return _details(frame)
+        return chosen(_details(frame))
     codes = group_codes(frame, keys)
     first = first_rows(codes)
     if len(first) == len(frame):
-        return _details(frame)
-    distinct = _details(frame.iloc[first])
+        return chosen(_details(frame))
+    distinct = chosen(_details(frame.iloc[first]))
     # spread to the rows: numbers by their codes, texts as categoricals of the distinct rows' texts
     return pd.DataFrame({name: coded_categorical(codes, column.tolist()) if column.dtype.kind in "OUT"
                          or isinstance(column.dtype, pd.StringDtype) else column.to_numpy()[codes]

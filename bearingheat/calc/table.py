@@ -445,9 +445,9 @@ def _implausible_relations(frame: pd.DataFrame, labels: Labels, from_table: dict
     n = number_column(frame, "n")
     n_G = number_column(frame, "n_G")
     catalogue_n_G = from_table.get("n_G", np.zeros(n_rows, dtype=bool))
-    designations = text_column(frame, "designation")
     with np.errstate(invalid="ignore"):
         fast = np.isfinite(n) & (n > n_G)
+    designations = text_column(frame, "designation") if fast.any() else []  # (a Python text per row)
     for i in np.flatnonzero(fast).tolist():
         of = f" of {designations[i]} ({CATALOGUE})" if catalogue_n_G[i] else ""
         problems.append((i, "warning", f"{labels.name('n', i)}: {user('n', i, n[i])} is above the limiting "

@@ -390,7 +390,8 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
     wants_balance = "T_amb" in has
     if not (wants_thr or wants_balance):
         return pd.DataFrame(index=frame.index), problems
-    details = thermal_reference_speed_details(frame)
+    # (without the heat balance only n_thr and why a row has none are spread to the rows)
+    details = thermal_reference_speed_details(frame, names=None if wants_balance else ("n_thr", "reason"))
     reasons = details["reason"].to_numpy(dtype=object)
     n_thr = details["n_thr"].to_numpy(dtype=float)
     n_thr_catalogue = number_column(frame, "n_thr_catalogue")

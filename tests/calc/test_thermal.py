@@ -287,3 +287,9 @@ def test_reference_speed_details_of_a_table_are_those_of_each_row_alone():
             np.testing.assert_array_equal(together[column].iat[i], alone[column].iat[0])
     reasons = together["reason"].astype(str)
     assert reasons.eq("").any() and reasons.str.contains("must be > 0").any() and reasons.str.contains("pair").any()
+    # the columns asked for, alone: the same values
+    chosen = thermal_reference_speed_details(frame, names=("n_thr", "reason"))
+    assert list(chosen.columns) == ["n_thr", "reason"]
+    np.testing.assert_array_equal(chosen["n_thr"].to_numpy(), together["n_thr"].to_numpy())
+    assert chosen["reason"].tolist() == together["reason"].tolist()
+    assert list(thermal_reference_speed_details(frame.iloc[:1], names=("A_r",)).columns) == ["A_r"]
