@@ -107,11 +107,12 @@ THERMAL_INPUTS = frozenset(columns(owner="thermal", kind="input"))
 
 # ---- rows: heat balance of supports (calc and the Python API) --------------------------------
 
-def _operating_point(frame, results, nu_at, nu_varies, Q_S, Q_L, Q_E, T_amb, t_limit):
-    """(T_op, status) at the operating speed: N_R(ν(T)) + Q_E = Q_S(T) + Q_L(T), N_R by each row's model;
+def _operating_point(frame, results, nu_at, nu_varies, Q_S, Q_L, Q_E, T_amb, t_limit, power=None):
+    """(T_op, status) at the operating speed: N_R(ν(T)) + Q_E = Q_S(T) + Q_L(T), N_R by each row's model
+    (``power``: the :class:`~bearingheat.calc.models.FrictionPower` of ``results`` where the caller has it);
     ``nu_varies`` marks the rows whose ν follows T (Walther), ``nu_at`` gives ν(T) of every row."""
     n = number_column(frame, "n")
-    power = FrictionPower(frame, results)
+    power = power or FrictionPower(frame, results)
     T_low = T_amb - BELOW_AMBIENT_SEARCH
     T_high = np.full(len(frame), float(t_limit))
     if nu_varies.any():
@@ -433,10 +434,12 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
             problems.append((int(i), "error", f"V_oil [l/min]: {values[i]:g} must be >= 0"))
 
     # --- operating temperature at the operating speed (solved already where the viscosity was taken at it)
+    power = FrictionPower(frame, results)  # N_R of each row by its model, for T_op and n_per
     if "_T_op" in has:
         T_op, status = number_column(frame, "_T_op"), frame["_T_op_status"].to_numpy()
     else:
-        T_op, status, _ = _operating_point(frame, results, nu_at, ~np.isnan(A), Q_S, Q_L, Q_E, T_amb, t_limit)
+        T_op, status, _ = _operating_point(frame, results, nu_at, ~np.isnan(A), Q_S, Q_L, Q_E, T_amb, t_limit,
+                                           power)
     usable = ~failed & ~np.isnan(T_amb) & ~np.isnan(details["A_r"].to_numpy(dtype=float))
     for i in np.flatnonzero(usable & (status != 0)):
         problems.append((int(i), "warning", f"T_op: {_no_equilibrium_text(status[i], T_amb[i], t_limit)}"))
@@ -456,13 +459,15 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
     T_bearing = number_column(frame, "T_bearing")
     theta = np.where(np.isnan(T_bearing), T_op, T_bearing)
     with np.errstate(invalid="ignore"):
-        columns["Q_S"] = np.where(usable, Q_S(theta), np.nan)
-        columns["Q_L"] = np.where(usable, Q_L(theta), np.nan)
+        seat, oil = Q_S(theta), Q_L(theta)
+        columns["Q_S"] = np.where(usable, seat, np.nan)
+        columns["Q_L"] = np.where(usable, oil, np.nan)
 
-    # --- permissible speed at the bearing temperature T_bearing
+    # --- permissible speed at the bearing temperature T_bearing (where it is given, theta is T_bearing)
     if "T_bearing" in has:
-        columns["n_per"] = _permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue,
-                                                   T_bearing, T_amb, Q_S, Q_L, Q_E, usable, methods, problems)
+        carried = np.where(np.isnan(T_bearing), np.nan, seat + oil - Q_E)
+        columns["n_per"] = _permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue, T_bearing,
+                                                   T_amb, carried, Q_E, power, usable, methods, problems)
         titles = [SPEED_FACTOR_METHODS[m].title for m in methods.categories] + [""]  # the last: no n_per
         used = np.where(np.isnan(columns["n_per"]), len(titles) - 1, methods.codes)
         columns["n_per_method_used"] = coded_categorical(used, titles)
@@ -540,8 +545,10 @@ register_choices("n_per_method", lambda: tuple(SPEED_FACTOR_METHODS))
 register_choices("viscosity_at", lambda: tuple(VISCOSITY_AT))
 
 
-def _permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue, T_bearing, T_amb, Q_S, Q_L, Q_E,
+def _permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue, T_bearing, T_amb, Q, Q_E, power,
                             usable, methods, problems):
+    """n_per of the rows ``usable`` with a T_bearing above T_amb; ``Q`` is the heat carried away at T_bearing
+    less Q_E [W], ``power`` the rows' :class:`~bearingheat.calc.models.FrictionPower`."""
     n_rows = len(frame)
     rows = usable & ~np.isnan(T_bearing)
     for i in np.flatnonzero(usable & np.isnan(T_bearing)):
@@ -553,7 +560,6 @@ def _permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue, T_b
     rows &= T_bearing > T_amb
     n_used = np.where(np.isnan(n_thr_catalogue), n_thr, n_thr_catalogue)
     rows &= n_used > 0
-    Q = Q_S(T_bearing) + Q_L(T_bearing) - Q_E
     for i in np.flatnonzero(rows & ~(Q > 0)):
         problems.append((int(i), "warning", f"n_per: the external heat Q_E = {Q_E[i]:g} W is not less than the heat "
                                             f"carried away {Q[i] + Q_E[i]:.4g} W at T_bearing; no speed is "
@@ -573,7 +579,6 @@ def _permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue, T_b
             nu = np.where(at_bearing, walther_viscosity(A, B, T_bearing), nu)
     f0 = results["f0"].to_numpy(dtype=float)
     load_torque = results["M1"].to_numpy(dtype=float) + np.nan_to_num(results["M2"].to_numpy(dtype=float))
-    power = FrictionPower(frame, results)
     for name, method in SPEED_FACTOR_METHODS.items():
         sel = np.flatnonzero(rows & power.closed & (methods == name))
         if len(sel):
