@@ -180,8 +180,6 @@ def lowest_operating_temperature(balance, T_low, T_high, *, cells: int = OPERATI
     heating = values > 0
     crossing = heating[:-1] & ~heating[1:] & ~np.isnan(values[1:])
     found = crossing.any(axis=0)
-    first = np.argmax(crossing, axis=0)
-    rows = np.arange(grid.shape[1])
     f_low, f_high = values[0], values[-1]
     at_low = ~found & (f_low == 0) & ~(f_high > 0)  # in balance already at T_low
     status = np.where(found | at_low, 0, np.where(f_high > 0, 1, np.where(f_low < 0, -1, 2)))  # 2: NaN inside
@@ -190,6 +188,7 @@ def lowest_operating_temperature(balance, T_low, T_high, *, cells: int = OPERATI
         if affine.all():  # every row takes the secant below: nothing to refine
             T = np.full(shape, np.nan)
         else:
+            first, rows = np.argmax(crossing, axis=0), np.arange(grid.shape[1])  # each row's first crossing cell
             low = np.where(found, np.where(single, T_low, grid[first, rows]), T_low)
             high = np.where(found, np.where(single, T_high, grid[first + 1, rows]), T_low)
             f_at_low = np.where(found, np.where(single, f_low, values[first, rows]), f_low)
