@@ -580,7 +580,9 @@ def _permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue, T_b
     load_torque = results["M1"].to_numpy(dtype=float) + np.nan_to_num(results["M2"].to_numpy(dtype=float))
     for name, method in SPEED_FACTOR_METHODS.items():
         sel = np.flatnonzero(rows & power.closed & (methods == name))
-        if len(sel):
+        if len(sel) == n_rows:  # every row: the columns themselves, no copies of their rows
+            out = method.solve(sel, n_used, f0, nu, dM, load_torque, Q, problems) * n_used
+        elif len(sel):
             f_n = method.solve(sel, n_used[sel], f0[sel], nu[sel], dM[sel], load_torque[sel], Q[sel], problems)
             out[sel] = f_n * n_used[sel]
     generic = rows & ~power.closed
