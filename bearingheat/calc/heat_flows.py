@@ -23,10 +23,13 @@ from bearingheat.kernels.roots import bracketed_root
 from bearingheat.kernels.thermal import default_heat_transfer_coefficient, oil_heat_flow, seat_heat_flow
 from bearingheat.kernels.viscosity import walther_viscosity
 
-__all__ = ["OIL_DATA", "viscosity_of_rows", "walther_columns", "heat_flow_setup", "generic_speed"]
+__all__ = ["OIL_DATA", "HEAT_BALANCE_DETAILS", "viscosity_of_rows", "walther_columns", "heat_flow_setup", "generic_speed"]
 
 #: the columns a viscosity-temperature law comes from (:func:`~bearingheat.calc.viscosity.viscosity_model_rows`)
 OIL_DATA = frozenset({"nu40", "nu100", "iso_vg"})
+#: the reference-speed details the heat balance reads: n_thr and why a row has none, the kind and A_r of the
+#: heat flow area
+HEAT_BALANCE_DETAILS = ("n_thr", "reason", "kind", "A_r")
 
 
 def viscosity_of_rows(frame: pd.DataFrame, A, B):
@@ -56,10 +59,10 @@ def walther_columns(frame: pd.DataFrame):
 
 def heat_flow_setup(frame: pd.DataFrame, details: pd.DataFrame | None = None):
     """A_r, k_q, reference-speed details and the heat flows as functions of the bearing temperature
-    (``details``: those of
+    (``details``: at least the :data:`HEAT_BALANCE_DETAILS` of
     :func:`~bearingheat.calc.reference_speed.thermal_reference_speed_details` where the caller has them)."""
     if details is None:
-        details = thermal_reference_speed_details(frame)
+        details = thermal_reference_speed_details(frame, names=HEAT_BALANCE_DETAILS)
     A_r = details["A_r"].to_numpy(dtype=float)
     k_q_default = np.full(len(frame), np.nan)
     for k in THERMAL_KINDS:

@@ -48,7 +48,8 @@ from bearingheat.calc.contract import columns, register_choices
 from bearingheat.calc.models import DEFAULT_MODEL, FrictionPower, failed_rows, plain_bushing_rows, results_at_viscosity
 from bearingheat.calc.reference_speed import thermal_reference_speed_details, thermal_reference_speed_rows
 from bearingheat.calc.supports import coded_categorical, number_column, text_codes
-from bearingheat.calc.heat_flows import OIL_DATA, generic_speed, heat_flow_setup, viscosity_of_rows, walther_columns
+from bearingheat.calc.heat_flows import (HEAT_BALANCE_DETAILS, OIL_DATA, generic_speed, heat_flow_setup,
+                                         viscosity_of_rows, walther_columns)
 from bearingheat.errors import HeatBalanceError
 from bearingheat.kernels import friction
 from bearingheat.kernels.thermal import (APPROXIMATION_RANGE, OIL_HEAT_CAPACITY_FLOW, permissible_speed_factor,
@@ -390,8 +391,9 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
     wants_balance = "T_amb" in has
     if not (wants_thr or wants_balance):
         return pd.DataFrame(index=frame.index), problems
-    # (without the heat balance only n_thr and why a row has none are spread to the rows)
-    details = thermal_reference_speed_details(frame, names=None if wants_balance else ("n_thr", "reason"))
+    # (the details the heat balance reads are spread to the rows; without it n_thr and why a row has none)
+    details = thermal_reference_speed_details(frame, names=HEAT_BALANCE_DETAILS if wants_balance
+                                              else ("n_thr", "reason"))
     reasons = details["reason"].to_numpy(dtype=object)
     n_thr = details["n_thr"].to_numpy(dtype=float)
     n_thr_catalogue = number_column(frame, "n_thr_catalogue")
