@@ -113,7 +113,7 @@ def _operating_point(frame, results, nu_at, nu_varies, Q_S, Q_L, Q_E, T_amb, t_l
     (``power``: the :class:`~bearingheat.calc.models.FrictionPower` of ``results`` where the caller has it);
     ``nu_varies`` marks the rows whose ν follows T (Walther), ``nu_at`` gives ν(T) of every row."""
     n = number_column(frame, "n")
-    power = power or FrictionPower(frame, results)
+    power = power if power is not None else FrictionPower(frame, results)
     T_low = T_amb - BELOW_AMBIENT_SEARCH
     T_high = np.full(len(frame), float(t_limit))
     if nu_varies.any():
@@ -435,7 +435,8 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
             problems.append((int(i), "error", f"V_oil [l/min]: {values[i]:g} must be >= 0"))
 
     # --- operating temperature at the operating speed (solved already where the viscosity was taken at it)
-    power = FrictionPower(frame, results)  # N_R of each row by its model, for T_op and n_per
+    # N_R of each row by its model, for T_op and n_per
+    power = FrictionPower(frame, results) if "_T_op" not in has or "T_bearing" in has else None
     if "_T_op" in has:
         T_op, status = number_column(frame, "_T_op"), frame["_T_op_status"].to_numpy()
     else:
