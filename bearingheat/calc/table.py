@@ -460,10 +460,16 @@ def _flagged(row_messages: dict[int, list[str]]):
     return ((i, row_messages[i]) for i in sorted(row_messages) if row_messages[i])
 
 
+#: a table gets its messages as Python texts (an object column) where there is one for at least every this many
+#: rows; fewer are written into the message categorical by their codes
+_MANY_MESSAGES = 8
+
+
 def _add_messages(results: pd.DataFrame, items: list[tuple[int, str, str, bool]]) -> None:
     """Add (row position, 'error' | 'warning', message, first) to the rows' messages in order: ``first`` puts
     a message before the row's message so far. An error makes its row 'error' with NaN results, a warning
-    makes an 'ok' row 'warning'. One pass over the messages; the columns are written once, by their codes."""
+    makes an 'ok' row 'warning'. One pass over the messages; the columns are written once: the status by its
+    codes, the messages by theirs where few rows get one, else as an object column of Python texts."""
     if not items:
         return
     before = status_codes(results["status"])
@@ -473,17 +479,24 @@ def _add_messages(results: pd.DataFrame, items: list[tuple[int, str, str, bool]]
     np.maximum.at(status, positions, np.array([ERROR if item[1] == "error" else WARNING for item in items],
                                               dtype=status.dtype))
     cells = results["message"].array
-    if not isinstance(cells, pd.Categorical):
-        cells = pd.Categorical(np.asarray(cells, dtype=object))
-    touched = pd.unique(positions)  # (hashed, not sorted: a dict of them is all the loop needs)
-    # each touched row's message so far (code -1, a missing message, takes the appended '': none)
-    current = np.append(cells.categories.to_numpy(dtype=object), "")[cells.codes[touched]]
-    texts = dict(zip(touched.tolist(), current.tolist()))
-    for position, _, message, first in items:
-        now = texts[position]
-        texts[position] = (f"{message}; {now}" if first else f"{now}; {message}") if now else message
+    if isinstance(cells, pd.Categorical) and len(items) * _MANY_MESSAGES < len(results):
+        touched = pd.unique(positions)  # (hashed, not sorted: a dict of them is all the loop needs)
+        # each touched row's message so far (code -1, a missing message, takes the appended '': none)
+        current = np.append(cells.categories.to_numpy(dtype=object), "")[cells.codes[touched]]
+        texts = dict(zip(touched.tolist(), current.tolist()))
+        for position, _, message, first in items:
+            now = texts[position]
+            texts[position] = (f"{message}; {now}" if first else f"{now}; {message}") if now else message
+        column: pd.Categorical | np.ndarray = with_texts(cells, texts.keys(), texts.values())
+    else:  # messages on many rows: Python texts in an object column (hashing them all costs more than it saves)
+        column = (np.append(cells.categories.to_numpy(dtype=object), "")[cells.codes]
+                  if isinstance(cells, pd.Categorical) else np.asarray(cells, dtype=object).copy())
+        for position, _, message, first in items:
+            now = column[position]
+            column[position] = (f"{message}; {now}" if first else f"{now}; {message}") if now else message
     newly_failed = (status == ERROR) & (before != ERROR)
-    results["message"] = pd.Series(with_texts(cells, texts.keys(), texts.values()), index=results.index, copy=False)
+    results["message"] = pd.Series(column, index=results.index, dtype=None if isinstance(column, pd.Categorical)
+                                   else object, copy=False)
     results["status"] = pd.Series(status_column(status), index=results.index, copy=False)
     if newly_failed.any():
         results.loc[newly_failed, list(RESULT_UNITS)] = np.nan
@@ -507,8 +520,10 @@ def _assemble(table: pd.DataFrame, results: pd.DataFrame, extension_columns) -> 
                 values = np.where(failed, np.nan, values)
             written[output_header(name, units.get(name, ""))] = values
     _refuse_non_finite(written, results, failed)
-    written["status"] = results["status"].array
-    written["message"] = results["message"].array
+    for name in ("status", "message"):  # categoricals, or a message column of Python texts (_add_messages)
+        column = results[name]
+        categorical = isinstance(column.dtype, pd.CategoricalDtype)
+        written[name] = column.array if categorical else column.to_numpy(dtype=object)
     # the caller's frame holds the arrays as they are (no copy into one block); a read-only view of calc's
     # internal frames is copied, so that the caller can change the cells
     columns_out = {header: _text(values) if isinstance(values, pd.Categorical) or values.dtype == object

@@ -1,6 +1,7 @@
 """Row status and messages as calc keeps them: categoricals written by their codes."""
 import numpy as np
 import pandas as pd
+import pytest
 
 import bearingheat as bh
 from bearingheat.calc import messages
@@ -37,3 +38,21 @@ def test_calc_writes_status_and_message_as_text():
     assert out["status"].dtype == text and out["message"].dtype == text
     assert out["status"].tolist() == ["ok", "error"]
     assert out["message"].tolist() == ["", "Fr [kN]: -1 must be >= 0"]
+
+
+@pytest.mark.parametrize("widths", [[99, 16], [15, 16]])
+def test_messages_are_the_messages_of_the_rows_alone(widths):
+    """Messages on a few rows are written into the message categorical by their codes; where many rows get one
+    (B = 99 mm differs from the catalogue's 15 mm on every other row) calc keeps them as Python texts. Either
+    way: the same status and messages as each row computed alone, and the same text columns."""
+    rows = pd.DataFrame({"designation": ["6205", "6206"] * 8, "d [mm]": [25, 30] * 8, "D [mm]": [52, 62] * 8,
+                         "B [mm]": widths * 8, "C0 [kN]": [7.8, 11.2] * 8, "lubrication": "oil_bath",
+                         "n [rpm]": [3000, 1500] * 8, "Fr [kN]": [2, 3] * 8, "nu [mm^2/s]": 12})
+    rows.loc[3, "Fr [kN]"] = -1
+    out = bh.calc(rows)
+    alone = [bh.calc(rows.iloc[[i]]) for i in range(len(rows))]
+    assert out["status"].tolist() == [a["status"].iat[0] for a in alone]
+    assert out["message"].tolist() == [a["message"].iat[0] for a in alone]
+    assert set(out["status"]) == ({"warning", "error", "ok"} if widths[0] == 99 else {"error", "ok"})
+    text = pd.Series(["text"]).dtype
+    assert out["status"].dtype == text and out["message"].dtype == text
