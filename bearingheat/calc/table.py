@@ -561,11 +561,14 @@ def _refuse_non_finite(written: dict[str, np.ndarray], results: pd.DataFrame, fa
     one (its numeric results NaN in ``written``, the message in ``results``)."""
     numeric = [header for header, values in written.items() if values.dtype.kind == "f"]
     bad: dict[int, str] = {}
+    computed = ~failed
     for header in numeric:
-        for i in np.flatnonzero(np.isinf(written[header]) & ~failed):
-            bad.setdefault(int(i), header)
+        infinite = np.isinf(written[header])
+        if infinite.any():  # (one pass where, as usual, no row is)
+            for i in np.flatnonzero(infinite & computed):
+                bad.setdefault(int(i), header)
     for header in (output_header("MR"), output_header("NR")):
-        for i in np.flatnonzero(np.isnan(written[header]) & ~failed):
+        for i in np.flatnonzero(np.isnan(written[header]) & computed):
             bad.setdefault(int(i), header)
     _add_messages(results, [(i, "error", f"{header}: the result is not a finite number for these inputs; "
                                          "check their magnitudes and units", False) for i, header in sorted(bad.items())])
