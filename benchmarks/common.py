@@ -21,12 +21,7 @@ DEMO = ROOT / "examples" / "gearbox_shaft.csv"
 
 def best_of(run, repeats: int = 3):
     """(the shortest of ``repeats`` wall-clock times of ``run()`` [s], the value of its last call)."""
-    times, value = [], None
-    for _ in range(max(1, repeats)):
-        start = time.perf_counter()
-        value = run()
-        times.append(time.perf_counter() - start)
-    return min(times), value
+    return best_in_turns({"run": run}, repeats)["run"]
 
 
 def best_in_turns(runs: dict, repeats: int = 5) -> dict:

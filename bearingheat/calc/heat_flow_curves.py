@@ -26,7 +26,7 @@ def heat_flow_curves(frame: pd.DataFrame, results: pd.DataFrame, columns: pd.Dat
     ``frame`` holds the calc inputs after :func:`~bearingheat.calc.thermal.settle_viscosity` (with
     ``T_amb``), ``results`` the friction results of
     :func:`bearingheat.calc.models.compute_supports` and ``columns`` those of
-    :func:`heat_balance_rows`. Returns None where the row has no heat flow
+    :func:`~bearingheat.calc.thermal.heat_balance_rows`. Returns None where the row has no heat flow
     area A_r or no ambient temperature, otherwise a dict: ``n``, ``n_per``,
     ``T_op``, ``T_amb``; ``theta`` (T_bearing, else T_op) and ``n_cross``,
     the speed at which the friction heat equals Q_S + Q_L − Q_E at theta;

@@ -30,7 +30,7 @@ __all__ = ["SupportArrays", "build_support_arrays", "bearing_constants", "NUMBER
            "text_column", "number_column", "text_codes", "distinct_keys", "group_codes", "text_or_default",
            "value_codes", "text_categorical", "fill_blank", "blanks_filled", "object_column", "column_codes",
            "coded_categorical", "first_rows", "nonblank", "text_in", "BEARING_INPUTS", "BEARING_GROUP",
-           "with_bearing_groups"]
+           "with_bearing_groups", "bearing_rows"]
 
 #: numeric inputs of the friction model, in catalogue units
 NUMBER_INPUTS = ("d", "D", "B", "C0", "Y", "e", "X0", "Y0", "alpha", "f0", "f1", "f2", "n", "nu", "Fr", "Fa")
@@ -351,15 +351,26 @@ def with_bearing_groups(frame: pd.DataFrame) -> pd.DataFrame:
     return frame.assign(**{BEARING_GROUP: codes})
 
 
+def bearing_rows(frame: pd.DataFrame) -> tuple[np.ndarray, np.ndarray] | None:
+    """(each row's bearing, numbered 0, 1, ... in order of first appearance; the first row of each bearing) of a
+    frame of more than one row that numbers its bearings (:func:`with_bearing_groups`), else None. The numbers
+    are made dense again: a subset of calc's frame lacks some."""
+    if BEARING_GROUP not in frame.columns or len(frame) < 2:
+        return None
+    bearings = pd.factorize(frame[BEARING_GROUP].to_numpy(), sort=False)[0]
+    return bearings, first_rows(bearings)
+
+
 def group_codes(frame: pd.DataFrame, names: list[str]) -> np.ndarray:
     """One code per row for its values in the columns ``names`` (missing values are one value), numbered in
     order of first appearance: ``groupby(names).ngroup()`` without pandas' groupby machinery. The columns
     are hashed together (:func:`_hashed_codes`). Where the frame numbers its bearings
     (:func:`with_bearing_groups`) and ``names`` are all :data:`BEARING_INPUTS`, only the first row of each
     bearing is looked at."""
-    if BEARING_GROUP in frame.columns and len(frame) > 1 and set(names) <= set(BEARING_INPUTS):
-        bearings = pd.factorize(frame[BEARING_GROUP].to_numpy(), sort=False)[0]  # dense again in a subset
-        return group_codes(frame[list(names)].iloc[first_rows(bearings)], names)[bearings]
+    numbered = bearing_rows(frame) if set(names) <= set(BEARING_INPUTS) else None
+    if numbered is not None:
+        bearings, first = numbered
+        return group_codes(frame[list(names)].iloc[first], names)[bearings]
     columns = []  # float columns by their bits, the others by their codes (missing: one code of its own)
     for name in names:
         if frame[name].dtype == np.float64:
@@ -469,16 +480,15 @@ def build_support_arrays(keys: pd.DataFrame, numbers: dict[str, Any]) -> Support
     else:  # one bearing: f0 is given for all its points or for none
         f0_given = np.array([not np.all(np.isnan(num["f0"]))])
     one_key_row = len(keys) == 1
-    bearings = None
-    if BEARING_GROUP in keys.columns and len(keys) == size > 1:  # calc's frame: the keys of each bearing's first row
-        bearings = pd.factorize(keys[BEARING_GROUP].to_numpy(), sort=False)[0]
-        first = first_rows(bearings)
+    numbered = bearing_rows(keys) if len(keys) == size else None
+    if numbered is not None:  # calc's frame: the keys of each bearing's first row
+        bearings, first = numbered
         keys, f0_given = keys.iloc[first], f0_given[first]
     parts = [text_codes(keys, name) for name in KEY_INPUTS]
     arrangement = KEY_INPUTS.index("arrangement")
     parts[arrangement] = (parts[arrangement][0], [text or "single" for text in parts[arrangement][1]])
     codes, uniques = distinct_keys([*parts, (f0_given.astype(np.int64), [False, True])])
-    if bearings is not None:
+    if numbered is not None:
         codes = codes[bearings]
     per_key = [_constants_of_key(*key) for key in uniques]
     plain_keys = np.array([(key[1] or "").lower() in PLAIN_TYPES for key in uniques], dtype=bool)

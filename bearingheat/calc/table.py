@@ -481,25 +481,31 @@ def _add_messages(results: pd.DataFrame, items: list[tuple[int, str, str, bool]]
     cells = results["message"].array
     if isinstance(cells, pd.Categorical) and len(items) * _MANY_MESSAGES < len(results):
         touched = pd.unique(positions)  # (hashed, not sorted: a dict of them is all the loop needs)
-        # each touched row's message so far (code -1, a missing message, takes the appended '': none)
-        current = np.append(cells.categories.to_numpy(dtype=object), "")[cells.codes[touched]]
-        texts = dict(zip(touched.tolist(), current.tolist()))
+        texts = dict(zip(touched.tolist(), _texts_of_codes(cells)[cells.codes[touched]].tolist()))
         for position, _, message, first in items:
-            now = texts[position]
-            texts[position] = (f"{message}; {now}" if first else f"{now}; {message}") if now else message
-        column: pd.Categorical | np.ndarray = with_texts(cells, texts.keys(), texts.values())
+            texts[position] = _joined(texts[position], message, first)
+        results["message"] = pd.Series(with_texts(cells, texts.keys(), texts.values()), index=results.index,
+                                       copy=False)
     else:  # messages on many rows: Python texts in an object column (hashing them all costs more than it saves)
-        column = (np.append(cells.categories.to_numpy(dtype=object), "")[cells.codes]
-                  if isinstance(cells, pd.Categorical) else np.asarray(cells, dtype=object).copy())
+        column = (_texts_of_codes(cells)[cells.codes] if isinstance(cells, pd.Categorical)
+                  else np.asarray(cells, dtype=object).copy())
         for position, _, message, first in items:
-            now = column[position]
-            column[position] = (f"{message}; {now}" if first else f"{now}; {message}") if now else message
+            column[position] = _joined(column[position], message, first)
+        results["message"] = pd.Series(column, index=results.index, dtype=object, copy=False)
     newly_failed = (status == ERROR) & (before != ERROR)
-    results["message"] = pd.Series(column, index=results.index, dtype=None if isinstance(column, pd.Categorical)
-                                   else object, copy=False)
     results["status"] = pd.Series(status_column(status), index=results.index, copy=False)
     if newly_failed.any():
         results.loc[newly_failed, list(RESULT_UNITS)] = np.nan
+
+
+def _texts_of_codes(cells: pd.Categorical) -> np.ndarray:
+    """The texts of a message categorical by code, '' appended for code -1 (a missing message: none)."""
+    return np.append(cells.categories.to_numpy(dtype=object), "")
+
+
+def _joined(now: str, message: str, first: bool) -> str:
+    """A row's message so far, ``now``, with ``message`` put before it (``first``) or after it."""
+    return (f"{message}; {now}" if first else f"{now}; {message}") if now else message
 
 
 def _assemble(table: pd.DataFrame, results: pd.DataFrame, extension_columns) -> pd.DataFrame:
