@@ -507,7 +507,10 @@ def build_support_arrays(keys: pd.DataFrame, numbers: dict[str, Any]) -> Support
         notes, noted = notes_of_key, noted_key
     else:
         def spread(name, dtype):
-            return np.array([c[name] for c in per_key], dtype=dtype)[codes]
+            values = np.array([c[name] for c in per_key], dtype=dtype)
+            if np.array_equal(values, np.full_like(values, values[0]), equal_nan=dtype is float):
+                return values[0]  # one value for every key: a scalar, not a copy per row
+            return values[codes]
 
         def spread_text(name):
             # a categorical: numpy compares it by its codes (np.equal(s.seal, 'contact') 0.1 ms, not 20 ms, for
