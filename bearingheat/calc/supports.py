@@ -508,7 +508,7 @@ def build_support_arrays(keys: pd.DataFrame, numbers: dict[str, Any]) -> Support
     else:
         def spread(name, dtype):
             values = np.array([c[name] for c in per_key], dtype=dtype)
-            if np.array_equal(values, np.full_like(values, values[0]), equal_nan=dtype is float):
+            if len(values) and np.array_equal(values, np.full_like(values, values[0]), equal_nan=dtype is float):
                 return values[0]  # one value for every key: a scalar, not a copy per row
             return values[codes]
 

@@ -6,6 +6,7 @@ import pandas as pd
 import pytest
 
 from bearingheat.calc import supports as sp
+from bearingheat.calc.table import calc
 from bearingheat.catalogue import friction as catalogue
 
 
@@ -52,6 +53,26 @@ def test_one_bearing_keeps_its_constants_scalar():
     assert np.ndim(s.f0_table) == 0 and float(s.f0_table) == 1.3
     assert np.ndim(s.D) == 0 and np.ndim(s.d) == 0 and float(s.d) == 25.0
     assert len(s.notes) == 1
+
+
+def test_a_constant_every_bearing_shares_stays_scalar():
+    keys = pd.DataFrame({"designation": ["6208", "6210"] * 3, "lubrication": ["grease"] * 6})
+    s = sp.build_support_arrays(keys, {"n": np.full(6, 100.0)})
+    assert np.ndim(s.bearings) == 0 and float(s.bearings) == 1.0   # both single bearings
+    assert np.ndim(s.m2) == 0 and not s.m2                          # neither is a cylindrical roller bearing
+    assert np.ndim(s.kB) == 0 and np.isnan(s.kB)
+    assert s.d.tolist() == [40.0, 50.0] * 3                         # bores differ: one per row
+
+
+def test_an_empty_table_gives_the_friction_columns_of_a_full_one():
+    """No bearing to resolve: the constants of no key. (The heat balance's n_thr comes only where the catalogue
+    filled B into some row; bearingheat.calc.distributed gives an empty partition the columns of the others.)"""
+    table = pd.DataFrame({"designation": ["6208"], "D [mm]": [80.0], "lubrication": ["grease"],
+                          "n [rpm]": [1500.0], "Fr [kN]": [1.0], "nu [mm^2/s]": [20.0]})
+    full, empty = calc(table), calc(table.iloc[:0])
+    assert len(empty) == 0
+    assert list(empty.columns) == [c for c in full.columns if c != "n_thr [1/min]"]
+    assert all(str(empty[c].dtype) == str(full[c].dtype) for c in empty.columns)
 
 
 def test_take_keeps_rows_and_scalars():
