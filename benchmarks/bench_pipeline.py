@@ -36,7 +36,7 @@ CALC_FRICTION_TARGET, CALC_HEAT_TARGET, CLI_TARGET, CLI_PEAK_MB = 10.0, 30.0, 5.
 def numpy_torque(f0, f1, load, dM, nu, n):
     """The catalogue model's M0 + M1 in plain numpy, written here as the baseline."""
     nun = nu * n
-    M0 = f0 * np.where(nun >= 2000.0, np.cbrt(nun * nun), 160.0) * dM ** 3 * 1e-7
+    M0 = f0 * np.where(nun >= 2000.0, np.cbrt(nun * nun), 160.0) * (dM * dM * dM) * 1e-7
     return M0 + f1 * load * dM
 
 

@@ -196,3 +196,26 @@ def test_m1_never_falls_as_the_axial_load_rises(Fa1, Fa2, Fr, rule):
     P_lo = friction.effective_load(rule, Fr, lo, Y=1.6, e=0.3)
     P_hi = friction.effective_load(rule, Fr, hi, Y=1.6, e=0.3)
     assert P_hi >= P_lo * (1 - 1e-12)
+
+
+@settings(max_examples=300, deadline=None)
+@given(ratio=st.floats(0.0, 50.0), x=st.sampled_from([0.0, 0.5, 0.33, 0.4, 1.0]), a=st.floats(1e-5, 1e-2))
+def test_f1_is_a_times_the_ratio_to_the_power_x(ratio, x, a):
+    """The table's f1 = a·ratio^x, to the last digits, in scalars and in arrays of mixed exponents."""
+    hand = a * ratio ** x if x else a
+    assert friction.f1_from_load_ratio(a, x, ratio) == pytest.approx(hand, rel=1e-15, abs=0.0)
+    rows = friction.f1_from_load_ratio(np.array([a, a, a]), np.array([x, 0.5, 0.0]), np.array([ratio] * 3))
+    assert rows.tolist() == pytest.approx([hand, a * math.sqrt(ratio), a], rel=1e-15, abs=0.0)
+
+
+def test_f1_of_a_constant_coefficient_ignores_the_ratio_and_keeps_powers_sign():
+    assert friction.f1_from_load_ratio(0.0004, 0.0, math.nan) == 0.0004  # x = 0: a constant f1, no ratio needed
+    assert math.copysign(1.0, friction.f1_from_load_ratio(0.0009, 0.5, -0.0)) == 1.0  # as (-0.0)**0.5 = +0.0
+    assert math.isnan(friction.f1_from_load_ratio(0.0009, 0.5, math.nan))
+
+
+@settings(max_examples=300, deadline=None)
+@given(f0=st.floats(0.5, 10), nu=st.floats(0.5, 500), n=st.floats(0, 20000), dM=st.floats(5, 2000))
+def test_m0_is_the_printed_formula_to_the_last_digits(f0, nu, n, dM):
+    # a few units in the last place: (ν·n)^(2/3) as a cube root squared, dM³ as two products
+    assert friction.speed_dependent_torque(f0, nu, n, dM) == pytest.approx(m0_hand(f0, nu, n, dM), rel=1e-14)
