@@ -75,6 +75,20 @@ def test_an_empty_table_gives_the_friction_columns_of_a_full_one():
     assert all(str(empty[c].dtype) == str(full[c].dtype) for c in empty.columns)
 
 
+def test_texts_that_split_the_keys_alike_share_their_row_codes():
+    codes = np.array([0, 1, 2, 1, 0, 2])
+    shared: dict = {}
+    label = sp.coded_categorical(codes, ["6208", "6210", "NU208"], shared=shared)
+    series = sp.coded_categorical(codes, ["62", "62x", "NU2"], shared=shared)
+    seal = sp.coded_categorical(codes, ["open", "open", "open"], shared=shared)
+    kind = sp.coded_categorical(codes, ["ball", "ball", None], shared=shared)
+    assert list(label) == ["6208", "6210", "NU208", "6210", "6208", "NU208"]
+    assert list(series) == ["62", "62x", "NU2", "62x", "62", "NU2"]
+    assert list(seal) == ["open"] * 6 and list(kind.isna()) == [False, False, True, False, False, True]
+    assert np.shares_memory(label.codes, series.codes) and not label.codes.flags.writeable
+    assert len(shared) == 3  # label and series, seal, kind
+
+
 def test_take_keeps_rows_and_scalars():
     s = _table()
     sub = s.take(np.array([4, 0]))
