@@ -8,14 +8,13 @@ builds the heat balance on it.
 """
 from __future__ import annotations
 
-import math
 from collections.abc import Sequence
 
 import numpy as np
 import pandas as pd
 
 from bearingheat.calc.supports import (coded_categorical, distinct_keys, fill_blank, first_rows, group_codes,
-                                       number_column, text_codes, text_column)
+                                       number_column, printed_size, text_codes, text_column)
 from bearingheat.catalogue.friction import ResolvedBearing, resolve
 from bearingheat.catalogue.thermal import THERMAL_KIND, THERMAL_KINDS, method_refusal, reference_conditions
 from bearingheat.errors import DesignationError
@@ -92,9 +91,10 @@ def _details(frame: pd.DataFrame, f0_scale=1.0, f1_scale=1.0) -> pd.DataFrame:
     entries = [res.entry if res is not None else None for res, _ in resolved]
     ok = np.array([res is not None for res, _ in resolved], dtype=bool)[codes]
     # the bore and width printed in the designation fill blank cells
-    d = fill_blank(number_column(frame, "d"), np.array([_printed(res, "bore") for res, _ in resolved])[codes])
+    designations = [res.designation if res is not None else None for res, _ in resolved]
+    d = fill_blank(number_column(frame, "d"), np.array([printed_size(p, "bore") for p in designations])[codes])
     D = number_column(frame, "D")
-    B = fill_blank(number_column(frame, "B"), np.array([_printed(res, "width") for res, _ in resolved])[codes])
+    B = fill_blank(number_column(frame, "B"), np.array([printed_size(p, "width") for p in designations])[codes])
     T = number_column(frame, "T")
     d1 = number_column(frame, "d1")
     D1 = number_column(frame, "D1")
@@ -196,12 +196,6 @@ def _refusal(res: ResolvedBearing | None) -> str:
         return ""
     why = method_refusal(res.entry.bearing_type, res.seal)
     return f"n_thr: {why}" if why else ""
-
-
-def _printed(res: ResolvedBearing | None, what: str) -> float:
-    """The bore or width a designation prints (NaN where it prints none)."""
-    value = getattr(res.designation, what, None) if res is not None and res.designation is not None else None
-    return math.nan if value is None else float(value)
 
 
 def thermal_reference_speed_rows(frame: pd.DataFrame) -> pd.Series:

@@ -30,7 +30,7 @@ __all__ = ["SupportArrays", "build_support_arrays", "bearing_constants", "NUMBER
            "text_column", "number_column", "text_codes", "distinct_keys", "group_codes", "text_or_default",
            "value_codes", "text_categorical", "fill_blank", "blanks_filled", "object_column", "column_codes",
            "coded_categorical", "first_rows", "nonblank", "text_in", "BEARING_INPUTS", "BEARING_GROUP",
-           "with_bearing_groups", "bearing_rows"]
+           "with_bearing_groups", "bearing_rows", "printed_size"]
 
 #: numeric inputs of the friction model, in catalogue units
 NUMBER_INPUTS = ("d", "D", "B", "C0", "Y", "e", "X0", "Y0", "alpha", "f0", "f1", "f2", "n", "nu", "Fr", "Fa")
@@ -261,8 +261,8 @@ def bearing_constants(resolved: ResolvedBearing, lubrication: str | None, arrang
         # a paired row is one support of two bearings (X or O arrangement): its P1 is the pair's (the Schaeffler catalogue,
         # p. 68) and its M0 is that of both bearings, each of which churns its own lubricant
         "bearings": 2.0 if arrangement == "paired" else 1.0,
-        "bore": parsed.bore if parsed and parsed.bore else math.nan,
-        "width": parsed.width if parsed and parsed.width else math.nan,
+        "bore": printed_size(parsed, "bore"),
+        "width": printed_size(parsed, "width"),
     }
     if lubrication is not None:
         if lubrication not in LUBRICATION_F0_COLUMN:
@@ -299,6 +299,13 @@ def _constants_of_key(designation, bearing_type, series, lubrication, arrangemen
     if lubrication is None and not f0_given:
         return {**_BLANK, "error": "lubrication: missing; expected one of " + ", ".join(LUBRICATION_F0_COLUMN)}
     return bearing_constants(resolved, lubrication, arrangement)
+
+
+def printed_size(designation: Any, what: str) -> float:
+    """The ``bore`` or ``width`` [mm] a parsed designation prints (HK2016: d = 20, B = 16); NaN where there is no
+    designation or it prints none (or a size of 0, which no bearing has: the cell stays blank and says so)."""
+    value = getattr(designation, what, None) if designation is not None else None
+    return float(value) if value else math.nan
 
 
 def fill_blank(given, printed):

@@ -270,3 +270,13 @@ def test_calc_groups_by_its_bearing_numbers_as_by_the_columns(case, monkeypatch)
     table, options = tables[case]
     assert (bh.calc(table, **options)["status"] != "error").all()
     assert "support arrays" in checked and any(isinstance(c, tuple) for c in checked)
+
+
+def test_a_printed_size_of_zero_is_no_size():
+    """HK2000 parses to d = 20 and B = 0: the width stays blank (and the row says B is missing) in the friction
+    model and in the reference speed alike, which read it through this one function."""
+    from bearingheat.catalogue.designation import parse_designation
+    hk = parse_designation("HK2000")
+    assert sp.printed_size(hk, "bore") == 20.0 and math.isnan(sp.printed_size(hk, "width"))
+    assert sp.printed_size(parse_designation("HK2016"), "width") == 16.0
+    assert math.isnan(sp.printed_size(None, "bore")) and math.isnan(sp.printed_size(parse_designation("6208"), "width"))
