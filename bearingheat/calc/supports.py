@@ -378,7 +378,14 @@ def bearing_rows(frame: pd.DataFrame) -> tuple[np.ndarray, np.ndarray] | None:
     are made dense again: a subset of calc's frame lacks some."""
     if BEARING_GROUP not in frame.columns or len(frame) < 2:
         return None
-    bearings = pd.factorize(frame[BEARING_GROUP].to_numpy(), sort=False)[0]
+    numbers = frame[BEARING_GROUP].to_numpy()
+    first = np.full(int(numbers.max()) + 1, -1, dtype=np.intp)
+    first[numbers[::-1]] = np.arange(len(numbers))[::-1]
+    if first.min() >= 0 and (first[1:] > first[:-1]).all():
+        # every number there, each first seen after the one before (calc's whole frame): the numbers are what
+        # factorizing them would give (one pass over the rows instead of a hash table and a pass)
+        return numbers, first
+    bearings = pd.factorize(numbers, sort=False)[0]
     return bearings, first_rows(bearings)
 
 

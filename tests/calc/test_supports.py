@@ -280,3 +280,16 @@ def test_a_printed_size_of_zero_is_no_size():
     assert sp.printed_size(hk, "bore") == 20.0 and math.isnan(sp.printed_size(hk, "width"))
     assert sp.printed_size(parse_designation("HK2016"), "width") == 16.0
     assert math.isnan(sp.printed_size(None, "bore")) and math.isnan(sp.printed_size(parse_designation("6208"), "width"))
+
+
+@pytest.mark.parametrize("numbers, bearings, first", [
+    ([0, 1, 0, 2, 1], [0, 1, 0, 2, 1], [0, 1, 3]),   # calc's whole frame: its own numbers
+    ([1, 2, 1, 2], [0, 1, 0, 1], [0, 1]),             # a subset that lacks bearing 0
+    ([2, 0, 1, 0], [0, 1, 2, 1], [0, 1, 2]),          # a subset whose bearings come in another order
+    ([0, 2, 2, 0], [0, 1, 1, 0], [0, 1]),             # one that lacks a number in between
+])
+def test_bearing_rows_are_dense_in_order_of_first_appearance(numbers, bearings, first):
+    frame = pd.DataFrame({sp.BEARING_GROUP: np.array(numbers, dtype=np.int64)})
+    got_bearings, got_first = sp.bearing_rows(frame)
+    assert got_bearings.tolist() == bearings and got_first.tolist() == first
+    assert got_bearings.tolist() == pd.factorize(np.array(numbers), sort=False)[0].tolist()
