@@ -52,6 +52,8 @@ __all__ = [
 KELVIN_OFFSET = 273.15
 #: the 0.7 of log10 log10(ν + 0.7) (ASTM D341)
 WALTHER_SHIFT = 0.7
+#: log2(10), for powers of ten through exp2
+_LOG2_10 = math.log2(10.0)
 #: ASTM D341 without its correction terms holds for ν >= 2 mm²/s
 MIN_VISCOSITY = 2.0
 #: assumed viscosity index of an oil given by its ISO VG grade (mineral oil, bearing catalogue ν-T diagrams)
@@ -93,7 +95,9 @@ def walther_viscosity(A, B, theta):
     """
     exponent = np.asarray(A, dtype=float) - np.asarray(B, dtype=float) * _log_kelvin(theta)
     with np.errstate(over="ignore"):
-        return np.power(10.0, np.power(10.0, exponent)) - WALTHER_SHIFT
+        # 10^y as 2^(y·log2 10): exp2 is a third faster than power (the heat balance evaluates ν(T) some 18 times
+        # a row); a few units in the last place (the log stays log10: A − B·log10 T cancels ~30-fold)
+        return np.exp2(np.exp2(exponent * _LOG2_10) * _LOG2_10) - WALTHER_SHIFT
 
 
 @series_aware

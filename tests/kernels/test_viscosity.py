@@ -41,6 +41,16 @@ def test_walther_line_passes_through_both_points_and_uses_kelvin():
         assert np.log10(np.log10(nu + 0.7)) == pytest.approx(A - B * np.log10(theta + 273.15), rel=1e-12)
 
 
+@settings(max_examples=300, deadline=None)
+@given(st.floats(10.0, 1000.0), st.floats(0.05, 0.5), st.floats(-30.0, 200.0))
+def test_walther_viscosity_is_the_printed_formula_to_the_last_digits(nu40, ratio, theta):
+    """ν = 10^(10^(A − B·log10 T)) − 0.7 written with Python's own powers of ten (the kernel takes them as
+    powers of two)."""
+    A, B = walther_constants(nu40, 40.0, max(2.0, nu40 * ratio), 100.0)
+    printed = 10.0 ** (10.0 ** (A - B * np.log10(theta + 273.15))) - 0.7
+    assert walther_viscosity(A, B, theta) == pytest.approx(printed, rel=1e-14)
+
+
 @settings(max_examples=100, deadline=None)
 @given(st.floats(10.0, 1000.0), st.floats(0.05, 0.5), st.floats(-10.0, 140.0), st.floats(0.5, 20.0))
 def test_viscosity_falls_with_temperature(nu40, ratio, theta, step):
