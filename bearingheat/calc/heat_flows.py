@@ -21,9 +21,9 @@ from bearingheat.calc.viscosity import viscosity_model_rows
 from bearingheat.catalogue.thermal import THERMAL_KINDS
 from bearingheat.kernels.roots import bracketed_root
 from bearingheat.kernels.thermal import default_heat_transfer_coefficient, oil_heat_flow, seat_heat_flow
-from bearingheat.kernels.viscosity import walther_viscosity
+from bearingheat.kernels.viscosity import walther_temperature, walther_viscosity
 
-__all__ = ["OIL_DATA", "HEAT_BALANCE_DETAILS", "viscosity_of_rows", "walther_columns", "heat_flow_setup",
+__all__ = ["OIL_DATA", "HEAT_BALANCE_DETAILS", "RowViscosity", "viscosity_of_rows", "walther_columns", "heat_flow_setup",
            "generic_speed"]
 
 #: the columns a viscosity-temperature law comes from (:func:`~bearingheat.calc.viscosity.viscosity_model_rows`)
@@ -33,20 +33,32 @@ OIL_DATA = frozenset({"nu40", "nu100", "iso_vg"})
 HEAT_BALANCE_DETAILS = ("n_thr", "reason", "kind", "A_r")
 
 
-def viscosity_of_rows(frame: pd.DataFrame, A, B):
-    """ν(θ) for every row: Walther where A, B are known, the constant ``nu`` column otherwise."""
-    nu_fixed = number_column(frame, "nu")
-    has_model = ~np.isnan(A)
-    if not has_model.any():  # no row has oil data: ν does not depend on the temperature
-        return lambda theta, rows=slice(None): np.broadcast_arrays(np.asarray(theta, dtype=float),
-                                                                   nu_fixed[rows])[1].copy()
+class RowViscosity:
+    """ν(θ) of every row: Walther's law where its constants A, B are known, the constant ``nu`` column
+    otherwise (:func:`viscosity_of_rows`)."""
 
-    def nu_at(theta, rows=slice(None)):
+    def __init__(self, A: np.ndarray, B: np.ndarray, nu_fixed: np.ndarray):
+        self.A, self.B, self.nu_fixed = A, B, nu_fixed
+        self.has_model = ~np.isnan(A)
+        self.varies = bool(self.has_model.any())
+
+    def __call__(self, theta, rows: slice = slice(None)) -> np.ndarray:
         """ν at θ of every row, or of the block ``rows`` (a slice)."""
+        if not self.varies:  # no row has oil data: ν does not depend on the temperature
+            return np.broadcast_arrays(np.asarray(theta, dtype=float), self.nu_fixed[rows])[1].copy()
         with np.errstate(invalid="ignore", over="ignore"):
-            return np.where(has_model[rows], walther_viscosity(A[rows], B[rows], theta), nu_fixed[rows])
+            return np.where(self.has_model[rows], walther_viscosity(self.A[rows], self.B[rows], theta),
+                            self.nu_fixed[rows])
 
-    return nu_at
+    def temperature_at(self, nu) -> np.ndarray:
+        """θ [°C] at which each row's ν(θ) is ``nu`` (one per row): the inverse of Walther's law; NaN for rows
+        without one."""
+        return np.where(self.has_model, walther_temperature(self.A, self.B, nu), np.nan)
+
+
+def viscosity_of_rows(frame: pd.DataFrame, A, B) -> RowViscosity:
+    """ν(θ) for every row: Walther where A, B are known, the constant ``nu`` column otherwise."""
+    return RowViscosity(np.asarray(A, dtype=float), np.asarray(B, dtype=float), number_column(frame, "nu"))
 
 
 def walther_columns(frame: pd.DataFrame):

@@ -55,7 +55,8 @@ from bearingheat.kernels import friction
 from bearingheat.kernels.thermal import (APPROXIMATION_RANGE, OIL_HEAT_CAPACITY_FLOW, permissible_speed_factor,
                                          speed_factor_catalogue_approximation, speed_factor_coefficients)
 from bearingheat.kernels.roots import bracketed_root
-from bearingheat.kernels.viscosity import MIN_VISCOSITY, viscosity_range_messages, walther_viscosity
+from bearingheat.kernels.viscosity import (KELVIN_OFFSET, MIN_VISCOSITY, viscosity_range_messages,
+                                           walther_viscosity)
 
 __all__ = [
     "OPERATING_TEMPERATURE_LIMIT",
@@ -134,11 +135,36 @@ def _operating_point(frame, results, nu_at, nu_varies, Q_S, Q_L, Q_E, T_amb, t_l
     with np.errstate(invalid="ignore", over="ignore"):
         rising_nu = (nu_at(T_high) > nu_at(T_low)) if nu_varies.any() else False
         falling = power.closed & ~(Q_S(T_amb + 1.0) <= Q_S(T_amb)) & ~rising_nu
+    if nu_varies.any() and np.any(falling & nu_varies):
+        T_low, T_high = _side_of_the_regime_step(balance, nu_at, n, falling & nu_varies, T_low, T_high)
     # where ν does not depend on T (no oil data) N_R does not either: the balance is a straight line in T
     affine = power.closed & ~nu_varies
     T_op, status = lowest_operating_temperature(balance, T_low, T_high, single_root=falling, affine=affine,
                                                 blocks=True)
     return T_op, status, balance
+
+
+def _side_of_the_regime_step(balance, nu_at, n, rows, T_low, T_high):
+    """The range [T_low, T_high] of each of ``rows`` (a falling balance with ν(T) from Walther's law) narrowed to
+    the side of M0's regime step that holds the lowest root.
+
+    M0 = f0·(ν·n)^(2/3)·dM³·10⁻⁷ for ν·n >= 2000 and f0·160·dM³·10⁻⁷ below (the Schaeffler catalogue, p. 64):
+    where ν·n falls through 2000 as T rises, M0 steps up by 0.79 % (2000^(2/3) = 158.74 to 160). The balance
+    falls on both sides of that temperature but jumps up there, so it can cross zero just below it and again
+    above it, and a root search over the whole range may find the upper crossing. Just below the step (in
+    the high regime) the balance tells the side: not heating any more there, the lowest root is below;
+    still heating, there is none below and one above.
+    """
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        T_step = nu_at.temperature_at(friction.REGIME_LIMIT / n)
+        inside = rows & (T_step > T_low) & (T_step < T_high)
+        if not inside.any():
+            return T_low, T_high
+        # a hair below the step (10⁻⁹ of T in K): ν·n above 2000 by far more than ν(T)'s rounding
+        below_step = np.where(inside, T_step - 1e-9 * (T_step + KELVIN_OFFSET), T_low)
+        f_below = balance(below_step)
+    return (np.where(inside & (f_below > 0), below_step, T_low),
+            np.where(inside & (f_below <= 0), below_step, T_high))
 
 
 def lowest_operating_temperature(balance, T_low, T_high, *, cells: int = OPERATING_TEMPERATURE_CELLS,

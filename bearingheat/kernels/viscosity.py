@@ -39,6 +39,7 @@ __all__ = [
     "DEFAULT_VISCOSITY_INDEX",
     "walther_constants",
     "walther_viscosity",
+    "walther_temperature",
     "viscosity_from_two_points",
     "iso_vg_nu40",
     "d2270_L_H",
@@ -98,6 +99,22 @@ def walther_viscosity(A, B, theta):
         # 10^y as 2^(y·log2 10): exp2 is a third faster than power (the heat balance evaluates ν(T) some 18 times
         # a row); a few units in the last place (the log stays log10: A − B·log10 T cancels ~30-fold)
         return np.exp2(np.exp2(exponent * _LOG2_10) * _LOG2_10) - WALTHER_SHIFT
+
+
+@series_aware
+def walther_temperature(A, B, nu):
+    """θ [°C] at which ν(θ) = ``nu`` [mm²/s] on the Walther line (ASTM D341): the inverse of
+    :func:`walther_viscosity`, T = 10^((A − log10 log10(ν + 0.7))/B) K.
+
+    B > 0 (ν falls as θ rises). ν below 0.3 mm²/s, where log10(ν + 0.7) is negative, gives NaN (0.3: inf);
+    ν = inf gives absolute zero.
+
+    >>> round(walther_temperature(9.2493, 3.6002, 68.0), 2)
+    40.0
+    """
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.power(10.0, (np.asarray(A, dtype=float) - _loglog(nu)) / np.asarray(B, dtype=float)) \
+            - KELVIN_OFFSET
 
 
 @series_aware

