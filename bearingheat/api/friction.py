@@ -317,8 +317,8 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
     every, some = point_warnings({k: arrays[k] for k, v in given.items() if v is not None}, shape, FrictionInputError)
     # arrays become one row axis; scalars stay scalars (no copies of constants)
     flat: dict[str, object] = {k: (v if v.ndim == 0 else np.broadcast_to(v, shape).ravel()) for k, v in arrays.items()}
-    keys = pd.DataFrame({"designation": [designation], "type": [bearing_type], "series": [series],
-                         "lubrication": [lubrication], "arrangement": [arrangement]})
+    keys = {"designation": designation, "type": bearing_type, "series": series, "lubrication": lubrication,
+            "arrangement": arrangement}
     supports = build_support_arrays(keys, flat)
     if supports.error and friction_model.catalogue_keys:
         raise FrictionInputError(str(supports.error))

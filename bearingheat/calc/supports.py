@@ -15,6 +15,7 @@ from __future__ import annotations
 import dataclasses
 import math
 from dataclasses import dataclass, field
+from collections.abc import Mapping
 from typing import Any, Callable, TypeAlias
 
 import numpy as np
@@ -485,34 +486,41 @@ def distinct_keys(parts: list[tuple[np.ndarray, list]]) -> tuple[np.ndarray, lis
     return combined, uniques
 
 
-def build_support_arrays(keys: pd.DataFrame, numbers: dict[str, Any]) -> SupportArrays:
+def build_support_arrays(keys: pd.DataFrame | Mapping[str, Any], numbers: dict[str, Any]) -> SupportArrays:
     """The support arrays of a table (one row per support) or of one bearing at many operating points.
 
     ``keys`` holds the text columns of :data:`KEY_INPUTS` that are given,
-    one row per support, or a single row for one bearing; ``numbers`` maps
-    the names of :data:`NUMBER_INPUTS` to float arrays of one length or
+    one row per support, or a single row for one bearing, or one bearing's
+    texts as a mapping (the unit-aware API: no frame of one row); ``numbers``
+    maps the names of :data:`NUMBER_INPUTS` to float arrays of one length or
     scalars (missing names are NaN, Fr and Fa default to 0). The rows'
     count is the length of the arrays (of ``keys`` where all are scalars).
     """
+    key_rows = 1 if isinstance(keys, Mapping) else len(keys)
     lengths = {np.size(v) for v in numbers.values() if np.ndim(v) > 0}
-    size = lengths.pop() if lengths else len(keys)
-    if lengths or (len(keys) not in (1, size)):
+    size = lengths.pop() if lengths else key_rows
+    if lengths or (key_rows not in (1, size)):
         raise ValueError("build_support_arrays: keys and numbers must have one length (or one key row)")
     num: dict[str, Any] = {}
     for name in NUMBER_INPUTS:
         value = numbers.get(name, math.nan)
         value = np.asarray(value, dtype=float)  # 0-d for a scalar: numpy division rules (x/0 = inf) everywhere
-        num[name] = np.where(np.isnan(value), 0.0, value) if name in ("Fr", "Fa") else value  # blank load = 0
-    if len(keys) == size:
+        if name in ("Fr", "Fa") and np.isnan(value).any():
+            value = np.where(np.isnan(value), 0.0, value)  # a blank load is 0
+        num[name] = value
+    if key_rows == size:
         f0_given = ~np.isnan(np.broadcast_to(num["f0"], (size,)))
     else:  # one bearing: f0 is given for all its points or for none
         f0_given = np.array([not np.all(np.isnan(num["f0"]))])
-    one_key_row = len(keys) == 1
-    numbered = bearing_rows(keys) if len(keys) == size else None
+    one_key_row = key_rows == 1
+    numbered = bearing_rows(keys) if isinstance(keys, pd.DataFrame) and key_rows == size else None
     if numbered is not None:  # calc's frame: the keys of each bearing's first row
         bearings, first = numbered
         keys, f0_given = keys.iloc[first], f0_given[first]
-    parts = [text_codes(keys, name) for name in KEY_INPUTS]
+    if isinstance(keys, Mapping):
+        parts = [(np.zeros(1, dtype=np.int64), [_stripped_or_none(keys.get(name))]) for name in KEY_INPUTS]
+    else:
+        parts = [text_codes(keys, name) for name in KEY_INPUTS]
     arrangement = KEY_INPUTS.index("arrangement")
     parts[arrangement] = (parts[arrangement][0], [text or "single" for text in parts[arrangement][1]])
     codes, uniques = distinct_keys([*parts, (f0_given.astype(np.int64), [False, True])])

@@ -1,4 +1,5 @@
 """The support arrays: one builder for tables, for one bearing at many points, and for subsets."""
+import dataclasses
 import math
 
 import numpy as np
@@ -293,3 +294,19 @@ def test_bearing_rows_are_dense_in_order_of_first_appearance(numbers, bearings, 
     got_bearings, got_first = sp.bearing_rows(frame)
     assert got_bearings.tolist() == bearings and got_first.tolist() == first
     assert got_bearings.tolist() == pd.factorize(np.array(numbers), sort=False)[0].tolist()
+
+
+def test_one_bearings_texts_as_a_mapping_give_the_arrays_of_a_one_row_frame():
+    texts = {"designation": " 6208 ", "type": None, "series": None, "lubrication": "grease", "arrangement": None}
+    numbers = {"n": np.linspace(100.0, 5000.0, 7), "nu": 20.0, "Fr": np.array([1.0, np.nan, 3, 4, 5, 6, 7]) * 1e3}
+    from_mapping = sp.build_support_arrays(texts, numbers)
+    from_frame = sp.build_support_arrays(pd.DataFrame({k: [v] for k, v in texts.items()}), numbers)
+    for f in dataclasses.fields(sp.SupportArrays):
+        a, b = getattr(from_mapping, f.name), getattr(from_frame, f.name)
+        if f.name == "extra":
+            assert a == b
+        elif isinstance(a, np.ndarray) and a.dtype.kind == "f" or isinstance(a, float):
+            np.testing.assert_array_equal(a, b, err_msg=f.name)  # NaN equals NaN here
+        else:
+            assert np.asarray(a, dtype=object).tolist() == np.asarray(b, dtype=object).tolist(), f.name
+    assert from_mapping.Fr.tolist() == [1000.0, 0.0, 3000.0, 4000.0, 5000.0, 6000.0, 7000.0]  # a blank load is 0
