@@ -23,8 +23,8 @@ from bearingheat.kernels.roots import bracketed_root
 from bearingheat.kernels.thermal import default_heat_transfer_coefficient, oil_heat_flow, seat_heat_flow
 from bearingheat.kernels.viscosity import walther_temperature, walther_viscosity
 
-__all__ = ["OIL_DATA", "HEAT_BALANCE_DETAILS", "RowViscosity", "viscosity_of_rows", "walther_columns", "heat_flow_setup",
-           "generic_speed"]
+__all__ = ["OIL_DATA", "HEAT_BALANCE_DETAILS", "RowViscosity", "viscosity_of_rows", "walther_columns",
+           "heat_flow_setup", "generic_speed"]
 
 #: the columns a viscosity-temperature law comes from (:func:`~bearingheat.calc.viscosity.viscosity_model_rows`)
 OIL_DATA = frozenset({"nu40", "nu100", "iso_vg"})
