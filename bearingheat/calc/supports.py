@@ -513,10 +513,12 @@ def build_support_arrays(keys: pd.DataFrame | Mapping[str, Any], numbers: dict[s
     else:  # one bearing: f0 is given for all its points or for none
         f0_given = np.array([not np.all(np.isnan(num["f0"]))])
     one_key_row = key_rows == 1
-    numbered = bearing_rows(keys) if isinstance(keys, pd.DataFrame) and key_rows == size else None
-    if numbered is not None:  # calc's frame: the keys of each bearing's first row
-        bearings, first = numbered
-        keys, f0_given = keys.iloc[first], f0_given[first]
+    numbered = None
+    if isinstance(keys, pd.DataFrame) and key_rows == size:
+        numbered = bearing_rows(keys)
+        if numbered is not None:  # calc's frame: the keys of each bearing's first row
+            bearings, first = numbered
+            keys, f0_given = keys.iloc[first], f0_given[first]
     if isinstance(keys, Mapping):
         parts = [(np.zeros(1, dtype=np.int64), [_stripped_or_none(keys.get(name))]) for name in KEY_INPUTS]
     else:
