@@ -334,11 +334,16 @@ def text_codes(frame: pd.DataFrame, name: str) -> tuple[np.ndarray, list[str | N
     it is absent), factorized once."""
     if name not in frame.columns:
         return np.zeros(len(frame), dtype=np.int64), [None]
-    if len(frame) == 1:  # one bearing (the unit-aware API): no factorization machinery for one cell
-        return np.zeros(1, dtype=np.int64), [_stripped_or_none(frame[name].iat[0])]
+    if len(frame) == 1:  # one bearing: no factorization machinery for one cell
+        return _one_text_code(frame[name].iat[0])
     codes, raw = column_codes(frame[name])
     texts = [_stripped_or_none(v) for v in raw] + [None]  # code -1 (missing) takes the last entry
     return np.where(codes < 0, len(raw), codes), texts
+
+
+def _one_text_code(value) -> tuple[np.ndarray, list[str | None]]:
+    """:func:`text_codes` of one cell: code 0 for its stripped text (None where blank)."""
+    return np.zeros(1, dtype=np.int64), [_stripped_or_none(value)]
 
 
 def _combined_codes(parts: list[tuple[np.ndarray, int]], size: int) -> np.ndarray:
@@ -520,7 +525,7 @@ def build_support_arrays(keys: pd.DataFrame | Mapping[str, Any], numbers: dict[s
             bearings, first = numbered
             keys, f0_given = keys.iloc[first], f0_given[first]
     if isinstance(keys, Mapping):
-        parts = [(np.zeros(1, dtype=np.int64), [_stripped_or_none(keys.get(name))]) for name in KEY_INPUTS]
+        parts = [_one_text_code(keys.get(name)) for name in KEY_INPUTS]
     else:
         parts = [text_codes(keys, name) for name in KEY_INPUTS]
     arrangement = KEY_INPUTS.index("arrangement")

@@ -135,8 +135,9 @@ def _operating_point(frame, results, nu_at, nu_varies, Q_S, Q_L, Q_E, T_amb, t_l
     with np.errstate(invalid="ignore", over="ignore"):
         rising_nu = (nu_at(T_high) > nu_at(T_low)) if nu_varies.any() else False
         falling = power.closed & ~(Q_S(T_amb + 1.0) <= Q_S(T_amb)) & ~rising_nu
-    if np.any(falling & nu_varies):
-        T_low, T_high = _side_of_the_regime_step(balance, nu_at, n, falling & nu_varies, T_low, T_high)
+    walther_falling = falling & nu_varies
+    if np.any(walther_falling):
+        T_low, T_high = _side_of_the_regime_step(balance, nu_at, n, walther_falling, T_low, T_high)
     # where ν does not depend on T (no oil data) N_R does not either: the balance is a straight line in T
     affine = power.closed & ~nu_varies
     T_op, status = lowest_operating_temperature(balance, T_low, T_high, single_root=falling, affine=affine,
