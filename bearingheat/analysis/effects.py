@@ -520,7 +520,8 @@ class Preload(Candidate):
             if len(mine) == 0:
                 continue
             M, M0 = data.M[mine], data.M0[mine]
-            C0_rows = self._arrays(data).C0[mine]
+            arrays = self._arrays(data)
+            C0_rows = np.broadcast_to(arrays.C0, (arrays.size,))[mine]  # (one NaN where C0 is no column)
             C0 = np.nanmax(C0_rows) if np.any(~np.isnan(C0_rows)) else np.nan
             top = C0 if C0 > 0 else 10.0 * max(float(np.max(data.Fr[mine] + data.Fa[mine])), 1.0)
 

@@ -19,7 +19,7 @@ import numpy as np
 import pandas as pd
 
 from bearingheat.calc.messages import Labels
-from bearingheat.calc.supports import first_rows, group_codes, number_column, text_codes
+from bearingheat.calc.supports import first_rows, group_codes, number_column, text_codes, with_columns
 from bearingheat.catalogue.bearings import CATALOGUE, bearing, disagreeing, half_steps
 from bearingheat.errors import DesignationError
 
@@ -101,7 +101,7 @@ def fill_from_catalogue(frame: pd.DataFrame, labels: Labels
         problems.append((int(i), "error", f"{lookup_errors[codes[i]]}; or type the dimensions d, D (and C0)"))
     if not filled:
         return frame, problems, from_table
-    return frame.assign(**filled), problems, from_table
+    return with_columns(frame, filled), problems, from_table
 
 
 def _unit(name: str) -> str:

@@ -18,6 +18,7 @@ bearingheat.errors.ModelError: model: 'palmgren' is not one of schaeffler, skf
 from __future__ import annotations
 
 import functools
+import math
 from collections import defaultdict
 
 from dataclasses import dataclass
@@ -141,22 +142,35 @@ PLAIN_REPORT_UNITS = contract.output_units(owner="plain")
 MODEL_REPORT_UNITS = {name: contract.output_units()[name] for name in SKF_RESULTS if name not in RESULTS}
 
 
+#: inputs that are per-row arrays in the support arrays of a table even where their column is absent: the size
+#: (dM) and the operating point, which the analyses index by row
+PER_ROW_INPUTS = ("d", "D", "n", "nu", "Fr", "Fa")
+
+
 def model_inputs(frame: pd.DataFrame) -> dict:
     """The model-specific inputs a frame has (catalogue units; text cells as they are, the model cleans them:
-    a numeric column may hold 6000.0 for the edition '6000')."""
+    a numeric column may hold 6000.0 for the edition '6000'). calc's text columns stay categoricals: no Python
+    object per row for a model that may run on none of them."""
     out = {}
     for name in EXTRA_INPUTS:
         if name in frame.columns:
-            unit = contract.column(name).unit
-            out[name] = frame[name].to_numpy(dtype=object) if unit == "" else number_column(frame, name)
+            column = frame[name]
+            if contract.column(name).unit != "":
+                out[name] = number_column(frame, name)
+            elif isinstance(column.dtype, pd.CategoricalDtype):
+                out[name] = column.array
+            else:
+                out[name] = column.to_numpy(dtype=object)
     return out
 
 
 def support_arrays_of(frame: pd.DataFrame) -> SupportArrays:
     """The support arrays of a frame in catalogue units (contract names), with the models' extra inputs."""
     keys = frame[[c for c in (*KEY_INPUTS, BEARING_GROUP) if c in frame.columns]]
+    # another absent input is one NaN for all rows (the support arrays take scalars), not 8 MB of NaN per 10^6 rows
     supports = build_support_arrays(keys if len(keys.columns) else pd.DataFrame(index=frame.index),
-                                    {c: number_column(frame, c) for c in NUMBER_INPUTS})
+                                    {c: number_column(frame, c) if c in frame.columns or c in PER_ROW_INPUTS
+                                     else math.nan for c in NUMBER_INPUTS})
     supports.extra = model_inputs(frame)
     return supports
 

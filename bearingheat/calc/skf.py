@@ -72,6 +72,9 @@ class _Extra:
         value = self.values.get(name)
         if value is None or np.ndim(value) == 0:
             return _clean(value, upper)
+        if isinstance(value, pd.Categorical):  # calc's text columns: each distinct text cleaned once
+            cleaned = [_clean(v, upper) for v in value.categories] + [None]  # code -1 (missing): the last
+            return np.array(cleaned, dtype=object)[value.codes]
         return np.array([_clean(v, upper) for v in value], dtype=object)
 
     def number(self, name: str) -> np.ndarray:
@@ -80,6 +83,8 @@ class _Extra:
             value = math.nan
         if np.ndim(value) == 0:
             return np.full(self.size, _to_float(value))
+        if isinstance(value, np.ndarray) and value.dtype == np.float64:  # calc's numbers (number_column)
+            return value
         return pd.to_numeric(pd.Series(list(value)), errors="coerce").to_numpy(dtype=float)
 
 

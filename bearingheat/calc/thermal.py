@@ -47,7 +47,7 @@ import pandas as pd
 from bearingheat.calc.contract import columns, register_choices
 from bearingheat.calc.models import DEFAULT_MODEL, FrictionPower, failed_rows, plain_bushing_rows, results_at_viscosity
 from bearingheat.calc.reference_speed import thermal_reference_speed_details, thermal_reference_speed_rows
-from bearingheat.calc.supports import coded_categorical, number_column, text_codes
+from bearingheat.calc.supports import coded_categorical, nonblank, number_column, text_codes
 from bearingheat.calc.heat_flows import (HEAT_BALANCE_DETAILS, OIL_DATA, generic_speed, heat_flow_setup,
                                          viscosity_of_rows, walther_columns)
 from bearingheat.errors import HeatBalanceError
@@ -374,9 +374,9 @@ def _solve_operating_temperature(frame, results, rows, t_limit, flows, nu_at, nu
     :func:`~bearingheat.calc.heat_flows.heat_flow_setup`)."""
     details, k_q, T_amb, Q_E, Q_S, Q_L = flows
     T, status, _ = _operating_point(frame, results, nu_at, nu_varies, Q_S, Q_L, Q_E, T_amb, t_limit)
-    reasons = details["reason"].to_numpy(dtype=object)
+    reasons = details["reason"].array  # a categorical spread from the distinct bearings: no text per row
     asked = rows & ~(failed_rows(results) | plain_bushing_rows(results))
-    refused = asked & reasons.astype(bool)
+    refused = asked & nonblank(reasons, len(asked))
     no_equilibrium = asked & ~refused & (status != 0)
     unsolved = {int(i): reasons[i] for i in np.flatnonzero(refused)}
     unsolved.update({int(i): _no_equilibrium_text(status[i], T_amb[i], t_limit)
@@ -421,7 +421,8 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
     # (the details the heat balance reads are spread to the rows; without it n_thr and why a row has none)
     details = thermal_reference_speed_details(frame, names=HEAT_BALANCE_DETAILS if wants_balance
                                               else ("n_thr", "reason"))
-    reasons = details["reason"].to_numpy(dtype=object)
+    reasons = details["reason"].array  # read at the rows that have one
+    has_reason = nonblank(reasons, n_rows)
     n_thr = details["n_thr"].to_numpy(dtype=float)
     n_thr_catalogue = number_column(frame, "n_thr_catalogue")
     reported_reason = np.zeros(n_rows, dtype=bool)
@@ -431,7 +432,7 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
     explicit = bool(has & THERMAL_INPUTS)
 
     def reason_once(i):
-        if explicit and not reported_reason[i] and reasons[i]:
+        if explicit and not reported_reason[i] and has_reason[i]:
             reported_reason[i] = True
             problems.append((int(i), "warning", reasons[i] if reasons[i].startswith("n_thr") else
                              f"n_thr: {reasons[i]}"))

@@ -5,6 +5,7 @@ import math
 import numpy as np
 import pandas as pd
 import pytest
+from hypothesis import given, strategies as st
 
 from bearingheat.calc import supports as sp
 from bearingheat.calc.table import calc
@@ -294,6 +295,36 @@ def test_bearing_rows_are_dense_in_order_of_first_appearance(numbers, bearings, 
     got_bearings, got_first = sp.bearing_rows(frame)
     assert got_bearings.tolist() == bearings and got_first.tolist() == first
     assert got_bearings.tolist() == pd.factorize(np.array(numbers), sort=False)[0].tolist()
+
+
+@pytest.mark.parametrize("codes", [
+    [0, 0, 1, 0, 2, 2, 1, 3],   # in order of first appearance (pd.factorize's numbering): the running maximum
+    [1, 0, 1, 2],               # dense, another order: the scatter
+    [0, 2, 1, 2, 0],            # code 2 before code 1
+    [0],
+    [],
+])
+def test_first_rows_is_the_first_position_of_each_code(codes):
+    codes = np.array(codes, dtype=np.int64)
+    by_hand = [codes.tolist().index(k) for k in range(int(codes.max()) + 1 if len(codes) else 0)]
+    assert sp.first_rows(codes).tolist() == by_hand
+
+
+@given(st.lists(st.integers(-3, 6), max_size=40), st.permutations(range(10)))
+def test_first_rows_and_bearing_rows_agree_with_factorize(values, relabel):
+    """Codes from pd.factorize (in order of first appearance) and the same codes relabelled (dense, other
+    order): first_rows gives each code's first position; bearing_rows numbers a frame as factorize does."""
+    codes = pd.factorize(np.array(values, dtype=np.int64), sort=False)[0].astype(np.int64)
+    relabelled = np.array(relabel, dtype=np.int64)[codes] if len(codes) else codes
+    for numbering in (codes, relabelled):
+        dense = pd.factorize(numbering, sort=False)[0]
+        present = sorted(set(numbering.tolist()))
+        if present == list(range(len(present))):  # every code there: first_rows' contract
+            assert sp.first_rows(numbering).tolist() == [numbering.tolist().index(k) for k in present]
+        if len(numbering) >= 2:
+            bearings, first = sp.bearing_rows(pd.DataFrame({sp.BEARING_GROUP: numbering}))
+            assert bearings.tolist() == dense.tolist()
+            assert first.tolist() == [dense.tolist().index(k) for k in range(dense.max() + 1)]
 
 
 def test_one_bearings_texts_as_a_mapping_give_the_arrays_of_a_one_row_frame():
