@@ -165,18 +165,18 @@ def evaluate_catalogue_model(s: SupportArrays, labels: Labels, f2_chart: F2Chart
         lambda i: f"{labels.name('Fa', i)}: {value_of('Fa', i)} on {at(s.prefix, i)} {label(i)}: "
                   "one ring has no ribs, the bearing takes no axial load")
     m2_rows = np.broadcast_to(s.m2 & (Fa > 0), shape)
-    add(m2_rows & (Fr <= 0), "error",
-        lambda i: f"{labels.name('Fa', i)}: {value_of('Fa', i)} without radial load on {label(i)}: "
-                  "axially loaded cylindrical roller bearings need Fr > 0 (the Schaeffler catalogue, p. 69)")
-    fa_fr = Fa / Fr
-    add(m2_rows & (Fr > 0) & (fa_fr > 0.4), "warning",
-        lambda i: f"Fa/Fr = {at(fa_fr, i):.3g} is above 0.4, the limit for axially loaded cylindrical roller "
-                  "bearings; M2 is uncertain there")
     dM = friction.mean_diameter(d, D)
     f2 = np.zeros(shape)
     Fa_over_A = np.full(shape, np.nan)
     nu_n_dM = np.full(shape, np.nan)
     if m2_rows.any():
+        add(m2_rows & (Fr <= 0), "error",
+            lambda i: f"{labels.name('Fa', i)}: {value_of('Fa', i)} without radial load on {label(i)}: "
+                      "axially loaded cylindrical roller bearings need Fr > 0 (the Schaeffler catalogue, p. 69)")
+        fa_fr = Fa / Fr
+        add(m2_rows & (Fr > 0) & (fa_fr > 0.4), "warning",
+            lambda i: f"Fa/Fr = {at(fa_fr, i):.3g} is above 0.4, the limit for axially loaded cylindrical roller "
+                      "bearings; M2 is uncertain there")
         A = friction.axial_load_parameter(s.kB, dM)
         Fa_over_A = np.where(m2_rows, Fa / A, np.nan)
         nu_n_dM = np.where(m2_rows, nu * n * dM, np.nan)
