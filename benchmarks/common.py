@@ -5,6 +5,7 @@ Not a benchmark itself (``python -m benchmarks`` runs the ``bench_*.py`` scripts
 """
 from __future__ import annotations
 
+import argparse
 import functools
 import math
 import subprocess
@@ -58,13 +59,30 @@ def verdict(ratio: float, target: float, at_most: bool = True) -> str:
     return f"target {'<=' if at_most else '>='} {target:g}x: {'met' if met else 'NOT met'}"
 
 
+def _row_count(text: str) -> int:
+    """A size typed on the command line: a whole number of rows, as 200000 or 1e6."""
+    try:
+        count = float(text)
+    except ValueError:
+        count = math.nan
+    if not (count >= 1 and count.is_integer()):
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number of rows (a whole number >= 1, e.g. 200000 or 1e6)")
+    return int(count)
+
+
 def size_argument(default: int, full: int) -> int:
     """The size from the command line: a number, ``--full`` (the issue's size) or nothing (the default, quick on
-    2 cores)."""
-    args = [a for a in sys.argv[1:] if a != "--full"]
-    if args:
-        return int(float(args[0]))
-    return full if "--full" in sys.argv[1:] else default
+    2 cores). ``-h`` prints the calling script's docstring and the options."""
+    caller = sys._getframe(1).f_globals
+    parser = argparse.ArgumentParser(prog=Path(caller.get("__file__") or "benchmark").name,
+                                     description=(caller.get("__doc__") or "").strip(),
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("rows", nargs="?", type=_row_count, help=f"the size to run (default {default:,})")
+    parser.add_argument("--full", action="store_true", help=f"the size the targets are set for ({full:,})")
+    args = parser.parse_args(sys.argv[1:])
+    if args.rows is not None:
+        return args.rows
+    return full if args.full else default
 
 
 def operating_points(count: int, seed: int = 1):

@@ -68,6 +68,24 @@ def test_sizes_from_the_command_line(monkeypatch):
     assert size_argument(200, 10**6) == 10_000
 
 
+@pytest.mark.parametrize("argument", ["many", "0", "2.5", "-3"])
+def test_a_size_that_is_no_row_count_is_refused(monkeypatch, capsys, argument):
+    from common import size_argument
+    monkeypatch.setattr(sys, "argv", ["bench", argument] if not argument.startswith("-") else ["bench", "--", argument])
+    with pytest.raises(SystemExit) as exc:
+        size_argument(200, 10**6)
+    assert exc.value.code == 2
+    assert (f"argument rows: {argument!r} is not a number of rows (a whole number >= 1, e.g. 200000 or 1e6)"
+            in capsys.readouterr().err)
+
+
+def test_a_benchmark_prints_its_help():
+    script = RUNNER.parent / "bench_pipeline.py"
+    done = subprocess.run([sys.executable, str(script), "--help"], capture_output=True, text=True)
+    assert done.returncode == 0 and done.stdout.startswith("usage: bench_pipeline.py [-h] [--full] [rows]")
+    assert "the whole pipeline against honest baselines" in done.stdout and "(default 200,000)" in done.stdout
+
+
 def test_the_runner_goes_on_after_a_script_that_exits(tmp_path):
     runner = RUNNER.read_text()
     (tmp_path / "bench_a.py").write_text("import sys\nprint('a ran')\nsys.exit(0)\n")

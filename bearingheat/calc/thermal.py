@@ -133,7 +133,7 @@ def _operating_point(frame, results, nu_at, nu_varies, Q_S, Q_L, Q_E, T_amb, t_l
     # and Q_L grow with T: where ν does not rise with T and k_q·A_r > 0 the balance falls strictly and has one root
     # (rows with a missing input compare as NaN: their balance is NaN at the ends, status 2 whatever the scan)
     with np.errstate(invalid="ignore", over="ignore"):
-        rising_nu = (nu_at(T_high) > nu_at(T_low)) if nu_varies.any() else False
+        rising_nu = (nu_at(T_high) > nu_at(T_low)) if nu_varies.any() else np.False_  # (~False is -1, not True)
         falling = power.closed & ~(Q_S(T_amb + 1.0) <= Q_S(T_amb)) & ~rising_nu
     walther_falling = falling & nu_varies
     if np.any(walther_falling):
