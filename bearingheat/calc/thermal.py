@@ -47,7 +47,7 @@ import pandas as pd
 from bearingheat.calc.contract import columns, register_choices
 from bearingheat.calc.models import DEFAULT_MODEL, FrictionPower, failed_rows, plain_bushing_rows, results_at_viscosity
 from bearingheat.calc.reference_speed import thermal_reference_speed_details, thermal_reference_speed_rows
-from bearingheat.calc.supports import coded_categorical, nonblank, number_column, text_codes
+from bearingheat.calc.supports import coded_categorical, nonblank, number_column, text_codes, with_columns
 from bearingheat.calc.heat_flows import (HEAT_BALANCE_DETAILS, OIL_DATA, generic_speed, heat_flow_setup,
                                          viscosity_of_rows, walther_columns)
 from bearingheat.errors import HeatBalanceError
@@ -92,6 +92,8 @@ SETTLE_PASSES = 20
 #: rows refined together by the root search when the balance can be evaluated block by block (the arrays of a
 #: block stay in a core's cache for all its steps; every row's steps are its own, so the roots are the same)
 ROOT_BLOCK = 1 << 14
+#: where a row's ν comes from (the hidden column ``_nu_at``; '' for a row without oil data and without ν)
+NU_SOURCES = ("given", "T_bearing", "T_op", "")
 #: where the operating viscosity is taken when it comes from nu40/nu100 or iso_vg
 VISCOSITY_AT = {
     "auto": ("the solved operating temperature T_op where T_amb and n are given (one operating state: the "
@@ -259,10 +261,9 @@ def fill_viscosity(frame: pd.DataFrame, *, viscosity_at: str = "auto"):
         raise HeatBalanceError(f"viscosity_at: {viscosity_at!r} is not one of {', '.join(VISCOSITY_AT)}")
     if not OIL_DATA & set(frame.columns):  # nothing to fill from: the frame as it is (the heat balance sees no A, B)
         return frame, []
-    frame = frame.copy()
     A, B, problems = walther_columns(frame)
-    frame["_walther_A"] = A
-    frame["_walther_B"] = B
+    # the new and replaced columns go into a new frame at the end (calc's frame itself is not changed)
+    frame = with_columns(frame, {"_walther_A": A, "_walther_B": B})
     if np.isnan(A).all():
         return frame, problems
     modes = _row_choices(frame, "viscosity_at", viscosity_at, VISCOSITY_AT, problems)
@@ -287,13 +288,20 @@ def fill_viscosity(frame: pd.DataFrame, *, viscosity_at: str = "auto"):
     with np.errstate(invalid="ignore", over="ignore"):
         nu = np.where(at_operating, np.where(pending, walther_viscosity(A, B, PROVISIONAL_TEMPERATURE), np.nan), nu)
         nu = np.where(at_bearing, walther_viscosity(A, B, T_bearing), nu)
-    frame["_nu_at"] = np.where(at_bearing, "T_bearing", np.where(given, "given", ""))
-    frame["nu"] = nu
+    filled = {"_nu_at": _nu_sources(np.where(at_bearing, NU_SOURCES.index("T_bearing"),
+                                             np.where(given, NU_SOURCES.index("given"), NU_SOURCES.index("")))),
+              "nu": nu}
     if pending.any():
-        frame["_nu_pending"] = pending
+        filled["_nu_pending"] = pending
         # auto rows with T_bearing fall back to it where T_op has no solution: their refusals become warnings
-        frame["_nu_fallback"] = pending & (modes == "auto") & ~np.isnan(T_bearing)
-    return frame, problems
+        filled["_nu_fallback"] = pending & (modes == "auto") & ~np.isnan(T_bearing)
+    return with_columns(frame, filled), problems
+
+
+def _nu_sources(codes: np.ndarray) -> pd.Categorical:
+    """The column ``_nu_at`` from codes into :data:`NU_SOURCES` (a byte a row, no text per row)."""
+    return pd.Categorical.from_codes(codes.astype(np.int8), categories=pd.Index(NU_SOURCES, dtype=object),
+                                     validate=False)
 
 
 def settle_viscosity(frame: pd.DataFrame, results: pd.DataFrame, *, t_limit: float = OPERATING_TEMPERATURE_LIMIT,
@@ -357,10 +365,10 @@ def settle_viscosity(frame: pd.DataFrame, results: pd.DataFrame, *, t_limit: flo
                                    f"{T_op[i]:.4g} degC; give T_bearing and viscosity_at 'bearing', or nu, for "
                                    "another viscosity")
                  for i in np.flatnonzero(pending & ~np.isnan(T_op) & failed_rows(results) & ~failed_at_provisional)]
-    source = frame["_nu_at"].to_numpy(dtype=object).copy()
-    source[pending & ~np.isnan(T_op)] = "T_op"
-    source[pending & fallback & np.isnan(T_op)] = "T_bearing"
-    frame["_nu_at"] = source
+    source = frame["_nu_at"].array.codes.copy()
+    source[pending & ~np.isnan(T_op)] = NU_SOURCES.index("T_op")
+    source[pending & fallback & np.isnan(T_op)] = NU_SOURCES.index("T_bearing")
+    frame["_nu_at"] = _nu_sources(source)
     # the friction results the heat balance will solve T_op from are these (f0, M1, M2 as solved with): its T_op
     # is this one, not solved again
     frame["_T_op"], frame["_T_op_status"] = balance_T, balance_status
@@ -651,7 +659,9 @@ def extend(frame: pd.DataFrame, results: pd.DataFrame):
     columns, problems = heat_balance_rows(frame, results, method=DEFAULT_SPEED_FACTOR_METHOD,
                                           t_limit=OPERATING_TEMPERATURE_LIMIT)
     columns.index = frame.index
-    if "_nu_at" in frame.columns:
-        columns.insert(0, "nu_at", np.where(frame["_nu_at"].to_numpy() == "", "-", frame["_nu_at"].to_numpy()))
-        columns.insert(0, "nu_used", number_column(frame, "nu"))
+    if "_nu_at" in frame.columns:  # first, in one new frame: no inserts into the heat balance's
+        source = frame["_nu_at"].array.rename_categories({"": "-"})  # '-': a row without ν
+        columns = pd.DataFrame({"nu_used": number_column(frame, "nu"), "nu_at": source,
+                                **{name: columns[name] for name in columns.columns}},
+                               index=frame.index, copy=False)
     return columns, problems
