@@ -18,9 +18,8 @@ from bearingheat.calc.models import FrictionPower
 from bearingheat.calc.reference_speed import thermal_reference_speed_details
 from bearingheat.calc.supports import number_column
 from bearingheat.calc.viscosity import viscosity_model_rows
-from bearingheat.catalogue.thermal import THERMAL_KINDS
 from bearingheat.kernels.roots import bracketed_root
-from bearingheat.kernels.thermal import default_heat_transfer_coefficient, oil_heat_flow, seat_heat_flow
+from bearingheat.kernels.thermal import oil_heat_flow, seat_heat_flow
 from bearingheat.kernels.viscosity import walther_temperature, walther_viscosity
 
 __all__ = ["OIL_DATA", "HEAT_BALANCE_DETAILS", "RowViscosity", "viscosity_of_rows", "walther_columns",
@@ -28,9 +27,9 @@ __all__ = ["OIL_DATA", "HEAT_BALANCE_DETAILS", "RowViscosity", "viscosity_of_row
 
 #: the columns a viscosity-temperature law comes from (:func:`~bearingheat.calc.viscosity.viscosity_model_rows`)
 OIL_DATA = frozenset({"nu40", "nu100", "iso_vg"})
-#: the reference-speed details the heat balance reads: n_thr and why a row has none, the kind and A_r of the
-#: heat flow area
-HEAT_BALANCE_DETAILS = ("n_thr", "reason", "kind", "A_r")
+#: the reference-speed details the heat balance reads: n_thr and why a row has none, the heat flow area A_r and
+#: the default heat transfer coefficient k_q of the reference conditions
+HEAT_BALANCE_DETAILS = ("n_thr", "reason", "A_r", "k_q_ref")
 
 
 class RowViscosity:
@@ -77,17 +76,16 @@ def heat_flow_setup(frame: pd.DataFrame, details: pd.DataFrame | None = None):
     if details is None:
         details = thermal_reference_speed_details(frame, names=HEAT_BALANCE_DETAILS)
     A_r = details["A_r"].to_numpy(dtype=float)
-    k_q_default = np.full(len(frame), np.nan)
-    for k in THERMAL_KINDS:
-        rows = (details["kind"] == k).to_numpy(dtype=bool)
-        if rows.any():
-            k_q_default[rows] = default_heat_transfer_coefficient(k, A_r[rows])
-    k_q_user = number_column(frame, "k_q")
-    k_q = np.where(np.isnan(k_q_user), k_q_default, k_q_user)
+    k_q_default = details["k_q_ref"].to_numpy(dtype=float)  # worked out once a bearing
+    if "k_q" in frame.columns:
+        k_q_user = number_column(frame, "k_q")
+        k_q = np.where(np.isnan(k_q_user), k_q_default, k_q_user)
+    else:
+        k_q = k_q_default
     T_amb = number_column(frame, "T_amb")
-    V_oil = np.nan_to_num(number_column(frame, "V_oil"), nan=0.0)
+    V_oil = _zero_where_blank(frame, "V_oil")
     dT_oil = number_column(frame, "dT_oil")
-    Q_E = np.nan_to_num(number_column(frame, "Q_E"), nan=0.0)
+    Q_E = _zero_where_blank(frame, "Q_E")
 
     def Q_S(theta, rows=slice(None)):
         """Heat flow through the seat at θ of every row, or of the block ``rows`` (a slice)."""
@@ -103,6 +101,13 @@ def heat_flow_setup(frame: pd.DataFrame, details: pd.DataFrame | None = None):
             return np.zeros(np.broadcast_shapes(np.shape(theta), T_amb[rows].shape))
 
     return details, k_q, T_amb, Q_E, Q_S, Q_L
+
+
+def _zero_where_blank(frame: pd.DataFrame, name: str) -> np.ndarray:
+    """A numeric column with 0 for its blank cells, or zeros where the frame has no such column."""
+    if name not in frame.columns:
+        return np.zeros(len(frame))
+    return np.nan_to_num(number_column(frame, name), nan=0.0)
 
 
 def generic_speed(power: FrictionPower, nu: np.ndarray, Q: np.ndarray) -> np.ndarray:

@@ -19,7 +19,8 @@ from bearingheat.catalogue.friction import ResolvedBearing, resolve
 from bearingheat.catalogue.thermal import THERMAL_KIND, THERMAL_KINDS, method_refusal, reference_conditions
 from bearingheat.errors import DesignationError
 from bearingheat.kernels import friction
-from bearingheat.kernels.thermal import (HEAT_FLOW_AREA, balance_root, heat_flow_area, reference_heat_flux_density,
+from bearingheat.kernels.thermal import (HEAT_FLOW_AREA, balance_root, default_heat_transfer_coefficient, heat_flow_area,
+                                         reference_heat_flux_density,
                                          torque_coefficients)
 
 __all__ = ["PAIR_REASON", "REFERENCE_KEYS", "thermal_reference_speed_details", "thermal_reference_speed_rows"]
@@ -77,7 +78,8 @@ def _details(frame: pd.DataFrame, f0_scale=1.0, f1_scale=1.0) -> pd.DataFrame:
     ``type`` and ``series``), ``d``, ``D``, ``B``, ``T`` (total width of
     tapered roller bearings), ``C0`` [mm, N]. Returns a DataFrame with the
     same index: ``n_thr`` [1/min], ``kind``, ``A_r`` [mm²] and ``q_r``
-    [W/mm²] (wherever the geometry allows, even without C0), ``f0``, ``f1``, ``P1`` [N], ``M1`` [N·mm], ``regime``
+    [W/mm²] (wherever the geometry allows, even without C0), ``k_q_ref``
+    [W/(mm²·K)] (the heat balance's default k_q, on every row of a kind), ``f0``, ``f1``, ``P1`` [N], ``M1`` [N·mm], ``regime``
     ('nu*n >= 2000' or 'nu*n < 2000') and ``reason`` ('' where n_thr was
     computed, otherwise why not). Never raises for a bad row.
 
@@ -172,6 +174,13 @@ def _details(frame: pd.DataFrame, f0_scale=1.0, f1_scale=1.0) -> pd.DataFrame:
         q_r[rows] = reference_heat_flux_density(k, A_r[rows])
         load_ratio[rows] = ref.load_ratio
         nu_ref[rows] = ref.nu
+    # the default k_q of the heat balance, q_r/Δθ of the reference conditions, on every row of a kind (NaN A_r
+    # included: the heat balance skips such rows)
+    k_q_ref = np.full(n_rows, np.nan)
+    for k in THERMAL_KINDS:
+        of_kind = kind == k
+        if of_kind.any():
+            k_q_ref[of_kind] = default_heat_transfer_coefficient(k, A_r[of_kind])
     dM = friction.mean_diameter(d, D)
     P1 = load_ratio * C0
     f0 = f0 * f0_scale
@@ -182,7 +191,7 @@ def _details(frame: pd.DataFrame, f0_scale=1.0, f1_scale=1.0) -> pd.DataFrame:
         x, _, _, low = balance_root(c_high, c_low, M1, nu_ref, q_r * A_r, 1.0)
     n_thr = np.where(usable, x, np.nan)
     return pd.DataFrame({
-        "n_thr": n_thr, "kind": kind, "A_r": A_r, "q_r": q_r,
+        "n_thr": n_thr, "kind": kind, "A_r": A_r, "q_r": q_r, "k_q_ref": k_q_ref,
         "f0": np.where(usable, f0, np.nan), "f1": np.where(usable, f1, np.nan),
         "P1": np.where(usable, P1, np.nan), "M1": np.where(usable, M1, np.nan),
         "regime": np.where(usable, np.where(low, "nu*n < 2000", "nu*n >= 2000"), ""),
