@@ -20,8 +20,7 @@ from bearingheat.catalogue.thermal import THERMAL_KIND, THERMAL_KINDS, method_re
 from bearingheat.errors import DesignationError
 from bearingheat.kernels import friction
 from bearingheat.kernels.thermal import (HEAT_FLOW_AREA, balance_root, default_heat_transfer_coefficient, heat_flow_area,
-                                         reference_heat_flux_density,
-                                         torque_coefficients)
+                                         reference_heat_flux_density, torque_coefficients)
 
 __all__ = ["PAIR_REASON", "REFERENCE_KEYS", "thermal_reference_speed_details", "thermal_reference_speed_rows"]
 
@@ -79,9 +78,10 @@ def _details(frame: pd.DataFrame, f0_scale=1.0, f1_scale=1.0) -> pd.DataFrame:
     tapered roller bearings), ``C0`` [mm, N]. Returns a DataFrame with the
     same index: ``n_thr`` [1/min], ``kind``, ``A_r`` [mm²] and ``q_r``
     [W/mm²] (wherever the geometry allows, even without C0), ``k_q_ref``
-    [W/(mm²·K)] (the heat balance's default k_q, on every row of a kind), ``f0``, ``f1``, ``P1`` [N], ``M1`` [N·mm], ``regime``
-    ('nu*n >= 2000' or 'nu*n < 2000') and ``reason`` ('' where n_thr was
-    computed, otherwise why not). Never raises for a bad row.
+    [W/(mm²·K)] (the heat balance's default k_q, on every row of a kind),
+    ``f0``, ``f1``, ``P1`` [N], ``M1`` [N·mm], ``regime`` ('nu*n >= 2000'
+    or 'nu*n < 2000') and ``reason`` ('' where n_thr was computed,
+    otherwise why not). Never raises for a bad row.
 
     Reference conditions: 20 °C ambient, 70 °C outer ring, oil bath with
     ν = 12 mm²/s (radial) or 24 mm²/s (thrust), load P1 = 0.05·C0 (radial)

@@ -382,7 +382,7 @@ def _solve_operating_temperature(frame, results, rows, t_limit, flows, nu_at, nu
     :func:`~bearingheat.calc.heat_flows.heat_flow_setup`)."""
     details, k_q, T_amb, Q_E, Q_S, Q_L = flows
     T, status, _ = _operating_point(frame, results, nu_at, nu_varies, Q_S, Q_L, Q_E, T_amb, t_limit)
-    reasons = details["reason"].array  # a categorical spread from the distinct bearings: no text per row
+    reasons = details["reason"].array  # (a categorical where spread from the distinct bearings: no text per row)
     asked = rows & ~(failed_rows(results) | plain_bushing_rows(results))
     refused = asked & nonblank(reasons, len(asked))
     no_equilibrium = asked & ~refused & (status != 0)
