@@ -30,6 +30,7 @@ from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
+import pandas as pd
 
 from bearingheat.catalogue.designation import BEARING_TYPES
 from bearingheat.catalogue.friction import LUBRICATION_F0_COLUMN
@@ -47,6 +48,7 @@ __all__ = [
     "input_units",
     "output_units",
     "output_header",
+    "TEXT_DTYPE",
     "parse_header",
     "register_choices",
     "range_problems",
@@ -340,6 +342,11 @@ def output_units(owner: str | None = None) -> dict[str, str]:
     """Result column -> unit (of one owner, or all; without status and message)."""
     return {c.name: c.unit for c in CONTRACT
             if c.kind == "output" and c.owner != "table" and (owner is None or c.owner == owner)}
+
+
+#: the dtype of a text result column: the one pandas gives a column of text (its Arrow-backed 'str' since pandas 3,
+#: object before)
+TEXT_DTYPE = pd.Series(["text"]).dtype
 
 
 def output_header(name: str, unit: str | None = None) -> str:

@@ -6,8 +6,8 @@ SKF model's columns where a row uses it). A Dask DataFrame needs the same
 columns in every partition, known before any partition is computed, so the
 distributed calc writes **every** result column of the column contract
 (:mod:`bearingheat.calc.contract`), in contract order after the input
-columns, then ``status`` and ``message``: NaN (numbers) or missing (text)
-where pandas calc would leave the column out. An empty partition gives an
+columns, then ``status`` and ``message``: NaN (numbers) or missing (text,
+in pandas' own text dtype) where pandas calc would leave the column out. An empty partition gives an
 empty frame of those columns. Dask is an optional extra
 (``pip install 'bearingheat[dask]'``) and is imported only here.
 """
@@ -18,7 +18,7 @@ from typing import Any, Callable
 import numpy as np
 import pandas as pd
 
-from bearingheat.calc.contract import CONTRACT, output_header
+from bearingheat.calc.contract import CONTRACT, TEXT_DTYPE, output_header
 
 __all__ = ["is_dask_frame", "result_layout", "calc_partition", "calc_dask"]
 
@@ -34,28 +34,23 @@ def result_layout(input_columns) -> dict[str, Any]:
     layout: dict[str, Any] = {}
     for c in CONTRACT:
         if c.kind == "output" and c.owner != "table":
-            layout[output_header(c.name)] = object if c.unit == "" and c.name not in ("f0", "f1") else np.float64
-    layout["status"] = object
-    layout["message"] = object
+            layout[output_header(c.name)] = TEXT_DTYPE if c.unit == "" and c.name not in ("f0", "f1") else np.float64
+    layout["status"] = TEXT_DTYPE
+    layout["message"] = TEXT_DTYPE
     return layout
 
 
 def calc_partition(part: pd.DataFrame, calc: Callable, layout: dict[str, Any], options: dict) -> pd.DataFrame:
-    """``calc`` of one partition, its results reindexed to ``layout`` (after the partition's own columns)."""
-    results = [h for h in layout]
-    if len(part) == 0:
-        empty = part.copy()
-        for header, dtype in layout.items():
-            empty[header] = pd.Series(dtype=dtype)
-        return empty
-    out = calc(part, **options)
-    inputs = [c for c in part.columns]
-    frame = out[inputs].copy()
+    """``calc`` of one partition, its results reindexed to ``layout`` (after the partition's own columns), in
+    one new frame of calc's own arrays (no copy of the partition, no column inserted one by one)."""
+    out = calc(part, **options) if len(part) else part
+    columns: dict[str, Any] = {header: out[header] for header in part.columns}
     for header, dtype in layout.items():
-        values = out[header] if header in out.columns else pd.Series(np.nan if dtype is np.float64 else None,
-                                                                     index=out.index)
-        frame[header] = values.astype(dtype) if dtype is np.float64 else values.astype(object)
-    return frame[inputs + results]
+        if header not in out.columns:  # a column pandas calc leaves out of this partition: NaN or missing text
+            columns[header] = pd.Series(np.nan if dtype == np.float64 else None, index=out.index, dtype=dtype)
+        else:
+            columns[header] = out[header] if out[header].dtype == dtype else out[header].astype(dtype)
+    return pd.DataFrame(columns, index=out.index, copy=False)
 
 
 def calc_dask(table, calc: Callable, **options):

@@ -32,8 +32,8 @@ import pyarrow as pa
 from bearingheat.calc import contact, thermal
 from bearingheat.calc.thermal import (DEFAULT_SPEED_FACTOR_METHOD, DEFAULT_VISCOSITY_AT, SPEED_FACTOR_METHODS,
                                      VISCOSITY_AT)
-from bearingheat.calc.contract import (LABEL_COLUMNS, PLAIN_TYPES, input_units, output_header, output_units,
-                                       parse_header, range_problems)
+from bearingheat.calc.contract import (LABEL_COLUMNS, PLAIN_TYPES, TEXT_DTYPE, input_units, output_header,
+                                       output_units, parse_header, range_problems)
 from bearingheat.calc.messages import ERROR, WARNING, Labels, status_codes, status_column, with_texts
 from bearingheat.calc.supports import (blanks_filled, number_column, per_distinct, text_categorical, text_column,
                                        with_bearing_groups)
@@ -541,8 +541,6 @@ def _assemble(table: pd.DataFrame, results: pd.DataFrame, extension_columns) -> 
     return out
 
 
-#: the dtype pandas gives a column of text (its Arrow-backed 'str' since pandas 3)
-_TEXT_DTYPE = pd.Series(["text"]).dtype
 
 
 def _text(values: np.ndarray | pd.Categorical) -> np.ndarray | pd.api.extensions.ExtensionArray:
@@ -550,14 +548,14 @@ def _text(values: np.ndarray | pd.Categorical) -> np.ndarray | pd.api.extensions
     cells (a categorical from its codes): a third of the time of pandas' own conversion (a sixth for a
     categorical). Object cells stay as they are where pandas keeps text as objects (pandas 2) or a cell is no
     text."""
-    if _TEXT_DTYPE == object:
+    if TEXT_DTYPE == object:
         return np.asarray(values, dtype=object)
     try:
         if isinstance(values, pd.Categorical):
             dictionary = pa.array(values.categories.to_numpy(dtype=object), type=pa.large_string())
             arrow = pa.DictionaryArray.from_arrays(pa.array(values.codes, mask=values.codes < 0), dictionary)
-            return pd.array(arrow.cast(pa.large_string()), dtype=_TEXT_DTYPE)
-        return pd.array(pa.array(values, type=pa.large_string(), from_pandas=True), dtype=_TEXT_DTYPE)
+            return pd.array(arrow.cast(pa.large_string()), dtype=TEXT_DTYPE)
+        return pd.array(pa.array(values, type=pa.large_string(), from_pandas=True), dtype=TEXT_DTYPE)
     except (pa.ArrowInvalid, pa.ArrowTypeError):
         return np.asarray(values, dtype=object)
 
