@@ -56,3 +56,21 @@ def test_messages_are_the_messages_of_the_rows_alone(widths):
     assert set(out["status"]) == ({"warning", "error", "ok"} if widths[0] == 99 else {"error", "ok"})
     text = pd.Series(["text"]).dtype
     assert out["status"].dtype == text and out["message"].dtype == text
+
+
+@pytest.mark.parametrize("text", ["ok", "", "exact root", "Mößbauer · 70 °C"])
+def test_a_text_in_every_row_is_the_column_pyarrow_casts(text):
+    """A result column with one text in every row is written from Arrow buffers (offsets stepping by the text's
+    length in bytes): the same column as the dictionary cast of the general case."""
+    import pyarrow as pa
+
+    from bearingheat.calc.table import _text
+    cells = pd.Categorical.from_codes(np.ones(1000, dtype=np.int8), categories=pd.Index(["x", text], dtype=object))
+    written = _text(cells)
+    assert written.dtype == pd.Series(["text"]).dtype and list(written) == [text] * 1000
+    if written.dtype != object:  # pandas 3: Arrow text (pandas 2 keeps text as objects)
+        cast = pa.DictionaryArray.from_arrays(pa.array(cells.codes), pa.array(["x", text], type=pa.large_string()))
+        assert pd.array(cast.cast(pa.large_string()), dtype=written.dtype).equals(written)
+    mixed = cells.copy()
+    mixed[3] = "x"  # two texts: the general cast
+    assert list(_text(mixed)) == [text] * 3 + ["x"] + [text] * 996
