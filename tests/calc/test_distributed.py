@@ -76,3 +76,19 @@ def test_pyarrow_strings_and_missing_values_behave_as_pandas_input(client):
                                from_pandas["MR [N*mm]"].to_numpy(dtype=float), rtol=1e-12, equal_nan=True)
     assert from_typed["message"].tolist() == from_pandas["message"].tolist()
     same_as_pandas(bh.calc(dd.from_pandas(typed, npartitions=3)).compute(), typed)
+
+
+def test_a_partition_that_holds_result_columns_gets_them_once():
+    """A table calc wrote before (its MR and status among the inputs) gets each result column once, in the
+    input's place, with the new values: the partition's frame is built from calc's result, not the input's
+    columns followed by the layout's."""
+    from bearingheat.calc.distributed import calc_partition, result_layout
+    from bearingheat.calc.table import calc
+
+    table = pd.read_csv(DEMO)
+    earlier = bh.calc(table)[[*table.columns, "MR [N*mm]", "status"]].assign(**{"MR [N*mm]": -1.0})
+    out = calc_partition(earlier, calc, result_layout(earlier.columns), {})
+    assert not out.columns.duplicated().any()
+    assert list(out.columns[:len(earlier.columns)]) == list(earlier.columns)
+    np.testing.assert_allclose(out["MR [N*mm]"].to_numpy(dtype=float),
+                               bh.calc(table)["MR [N*mm]"].to_numpy(dtype=float), rtol=1e-15)
