@@ -143,8 +143,8 @@ def object_column(size: int, value: Any) -> np.ndarray:
 
 
 def column_codes(values: pd.Series) -> tuple[np.ndarray, np.ndarray]:
-    """pd.factorize of a column (missing values: code -1), by pyarrow for an Arrow text column of one chunk, fast
-    on Arrow columns of many chunks; a categorical
+    """pd.factorize of a column (missing values: code -1), by pyarrow for an Arrow text column of one chunk (a
+    column of one text without hashing it), fast on Arrow columns of many chunks; a categorical
     column (calc's text columns, :func:`text_categorical`) gives its own codes and categories."""
     if isinstance(values.dtype, pd.CategoricalDtype):
         return values.cat.codes.to_numpy(), values.cat.categories.to_numpy(dtype=object)
@@ -152,6 +152,8 @@ def column_codes(values: pd.Series) -> tuple[np.ndarray, np.ndarray]:
     chunked = arrow() if arrow is not None else None
     if chunked is not None and getattr(chunked, "num_chunks", 0) == 1 and (
             pa.types.is_string(chunked.type) or pa.types.is_large_string(chunked.type)):
+        if _holds_one_text(chunked.chunk(0)):  # (a table of one lubrication or arrangement, say)
+            return np.zeros(len(chunked), dtype=np.intp), np.array([chunked.chunk(0)[0].as_py()], dtype=object)
         # pyarrow's own hash of its strings: codes in order of first appearance as pd.factorize's, null -1
         encoded = chunked.chunk(0).dictionary_encode()
         codes = pc.fill_null(encoded.indices, -1).to_numpy().astype(np.intp)
@@ -162,6 +164,17 @@ def column_codes(values: pd.Series) -> tuple[np.ndarray, np.ndarray]:
         values = pd.Series(values.to_numpy(dtype=object), index=values.index)
     codes, uniques = pd.factorize(values, use_na_sentinel=True)
     return codes, np.asarray(uniques, dtype=object)
+
+
+def _holds_one_text(texts: pa.Array) -> bool:
+    """Whether an Arrow text array holds one text in every cell (no null): compared with its first cell, 64 cells
+    spread over it first, then all (4 ms for 10^6 cells, against 16 ms for hashing them)."""
+    size = len(texts)
+    if size == 0 or texts.null_count:
+        return False
+    first = texts[0]
+    sample = texts.take(pa.array(np.linspace(0, size - 1, min(size, 64)).astype(np.int64)))
+    return bool(pc.all(pc.equal(sample, first)).as_py()) and bool(pc.all(pc.equal(texts, first)).as_py())
 
 
 def per_distinct(values: pd.Series, convert: Callable) -> np.ndarray:

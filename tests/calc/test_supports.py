@@ -341,3 +341,18 @@ def test_one_bearings_texts_as_a_mapping_give_the_arrays_of_a_one_row_frame():
         else:
             assert np.asarray(a, dtype=object).tolist() == np.asarray(b, dtype=object).tolist(), f.name
     assert from_mapping.Fr.tolist() == [1000.0, 0.0, 3000.0, 4000.0, 5000.0, 6000.0, 7000.0]  # a blank load is 0
+
+
+@pytest.mark.parametrize("cells", [
+    ["oil_bath"] * 200,                      # one text: no hashing
+    [""] * 5,
+    ["oil_bath"] * 199 + ["grease"],          # one other text at the end: the full comparison finds it
+    ["oil_bath"] * 100 + [None] * 100,        # a blank cell is missing (code -1), not the text
+    ["grease", "oil_bath"] * 100,
+    ["x"],
+])
+def test_column_codes_of_an_arrow_text_column_are_factorize_codes(cells):
+    column = pd.Series(pd.array(cells, dtype="string[pyarrow]"))
+    codes, uniques = sp.column_codes(column)
+    expected_codes, expected_uniques = pd.factorize(pd.Series(cells, dtype=object), use_na_sentinel=True)
+    assert codes.tolist() == expected_codes.tolist() and list(uniques) == list(expected_uniques)
