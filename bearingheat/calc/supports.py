@@ -417,24 +417,31 @@ def bearing_rows(frame: pd.DataFrame) -> tuple[np.ndarray, np.ndarray] | None:
 
 def group_codes(frame: pd.DataFrame, names: list[str]) -> np.ndarray:
     """One code per row for its values in the columns ``names`` (missing values are one value), numbered in
-    order of first appearance: ``groupby(names).ngroup()`` without pandas' groupby machinery. The columns
-    are hashed together (:func:`_hashed_codes`). Where the frame numbers its bearings
-    (:func:`with_bearing_groups`) and ``names`` are all :data:`BEARING_INPUTS`, only the first row of each
-    bearing is looked at."""
+    order of first appearance: ``groupby(names).ngroup()`` without pandas' groupby machinery. The text
+    columns' codes are combined first; a number column that holds one value in each of those groups (a
+    bearing's d, D, C0 for its designation) adds nothing and is only checked; from the first that varies inside
+    a group on, the groups and the numbers are hashed together (:func:`_hashed_codes`). Where the frame numbers
+    its bearings (:func:`with_bearing_groups`) and ``names`` are all :data:`BEARING_INPUTS`, only the first row
+    of each bearing is looked at."""
     numbered = bearing_rows(frame) if set(names) <= set(BEARING_INPUTS) else None
     if numbered is not None:
         bearings, first = numbered
         return group_codes(frame[list(names)].iloc[first], names)[bearings]
-    columns = []  # float columns by their bits, the others by their codes (missing: one code of its own)
+    size = len(frame)
+    text_parts = []  # (codes + 1, count + 1) of each text column: missing (-1) is a code of its own
+    number_bits = []  # float columns by their bits: -0.0 and other NaNs are values of their own
     for name in names:
         if frame[name].dtype == np.float64:
-            columns.append(np.ascontiguousarray(frame[name].to_numpy()).view(np.uint64))
+            number_bits.append(np.ascontiguousarray(frame[name].to_numpy()).view(np.uint64))
         else:
-            codes, _ = column_codes(frame[name])
-            columns.append(codes.astype(np.int64).view(np.uint64))
-    if not columns:
-        return np.zeros(len(frame), dtype=np.int64)
-    return _hashed_codes(columns)
+            codes, uniques = column_codes(frame[name])
+            text_parts.append((codes.astype(np.int64) + 1, len(uniques) + 1))
+    codes = _combined_codes(text_parts, size) if text_parts else np.zeros(size, dtype=np.int64)
+    first = first_rows(codes)
+    for k, bits in enumerate(number_bits):
+        if not np.array_equal(bits, bits[first][codes]):  # (a gather and a comparison: no hash table)
+            return _hashed_codes(([codes.view(np.uint64)] if text_parts else []) + number_bits[k:])
+    return codes
 
 
 #: odd 64-bit multiplier of the hash that mixes key columns (2^64 / golden ratio)

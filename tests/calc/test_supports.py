@@ -161,6 +161,27 @@ def test_group_codes_are_pandas_groups_in_order_of_first_appearance(distinct):
     assert np.array_equal(sp.group_codes(frame, names), expected)
 
 
+_TEXTS = st.sampled_from(["6205", "6206", "NU208-E", None])
+_NUMBERS = st.sampled_from([25.0, 30.0, np.nan, 0.0, -0.0])
+
+
+@given(st.lists(st.tuples(_TEXTS, _TEXTS, _NUMBERS, _NUMBERS), max_size=30), st.booleans())
+def test_group_codes_are_the_distinct_keys_in_order_of_first_appearance(rows, numbers_follow_texts):
+    """Texts combined first, numbers checked inside their groups, hashed with them from the first that varies:
+    whichever way, one code per distinct (texts, float bits) key, numbered as the keys first appear (a blank
+    text is one value; 0.0 and -0.0 have other bits, so they are other keys)."""
+    if numbers_follow_texts:  # d and D a function of the designation: no number splits a group
+        rows = [(t, u, {"6205": 25.0, "6206": 30.0}.get(t, np.nan), 52.0) for t, u, _, _ in rows]
+    frame = pd.DataFrame(rows, columns=["designation", "series", "d", "D"]).astype({"d": float, "D": float})
+    frame["designation"] = pd.Categorical(frame["designation"])
+    keys = [(None if pd.isna(t) else t, None if pd.isna(u) else u, np.float64(x).view(np.uint64).item(),
+             np.float64(y).view(np.uint64).item())
+            for t, u, x, y in zip(frame["designation"], frame["series"], frame["d"], frame["D"])]
+    numbering: dict = {}
+    expected = [numbering.setdefault(key, len(numbering)) for key in keys]
+    assert sp.group_codes(frame, ["designation", "series", "d", "D"]).tolist() == expected
+
+
 def test_group_codes_survive_a_hash_collision(monkeypatch):
     """Rows whose hashes collide are told apart by the check against their group's first row: with a hash that
     maps everything to one value, group_codes still gives pandas' groups."""
