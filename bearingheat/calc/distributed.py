@@ -7,8 +7,8 @@ columns in every partition, known before any partition is computed, so the
 distributed calc writes **every** result column of the column contract
 (:mod:`bearingheat.calc.contract`), in contract order after the input
 columns, then ``status`` and ``message``: NaN (numbers) or missing (text,
-in pandas' own text dtype) where pandas calc would leave the column out. An empty partition gives an
-empty frame of those columns. Dask is an optional extra
+in pandas' own text dtype) where pandas calc would leave the column out. An
+empty partition gives an empty frame of those columns. Dask is an optional extra
 (``pip install 'bearingheat[dask]'``) and is imported only here.
 """
 from __future__ import annotations
