@@ -165,21 +165,18 @@ def _details(frame: pd.DataFrame, f0_scale=1.0, f1_scale=1.0) -> pd.DataFrame:
     q_r = np.full(n_rows, np.nan)
     load_ratio = np.full(n_rows, np.nan)
     nu_ref = np.full(n_rows, np.nan)
-    for k in THERMAL_KINDS:
-        rows = geometry_ok & (kind == k)
-        if not rows.any():
-            continue
-        ref = reference_conditions(k)
-        A_r[rows] = heat_flow_area(k, d[rows], D[rows], B[rows], T[rows], d1[rows], D1[rows])
-        q_r[rows] = reference_heat_flux_density(k, A_r[rows])
-        load_ratio[rows] = ref.load_ratio
-        nu_ref[rows] = ref.nu
-    # the default k_q of the heat balance, q_r/Δθ of the reference conditions, on every row of a kind (NaN A_r
-    # included: the heat balance skips such rows)
     k_q_ref = np.full(n_rows, np.nan)
     for k in THERMAL_KINDS:
         of_kind = kind == k
-        if of_kind.any():
+        rows = geometry_ok & of_kind
+        if rows.any():
+            ref = reference_conditions(k)
+            A_r[rows] = heat_flow_area(k, d[rows], D[rows], B[rows], T[rows], d1[rows], D1[rows])
+            q_r[rows] = reference_heat_flux_density(k, A_r[rows])
+            load_ratio[rows] = ref.load_ratio
+            nu_ref[rows] = ref.nu
+        if of_kind.any():  # the heat balance's default k_q, q_r/Δθ of the reference conditions, on every row of
+            # the kind (NaN A_r included: the heat balance skips such rows)
             k_q_ref[of_kind] = default_heat_transfer_coefficient(k, A_r[of_kind])
     dM = friction.mean_diameter(d, D)
     P1 = load_ratio * C0
