@@ -16,7 +16,7 @@ import pandas as pd
 
 from bearingheat.calc.models import FrictionPower
 from bearingheat.calc.reference_speed import thermal_reference_speed_details
-from bearingheat.calc.supports import number_column
+from bearingheat.calc.supports import number_column, zero_where_blank
 from bearingheat.calc.viscosity import viscosity_model_rows
 from bearingheat.kernels.roots import bracketed_root
 from bearingheat.kernels.thermal import oil_heat_flow, seat_heat_flow
@@ -83,9 +83,9 @@ def heat_flow_setup(frame: pd.DataFrame, details: pd.DataFrame | None = None):
     else:
         k_q = k_q_default
     T_amb = number_column(frame, "T_amb")
-    V_oil = _zero_where_blank(frame, "V_oil")
+    V_oil = zero_where_blank(frame, "V_oil")
     dT_oil = number_column(frame, "dT_oil")
-    Q_E = _zero_where_blank(frame, "Q_E")
+    Q_E = zero_where_blank(frame, "Q_E")
 
     def Q_S(theta, rows=slice(None)):
         """Heat flow through the seat at θ of every row, or of the block ``rows`` (a slice)."""
@@ -101,13 +101,6 @@ def heat_flow_setup(frame: pd.DataFrame, details: pd.DataFrame | None = None):
             return np.zeros(np.broadcast_shapes(np.shape(theta), T_amb[rows].shape))
 
     return details, k_q, T_amb, Q_E, Q_S, Q_L
-
-
-def _zero_where_blank(frame: pd.DataFrame, name: str) -> np.ndarray:
-    """A numeric column with 0 for its blank cells, or zeros where the frame has no such column."""
-    if name not in frame.columns:
-        return np.zeros(len(frame))
-    return np.nan_to_num(number_column(frame, name), nan=0.0)
 
 
 def generic_speed(power: FrictionPower, nu: np.ndarray, Q: np.ndarray) -> np.ndarray:

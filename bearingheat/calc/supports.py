@@ -28,7 +28,7 @@ from bearingheat.catalogue.friction import LUBRICATION_F0_COLUMN, ResolvedBearin
 from bearingheat.errors import DesignationError
 
 __all__ = ["SupportArrays", "build_support_arrays", "bearing_constants", "NUMBER_INPUTS", "KEY_INPUTS",
-           "text_column", "number_column", "text_codes", "distinct_keys", "group_codes", "text_or_default",
+           "text_column", "number_column", "zero_where_blank", "text_codes", "distinct_keys", "group_codes", "text_or_default",
            "value_codes", "text_categorical", "fill_blank", "blanks_filled", "object_column", "column_codes",
            "coded_categorical", "first_rows", "nonblank", "text_in", "BEARING_INPUTS", "BEARING_GROUP",
            "with_bearing_groups", "bearing_rows", "printed_size"]
@@ -252,6 +252,14 @@ def number_column(frame: pd.DataFrame, name: str, default: float = math.nan) -> 
             return column.to_numpy()
         return pd.to_numeric(column, errors="coerce").to_numpy(dtype=float)
     return np.full(len(frame), default, dtype=float)
+
+
+def zero_where_blank(frame: pd.DataFrame, name: str) -> np.ndarray:
+    """A numeric column with 0 for its blank cells (:func:`number_column`), or zeros where the frame has no
+    such column (without a pass over NaNs)."""
+    if name not in frame.columns:
+        return np.zeros(len(frame))
+    return np.nan_to_num(number_column(frame, name), nan=0.0)
 
 
 def bearing_constants(resolved: ResolvedBearing, lubrication: str | None, arrangement: str) -> dict:

@@ -28,7 +28,7 @@ import pandas as pd
 
 from bearingheat.calc.contract import output_header, parse_header
 from bearingheat.calc.reference_speed import thermal_reference_speed_details
-from bearingheat.calc.supports import number_column, text_column
+from bearingheat.calc.supports import number_column, text_column, zero_where_blank
 from bearingheat.errors import InputError
 
 __all__ = ["UNCERTAINTY_INPUTS", "BANDED", "METHODS", "Z95", "has_uncertainty", "coefficient_uncertainties",
@@ -95,8 +95,8 @@ def uncertainty_bands(table: pd.DataFrame, result: pd.DataFrame, frame: pd.DataF
     """
     if method not in METHODS:
         raise InputError(f"uncertainty method: {method!r} is not one of {', '.join(METHODS)}")
-    u0 = np.nan_to_num(number_column(frame, "f0_rel_unc"), nan=0.0)
-    u1 = np.nan_to_num(number_column(frame, "f1_rel_unc"), nan=0.0)
+    u0 = zero_where_blank(frame, "f0_rel_unc")
+    u1 = zero_where_blank(frame, "f1_rel_unc")
     f0 = result["f0"].to_numpy(dtype=float)
     f1 = result["f1"].to_numpy(dtype=float)
     usable = (result["status"].to_numpy() != "error") & ((u0 > 0) | (u1 > 0)) & np.isfinite(f0) & np.isfinite(f1)
