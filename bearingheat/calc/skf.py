@@ -72,10 +72,8 @@ class _Extra:
         value = self.values.get(name)
         if value is None or np.ndim(value) == 0:
             return _clean(value, upper)
-        if isinstance(value, pd.Categorical):  # calc's text columns: each distinct text cleaned once
-            cleaned = [_clean(v, upper) for v in value.categories] + [None]  # code -1 (missing): the last
-            return np.array(cleaned, dtype=object)[value.codes]
-        return np.array([_clean(v, upper) for v in value], dtype=object)
+        # each distinct text cleaned once (calc's text columns are categoricals: their categories)
+        return per_distinct(pd.Series(value, copy=False), lambda v: _clean(v, upper))
 
     def number(self, name: str) -> np.ndarray:
         value = self.values.get(name, math.nan)
