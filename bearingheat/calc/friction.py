@@ -166,9 +166,10 @@ def evaluate_catalogue_model(s: SupportArrays, labels: Labels, f2_chart: F2Chart
                   "one ring has no ribs, the bearing takes no axial load")
     m2_rows = np.broadcast_to(s.m2 & (Fa > 0), shape)
     dM = friction.mean_diameter(d, D)
-    f2 = np.zeros(shape)
-    Fa_over_A = np.full(shape, np.nan)
-    nu_n_dM = np.full(shape, np.nan)
+    # without M2 rows: scalars, spread to the rows as read-only views at the end (no memory per row)
+    f2: np.ndarray | float = 0.0
+    Fa_over_A: np.ndarray | float = np.nan
+    nu_n_dM: np.ndarray | float = np.nan
     if m2_rows.any():
         add(m2_rows & (Fr <= 0), "error",
             lambda i: f"{labels.name('Fa', i)}: {value_of('Fa', i)} without radial load on {label(i)}: "

@@ -10,6 +10,7 @@ import numpy as np
 import openpyxl
 import pandas as pd
 import pytest
+from openpyxl.workbook.protection import WorkbookProtection
 from excel_helpers import EXAMPLE_CSV, EXAMPLE_XLSX, chart_workbook, control_workbook, csv_result, digest, \
     gearbox_rows, image_workbook, make_workbook, pivot_workbook, rich_workbook
 
@@ -119,8 +120,33 @@ def test_in_place_keeps_what_openpyxl_would_drop(tmp_path, capsys, build):
     assert len(added) == 1 and added.pop().startswith("xl/worksheets/sheet")
 
 
+@pytest.mark.parametrize("build", [chart_workbook, image_workbook, pivot_workbook, control_workbook])
+def test_output_copy_keeps_what_openpyxl_would_drop(tmp_path, capsys, build):
+    """-o is the surgical edit of --in-place written to a new file: the copy keeps charts, images, pivot tables
+    and form controls byte for byte, and nothing is noted as missing."""
+    path = build(tmp_path / "rich.xlsx")
+    before = digest(path)
+    with zipfile.ZipFile(path) as archive:
+        original = {name: archive.read(name) for name in archive.namelist()}
+    out = tmp_path / "out.xlsx"
+    assert main(["calc", str(path), "-o", str(out), "-q"]) == 0
+    assert capsys.readouterr().err == ""
+    assert digest(path) == before
+    with zipfile.ZipFile(out) as archive:
+        copy = {name: archive.read(name) for name in archive.namelist()}
+    registration = {"xl/workbook.xml", "xl/_rels/workbook.xml.rels", "[Content_Types].xml", "xl/styles.xml"}
+    assert {name for name in original if original[name] != copy.get(name)} <= registration
+    added = set(copy) - set(original)
+    assert len(added) == 1 and added.pop().startswith("xl/worksheets/sheet")
+
+
 def test_output_of_a_lossy_workbook_says_what_the_copy_lacks(tmp_path, capsys):
+    """A workbook whose structure is protected cannot take a sheet by the surgical edit: openpyxl writes the copy,
+    which lacks the chart, and the note says so."""
     path = chart_workbook(tmp_path / "chart.xlsx")
+    workbook = openpyxl.load_workbook(path)
+    workbook.security = WorkbookProtection(lockStructure=True)
+    workbook.save(path)
     before = digest(path)
     out = tmp_path / "out.xlsx"
     assert main(["calc", str(path), "-o", str(out)]) == 0

@@ -1,5 +1,8 @@
 """``calc --in-place`` as a surgical edit of the workbook's OPC package: only bearingheat's sheets are written.
 
+``calc -o`` writes the same edit to a new file (``target``): a copy that
+keeps every part of the workbook too.
+
 An .xlsx or .xlsm file is a ZIP package of parts (ECMA-376 Part 2, OPC).
 :func:`write_results_in_place` adds or replaces the worksheet part of the
 results sheet, and of its companions where there are any (the hidden copy
@@ -482,8 +485,8 @@ class Companion(Protocol):
 CellFormulas = dict[tuple[str, int], str]
 
 
-def write_results_in_place(package: Package, input_sheet: str, table: pd.DataFrame, *, lock: WorkbookLock,
-                           units: dict[str, str] | None = None,
+def write_results_in_place(package: Package, input_sheet: str, table: pd.DataFrame, *, lock: WorkbookLock | None,
+                           target: Path | None = None, units: dict[str, str] | None = None,
                            formulas: CellFormulas | Callable[[dict[str, str]], CellFormulas] | None = None,
                            progress: Progress | None = None, placeholders: Collection[str] = (),
                            rules: Sequence[ConditionalRule] = (), print_setup: PrintSetup | None = None,
@@ -509,7 +512,10 @@ def write_results_in_place(package: Package, input_sheet: str, table: pd.DataFra
     ``print_setup`` a :class:`bearingheat.io.excel.printing.PrintSetup`,
     ``hidden_columns`` the results sheet's collapsed columns.
     ``lock`` (:func:`bearingheat.io.files.workbook_lock`) is checked just
-    before the file is replaced. Returns an :class:`InPlaceResult`.
+    before the file is replaced. ``target``: the edited package is written
+    there instead of over the workbook (``calc -o``: a copy that keeps every
+    part of the workbook as well; ``lock`` is None then). Returns an
+    :class:`InPlaceResult`.
     """
     workbook = _Workbook(package)
     marks = read_marks(workbook.names())
@@ -585,7 +591,7 @@ def write_results_in_place(package: Package, input_sheet: str, table: pd.DataFra
         changes[workbook.rels_name] = _xml(workbook.rels)
     if types.changed:
         changes[types.name] = _xml(types.root)
-    written = _write(package, changes, removed, lock)
+    written = _write(package, changes, removed, lock, package.path if target is None else target)
     return InPlaceResult(name, replace, [note] if note else [], written, names)
 
 
@@ -599,8 +605,9 @@ def _zip_info(info: zipfile.ZipInfo, compress_type: int | None = None) -> zipfil
     return copy
 
 
-def _write(package: Package, changes: dict[str, bytes], removed: set[str], lock: WorkbookLock) -> list[str]:
-    """Write the edited package over the workbook (atomically, after the lock's last check); the parts written."""
+def _write(package: Package, changes: dict[str, bytes], removed: set[str], lock: WorkbookLock | None,
+           target: Path) -> list[str]:
+    """Write the edited package to ``target`` (atomically, after the lock's last check); the parts written."""
     members = {part: package.find(part) for part in changes}
     existing = {member: changes[part] for part, member in members.items() if member is not None}
     new = {part: changes[part] for part, member in members.items() if member is None}
@@ -627,10 +634,11 @@ def _write(package: Package, changes: dict[str, bytes], removed: set[str], lock:
                                                 else (1980, 1, 1, 0, 0, 0))
                         stamp.compress_type = zipfile.ZIP_DEFLATED
                         target.writestr(stamp, data)
-        lock.check_unchanged()
+        if lock is not None:
+            lock.check_unchanged()
 
     try:
-        atomic_write(package.path, write)
+        atomic_write(target, write)
     except (zipfile.BadZipFile, EOFError) as exc:
         raise ExcelError(f"{package.path}: damaged workbook, a part cannot be read ({exc})") from exc
     return sorted(set(existing) | set(new) | removed)

@@ -25,6 +25,7 @@ import os
 import re
 import warnings
 import zipfile
+from xml.etree import ElementTree
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -32,6 +33,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import pandas as pd
+from lxml import etree
 from openpyxl import load_workbook
 from openpyxl.utils import column_index_from_string, get_column_letter
 from openpyxl.utils.exceptions import InvalidFileException
@@ -146,6 +148,8 @@ def open_workbook(path: str | os.PathLike[str], *, keep_vba: bool = False, read_
                                      keep_links=True)
     except (zipfile.BadZipFile, InvalidFileException, KeyError, OSError) as exc:
         raise ExcelError(f"{path}: not a readable Excel workbook ({exc})") from exc
+    except (etree.XMLSyntaxError, ElementTree.ParseError) as exc:  # (openpyxl parses with lxml where it can)
+        raise ExcelError(f"{path}: damaged workbook, a part is not well-formed XML ({exc})") from exc
     workbook._bearingheat_load_warnings = [str(w.message) for w in caught]
     return workbook
 

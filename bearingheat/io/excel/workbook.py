@@ -3,9 +3,10 @@
 :func:`calc_workbook` reads a sheet of supports (:mod:`.reader`), runs
 :func:`bearingheat.calc.table.calc` on it, and writes a results sheet
 (:mod:`.writer`), optionally with live Excel formulas (:mod:`.formulas`),
-into a copy of the workbook, into the workbook itself (``in_place``: a
-surgical edit of the package that keeps every other part byte for byte,
-:mod:`.package`) or into a CSV. Input it cannot
+into the workbook itself (``in_place``: a surgical edit of the package
+that keeps every other part byte for byte, :mod:`.package`), into a copy
+(the same edit written to a new file; openpyxl writes the copy where the
+edit is refused) or into a CSV. Input it cannot
 use raises :class:`~bearingheat.errors.ExcelError` with a message that cites
 the cell, e.g. ``Supports!F2: column 'Fr [kg]': kilogram is a mass, not a
 force; for kilogram-force write kgf``; a bad value in one row is reported in
@@ -159,12 +160,14 @@ def calc_workbook(path: str | os.PathLike[str], output: str | os.PathLike[str] |
                   progress: Progress | None = None, viscosity_at: str = DEFAULT_VISCOSITY_AT) -> WorkbookRun:
     """Run calc on a sheet of supports and write a results sheet.
 
-    ``output`` (a new .xlsx/.xlsm) gets a copy of the workbook plus the
-    results sheet; ``in_place=True`` writes the results sheet into ``path``
-    itself as a surgical edit of the package (:mod:`.package`: every other
-    part of the file is kept byte for byte; refused when that cannot be
-    done), holding the workbook's lock (:func:`bearingheat.io.files.workbook_lock`)
-    from the read to the atomic rename. With neither, nothing is written.
+    ``in_place=True`` writes the results sheet into ``path`` itself as a
+    surgical edit of the package (:mod:`.package`: every other part of the
+    file is kept byte for byte; refused when that cannot be done), holding the workbook's lock (:func:`bearingheat.io.files.workbook_lock`)
+    from the read to the atomic rename. ``output`` (a new .xlsx/.xlsm, or
+    .csv) gets the file that edit would make of the workbook; where the edit
+    is refused, or an .xlsm is written as .xlsx, a copy written by openpyxl
+    (``WorkbookRun.dropped`` names what it lacks). With neither, nothing is
+    written.
     A results sheet replaces only a results sheet that bearingheat marked as
     its own (:mod:`.ownership`). ``formulas=True`` writes live Excel
     formulas for P1, M0, M1, M2, MR and NR. ``progress`` (e.g.
@@ -209,6 +212,22 @@ def calc_workbook(path: str | os.PathLike[str], output: str | os.PathLike[str] |
                     progress=progress, viscosity_at=viscosity_at)
 
 
+def _package_to_copy(source: Path, target: Path, keep_vba: bool) -> Package | None:
+    """The package of ``source`` when the ``-o`` copy can be a surgical edit of it (:mod:`.package`: every part
+    kept byte for byte), None when openpyxl writes the copy instead: a workbook saved as another kind (an .xlsm
+    to .xlsx, whose main part's content type differs), one whose macros are to be left out (``keep_vba``
+    false), one the package edit refuses (signed, encrypted, Strict Open XML ...)."""
+    if source.suffix.lower() != target.suffix.lower():
+        return None
+    try:
+        package = open_package(source)
+    except ExcelError:  # (openpyxl read it: a refusal of the package edit, not a damaged file)
+        return None
+    if not keep_vba and package.find("xl/vbaProject.bin") is not None:
+        return None
+    return package
+
+
 def _run(source: Path, target: Path | None, edit: tuple[Package, WorkbookLock] | None, *, sheet: str | None,
          formulas: bool, model: str, n_per_method: str, f2_chart: F2Chart | str | None,
          vm_chart: VMChart | str | None, effects: FittedEffect | None,
@@ -239,12 +258,21 @@ def _run(source: Path, target: Path | None, edit: tuple[Package, WorkbookLock] |
     elif target is not None and writes_workbook:
         sheets = results_sheets(source, workbook, table, info, result, formulas=formulas, model=model, duty=duty)
         placeholders = [ws.title for ws in workbook.worksheets if is_placeholder(ws)]
-        if edit is not None:
-            package, lock = edit
-            done = write_results_in_place(package, info.sheet, sheets.table, lock=lock, units={"row": "-"},
-                                          formulas=sheets.formulas, progress=progress, placeholders=placeholders,
-                                          rules=sheets.rules, print_setup=sheets.print_setup,
-                                          companions=sheets.companions, hidden_columns=sheets.hidden_columns)
+        package, lock = edit if edit is not None else (_package_to_copy(source, target, keep_vba), None)
+        done = None
+        if package is not None:
+            try:
+                done = write_results_in_place(package, info.sheet, sheets.table, lock=lock,
+                                              target=None if edit is not None else target, units={"row": "-"},
+                                              formulas=sheets.formulas, progress=progress,
+                                              placeholders=placeholders, rules=sheets.rules,
+                                              print_setup=sheets.print_setup, companions=sheets.companions,
+                                              hidden_columns=sheets.hidden_columns)
+            except WorkbookContentError:
+                if edit is not None:
+                    raise
+                # a copy the surgical edit refuses (a signed or protected workbook ...): openpyxl writes it
+        if done is not None:
             results_sheet, notes, companions = done.sheet, done.notes, done.companions
         else:
             dropped = unsupported_content(source, workbook, keep_vba=vba)

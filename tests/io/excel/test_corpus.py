@@ -19,7 +19,7 @@ import pytest
 from lxml import etree
 from workbook_corpus import CASES, results_part
 
-from bearingheat.errors import WorkbookContentError
+from bearingheat.errors import ExcelError, WorkbookContentError
 from bearingheat.io.excel.workbook import calc_workbook
 
 pytestmark = pytest.mark.filterwarnings("ignore:.*extension is not supported:UserWarning")
@@ -197,3 +197,29 @@ def test_the_corpus_is_large_and_covers_the_features():
     assert len(CASES) >= 40
     refused = [name for name in CASES if name.startswith("refused_")]
     assert len(refused) >= 8 and len(CASES) - len(refused) >= 40
+
+
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_a_copy_is_what_in_place_writes_into_the_workbook(name, tmp_path):
+    """``-o`` is the same surgical edit written to a new file: byte for byte what --in-place makes of the
+    workbook; where --in-place refuses, openpyxl writes the copy (or the workbook cannot be read at all), and
+    the workbook is left as it was either way."""
+    case = CASES[name](tmp_path)
+    data = case.path.read_bytes()
+    copy = tmp_path / f"copy{case.path.suffix}"
+    try:
+        done = calc_workbook(case.path, copy, sheet=case.sheets[0], formulas=case.formulas)
+    except ExcelError as exc:
+        assert case.refused, (name, str(exc))
+        assert not copy.exists()
+    else:
+        assert case.refused or done.results_sheet == case.results[0]
+        assert openpyxl.load_workbook(copy, read_only=True)[done.results_sheet].max_row == len(done.result) + 2
+    assert case.path.read_bytes() == data
+    if case.refused:
+        return
+    in_place = tmp_path / "in place" / case.path.name  # (the printed header names the workbook's file)
+    in_place.parent.mkdir()
+    in_place.write_bytes(data)
+    calc_workbook(in_place, in_place=True, sheet=case.sheets[0], formulas=case.formulas)
+    assert copy.read_bytes() == in_place.read_bytes()

@@ -47,7 +47,8 @@ def test_duty_cycle_sheet_of_a_copy(duty_workbook, tmp_path):
     assert run.companions == {"duty": "Duty cycle"}
     assert_summary(run.duty, expected)
     workbook = openpyxl.load_workbook(run.output)
-    assert workbook.sheetnames == ["Supports", "Results", "Duty cycle", "Instructions", "Lists"]
+    # the template's Results sheet filled where it is, the summary added after the last sheet (as --in-place)
+    assert workbook.sheetnames == ["Supports", "Results", "Instructions", "Lists", "Duty cycle"]
     assert_summary(sheet_frame(run.output, "Duty cycle"), expected)
     ws = workbook["Duty cycle"]
     assert ws["D3"].number_format == "[>=100]0;[>=10]0.0;0.00" and ws["G3"].number_format == "0.0"

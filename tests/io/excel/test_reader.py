@@ -7,6 +7,7 @@ import numpy as np
 import openpyxl
 import pandas as pd
 import pytest
+from workbook_corpus import edit_package
 from excel_helpers import EXAMPLE_CSV, EXAMPLE_XLSX, HEADER, UNITS, csv_result, gearbox_rows, make_workbook, \
     set_cached_value
 
@@ -157,3 +158,16 @@ def test_not_a_workbook(tmp_path):
     path.write_text("id,designation\n")
     with pytest.raises(ExcelError, match=re.escape(f"{path}: not a readable Excel workbook")):
         read_supports(path)
+
+
+def test_a_workbook_part_that_is_not_xml_is_a_damaged_workbook(tmp_path):
+    """openpyxl's parser error (lxml's XMLSyntaxError) becomes an ExcelError naming the file, for a copy too."""
+    path = make_workbook(tmp_path / "damaged.xlsx")
+    edit_package(path, {"xl/workbook.xml": b"<workbook><sheets"})
+    message = (f"{path}: damaged workbook, a part is not well-formed XML (Couldn't find end of Start Tag sheets "
+               "line 1, line 1, column 18 (<string>, line 1))")
+    with pytest.raises(ExcelError, match=f"^{re.escape(message)}$"):
+        read_supports(path)
+    with pytest.raises(ExcelError, match=f"^{re.escape(message)}$"):
+        calc_workbook(path, tmp_path / "copy.xlsx")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["damaged.xlsx"]

@@ -42,8 +42,28 @@ def test_output_leaves_the_input_untouched(tmp_path):
     assert run.dropped == []
 
 
-def test_failed_save_of_a_copy_leaves_no_temp_file(tmp_path, monkeypatch):
+def test_failed_write_of_a_copy_leaves_no_temp_file(tmp_path, monkeypatch):
     path = rich_workbook(tmp_path / "rich.xlsx")
+    before = digest(path)
+    written = []
+    real_writestr = zipfile.ZipFile.writestr
+
+    def broken_writestr(self, info, data, *args, **kwargs):
+        written.append(info)
+        if len(written) == 2:
+            raise OSError(28, "No space left on device")
+        return real_writestr(self, info, data, *args, **kwargs)
+
+    monkeypatch.setattr(zipfile.ZipFile, "writestr", broken_writestr)
+    with pytest.raises(OutputFileError, match=f"cannot write {tmp_path / 'copy.xlsx'}: No space left on device"):
+        calc_workbook(path, tmp_path / "copy.xlsx")
+    assert digest(path) == before
+    assert sorted(os.listdir(tmp_path)) == ["rich.xlsx"]
+
+
+def test_failed_save_of_an_openpyxl_copy_leaves_no_temp_file(tmp_path, monkeypatch):
+    """An .xlsm saved as .xlsx (its macros left out) is a copy openpyxl writes: a failed save leaves nothing."""
+    path = vba_workbook(tmp_path / "macros.xlsm")
     before = digest(path)
 
     def broken_save(self, filename):
@@ -55,7 +75,7 @@ def test_failed_save_of_a_copy_leaves_no_temp_file(tmp_path, monkeypatch):
     with pytest.raises(OutputFileError, match="disk full"):
         calc_workbook(path, tmp_path / "copy.xlsx")
     assert digest(path) == before
-    assert sorted(os.listdir(tmp_path)) == ["rich.xlsx"]
+    assert sorted(os.listdir(tmp_path)) == ["macros.xlsm"]
 
 
 def test_failed_in_place_write_leaves_the_workbook_and_no_temp_file(tmp_path, monkeypatch):
