@@ -10,9 +10,9 @@ import numpy as np
 import openpyxl
 import pandas as pd
 import pytest
+from excel_helpers import EXAMPLE_CSV, EXAMPLE_XLSX, add_zip_part, chart_workbook, control_workbook, csv_result, \
+    digest, gearbox_rows, image_workbook, make_workbook, pivot_workbook, rich_workbook
 from openpyxl.workbook.protection import WorkbookProtection
-from excel_helpers import EXAMPLE_CSV, EXAMPLE_XLSX, chart_workbook, control_workbook, csv_result, digest, \
-    gearbox_rows, image_workbook, make_workbook, pivot_workbook, rich_workbook
 
 from bearingheat.cli import main
 from bearingheat.io.excel.safety import workbook_fingerprint
@@ -104,55 +104,46 @@ def test_in_place_keeps_everything_else(tmp_path, capsys):
     assert not [p for p in os.listdir(tmp_path) if p.startswith(".rich")]
 
 
+@pytest.mark.parametrize("in_place", [True, False])
 @pytest.mark.parametrize("build", [chart_workbook, image_workbook, pivot_workbook, control_workbook])
-def test_in_place_keeps_what_openpyxl_would_drop(tmp_path, capsys, build):
-    """Charts, images, pivot tables and form controls survive --in-place: only the results sheet is added."""
+def test_the_written_workbook_keeps_what_openpyxl_would_drop(tmp_path, capsys, build, in_place):
+    """Charts, images, pivot tables and form controls survive --in-place, and -o (the same edit written to a new
+    file): only the results sheet is added, and nothing is noted as missing."""
     path = build(tmp_path / "rich.xlsx")
+    original = digest(path)
     with zipfile.ZipFile(path) as archive:
         before = {name: archive.read(name) for name in archive.namelist()}
-    assert main(["calc", str(path), "--in-place"]) == 0
-    with zipfile.ZipFile(path) as archive:
+    written = path if in_place else tmp_path / "out.xlsx"
+    assert main(["calc", str(path), "-q", *(["--in-place"] if in_place else ["-o", str(written)])]) == 0
+    assert capsys.readouterr().err == ""
+    with zipfile.ZipFile(written) as archive:
         after = {name: archive.read(name) for name in archive.namelist()}
     registration = {"xl/workbook.xml", "xl/_rels/workbook.xml.rels", "[Content_Types].xml", "xl/styles.xml"}
     assert set(before) <= set(after)
     assert {name for name in before if before[name] != after[name]} <= registration
     added = set(after) - set(before)
     assert len(added) == 1 and added.pop().startswith("xl/worksheets/sheet")
-
-
-@pytest.mark.parametrize("build", [chart_workbook, image_workbook, pivot_workbook, control_workbook])
-def test_output_copy_keeps_what_openpyxl_would_drop(tmp_path, capsys, build):
-    """-o is the surgical edit of --in-place written to a new file: the copy keeps charts, images, pivot tables
-    and form controls byte for byte, and nothing is noted as missing."""
-    path = build(tmp_path / "rich.xlsx")
-    before = digest(path)
-    with zipfile.ZipFile(path) as archive:
-        original = {name: archive.read(name) for name in archive.namelist()}
-    out = tmp_path / "out.xlsx"
-    assert main(["calc", str(path), "-o", str(out), "-q"]) == 0
-    assert capsys.readouterr().err == ""
-    assert digest(path) == before
-    with zipfile.ZipFile(out) as archive:
-        copy = {name: archive.read(name) for name in archive.namelist()}
-    registration = {"xl/workbook.xml", "xl/_rels/workbook.xml.rels", "[Content_Types].xml", "xl/styles.xml"}
-    assert {name for name in original if original[name] != copy.get(name)} <= registration
-    added = set(copy) - set(original)
-    assert len(added) == 1 and added.pop().startswith("xl/worksheets/sheet")
+    if not in_place:
+        assert digest(path) == original  # the input untouched
 
 
 def test_output_of_a_lossy_workbook_says_what_the_copy_lacks(tmp_path, capsys):
     """A workbook whose structure is protected cannot take a sheet by the surgical edit: openpyxl writes the copy,
-    which lacks the chart, and the note says so."""
-    path = chart_workbook(tmp_path / "chart.xlsx")
+    which lacks the pivot table, and the note says so."""
+    path = make_workbook(tmp_path / "pivot.xlsx")
     workbook = openpyxl.load_workbook(path)
     workbook.security = WorkbookProtection(lockStructure=True)
     workbook.save(path)
+    add_zip_part(path, "xl/pivotTables/pivotTable1.xml")
+    add_zip_part(path, "xl/pivotCache/pivotCacheDefinition1.xml")
     before = digest(path)
     out = tmp_path / "out.xlsx"
     assert main(["calc", str(path), "-o", str(out)]) == 0
-    assert capsys.readouterr().err == (f"note: {out} lacks the charts of {path} (openpyxl cannot copy them); "
-                                       f"{path} is unchanged\n")
+    assert capsys.readouterr().err == (f"note: {out} lacks the pivot tables, pivot caches of {path} (openpyxl cannot "
+                                       f"copy them); {path} is unchanged\n")
     assert digest(path) == before
+    with zipfile.ZipFile(out) as archive:
+        assert not [name for name in archive.namelist() if "pivot" in name]
 
 
 @pytest.mark.parametrize("extra, message", [

@@ -25,11 +25,11 @@ import os
 import re
 import warnings
 import zipfile
-from xml.etree import ElementTree
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
+from xml.etree import ElementTree
 
 import numpy as np
 import pandas as pd

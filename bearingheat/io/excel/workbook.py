@@ -162,12 +162,13 @@ def calc_workbook(path: str | os.PathLike[str], output: str | os.PathLike[str] |
 
     ``in_place=True`` writes the results sheet into ``path`` itself as a
     surgical edit of the package (:mod:`.package`: every other part of the
-    file is kept byte for byte; refused when that cannot be done), holding the workbook's lock (:func:`bearingheat.io.files.workbook_lock`)
-    from the read to the atomic rename. ``output`` (a new .xlsx/.xlsm, or
-    .csv) gets the file that edit would make of the workbook; where the edit
-    is refused, or an .xlsm is written as .xlsx, a copy written by openpyxl
-    (``WorkbookRun.dropped`` names what it lacks). With neither, nothing is
-    written.
+    file is kept byte for byte; refused when that cannot be done), holding
+    the workbook's lock (:func:`bearingheat.io.files.workbook_lock`) from
+    the read to the atomic rename. ``output`` (a new .xlsx or .xlsm) gets
+    the file that edit would make of the workbook; where the edit is
+    refused, or an .xlsm is written as .xlsx, a copy written by openpyxl
+    (``WorkbookRun.dropped`` names what it lacks); a .csv output gets the
+    results table. With neither, nothing is written.
     A results sheet replaces only a results sheet that bearingheat marked as
     its own (:mod:`.ownership`). ``formulas=True`` writes live Excel
     formulas for P1, M0, M1, M2, MR and NR. ``progress`` (e.g.
