@@ -130,3 +130,18 @@ def test_the_core_runs_without_matplotlib_and_plots_name_the_extra(tmp_path):
     assert plot.returncode == 2
     assert plot.stderr.strip().endswith("plotting needs matplotlib, which is not installed: pip install "
                                         "'bearingheat[plot]'")
+
+
+def test_dir_lists_the_public_names_not_the_helpers():
+    """dir(bearingheat) and dir(bearingheat.api) (an editor's completion) show the public API, the package's own
+    modules and the dunder names; the helpers the packages import for themselves are left out."""
+    import bearingheat
+    import bearingheat.api
+
+    for package in (bearingheat, bearingheat.api):
+        names = set(dir(package))
+        assert set(package.__all__) <= names and "__doc__" in names
+        assert not names & {"sys", "types", "importlib", "copyreg", "Any", "Callable", "TYPE_CHECKING",
+                            "annotations", "lazy_exports", "ModuleType", "_EXPORTS"}
+    assert {"calc", "friction_torque", "errors", "api", "__version__"} <= set(dir(bearingheat))
+    assert callable(bearingheat.calc)  # the function, although a subpackage of that name is loaded

@@ -28,6 +28,7 @@ from __future__ import annotations
 import importlib
 import sys
 from collections.abc import Callable
+from types import ModuleType
 from typing import TYPE_CHECKING, Any
 
 #: public name -> the module that defines it; imported on first use (PEP 562), so ``import bearingheat`` and the
@@ -64,7 +65,9 @@ if TYPE_CHECKING:  # what type checkers and IDEs see; at run time each name is i
 
 def lazy_exports(package: str, exports: dict[str, str]) -> tuple[Callable[[str], Any], Callable[[], list[str]]]:
     """The module ``__getattr__`` and ``__dir__`` (PEP 562) of ``package`` whose public names are ``exports``
-    (name -> defining module): a name is imported on first use and kept in the package's namespace."""
+    (name -> defining module): a name is imported on first use and kept in the package's namespace. ``dir``
+    (and so an editor's completion) lists the public names, ``__all__``, the package's own modules that are
+    loaded and the dunder names, not the helpers the package imports for itself (``sys``, ``Any`` ...)."""
     namespace = sys.modules[package].__dict__
 
     def __getattr__(name: str) -> Any:
@@ -76,7 +79,10 @@ def lazy_exports(package: str, exports: dict[str, str]) -> tuple[Callable[[str],
         return value
 
     def __dir__() -> list[str]:
-        return sorted({*namespace, *exports})
+        own_modules = {name for name, value in namespace.items()
+                       if isinstance(value, ModuleType) and value.__name__.startswith(package + ".")}
+        dunder = {name for name in namespace if name.startswith("__") and name.endswith("__")}
+        return sorted({*exports, *namespace.get("__all__", ()), *own_modules, *dunder})
 
     return __getattr__, __dir__
 
