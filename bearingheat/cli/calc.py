@@ -300,6 +300,6 @@ def run_calc_workbook(args: argparse.Namespace) -> int:
         for note in run.notes:
             print(f"note: {note}", file=sys.stderr)
         if run.dropped:
-            print(f"note: {args.output} lacks the {', '.join(run.dropped)} of {args.input} (openpyxl cannot copy "
-                  f"them); {args.input} is unchanged", file=sys.stderr)
+            print(f"note: {args.output} lacks or has altered the {', '.join(run.dropped)} of {args.input} (openpyxl "
+                  f"cannot copy them as they are); {args.input} is unchanged", file=sys.stderr)
     return 1 if (run.result["status"] == "error").any() else 0

@@ -3,10 +3,12 @@
 openpyxl rewrites a workbook from its own object model. Cell values,
 formulas, styles, defined names, data validations, conditional formats,
 comments (as notes), merged cells, column widths and hyperlinks survive;
-charts, images, drawing shapes, pivot tables, slicers, form controls,
+charts and images are redrawn from what openpyxl reads of them (chart
+styles and colours, images in page headers and what else it does not
+read are lost); drawing shapes, pivot tables, slicers, form controls,
 ActiveX controls, embedded objects, threaded comments and the Excel 2010+
-extensions of a sheet (``x14`` validations and formats, sparklines) do not,
-and VBA survives only with ``keep_vba``. :func:`unsupported_content` names
+extensions of a sheet (``x14`` validations and formats, sparklines) are
+lost, and VBA survives only with ``keep_vba``. :func:`unsupported_content` names
 what a rewrite would drop, so ``--in-place`` can refuse before touching
 the file.
 
@@ -94,8 +96,8 @@ def refuse_lossy_rewrite(path, workbook=None, *, option: str = "--in-place", kee
     lost = unsupported_content(path, workbook, keep_vba=keep_vba)
     if lost:
         raise WorkbookContentError(
-            f"{path}: {option} refused, rewriting the workbook would lose its {', '.join(lost)} "
-            "(openpyxl cannot keep them); the file is unchanged. Write the results to a new workbook "
+            f"{path}: {option} refused, rewriting the workbook would lose or alter its {', '.join(lost)} "
+            "(openpyxl cannot keep them as they are); the file is unchanged. Write the results to a new workbook "
             "with -o OUTPUT.xlsx instead")
 
 

@@ -7,9 +7,9 @@ import numpy as np
 import openpyxl
 import pandas as pd
 import pytest
-from excel_helpers import csv_result, make_workbook
+from excel_helpers import add_zip_part, csv_result, make_workbook
 
-from bearingheat.errors import ExcelError
+from bearingheat.errors import ExcelError, WorkbookContentError
 from bearingheat.io.excel.reader import read_supports, with_units
 from bearingheat.io.excel.writer import write_results, write_results_workbook
 
@@ -58,3 +58,16 @@ def test_results_of_a_csv_go_to_a_new_xlsx_only(tmp_path):
                                                    "new .xlsx workbook")):
         write_results_workbook(csv_result(), tmp_path / "r.xlsm")
     assert not (tmp_path / "r.xlsm").exists()
+
+
+def test_write_results_refuses_a_workbook_openpyxl_would_not_keep_as_it_is(tmp_path):
+    """write_results rewrites an existing workbook with openpyxl: pivot parts (dropped) refuse it, named."""
+    path = make_workbook(tmp_path / "pivot.xlsx")
+    add_zip_part(path, "xl/pivotTables/pivotTable1.xml")
+    before = path.read_bytes()
+    message = (f"{path}: write_results refused, rewriting the workbook would lose or alter its pivot tables (openpyxl "
+               "cannot keep them as they are); the file is unchanged. Write the results to a new workbook with -o "
+               "OUTPUT.xlsx instead")
+    with pytest.raises(WorkbookContentError, match=f"^{re.escape(message)}$"):
+        write_results(pd.DataFrame({"x [mm]": [1.0]}), path, sheet="Notes")
+    assert path.read_bytes() == before
