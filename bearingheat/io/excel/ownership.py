@@ -12,7 +12,10 @@ its reference into ``#REF!`` and the mark is dropped on the next run. A copy
 of a results sheet (Excel's "Move or Copy") is not marked, so it is the
 designer's. A sheet without a mark is never replaced: when it holds the name
 the results sheet would get (``Results``, ``<sheet> results``) the results
-go to the next free name, ``Results (2)``, and the run says so.
+go to the next free name, ``Results (2)``, and the run says so. A sheet that
+:func:`~bearingheat.io.excel.writer.write_results` wrote is marked by one
+name, ``_bearingheat_table_<k>``; that function replaces only a sheet one of
+these marks names (:func:`written_sheets`).
 
 >>> mark_value("Supports"), mark_value("Shaft 2 results")
 ('Supports!$1:$1048576', "'Shaft 2 results'!$1:$1048576")
@@ -30,9 +33,9 @@ from __future__ import annotations
 import re
 from collections.abc import Collection, Iterable, Mapping
 
-__all__ = ["RESULTS_MARK", "INPUT_MARK", "COMPANION_MARKS", "MAX_SHEET_NAME", "mark_value", "sheet_of_mark",
-           "read_marks", "read_companions", "choose_results_sheet", "choose_companion_sheet", "candidate_names",
-           "sheet_ref"]
+__all__ = ["RESULTS_MARK", "INPUT_MARK", "COMPANION_MARKS", "TABLE_MARK", "MAX_SHEET_NAME", "mark_value",
+           "sheet_of_mark", "read_marks", "read_companions", "written_sheets", "table_mark_slots", "choose_results_sheet",
+           "choose_companion_sheet", "candidate_names", "sheet_ref"]
 
 RESULTS_MARK = "_bearingheat_results_"
 INPUT_MARK = "_bearingheat_input_"
@@ -45,6 +48,9 @@ _MARK_NAME = re.compile(rf"^({RESULTS_MARK}|{INPUT_MARK})(\d+)$", re.IGNORECASE)
 #: ``_bearingheat_snapshot_<k>`` and ``_bearingheat_duty_<k>`` of pair k
 COMPANION_MARKS = {"snapshot": "_bearingheat_snapshot_", "duty": "_bearingheat_duty_"}
 _COMPANION_NAME = re.compile(r"^_bearingheat_(snapshot|duty)_(\d+)$", re.IGNORECASE)
+#: the mark of a sheet that :func:`bearingheat.io.excel.writer.write_results` wrote, ``_bearingheat_table_<k>``
+TABLE_MARK = "_bearingheat_table_"
+_TABLE_NAME = re.compile(rf"^{TABLE_MARK}(\d+)$", re.IGNORECASE)
 
 
 def sheet_ref(sheet: str) -> str:
@@ -103,6 +109,27 @@ def read_companions(names: Iterable[tuple[str, str | None]]) -> dict[int, dict[s
         if match is not None:
             out.setdefault(int(match.group(2)), {})[match.group(1).lower()] = sheet_of_mark(value)
     return out
+
+
+def written_sheets(names: Iterable[tuple[str, str | None]]) -> dict[str, str]:
+    """The sheets bearingheat wrote, by their names without case -> name: the results sheets, their companions
+    and the tables of :data:`TABLE_MARK`, from (defined name, value) pairs of workbook scope (the input sheets
+    their marks name are the designer's).
+
+    >>> written_sheets([("_bearingheat_results_1", "Results!$1:$1048576"), ("_bearingheat_input_1",
+    ...                 "Supports!$1:$1048576"), ("_bearingheat_table_2", "'Loads'!$1:$1048576")])
+    {'results': 'Results', 'loads': 'Loads'}
+    """
+    pairs = list(names)
+    sheets = [results for results, _ in read_marks(pairs).values()]
+    sheets += [sheet for roles in read_companions(pairs).values() for sheet in roles.values()]
+    sheets += [sheet_of_mark(value) for name, value in pairs if _TABLE_NAME.match(name or "")]
+    return {sheet.casefold(): sheet for sheet in sheets if sheet is not None}
+
+
+def table_mark_slots(names: Iterable[str]) -> set[int]:
+    """The numbers k of the ``_bearingheat_table_<k>`` marks among defined names."""
+    return {int(match.group(1)) for name in names if (match := _TABLE_NAME.match(name or ""))}
 
 
 def choose_companion_sheet(sheets: list[str], current: str | None, base: str, taken: Collection[str] = ()

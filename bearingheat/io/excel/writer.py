@@ -2,7 +2,7 @@
 
 - :func:`write_results`: a DataFrame as a sheet of a new or existing
   workbook (refused when a rewrite would lose content, see
-  :mod:`bearingheat.io.excel.safety`).
+  :mod:`bearingheat.io.excel.safety`, or replace a sheet of the designer's).
 - :func:`write_results_workbook`: the results of a CSV calc as a new workbook.
 - :func:`atomic_save`: save through a temporary file, so a failure leaves
   the target as it was.
@@ -28,12 +28,14 @@ from openpyxl import Workbook
 from openpyxl.cell.cell import Cell
 from openpyxl.formatting.rule import FormulaRule
 from openpyxl.utils import get_column_letter
+from openpyxl.workbook.defined_name import DefinedName
 from openpyxl.worksheet.worksheet import Worksheet
 
 from bearingheat.calc.contract import input_units, parse_header
 from bearingheat.errors import ExcelError, InputError
 from bearingheat.io.excel import style as st
 from bearingheat.io.excel.freshness import ConditionalRule
+from bearingheat.io.excel.ownership import TABLE_MARK, mark_value, table_mark_slots, written_sheets
 from bearingheat.io.excel.reader import (DEFAULT_SHEET, EXCEL_SUFFIXES, RESULTS_SHEET, SheetInfo, contract_name,
                                          open_workbook)
 from bearingheat.io.excel.printing import PrintSetup
@@ -315,26 +317,44 @@ def write_results(results: pd.DataFrame, path: str | os.PathLike[str], *, sheet:
     """Write ``results`` as sheet ``sheet`` of the workbook ``path`` (header row, units row, one row each).
 
     A new workbook is created when ``path`` does not exist; in an existing
-    workbook the sheet is added (or replaced) and every other sheet kept,
-    refused when the workbook holds content openpyxl would drop
-    (:func:`bearingheat.io.excel.safety.unsupported_content`). The write is
-    atomic. Units come from pint-pandas dtypes, ``units``, or ``name
-    [unit]`` headers; ``formulas`` maps (column, row position) to formula
-    text written instead of the value.
+    workbook the sheet is added, or replaced where bearingheat wrote it
+    (a results sheet, one of its companions, or a sheet of an earlier
+    ``write_results``: :mod:`.ownership`), and every other sheet kept. A
+    sheet of that name (compared without case, as Excel does) that the
+    designer made is never replaced: :class:`ExcelError`, the file
+    unchanged. Refused as well when the workbook holds content openpyxl
+    would drop (:func:`bearingheat.io.excel.safety.unsupported_content`).
+    The sheet is marked as bearingheat's (a hidden defined name
+    ``_bearingheat_table_<k>``). The write is atomic. Units come from
+    pint-pandas dtypes, ``units``, or ``name [unit]`` headers; ``formulas``
+    maps (column, row position) to formula text written instead of the
+    value.
     """
     path = Path(path)
     if path.suffix.lower() not in EXCEL_SUFFIXES:
         raise ExcelError(f"{path}: an Excel workbook ends in .xlsx or .xlsm")
     if path.exists():
         workbook = open_workbook(path, keep_vba=path.suffix.lower() == ".xlsm")
+        marks = [(name, defined.attr_text) for name, defined in workbook.defined_names.items()]
+        written = written_sheets(marks)
+        present = next((name for name in workbook.sheetnames if name.casefold() == sheet.casefold()), None)
+        if present is not None and present.casefold() not in written:
+            raise ExcelError(f"{path}: sheet {present!r} is not a sheet bearingheat wrote (it has no bearingheat "
+                             "mark), so it is kept; the file is unchanged. Write the table to a sheet of another "
+                             "name")
         refuse_lossy_rewrite(path, workbook, option="write_results")
-        ws = install_sheet(workbook, sheet)
+        ws = install_sheet(workbook, present if present is not None else sheet)  # (a sheet keeps its own name)
     else:
         if path.suffix.lower() == ".xlsm":
             raise ExcelError(f"{path}: a new workbook is written as .xlsx (a .xlsm needs its macros)")
         workbook = Workbook()
         ws = workbook.active
         ws.title = sheet
+        written = {}
+    if ws.title.casefold() not in written:  # (a results sheet or a table keeps the mark it has)
+        slot = 1 + max(table_mark_slots(workbook.defined_names), default=0)
+        workbook.defined_names[f"{TABLE_MARK}{slot}"] = DefinedName(f"{TABLE_MARK}{slot}", hidden=True,
+                                                                    attr_text=mark_value(ws.title))
     fill_sheet(ws, results, units=units, input_columns=set(input_columns), formulas=formulas)
     atomic_save(workbook, path)
     return path

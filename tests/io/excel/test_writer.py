@@ -11,6 +11,7 @@ from excel_helpers import add_zip_part, csv_result, make_workbook
 
 from bearingheat.errors import ExcelError, WorkbookContentError
 from bearingheat.io.excel.reader import read_supports, with_units
+from bearingheat.io.excel.workbook import calc_workbook
 from bearingheat.io.excel.writer import write_results, write_results_workbook
 
 
@@ -71,3 +72,35 @@ def test_write_results_refuses_a_workbook_openpyxl_would_not_keep_as_it_is(tmp_p
     with pytest.raises(WorkbookContentError, match=f"^{re.escape(message)}$"):
         write_results(pd.DataFrame({"x [mm]": [1.0]}), path, sheet="Notes")
     assert path.read_bytes() == before
+
+
+def test_write_results_never_replaces_a_sheet_of_the_designer(tmp_path):
+    """A sheet the designer made is kept whatever the case of the name asked for; the file is unchanged."""
+    path = make_workbook(tmp_path / "mine.xlsx")
+    before = path.read_bytes()
+    for asked in ("Supports", "SUPPORTS"):
+        message = (f"{path}: sheet 'Supports' is not a sheet bearingheat wrote (it has no bearingheat mark), so it "
+                   "is kept; the file is unchanged. Write the table to a sheet of another name")
+        with pytest.raises(ExcelError, match=f"^{re.escape(message)}$"):
+            write_results(pd.DataFrame({"x [mm]": [1.0]}), path, sheet=asked)
+        assert path.read_bytes() == before
+
+
+def test_write_results_replaces_the_sheet_it_wrote(tmp_path):
+    """A second write to the same sheet replaces it in place (its mark says bearingheat wrote it); so does a
+    write to calc's results sheet; the designer's sheets stay."""
+    path = make_workbook(tmp_path / "book.xlsx")
+    write_results(pd.DataFrame({"x [mm]": [1.0]}), path, sheet="Loads")
+    write_results(pd.DataFrame({"x [mm]": [2.0, 3.0]}), path, sheet="loads")
+    workbook = openpyxl.load_workbook(path)
+    assert workbook.sheetnames == ["Supports", "Loads"]
+    assert [c.value for c in workbook["Loads"]["A"]] == ["x", "mm", 2.0, 3.0]
+    assert {name: d.attr_text for name, d in workbook.defined_names.items()} == \
+        {"_bearingheat_table_1": "Loads!$1:$1048576"}
+    calc_workbook(path, in_place=True)  # the results sheet 'Results', marked by calc
+    write_results(pd.DataFrame({"x [mm]": [4.0]}), path, sheet="Results")
+    workbook = openpyxl.load_workbook(path)
+    assert workbook.sheetnames == ["Supports", "Loads", "Results"]
+    assert workbook["Results"]["A3"].value == 4.0
+    assert sorted(workbook.defined_names) == ["_bearingheat_input_1", "_bearingheat_results_1",
+                                              "_bearingheat_table_1"]
