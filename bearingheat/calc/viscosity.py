@@ -14,12 +14,16 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from bearingheat.calc.supports import number_column, object_column
+from bearingheat.calc.supports import first_rows, group_codes, number_column, object_column
 from bearingheat.catalogue.viscosity import iso_vg_grades
 from bearingheat.kernels.viscosity import (DEFAULT_VISCOSITY_INDEX, MIN_VISCOSITY, iso_vg_nu40,
                                            nu100_from_viscosity_index, walther_constants)
 
-__all__ = ["viscosity_model_rows"]
+__all__ = ["OIL_LINE_INPUTS", "viscosity_model_rows"]
+
+
+#: the columns a row's viscosity-temperature line is found from
+OIL_LINE_INPUTS = ("nu40", "nu100", "iso_vg", "VI")
 
 
 def viscosity_model_rows(frame: pd.DataFrame):
@@ -27,7 +31,25 @@ def viscosity_model_rows(frame: pd.DataFrame):
 
     Returns (A, B, problems): NaN where a row has no viscosity-temperature
     data; problems are (row position, 'error', message) for unusable data.
+    Rows with the same oil data are worked out once (a table of many
+    operating points names few oils).
     """
+    names = [name for name in OIL_LINE_INPUTS if name in frame.columns]
+    codes = group_codes(frame, names) if names and len(frame) > 1 else None
+    first = first_rows(codes) if codes is not None else None
+    if codes is None or first is None or len(first) == len(frame):
+        return _viscosity_model(frame)
+    A, B, distinct_problems = _viscosity_model(frame.iloc[first])
+    said: dict[int, list[tuple[str, str]]] = {}
+    for j, level, message in distinct_problems:
+        said.setdefault(j, []).append((level, message))
+    flagged = np.flatnonzero(np.isin(codes, list(said))) if said else np.zeros(0, dtype=np.intp)
+    problems = [(int(i), level, message) for i in flagged.tolist() for level, message in said[int(codes[i])]]
+    return A[codes], B[codes], problems
+
+
+def _viscosity_model(frame: pd.DataFrame):
+    """:func:`viscosity_model_rows` of every row of ``frame`` (no grouping)."""
     n_rows = len(frame)
     nu40, nu100, grade, VI = (number_column(frame, name) for name in ("nu40", "nu100", "iso_vg", "VI"))
     VI_used = np.where(np.isnan(VI), DEFAULT_VISCOSITY_INDEX, VI)

@@ -7,11 +7,14 @@ import pandas as pd
 from bearingheat.calc.viscosity import viscosity_model_rows
 
 
+OILS = pd.DataFrame({"nu40": [68.0, 68.0, np.nan, 8.0, np.nan, 68.0, np.nan, np.nan],
+                     "nu100": [8.6, np.nan, np.nan, 9.0, np.nan, 8.6, np.nan, np.nan],
+                     "iso_vg": [np.nan, np.nan, 47.0, np.nan, 68.0, 68.0, np.nan, 220.0],
+                     "VI": [np.nan, np.nan, np.nan, np.nan, -5000.0, np.nan, 95.0, 95.0]})
+
+
 def test_viscosity_model_rows_problems():
-    frame = pd.DataFrame({"nu40": [68.0, 68.0, np.nan, 8.0, np.nan, 68.0, np.nan],
-                          "nu100": [8.6, np.nan, np.nan, 9.0, np.nan, 8.6, np.nan],
-                          "iso_vg": [np.nan, np.nan, 47.0, np.nan, 68.0, 68.0, np.nan],
-                          "VI": [np.nan, np.nan, np.nan, np.nan, -5000.0, np.nan, 95.0]})
+    frame = OILS.iloc[:7]
     A, B, problems = viscosity_model_rows(frame)
     assert not np.isnan(A[0])
     assert np.isnan(A[1:]).all()
@@ -36,3 +39,16 @@ def test_a_viscosity_index_without_oil_data_is_a_row_error_of_calc():
     out = bh.calc(rows)
     assert out["status"].tolist() == ["error"]
     assert out["message"].iloc[0] == "VI: given without iso_vg; the viscosity index only serves an ISO VG grade"
+
+
+def test_rows_with_the_same_oil_data_are_worked_out_once_and_alike():
+    """A table of many rows naming few oils (here the eight above in a shuffled order, 40 times each): every row
+    gets the constants and the problems it gets alone; the work is done once per distinct oil."""
+    order = np.random.default_rng(5).permutation(np.resize(np.arange(len(OILS)), 320))
+    frame = OILS.iloc[order].reset_index(drop=True)
+    alone = [viscosity_model_rows(OILS.iloc[[k]].reset_index(drop=True)) for k in range(len(OILS))]
+    A, B, problems = viscosity_model_rows(frame)
+    np.testing.assert_array_equal(A, [alone[k][0][0] for k in order])
+    np.testing.assert_array_equal(B, [alone[k][1][0] for k in order])
+    assert problems == [(i, level, message) for i, k in enumerate(order) for _, level, message in alone[k][2]]
+    assert not np.isnan(A[order == 7]).any()  # ISO VG 220 with VI 95
