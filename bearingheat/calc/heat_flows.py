@@ -17,7 +17,7 @@ import pandas as pd
 from bearingheat.calc.models import FrictionPower
 from bearingheat.calc.reference_speed import thermal_reference_speed_details
 from bearingheat.calc.supports import number_column, zero_where_blank
-from bearingheat.calc.viscosity import viscosity_model_rows
+from bearingheat.calc.viscosity import OIL_LINE_INPUTS, viscosity_model_rows
 from bearingheat.kernels.roots import bracketed_root
 from bearingheat.kernels.thermal import oil_heat_flow, seat_heat_flow
 from bearingheat.kernels.viscosity import walther_temperature, walther_viscosity
@@ -25,8 +25,9 @@ from bearingheat.kernels.viscosity import walther_temperature, walther_viscosity
 __all__ = ["OIL_DATA", "HEAT_BALANCE_DETAILS", "RowViscosity", "viscosity_of_rows", "walther_columns",
            "heat_flow_setup", "generic_speed"]
 
-#: the columns a viscosity-temperature law comes from (:func:`~bearingheat.calc.viscosity.viscosity_model_rows`)
-OIL_DATA = frozenset({"nu40", "nu100", "iso_vg"})
+#: the columns a viscosity-temperature law comes from (:func:`~bearingheat.calc.viscosity.viscosity_model_rows`;
+#: a VI only serves an ISO VG grade)
+OIL_DATA = frozenset(OIL_LINE_INPUTS) - {"VI"}
 #: the reference-speed details the heat balance reads: n_thr and why a row has none, the heat flow area A_r and
 #: the default heat transfer coefficient k_q of the reference conditions
 HEAT_BALANCE_DETAILS = ("n_thr", "reason", "A_r", "k_q_ref")
@@ -64,7 +65,7 @@ def walther_columns(frame: pd.DataFrame):
     """The Walther constants A, B of every row (NaN without oil data) and the problems of the oil data."""
     if "_walther_A" in frame.columns:
         return number_column(frame, "_walther_A"), number_column(frame, "_walther_B"), []
-    if not (OIL_DATA | {"VI"}) & set(frame.columns):  # (a VI alone is an error of viscosity_model_rows)
+    if not set(OIL_LINE_INPUTS) & set(frame.columns):  # (a VI alone is an error of viscosity_model_rows)
         return np.full(len(frame), np.nan), np.full(len(frame), np.nan), []
     return viscosity_model_rows(frame)
 

@@ -35,9 +35,11 @@ def viscosity_model_rows(frame: pd.DataFrame):
     operating points names few oils).
     """
     names = [name for name in OIL_LINE_INPUTS if name in frame.columns]
-    codes = group_codes(frame, names) if names and len(frame) > 1 else None
-    first = first_rows(codes) if codes is not None else None
-    if codes is None or first is None or len(first) == len(frame):
+    if not names or len(frame) < 2:
+        return _viscosity_model(frame)
+    codes = group_codes(frame, names)
+    first = first_rows(codes)
+    if len(first) == len(frame):
         return _viscosity_model(frame)
     A, B, distinct_problems = _viscosity_model(frame.iloc[first])
     said: dict[int, list[tuple[str, str]]] = {}
@@ -51,7 +53,7 @@ def viscosity_model_rows(frame: pd.DataFrame):
 def _viscosity_model(frame: pd.DataFrame):
     """:func:`viscosity_model_rows` of every row of ``frame`` (no grouping)."""
     n_rows = len(frame)
-    nu40, nu100, grade, VI = (number_column(frame, name) for name in ("nu40", "nu100", "iso_vg", "VI"))
+    nu40, nu100, grade, VI = (number_column(frame, name) for name in OIL_LINE_INPUTS)
     VI_used = np.where(np.isnan(VI), DEFAULT_VISCOSITY_INDEX, VI)
     grade_nu40 = iso_vg_nu40(grade)
     grade_nu100 = np.full(n_rows, np.nan)

@@ -34,8 +34,8 @@ import re
 from collections.abc import Collection, Iterable, Mapping
 
 __all__ = ["RESULTS_MARK", "INPUT_MARK", "COMPANION_MARKS", "TABLE_MARK", "MAX_SHEET_NAME", "mark_value",
-           "sheet_of_mark", "read_marks", "read_companions", "written_sheets", "table_mark_slots", "choose_results_sheet",
-           "choose_companion_sheet", "candidate_names", "sheet_ref"]
+           "sheet_of_mark", "read_marks", "read_companions", "written_sheets", "table_mark_slots",
+           "choose_results_sheet", "choose_companion_sheet", "candidate_names", "sheet_ref"]
 
 RESULTS_MARK = "_bearingheat_results_"
 INPUT_MARK = "_bearingheat_input_"
