@@ -40,6 +40,7 @@ __all__ = [
     "DiagnoseError",
     "ExcelError",
     "WorkbookContentError",
+    "SheetContentError",
     "UsageError",
     "OutputFileError",
     "WorkbookLockedError",
@@ -153,6 +154,16 @@ class ExcelError(InputError):
 
 class WorkbookContentError(ExcelError):
     """A workbook whose content a rewrite would lose; it is refused and left unchanged."""
+
+
+class SheetContentError(WorkbookContentError):
+    """A sheet bearingheat wrote and would replace now holds content of the designer's (charts, notes, tables
+    ...) that the replacement would lose; refused whether the results go into the workbook or into a copy.
+    ``why`` says what the sheet holds and what to do."""
+
+    def __init__(self, message: str, why: str = ""):
+        super().__init__(message)
+        self.why = why
 
 
 class UsageError(BearingheatError):

@@ -53,7 +53,7 @@ from urllib.parse import unquote
 import pandas as pd
 from lxml import etree
 
-from bearingheat.errors import ExcelError, WorkbookContentError
+from bearingheat.errors import ExcelError, SheetContentError, WorkbookContentError
 from bearingheat.io.excel.ownership import (COMPANION_MARKS, INPUT_MARK, RESULTS_MARK, choose_companion_sheet,
                                             choose_results_sheet, mark_value, read_companions, read_marks,
                                             sheet_ref)
@@ -409,9 +409,9 @@ def _kept_setup(package: Package, sheet: _Sheet, input_sheet: str) -> dict[str, 
             if what not in lost:
                 lost.append(what)
     if lost:
-        raise _refuse(package.path, f"sheet {sheet.name!r} (bearingheat's results of {input_sheet!r}) now holds "
-                                    f"{', '.join(lost)} that replacing it would lose; move them to another sheet "
-                                    "or delete the sheet, then run again")
+        why = (f"sheet {sheet.name!r} (bearingheat's results of {input_sheet!r}) now holds {', '.join(lost)} that "
+               "replacing it would lose; move them to another sheet or delete the sheet, then run again")
+        raise SheetContentError(str(_refuse(package.path, why)), why)
     data = package.read(sheet.part)
     if data is None:
         return {}

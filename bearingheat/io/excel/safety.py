@@ -42,6 +42,8 @@ LOSSY_PARTS = {
     r"^xl/activeX/": "ActiveX controls",
     r"^xl/embeddings/": "embedded objects",
     r"^xl/threadedComments/": "threaded comments",
+    r"^_xmlsignatures/": "digital signatures",
+    r"^xl/revisions/": "change history (shared workbook)",
 }
 _VBA_PART = "xl/vbaProject.bin"
 # openpyxl warns when it reads something it will drop; the warning names it

@@ -35,7 +35,8 @@ from bearingheat.calc.duty import duty_cycle, has_duty_cycle
 from bearingheat.calc.models import DEFAULT_MODEL
 from bearingheat.calc.table import calc
 from bearingheat.calc.thermal import DEFAULT_SPEED_FACTOR_METHOD, DEFAULT_VISCOSITY_AT
-from bearingheat.errors import ExcelError, F2ChartError, InputError, VMChartError, WorkbookContentError
+from bearingheat.errors import (ExcelError, F2ChartError, InputError, SheetContentError, VMChartError,
+                               WorkbookContentError)
 from bearingheat.io.excel.ownership import (COMPANION_MARKS, INPUT_MARK, RESULTS_MARK, choose_companion_sheet,
                                             choose_results_sheet, mark_value, read_companions, read_marks)
 from bearingheat.io.excel.package import Package, open_package, write_results_in_place
@@ -269,6 +270,12 @@ def _run(source: Path, target: Path | None, edit: tuple[Package, WorkbookLock] |
                                               placeholders=placeholders, rules=sheets.rules,
                                               print_setup=sheets.print_setup, companions=sheets.companions,
                                               hidden_columns=sheets.hidden_columns)
+            except SheetContentError as exc:
+                if edit is not None:
+                    raise
+                # openpyxl would replace that sheet as well: the copy would lose the designer's content too
+                raise SheetContentError(f"{source}: -o {target} refused, {exc.why}; nothing was written",
+                                        exc.why) from exc
             except WorkbookContentError:
                 if edit is not None:
                     raise

@@ -9,7 +9,7 @@ import openpyxl
 import pytest
 from excel_helpers import digest, make_workbook, rich_workbook, vba_workbook
 
-from bearingheat.errors import OutputFileError, WorkbookContentError, WorkbookLockedError
+from bearingheat.errors import OutputFileError, SheetContentError, WorkbookContentError, WorkbookLockedError
 from bearingheat.io.excel.safety import unsupported_content, workbook_fingerprint
 from bearingheat.io.excel.workbook import calc_workbook
 
@@ -124,3 +124,35 @@ def test_in_place_refuses_a_workbook_open_in_excel(tmp_path):
 
 def test_unsupported_content_of_a_plain_workbook_is_empty(tmp_path):
     assert unsupported_content(rich_workbook(tmp_path / "rich.xlsx")) == []
+
+
+def test_a_copy_is_refused_where_the_results_sheet_holds_content_of_the_designer(tmp_path):
+    """Replacing a results sheet that the designer has given a chart would lose it in a copy too (openpyxl
+    replaces the sheet as well): -o is refused like --in-place, nothing written, the workbook unchanged."""
+    from workbook_corpus import CASES
+
+    case = CASES["refused_results_sheet_with_a_chart"](tmp_path)
+    before = digest(case.path)
+    copy = tmp_path / "copy.xlsx"
+    why = ("sheet 'Results' (bearingheat's results of 'Supports') now holds charts, images or shapes that replacing "
+           "it would lose; move them to another sheet or delete the sheet, then run again")
+    refused_copy = f"{case.path}: -o {copy} refused, {why}; nothing was written"
+    with pytest.raises(SheetContentError, match=f"^{re.escape(refused_copy)}$"):
+        calc_workbook(case.path, copy)
+    refused_in_place = f"{case.path}: --in-place refused, {why}; the file is unchanged"
+    with pytest.raises(SheetContentError, match=f"^{re.escape(refused_in_place)}"):
+        calc_workbook(case.path, in_place=True)
+    assert digest(case.path) == before and not copy.exists()
+
+
+def test_an_openpyxl_copy_says_it_lacks_the_signature_and_the_change_history(tmp_path):
+    """A signed workbook, or a shared one with a change history, is copied by openpyxl (the package edit refuses
+    them): the copy is unsigned and has no history, and the note says so."""
+    from workbook_corpus import CASES
+
+    for name, lost in (("refused_digitally_signed", ["digital signatures"]),
+                       ("refused_shared_workbook_with_history", ["change history (shared workbook)"])):
+        (tmp_path / name).mkdir()
+        case = CASES[name](tmp_path / name)
+        run = calc_workbook(case.path, tmp_path / name / "copy.xlsx")
+        assert run.dropped == lost, name
