@@ -39,11 +39,11 @@ from bearingheat.errors import (ExcelError, F2ChartError, InputError, SheetConte
                                WorkbookContentError)
 from bearingheat.io.excel.ownership import (COMPANION_MARKS, INPUT_MARK, RESULTS_MARK, choose_companion_sheet,
                                             choose_results_sheet, mark_value, read_companions, read_marks)
-from bearingheat.io.excel.package import Package, open_package, write_results_in_place
+from bearingheat.io.excel.package import InPlaceResult, Package, open_package, write_results_in_place
 from bearingheat.io.excel.reader import EXCEL_SUFFIXES, SheetInfo, contract_name, open_workbook, read_sheet
 from bearingheat.io.excel.safety import unsupported_content
 from bearingheat.io.excel.template import is_placeholder
-from bearingheat.io.excel.sheets import results_sheets
+from bearingheat.io.excel.sheets import ResultsSheets, results_sheets
 from bearingheat.io.excel.writer import atomic_save, fill_sheet, install_sheet
 from bearingheat.io.files import WorkbookLock, safe_output, workbook_lock
 from bearingheat.io.tables import write_csv
@@ -230,6 +230,30 @@ def _package_to_copy(source: Path, target: Path, keep_vba: bool) -> Package | No
     return package
 
 
+def _package_edit(source: Path, target: Path, edit: tuple[Package, WorkbookLock] | None, keep_vba: bool,
+                  info: SheetInfo, sheets: ResultsSheets, placeholders: list[str], progress: Progress | None
+                  ) -> InPlaceResult | None:
+    """The results sheets written by the surgical package edit (:mod:`.package`): into the workbook (``edit``:
+    its package and lock) or into the copy ``target``; None where openpyxl is to write the copy instead
+    (:func:`_package_to_copy`, or a refusal of the edit that does not hold for openpyxl's copy)."""
+    package, lock = edit if edit is not None else (_package_to_copy(source, target, keep_vba), None)
+    if package is None:
+        return None
+    try:
+        return write_results_in_place(package, info.sheet, sheets.table, lock=lock,
+                                      target=None if edit is not None else target, units={"row": "-"},
+                                      formulas=sheets.formulas, progress=progress, placeholders=placeholders,
+                                      rules=sheets.rules, print_setup=sheets.print_setup,
+                                      companions=sheets.companions, hidden_columns=sheets.hidden_columns)
+    except WorkbookContentError as exc:
+        if edit is not None:
+            raise
+        if isinstance(exc, SheetContentError):  # openpyxl replaces that sheet too: the copy would lose it as well
+            raise SheetContentError(f"{source}: -o {target} refused, {exc.why}; nothing was written",
+                                    exc.why) from exc
+        return None  # (a signed or structure-protected workbook ...: openpyxl writes the copy)
+
+
 def _run(source: Path, target: Path | None, edit: tuple[Package, WorkbookLock] | None, *, sheet: str | None,
          formulas: bool, model: str, n_per_method: str, f2_chart: F2Chart | str | None,
          vm_chart: VMChart | str | None, effects: FittedEffect | None,
@@ -260,26 +284,7 @@ def _run(source: Path, target: Path | None, edit: tuple[Package, WorkbookLock] |
     elif target is not None and writes_workbook:
         sheets = results_sheets(source, workbook, table, info, result, formulas=formulas, model=model, duty=duty)
         placeholders = [ws.title for ws in workbook.worksheets if is_placeholder(ws)]
-        package, lock = edit if edit is not None else (_package_to_copy(source, target, keep_vba), None)
-        done = None
-        if package is not None:
-            try:
-                done = write_results_in_place(package, info.sheet, sheets.table, lock=lock,
-                                              target=None if edit is not None else target, units={"row": "-"},
-                                              formulas=sheets.formulas, progress=progress,
-                                              placeholders=placeholders, rules=sheets.rules,
-                                              print_setup=sheets.print_setup, companions=sheets.companions,
-                                              hidden_columns=sheets.hidden_columns)
-            except SheetContentError as exc:
-                if edit is not None:
-                    raise
-                # openpyxl would replace that sheet as well: the copy would lose the designer's content too
-                raise SheetContentError(f"{source}: -o {target} refused, {exc.why}; nothing was written",
-                                        exc.why) from exc
-            except WorkbookContentError:
-                if edit is not None:
-                    raise
-                # a copy the surgical edit refuses (a signed or protected workbook ...): openpyxl writes it
+        done = _package_edit(source, target, edit, keep_vba, info, sheets, placeholders, progress)
         if done is not None:
             results_sheet, notes, companions = done.sheet, done.notes, done.companions
         else:
