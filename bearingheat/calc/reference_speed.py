@@ -19,8 +19,8 @@ from bearingheat.catalogue.friction import ResolvedBearing, resolve
 from bearingheat.catalogue.thermal import THERMAL_KIND, THERMAL_KINDS, method_refusal, reference_conditions
 from bearingheat.errors import DesignationError
 from bearingheat.kernels import friction
-from bearingheat.kernels.thermal import (HEAT_FLOW_AREA, balance_root, default_heat_transfer_coefficient, heat_flow_area,
-                                         reference_heat_flux_density, torque_coefficients)
+from bearingheat.kernels.thermal import (HEAT_FLOW_AREA, balance_root, default_heat_transfer_coefficient,
+                                         heat_flow_area, reference_heat_flux_density, torque_coefficients)
 
 __all__ = ["PAIR_REASON", "REFERENCE_KEYS", "thermal_reference_speed_details", "thermal_reference_speed_rows"]
 

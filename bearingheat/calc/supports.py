@@ -28,10 +28,10 @@ from bearingheat.catalogue.friction import LUBRICATION_F0_COLUMN, ResolvedBearin
 from bearingheat.errors import DesignationError
 
 __all__ = ["SupportArrays", "build_support_arrays", "bearing_constants", "NUMBER_INPUTS", "KEY_INPUTS",
-           "text_column", "number_column", "zero_where_blank", "text_codes", "distinct_keys", "group_codes", "text_or_default",
-           "value_codes", "text_categorical", "fill_blank", "blanks_filled", "object_column", "column_codes",
-           "coded_categorical", "first_rows", "nonblank", "text_in", "BEARING_INPUTS", "BEARING_GROUP",
-           "with_bearing_groups", "bearing_rows", "printed_size"]
+           "text_column", "number_column", "zero_where_blank", "text_codes", "distinct_keys", "group_codes",
+           "text_or_default", "value_codes", "text_categorical", "fill_blank", "blanks_filled", "object_column",
+           "column_codes", "per_distinct", "coded_categorical", "first_rows", "nonblank", "text_in", "BEARING_INPUTS",
+           "BEARING_GROUP", "with_columns", "with_bearing_groups", "bearing_rows", "printed_size"]
 
 #: numeric inputs of the friction model, in catalogue units
 NUMBER_INPUTS = ("d", "D", "B", "C0", "Y", "e", "X0", "Y0", "alpha", "f0", "f1", "f2", "n", "nu", "Fr", "Fa")
@@ -572,7 +572,7 @@ def build_support_arrays(keys: pd.DataFrame | Mapping[str, Any], numbers: dict[s
         f0_given = np.array([not np.all(np.isnan(num["f0"]))])
     one_key_row = key_rows == 1
     numbered = None
-    if isinstance(keys, pd.DataFrame) and key_rows == size:
+    if isinstance(keys, pd.DataFrame) and key_rows == size:  # (the isinstance narrows keys for the type checker)
         numbered = bearing_rows(keys)
         if numbered is not None:  # calc's frame: the keys of each bearing's first row
             bearings, first = numbered

@@ -568,7 +568,8 @@ def _one_text(text: str, size: int) -> pa.LargeStringArray:
     rows of 'ok')."""
     encoded = text.encode()
     width = len(encoded)
-    offsets = np.arange(0, (size + 1) * width, width, dtype=np.int64) if width else np.zeros(size + 1, dtype=np.int64)
+    offsets = (np.arange(0, (size + 1) * width, width, dtype=np.int64) if width
+               else np.zeros(size + 1, dtype=np.int64))
     return pa.LargeStringArray.from_buffers(size, pa.py_buffer(offsets), pa.py_buffer(encoded * size))
 
 

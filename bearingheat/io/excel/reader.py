@@ -56,6 +56,7 @@ __all__ = [
     "open_workbook",
     "with_units",
     "contract_name",
+    "defined_name_values",
     "DEFAULT_SHEET",
     "RESULTS_SHEET",
     "EXCEL_SUFFIXES",
@@ -230,6 +231,12 @@ def _looks_like_units_row(values: list[object], names: list[str | None]) -> bool
     return saw_unit
 
 
+def defined_name_values(workbook: Workbook) -> list[tuple[str, str | None]]:
+    """(name, value) of each workbook-scoped defined name of an openpyxl workbook: what :mod:`.ownership` reads
+    bearingheat's marks from."""
+    return [(name, defined.attr_text) for name, defined in workbook.defined_names.items()]
+
+
 def _choose_sheet(workbook: Workbook, sheet: str | None, path: Path) -> str:
     names = workbook.sheetnames
     if sheet is not None:
@@ -238,8 +245,7 @@ def _choose_sheet(workbook: Workbook, sheet: str | None, path: Path) -> str:
         return sheet
     if DEFAULT_SHEET in names:
         return DEFAULT_SHEET
-    owned = {results for results, _ in read_marks((n, d.attr_text) for n, d in workbook.defined_names.items())
-             .values() if results is not None}
+    owned = {results for results, _ in read_marks(defined_name_values(workbook)).values() if results is not None}
     for name in names:
         ws = workbook[name]
         if (name in owned or name.endswith(RESULTS_SHEET) or name.endswith("results")

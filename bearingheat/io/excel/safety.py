@@ -26,6 +26,7 @@ from openpyxl import load_workbook
 
 from bearingheat.errors import ExcelError, WorkbookContentError
 from bearingheat.io.excel.ownership import INPUT_MARK, RESULTS_MARK, read_marks
+from bearingheat.io.excel.reader import defined_name_values
 
 __all__ = ["unsupported_content", "refuse_lossy_rewrite", "workbook_fingerprint", "LOSSY_PARTS"]
 
@@ -116,7 +117,7 @@ def workbook_fingerprint(workbook_or_path, *, skip_sheets=()) -> dict:
     workbook = workbook_or_path
     if not hasattr(workbook_or_path, "worksheets"):
         workbook = load_workbook(workbook_or_path, keep_vba=str(workbook_or_path).endswith(".xlsm"))
-    marks = read_marks((name, dn.attr_text) for name, dn in workbook.defined_names.items())
+    marks = read_marks(defined_name_values(workbook))
     skipped_marks = {f"{prefix}{k}".lower() for k, (results, _) in marks.items() if results in skip_sheets
                      for prefix in (RESULTS_MARK, INPUT_MARK)}
     out: dict = {

@@ -40,7 +40,8 @@ from bearingheat.errors import (ExcelError, F2ChartError, InputError, SheetConte
 from bearingheat.io.excel.ownership import (COMPANION_MARKS, INPUT_MARK, RESULTS_MARK, choose_companion_sheet,
                                             choose_results_sheet, mark_value, read_companions, read_marks)
 from bearingheat.io.excel.package import InPlaceResult, Package, open_package, write_results_in_place
-from bearingheat.io.excel.reader import EXCEL_SUFFIXES, SheetInfo, contract_name, open_workbook, read_sheet
+from bearingheat.io.excel.reader import (EXCEL_SUFFIXES, SheetInfo, contract_name, defined_name_values,
+                                         open_workbook, read_sheet)
 from bearingheat.io.excel.safety import unsupported_content
 from bearingheat.io.excel.template import is_placeholder
 from bearingheat.io.excel.sheets import ResultsSheets, results_sheets
@@ -131,7 +132,7 @@ def _mark_results_sheet(workbook: Workbook, input_sheet: str, placeholders: list
     """(results sheet name, note, companion sheets by role) for an openpyxl workbook (the -o copy), with their
     ownership marks set; ``roles`` maps the companions' roles to the names they take when new."""
     names = workbook.defined_names
-    pairs = [(name, defined.attr_text) for name, defined in names.items()]
+    pairs = defined_name_values(workbook)
     marks, owned = read_marks(pairs), read_companions(pairs)
     name, _, note = choose_results_sheet(workbook.sheetnames, marks, input_sheet, placeholders=placeholders)
     present = {s.casefold() for s in workbook.sheetnames} | {name.casefold()}

@@ -37,7 +37,7 @@ from bearingheat.io.excel import style as st
 from bearingheat.io.excel.freshness import ConditionalRule
 from bearingheat.io.excel.ownership import TABLE_MARK, mark_value, table_mark_slots, written_sheets
 from bearingheat.io.excel.reader import (DEFAULT_SHEET, EXCEL_SUFFIXES, RESULTS_SHEET, SheetInfo, contract_name,
-                                         open_workbook)
+                                         defined_name_values, open_workbook)
 from bearingheat.io.excel.printing import PrintSetup
 from bearingheat.io.excel.style import number_format
 from bearingheat.io.excel.safety import refuse_lossy_rewrite
@@ -335,8 +335,7 @@ def write_results(results: pd.DataFrame, path: str | os.PathLike[str], *, sheet:
         raise ExcelError(f"{path}: an Excel workbook ends in .xlsx or .xlsm")
     if path.exists():
         workbook = open_workbook(path, keep_vba=path.suffix.lower() == ".xlsm")
-        marks = [(name, defined.attr_text) for name, defined in workbook.defined_names.items()]
-        written = written_sheets(marks)
+        written = written_sheets(defined_name_values(workbook))
         present = next((name for name in workbook.sheetnames if name.casefold() == sheet.casefold()), None)
         if present is not None and present.casefold() not in written:
             raise ExcelError(f"{path}: sheet {present!r} is not a sheet bearingheat wrote (it has no bearingheat "
