@@ -3,9 +3,10 @@
 - :mod:`.reader`: :func:`read_supports` -> (DataFrame, :class:`SheetInfo`), :func:`with_units`
 - :mod:`.writer`: :func:`write_results`, :func:`write_results_workbook`, :func:`atomic_save`
 - :mod:`.workbook`: :func:`calc_workbook` (read -> calc -> write) -> :class:`WorkbookRun`
-- :mod:`.package`: ``--in-place`` as a surgical edit of the OPC package (only the results sheet is
-  written; :mod:`.sheetxml` renders it, :mod:`.stylesheet` appends its styles, :mod:`.ownership`
-  marks it as bearingheat's)
+- :mod:`.package`: ``--in-place`` (and ``write_results`` on an existing workbook) as a surgical edit
+  of the OPC package (only bearingheat's sheet is written; :mod:`.sheetxml` renders it from the
+  layout of :mod:`.layout`, :mod:`.stylesheet` appends its styles, :mod:`.ownership` marks it as
+  bearingheat's)
 - :mod:`.sheets`: what calc writes for an input sheet: the results sheet and its companions
 - :mod:`.formulas`: the live Excel formulas of ``calc --formulas``
 - :mod:`.freshness`: the hidden copy of the inputs and the live check that marks stale results

@@ -35,7 +35,7 @@ from collections.abc import Collection, Iterable, Mapping
 
 __all__ = ["RESULTS_MARK", "INPUT_MARK", "COMPANION_MARKS", "TABLE_MARK", "MAX_SHEET_NAME", "mark_value",
            "sheet_of_mark", "read_marks", "read_companions", "written_sheets", "table_mark_slots",
-           "choose_results_sheet", "choose_companion_sheet", "candidate_names", "sheet_ref"]
+           "choose_results_sheet", "choose_companion_sheet", "candidate_names", "sheet_ref", "sheet_name_problem"]
 
 RESULTS_MARK = "_bearingheat_results_"
 INPUT_MARK = "_bearingheat_input_"
@@ -130,6 +130,35 @@ def written_sheets(names: Iterable[tuple[str, str | None]]) -> dict[str, str]:
 def table_mark_slots(names: Iterable[str]) -> set[int]:
     """The numbers k of the ``_bearingheat_table_<k>`` marks among defined names."""
     return {int(match.group(1)) for name in names if (match := _TABLE_NAME.match(name or ""))}
+
+
+#: the characters Excel does not allow in a sheet name
+_NOT_IN_SHEET_NAMES = "\\/?*:[]"
+
+
+def sheet_name_problem(name: str) -> str | None:
+    """Why Excel would not take ``name`` as a sheet name; None when it would.
+
+    >>> print(sheet_name_problem("Loads"))
+    None
+    >>> print(sheet_name_problem("Loads/2"))
+    has the character '/', which Excel does not allow in a sheet name (none of \\ / ? * : [ ])
+    >>> sheet_name_problem("Gearbox G-17 intermediate shaft loads")
+    'has 37 characters; Excel allows at most 31'
+    """
+    if not name.strip():
+        return "is blank; a sheet needs a name"
+    if len(name) > MAX_SHEET_NAME:
+        return f"has {len(name)} characters; Excel allows at most {MAX_SHEET_NAME}"
+    bad = next((c for c in name if c in _NOT_IN_SHEET_NAMES), None)
+    if bad is not None:
+        return (f"has the character {bad!r}, which Excel does not allow in a sheet name (none of "
+                f"{' '.join(_NOT_IN_SHEET_NAMES)})")
+    if name.startswith("'") or name.endswith("'"):
+        return "begins or ends with an apostrophe, which Excel does not allow"
+    if name.casefold() == "history":
+        return "is reserved by Excel (for a shared workbook's change history)"
+    return None
 
 
 def choose_companion_sheet(sheets: list[str], current: str | None, base: str, taken: Collection[str] = ()

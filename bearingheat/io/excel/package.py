@@ -1,9 +1,11 @@
 """``calc --in-place`` as a surgical edit of the workbook's OPC package: only bearingheat's sheets are written.
 
 ``calc -o`` writes the same edit to a new file (``target``): a copy that
-keeps every part of the workbook too.
+keeps every part of the workbook too. :func:`write_table_in_place` is the
+same edit for one table sheet
+(:func:`bearingheat.io.excel.writer.write_results` on an existing workbook).
 
-An .xlsx or .xlsm file is a ZIP package of parts (ECMA-376 Part 2, OPC).
+An .xlsx or .xlsm file is a ZIP package of parts (ECMA-376 Part 2, OPC; read and written by :mod:`.opc`).
 :func:`write_results_in_place` adds or replaces the worksheet part of the
 results sheet, and of its companions where there are any (the hidden copy
 of the inputs of ``--formulas``, the duty cycle summary:
@@ -38,43 +40,36 @@ notes, tables or other parts of its own.
 """
 from __future__ import annotations
 
-import io
 import posixpath
 import re
 import os
-import shutil
-import zipfile
 from collections.abc import Callable, Collection, Sequence
+from collections.abc import Set as AbstractSet
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Protocol
-from urllib.parse import unquote
 
 import pandas as pd
 from lxml import etree
 
-from bearingheat.errors import ExcelError, SheetContentError, WorkbookContentError
-from bearingheat.io.excel.ownership import (COMPANION_MARKS, INPUT_MARK, RESULTS_MARK, choose_companion_sheet,
-                                            choose_results_sheet, mark_value, read_companions, read_marks,
-                                            sheet_ref)
+from bearingheat.errors import ExcelError, SheetContentError
+from bearingheat.io.excel.ownership import (COMPANION_MARKS, INPUT_MARK, RESULTS_MARK, TABLE_MARK,
+                                            choose_companion_sheet, choose_results_sheet, mark_value,
+                                            read_companions, read_marks, sheet_ref, table_mark_slots,
+                                            written_sheets)
 from bearingheat.io.excel.freshness import ConditionalRule
+from bearingheat.io.excel.opc import (MAIN, PKG_REL, CT, REL, STYLES_TYPE, WORKSHEET_TYPE, Package, parse_part,
+                                      refusal, rels_part, resolve_target, write_package, xml_bytes)
 from bearingheat.io.excel.printing import PrintSetup, is_bearingheat_header
 from bearingheat.io.excel.sheetxml import results_sheet_xml
 from bearingheat.io.excel.stylesheet import StyleSheet
-from bearingheat.io.files import WorkbookLock, atomic_write
+from bearingheat.io.files import WorkbookLock
 
 if TYPE_CHECKING:
     from bearingheat.io.console import Progress
 
-__all__ = ["Package", "open_package", "write_results_in_place", "InPlaceResult"]
+__all__ = ["write_results_in_place", "write_table_in_place", "InPlaceResult"]
 
-MAIN = "http://schemas.openxmlformats.org/spreadsheetml/2006/main"
-REL = "http://schemas.openxmlformats.org/officeDocument/2006/relationships"
-PKG_REL = "http://schemas.openxmlformats.org/package/2006/relationships"
-CT = "http://schemas.openxmlformats.org/package/2006/content-types"
-STRICT = "http://purl.oclc.org/ooxml/"
-WORKSHEET_TYPE = "application/vnd.openxmlformats-officedocument.spreadsheetml.worksheet+xml"
-STYLES_TYPE = "application/vnd.openxmlformats-officedocument.spreadsheetml.styles+xml"
 _M, _R, _P, _C = (f"{{{ns}}}" for ns in (MAIN, REL, PKG_REL, CT))
 #: the order of the children of <workbook> (CT_Workbook)
 _WORKBOOK_ORDER = ("fileVersion", "fileSharing", "workbookPr", "workbookProtection", "bookViews", "sheets",
@@ -87,130 +82,7 @@ _KEPT_RELATIONSHIPS = {"printerSettings"}
 _WHAT = {"drawing": "charts, images or shapes", "comments": "notes", "vmlDrawing": "notes or form controls",
          "table": "tables", "hyperlink": "hyperlinks", "pivotTable": "pivot tables", "threadedComment":
          "threaded comments", "control": "form controls", "oleObject": "embedded objects"}
-_PARSER = etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=True)
-_OLE_MAGIC = b"\xd0\xcf\x11\xe0\xa1\xb1\x1a\xe1"
 
-
-def _parse(data: bytes, where: str, path: str | os.PathLike[str]) -> etree._Element:
-    try:
-        return etree.fromstring(data, _PARSER)
-    except etree.XMLSyntaxError as exc:
-        raise ExcelError(f"{path}: damaged workbook, the part {where} cannot be read ({exc})") from exc
-
-
-def _xml(root: etree._Element) -> bytes:
-    return etree.tostring(root, xml_declaration=True, encoding="UTF-8", standalone=True)
-
-
-def rels_part(part: str) -> str:
-    """The relationships part of ``part``: xl/workbook.xml -> xl/_rels/workbook.xml.rels."""
-    folder, name = posixpath.split(part)
-    return posixpath.join(folder, "_rels", name + ".rels")
-
-
-def _resolve(source: str, target: str) -> str:
-    """The part a relationship of ``source`` targets (relative to its folder, or absolute from the root)."""
-    target = unquote(target)
-    if target.startswith("/"):
-        return posixpath.normpath(target.lstrip("/"))
-    return posixpath.normpath(posixpath.join(posixpath.dirname(source), target))
-
-
-@dataclass
-class Package:
-    """A workbook file read once: its bytes, ZIP members (in order) and the workbook part's name."""
-
-    path: Path
-    data: bytes
-    infos: list[zipfile.ZipInfo]
-    workbook: str
-    _parts: dict[str, bytes] = field(default_factory=dict)
-
-    def names(self) -> list[str]:
-        return [info.filename for info in self.infos]
-
-    def find(self, part: str) -> str | None:
-        """The member name of ``part`` (OPC part names ignore case), None when absent."""
-        wanted = part.lower()
-        return next((n for n in self.names() if n.lower() == wanted), None)
-
-    def read(self, part: str) -> bytes | None:
-        name = self.find(part)
-        if name is None:
-            return None
-        if name not in self._parts:
-            try:
-                with zipfile.ZipFile(io.BytesIO(self.data)) as archive:
-                    self._parts[name] = archive.read(name)
-            except (zipfile.BadZipFile, OSError, EOFError) as exc:
-                raise ExcelError(f"{self.path}: damaged workbook, the part {name} cannot be read ({exc})") from exc
-        return self._parts[name]
-
-    def required(self, part: str) -> bytes:
-        """The bytes of a part the package must have (:func:`open_package` checked it is there)."""
-        data = self.read(part)
-        if data is None:
-            raise ExcelError(f"{self.path}: damaged workbook, the part {part} is missing")
-        return data
-
-    def relationships(self, part: str) -> list[etree._Element]:
-        data = self.read(rels_part(part))
-        return [] if data is None else list(_parse(data, rels_part(part), self.path).iter(_P + "Relationship"))
-
-
-def _refuse(path: str | os.PathLike[str], why: str) -> WorkbookContentError:
-    return WorkbookContentError(f"{path}: --in-place refused, {why}; the file is unchanged. Write the results to "
-                                "a new workbook with -o OUTPUT.xlsx instead")
-
-
-def open_package(path: str | os.PathLike[str]) -> Package:
-    """The workbook at ``path`` as a package that :func:`write_results_in_place` can edit, or a refusal.
-
-    :class:`ExcelError` for a file that is not a workbook (or is damaged),
-    :class:`WorkbookContentError` for a workbook that cannot be edited
-    without losing something (module docstring).
-    """
-    path = Path(path)
-    data = path.read_bytes()
-    if data.startswith(_OLE_MAGIC):
-        if "EncryptionInfo".encode("utf-16-le") in data:
-            raise _refuse(path, "the workbook is encrypted (it has a password to open); bearingheat cannot "
-                                "edit it without the password")
-        raise ExcelError(f"{path}: not a readable Excel workbook (an old binary .xls file, not .xlsx)")
-    try:
-        with zipfile.ZipFile(io.BytesIO(data)) as archive:
-            infos = archive.infolist()
-    except (zipfile.BadZipFile, OSError, EOFError) as exc:
-        raise ExcelError(f"{path}: not a readable Excel workbook ({exc})") from exc
-    lowered = [i.filename.lower() for i in infos]
-    if len(set(lowered)) != len(lowered):
-        raise ExcelError(f"{path}: damaged workbook, a part appears twice in the ZIP file")
-    package = Package(path, data, infos, "")
-    if package.find("[Content_Types].xml") is None or package.find("_rels/.rels") is None:
-        raise ExcelError(f"{path}: not a readable Excel workbook (no [Content_Types].xml or _rels/.rels)")
-    office = [r for r in package.relationships("") if r.get("Type", "").endswith("/officeDocument")]
-    if not office:
-        raise ExcelError(f"{path}: not a readable Excel workbook (no workbook part)")
-    if office[0].get("Type", "").startswith(STRICT):
-        raise _refuse(path, "the workbook is saved as Strict Open XML, which bearingheat does not edit (save it "
-                            "in Excel as 'Excel Workbook (*.xlsx)')")
-    package.workbook = _resolve("", office[0].get("Target", ""))
-    workbook_data = package.read(package.workbook)
-    if workbook_data is None:
-        raise ExcelError(f"{path}: not a readable Excel workbook (its workbook part {package.workbook} is missing)")
-    if any(n.startswith("_xmlsignatures/") for n in lowered):
-        raise _refuse(path, "the workbook is digitally signed and any change would break its signature")
-    if any(n.startswith(posixpath.dirname(package.workbook).lower() + "/revisions/") for n in lowered):
-        raise _refuse(path, "the workbook is a shared workbook with a change history (xl/revisions), which an edit "
-                            "outside Excel would not be part of")
-    root = _parse(workbook_data, package.workbook, path)
-    if root.tag != _M + "workbook":
-        raise _refuse(path, f"its workbook part is not SpreadsheetML Transitional ({etree.QName(root).namespace})")
-    sharing = root.find(_M + "fileSharing")
-    if sharing is not None and (sharing.get("reservationPassword") or sharing.get("hashValue")):
-        raise _refuse(path, "the workbook has a password to modify (write reservation), which bearingheat does "
-                            "not bypass")
-    return package
 
 
 @dataclass
@@ -240,13 +112,13 @@ class _Workbook:
     def __init__(self, package: Package):
         self.package = package
         self.part = package.workbook
-        self.root = _parse(package.required(self.part), self.part, package.path)
+        self.root = parse_part(package.required(self.part), self.part, package.path)
         self.rels_name = rels_part(self.part)
         rels_data = package.read(self.rels_name)
         if rels_data is None:
             raise ExcelError(f"{package.path}: damaged workbook, {self.rels_name} is missing")
-        self.rels = _parse(rels_data, self.rels_name, package.path)
-        self.targets = {r.get("Id"): (r.get("Type", ""), _resolve(self.part, r.get("Target", "")))
+        self.rels = parse_part(rels_data, self.rels_name, package.path)
+        self.targets = {r.get("Id"): (r.get("Type", ""), resolve_target(self.part, r.get("Target", "")))
                         for r in self.rels.iter(_P + "Relationship") if r.get("TargetMode") != "External"}
         sheets = self.root.find(_M + "sheets")
         if sheets is None:
@@ -304,9 +176,13 @@ class _Workbook:
                 else:
                     wanted.pop(name)
         for name, value in wanted.items():
-            element = etree.SubElement(names, _M + "definedName", {"name": name, "hidden": "1"})
-            element.text = value
-            self.changed = True
+            self.add_mark(name, value)
+
+    def add_mark(self, name: str, value: str) -> None:
+        """A hidden, workbook-scoped defined name (a mark of :mod:`.ownership`)."""
+        element = etree.SubElement(self.ensure_child("definedNames"), _M + "definedName", {"name": name, "hidden": "1"})
+        element.text = value
+        self.changed = True
 
     def print_titles(self, sheet: _Sheet, value: str) -> None:
         """Give ``sheet`` print titles (``_xlnm.Print_Titles``) unless it has some."""
@@ -363,7 +239,7 @@ class _Workbook:
 class _ContentTypes:
     def __init__(self, package: Package):
         self.name = package.find("[Content_Types].xml") or "[Content_Types].xml"
-        self.root = _parse(package.required(self.name), self.name, package.path)
+        self.root = parse_part(package.required(self.name), self.name, package.path)
         self.changed = False
 
     def override(self, part: str, content_type: str) -> None:
@@ -397,7 +273,7 @@ def _element_text(element: etree._Element) -> str:
                   lambda m: m.group(0) if (m.group(1) == ":r") != (m.group(2) == REL) else "", text, count=2)
 
 
-def _kept_setup(package: Package, sheet: _Sheet, input_sheet: str) -> dict[str, str]:
+def _kept_setup(package: Package, sheet: _Sheet, whose: str) -> dict[str, str]:
     """The print setup and protection XML of a sheet of bearingheat's about to be replaced, by element name
     (and sheetPr's pageSetUpPr), without the page header bearingheat wrote (it is written anew); or a refusal
     naming what the sheet holds that the replacement would lose."""
@@ -409,13 +285,13 @@ def _kept_setup(package: Package, sheet: _Sheet, input_sheet: str) -> dict[str, 
             if what not in lost:
                 lost.append(what)
     if lost:
-        why = (f"sheet {sheet.name!r} (bearingheat's results of {input_sheet!r}) now holds {', '.join(lost)} that "
-               "replacing it would lose; move them to another sheet or delete the sheet, then run again")
-        raise SheetContentError(str(_refuse(package.path, why)), why)
+        why = (f"sheet {sheet.name!r} ({whose}) now holds {', '.join(lost)} that replacing it would lose; move them "
+               "to another sheet or delete the sheet, then run again")
+        raise SheetContentError(str(refusal(package.path, why, package.action)), why)
     data = package.read(sheet.part)
     if data is None:
         return {}
-    root = _parse(data, sheet.part, package.path)
+    root = parse_part(data, sheet.part, package.path)
     kept = {etree.QName(child).localname: _element_text(child)
             for child in root if isinstance(child.tag, str) and etree.QName(child).localname in _KEPT_SHEET_ELEMENTS}
     if "headerFooter" in kept and is_bearingheat_header(kept["headerFooter"]):
@@ -429,7 +305,7 @@ def _kept_setup(package: Package, sheet: _Sheet, input_sheet: str) -> dict[str, 
 
 def _drop_from_calc_chain(data: bytes, sheet_id: int, where: str, path: str | os.PathLike[str]) -> bytes | None:
     """The calc chain without the cells of sheet ``sheet_id`` (None: nothing is left; ``data``: nothing changed)."""
-    root = _parse(data, where, path)
+    root = parse_part(data, where, path)
     cells = [c for c in root if isinstance(c.tag, str) and etree.QName(c).localname == "c"]
     effective: list[int | None] = []
     current = None
@@ -447,7 +323,7 @@ def _drop_from_calc_chain(data: bytes, sheet_id: int, where: str, path: str | os
         if sheet != previous and cell.get("i") is None:
             cell.set("i", str(sheet))
         previous = sheet
-    return _xml(root) if any(s != sheet_id for s in effective) else None
+    return xml_bytes(root) if any(s != sheet_id for s in effective) else None
 
 
 def _drop_sheet_from_chain(package: Package, workbook: _Workbook, types: _ContentTypes, sheet: _Sheet,
@@ -518,6 +394,7 @@ def write_results_in_place(package: Package, input_sheet: str, table: pd.DataFra
     :class:`InPlaceResult`.
     """
     workbook = _Workbook(package)
+    whose = f"bearingheat's results of {input_sheet!r}"
     marks = read_marks(workbook.names())
     owned = read_companions(workbook.names())
     present = {s.name.casefold() for s in workbook.sheets}
@@ -534,111 +411,132 @@ def write_results_in_place(package: Package, input_sheet: str, table: pd.DataFra
         chosen[companion.role] = choose_companion_sheet(
             [s.name for s in workbook.sheets], owned.get(k, {}).get(companion.role), companion.base,
             [name, input_sheet] + [n for n, _ in chosen.values()])
-    protection = workbook.child("workbookProtection")
-    adds = not replace or any(not again for _, again in chosen.values())
-    if adds and protection is not None and protection.get("lockStructure") in ("1", "true"):
-        raise _refuse(package.path, "the workbook's structure is protected (Review > Protect Workbook), so no sheet "
-                                    "may be added to it")
-    changes: dict[str, bytes] = {}
-    removed: set[str] = set()
-    types = _ContentTypes(package)
-    styles_rel = workbook.relationship("styles")
-    styles_part = styles_rel[1] if styles_rel else posixpath.join(posixpath.dirname(workbook.part), "styles.xml")
-    styles = StyleSheet(package.read(styles_part) if styles_rel else None)
+    edit = _Edit(package, workbook)
+    if not replace or any(not again for _, again in chosen.values()):
+        edit.refuse_added_sheet()
     kept: dict[str, str] = {}
     if replace:
         sheet = next(s for s in workbook.sheets if s.name == name)
-        kept = _kept_setup(package, sheet, input_sheet)
-        if package.find(sheet.part) is None:  # a sheet entry whose part is missing: the part is written anew
-            types.override(sheet.part, WORKSHEET_TYPE)
-        _drop_sheet_from_chain(package, workbook, types, sheet, changes, removed)
+        kept = edit.rewrite(sheet, whose)
     else:
-        sheet = workbook.add_sheet(name, _new_sheet_part(package, workbook.part))
-        types.override(sheet.part, WORKSHEET_TYPE)
+        sheet = edit.add_sheet(name)
     names = {role: sheet_name for role, (sheet_name, _) in chosen.items()}
     for companion in companions:
         companion_name, again = chosen[companion.role]
         if again:
             part = next(s for s in workbook.sheets if s.name == companion_name)
-            _kept_setup(package, part, input_sheet)  # refused when the designer gave it charts, notes ...
-            if package.find(part.part) is None:
-                types.override(part.part, WORKSHEET_TYPE)
-            _drop_sheet_from_chain(package, workbook, types, part, changes, removed)
+            edit.rewrite(part, whose)  # refused when the designer gave it charts, notes ...
             if companion.hidden and part.element.get("state") != "hidden":
                 part.element.set("state", "hidden")
                 workbook.changed = True
         else:
-            part = workbook.add_sheet(companion_name, _new_sheet_part(package, workbook.part, [sheet.part, *changes]),
-                                      hidden=companion.hidden)
-            types.override(part.part, WORKSHEET_TYPE)
-        changes[part.part] = companion.render(styles)
+            part = edit.add_sheet(companion_name, hidden=companion.hidden, reserved=[sheet.part])
+        edit.changes[part.part] = companion.render(edit.styles)
     cell_formulas = formulas(names) if callable(formulas) else formulas
-    changes[sheet.part] = results_sheet_xml(table, styles.index, units=units, formulas=cell_formulas, kept=kept,
-                                            print_setup=print_setup, rules=rules, dxf_index=styles.dxf,
-                                            progress=progress, title=name, hidden_columns=hidden_columns)
+    edit.changes[sheet.part] = results_sheet_xml(table, edit.styles.index, units=units, formulas=cell_formulas,
+                                                 kept=kept, print_setup=print_setup, rules=rules,
+                                                 dxf_index=edit.styles.dxf, progress=progress, title=name,
+                                                 hidden_columns=hidden_columns)
     workbook.set_marks(k, name, input_sheet, [j for j in stale if j != k], names)
     if print_setup is not None:
         workbook.print_titles(sheet, print_setup.print_titles(sheet_ref(name)))
-    workbook.full_calc_on_load()
-    if styles.changed:
-        changes[styles_part] = styles.to_bytes()
-        if styles_rel is None:
-            workbook.add_relationship("styles", styles_part)
-            types.override(styles_part, STYLES_TYPE)
-    if workbook.changed:
-        changes[workbook.part] = _xml(workbook.root)
-    if workbook.rels_changed:
-        changes[workbook.rels_name] = _xml(workbook.rels)
-    if types.changed:
-        changes[types.name] = _xml(types.root)
-    written = _write(package, changes, removed, lock, package.path if target is None else target)
+    written = edit.write(lock, package.path if target is None else target)
     return InPlaceResult(name, replace, [note] if note else [], written, names)
 
 
-def _zip_info(info: zipfile.ZipInfo, compress_type: int | None = None) -> zipfile.ZipInfo:
-    copy = zipfile.ZipInfo(info.filename, info.date_time)
-    copy.compress_type = info.compress_type if compress_type is None else compress_type
-    copy.external_attr = info.external_attr
-    copy.create_system = info.create_system
-    copy.comment = info.comment
-    copy.file_size = info.file_size
-    return copy
+def write_table_in_place(package: Package, sheet: str, table: pd.DataFrame, *, lock: WorkbookLock | None,
+                         units: dict[str, str] | None = None, input_columns: AbstractSet[str] = frozenset(),
+                         formulas: CellFormulas | None = None) -> list[str]:
+    """Write ``table`` as sheet ``sheet`` into the workbook of ``package``
+    (:func:`bearingheat.io.excel.writer.write_results` on an existing workbook); the parts written.
+
+    A sheet of that name (compared without case) is replaced at its place and
+    under its own name where bearingheat wrote it (:func:`.ownership.written_sheets`),
+    keeping its print setup; one the designer made is refused
+    (:class:`ExcelError`), and so is a sheet of bearingheat's that the designer
+    has since given charts, notes or tables (:class:`SheetContentError`).
+    Otherwise the sheet is added after the last one and marked
+    ``_bearingheat_table_<k>``. Every other part is kept byte for byte, as in
+    :func:`write_results_in_place`; ``lock`` is checked before the file is
+    replaced.
+    """
+    workbook = _Workbook(package)
+    names = workbook.names()
+    written = written_sheets(names)
+    present = next((s for s in workbook.sheets if s.name.casefold() == sheet.casefold()), None)
+    if present is not None and present.name.casefold() not in written:
+        raise ExcelError(f"{package.path}: sheet {present.name!r} is not a sheet bearingheat wrote (it has no "
+                         "bearingheat mark), so it is kept; the file is unchanged. Write the table to a sheet of "
+                         "another name")
+    edit = _Edit(package, workbook)
+    if present is not None:
+        kept = edit.rewrite(present, "a sheet bearingheat wrote")
+        target = present
+    else:
+        edit.refuse_added_sheet()
+        target, kept = edit.add_sheet(sheet), {}
+        slot = 1 + max(table_mark_slots(name for name, _ in names), default=0)
+        workbook.add_mark(f"{TABLE_MARK}{slot}", mark_value(target.name))
+    edit.changes[target.part] = results_sheet_xml(table, edit.styles.index, units=units, formulas=formulas,
+                                                  kept=kept, dxf_index=edit.styles.dxf, title=target.name,
+                                                  input_columns=input_columns, tab_color=None)
+    return edit.write(lock, package.path)
 
 
-def _write(package: Package, changes: dict[str, bytes], removed: set[str], lock: WorkbookLock | None,
-           target: Path) -> list[str]:
-    """Write the edited package to ``target`` (atomically, after the lock's last check); the parts written."""
-    members = {part: package.find(part) for part in changes}
-    existing = {member: changes[part] for part, member in members.items() if member is not None}
-    new = {part: changes[part] for part, member in members.items() if member is None}
-    names = package.names()
-    sheets = [i for i, n in enumerate(names) if re.search(r"worksheets/[^/]+\.xml$", n)]
-    insert_after = sheets[-1] if sheets else len(names) - 1
+class _Edit:
+    """The parts an edit of ``package`` writes (by part name) or removes, and the workbook's styles; written out
+    by :meth:`write` with every other part as it was."""
 
-    def write(temp: Path) -> None:
-        with zipfile.ZipFile(io.BytesIO(package.data)) as source, \
-                zipfile.ZipFile(temp, "w", zipfile.ZIP_DEFLATED, allowZip64=True) as target:
-            target.comment = source.comment
-            for index, info in enumerate(package.infos):
-                if info.filename in removed:
-                    pass
-                elif info.filename in existing:
-                    target.writestr(_zip_info(info, zipfile.ZIP_DEFLATED), existing[info.filename])
-                else:
-                    with source.open(info) as src, target.open(_zip_info(info), "w",
-                                                               force_zip64=info.file_size >= 1 << 31) as dst:
-                        shutil.copyfileobj(src, dst, 1 << 20)
-                if index == insert_after:
-                    for part, data in new.items():
-                        stamp = zipfile.ZipInfo(part, info.date_time if info.date_time[0] >= 1980
-                                                else (1980, 1, 1, 0, 0, 0))
-                        stamp.compress_type = zipfile.ZIP_DEFLATED
-                        target.writestr(stamp, data)
-        if lock is not None:
-            lock.check_unchanged()
+    def __init__(self, package: Package, workbook: _Workbook):
+        self.package, self.workbook = package, workbook
+        self.changes: dict[str, bytes] = {}
+        self.removed: set[str] = set()
+        self.types = _ContentTypes(package)
+        self.styles_rel = workbook.relationship("styles")
+        self.styles_part = (self.styles_rel[1] if self.styles_rel
+                            else posixpath.join(posixpath.dirname(workbook.part), "styles.xml"))
+        self.styles = StyleSheet(package.read(self.styles_part) if self.styles_rel else None)
 
-    try:
-        atomic_write(target, write)
-    except (zipfile.BadZipFile, EOFError) as exc:
-        raise ExcelError(f"{package.path}: damaged workbook, a part cannot be read ({exc})") from exc
-    return sorted(set(existing) | set(new) | removed)
+    def refuse_added_sheet(self) -> None:
+        """Refuse the edit when the workbook's structure is protected: no sheet may be added."""
+        protection = self.workbook.child("workbookProtection")
+        if protection is not None and protection.get("lockStructure") in ("1", "true"):
+            raise refusal(self.package.path, "the workbook's structure is protected (Review > Protect Workbook), so "
+                                             "no sheet may be added to it", self.package.action)
+
+    def rewrite(self, sheet: _Sheet, whose: str) -> dict[str, str]:
+        """Prepare a sheet of bearingheat's (``whose``: whose it is, for a refusal) to be written anew: its print
+        setup and protection to keep (:func:`_kept_setup`, which refuses a sheet holding the designer's charts,
+        notes ...), its formula cells out of the calc chain."""
+        kept = _kept_setup(self.package, sheet, whose)
+        if self.package.find(sheet.part) is None:  # a sheet entry whose part is missing: the part is written anew
+            self.types.override(sheet.part, WORKSHEET_TYPE)
+        _drop_sheet_from_chain(self.package, self.workbook, self.types, sheet, self.changes, self.removed)
+        return kept
+
+    def add_sheet(self, name: str, hidden: bool = False, reserved: Collection[str] = ()) -> _Sheet:
+        """A new sheet after the last one, in a new worksheet part (not one of ``reserved`` or written here)."""
+        part = _new_sheet_part(self.package, self.workbook.part, [*reserved, *self.changes])
+        sheet = self.workbook.add_sheet(name, part, hidden=hidden)
+        self.types.override(sheet.part, WORKSHEET_TYPE)
+        return sheet
+
+    def write(self, lock: WorkbookLock | None, target: Path) -> list[str]:
+        """Recalculate on load, add the styles, workbook, relationships and content types that changed, and
+        write the package to ``target`` (:func:`bearingheat.io.excel.opc.write_package`); the parts written."""
+        workbook, changes = self.workbook, self.changes
+        workbook.full_calc_on_load()
+        if self.styles.changed:
+            changes[self.styles_part] = self.styles.to_bytes()
+            if self.styles_rel is None:
+                workbook.add_relationship("styles", self.styles_part)
+                self.types.override(self.styles_part, STYLES_TYPE)
+        if workbook.changed:
+            changes[workbook.part] = xml_bytes(workbook.root)
+        if workbook.rels_changed:
+            changes[workbook.rels_name] = xml_bytes(workbook.rels)
+        if self.types.changed:
+            changes[self.types.name] = xml_bytes(self.types.root)
+        return write_package(self.package, changes, self.removed, lock, target)
+
+

@@ -9,8 +9,9 @@ read are lost); drawing shapes, pivot tables, slicers, form controls,
 ActiveX controls, embedded objects, threaded comments and the Excel 2010+
 extensions of a sheet (``x14`` validations and formats, sparklines) are
 lost, and VBA survives only with ``keep_vba``. :func:`unsupported_content` names
-what a rewrite would drop, so ``--in-place`` can refuse before touching
-the file.
+what such a rewrite drops, so that ``calc -o`` says what its openpyxl copy
+lacks where the part-by-part edit of :mod:`bearingheat.io.excel.package`
+is refused (``--in-place`` and ``write_results`` only ever use that edit).
 
 :func:`workbook_fingerprint` reduces a workbook to comparable data (every
 cell with its value and style, names, validations, comments, widths ...);
@@ -20,15 +21,13 @@ from __future__ import annotations
 
 import re
 import zipfile
-from pathlib import Path
 
 from openpyxl import load_workbook
 
-from bearingheat.errors import ExcelError, WorkbookContentError
 from bearingheat.io.excel.ownership import INPUT_MARK, RESULTS_MARK, read_marks
 from bearingheat.io.excel.reader import defined_name_values
 
-__all__ = ["unsupported_content", "refuse_lossy_rewrite", "workbook_fingerprint", "LOSSY_PARTS"]
+__all__ = ["unsupported_content", "workbook_fingerprint", "LOSSY_PARTS"]
 
 #: package part (regular expression on the zip member name) -> what a designer calls it
 LOSSY_PARTS = {
@@ -87,21 +86,6 @@ def unsupported_content(path, workbook=None, *, keep_vba: bool = True) -> list[s
             if words in message and what not in found:
                 found.append(what)
     return found
-
-
-def refuse_lossy_rewrite(path, workbook=None, *, option: str = "--in-place", keep_vba: bool = True) -> None:
-    """Refuse a rewrite of ``path``: :class:`WorkbookContentError` naming what it would lose, :class:`ExcelError`
-    when Excel has the file open (its lock file is there)."""
-    path = Path(path)
-    lock = path.with_name("~$" + path.name)
-    if lock.exists():
-        raise ExcelError(f"{path} is open in Excel (lock file {lock.name}); close it and run again")
-    lost = unsupported_content(path, workbook, keep_vba=keep_vba)
-    if lost:
-        raise WorkbookContentError(
-            f"{path}: {option} refused, rewriting the workbook would lose or alter its {', '.join(lost)} "
-            "(openpyxl cannot keep them as they are); the file is unchanged. Write the results to a new workbook "
-            "with -o OUTPUT.xlsx instead")
 
 
 def _style_key(cell) -> tuple:

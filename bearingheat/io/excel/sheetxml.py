@@ -19,6 +19,7 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Callable
+from collections.abc import Set as AbstractSet
 from xml.sax.saxutils import escape
 
 import numpy as np
@@ -26,7 +27,7 @@ import pandas as pd
 from openpyxl.utils import get_column_letter
 
 from bearingheat.io.excel import style as st
-from bearingheat.io.excel.writer import sheet_layout
+from bearingheat.io.excel.layout import sheet_layout
 
 __all__ = ["results_sheet_xml", "cells_sheet_xml", "xstring", "TAB_COLOR", "DEFAULT_MARGINS"]
 
@@ -66,8 +67,9 @@ def _number(value) -> str | None:
 
 
 def _cell(ref: str, value, style: int, quote_style: Callable[[], int]) -> str:
-    """One <c> element: number, boolean, inline text or an empty styled cell."""
-    if value is None or value is pd.NA or value is pd.NaT:
+    """One <c> element: number, boolean, inline text or an empty styled cell (also for empty text, as openpyxl
+    writes it)."""
+    if value is None or value is pd.NA or value is pd.NaT or (isinstance(value, str) and value == ""):
         return f'<c r="{ref}" s="{style}"/>'
     if isinstance(value, (bool, np.bool_)):
         return f'<c r="{ref}" s="{style}" t="b"><v>{int(bool(value))}</v></c>'
@@ -91,7 +93,8 @@ _AFTER_DATA = ("sheetProtection", "conditionalFormatting", "printOptions", "page
 def results_sheet_xml(table: pd.DataFrame, style_index: Callable[..., int], *, units: dict[str, str] | None = None,
                       formulas: dict[tuple[str, int], str] | None = None, kept: dict[str, str] | None = None,
                       print_setup=None, rules=(), dxf_index: Callable[[str], int] | None = None,
-                      progress=None, title: str = "Results", hidden_columns=()) -> bytes:
+                      progress=None, title: str = "Results", hidden_columns=(),
+                      input_columns: AbstractSet[str] = frozenset(), tab_color: str | None = TAB_COLOR) -> bytes:
     """The worksheet part of a results sheet.
 
     ``style_index(name, quote=False, number_format=None)`` gives the cellXfs
@@ -106,18 +109,23 @@ def results_sheet_xml(table: pd.DataFrame, style_index: Callable[..., int], *, u
     kept. ``rules`` are conditional formats
     (:class:`bearingheat.io.excel.freshness.ConditionalRule`), ``dxf_index``
     gives their differential formats' indices. ``hidden_columns`` are grouped
-    and collapsed. ``progress``: an object with start, update, finish.
+    and collapsed. ``input_columns`` are styled as inputs (as
+    :func:`bearingheat.io.excel.writer.fill_sheet` styles them), ``tab_color``
+    is the tab's colour (ARGB; None: the workbook's default). ``progress``: an
+    object with start, update, finish.
     """
     formulas = formulas or {}
     kept = dict(kept or {})
-    layout = sheet_layout(table, units)
+    layout = sheet_layout(table, units, input_columns)
     n_cols, n_rows = len(layout.headers), len(table)
     letters = [get_column_letter(c) for c in range(1, n_cols + 1)]
     column_styles = [style_index(name, number_format=fmt) if fmt else style_index(name)
                      for name, fmt in zip(layout.styles, layout.formats)]
     formula_styles = [style_index(st.FORMULA, number_format=layout.formula_format(c)) for c in range(n_cols)]
-    styles = {name: style_index(name) for name in set(st.STATUS.values()) | {st.RESULT, st.HEADER_RESULT,
-                                                                                st.UNITS_RESULT}}
+    styles = {name: style_index(name) for name in set(st.STATUS.values()) | {st.RESULT}}
+    # the header and units rows: an input column's as the input sheet's (fill_sheet's styles)
+    title_styles = [(st.HEADER_INPUT, st.UNITS) if is_input else (st.HEADER_RESULT, st.UNITS_RESULT)
+                    for is_input in layout.input_columns]
     quoted: dict[str, int] = {}
 
     def quote_of(name: str) -> Callable[[], int]:
@@ -136,7 +144,9 @@ def results_sheet_xml(table: pd.DataFrame, style_index: Callable[..., int], *, u
         setup["pageSetUpPr"] = ""
     setup.update(kept)
     page_pr = setup.pop("pageSetUpPr", "")
-    parts = [_HEAD, f'<sheetPr><tabColor rgb="{TAB_COLOR}"/>{page_pr}</sheetPr>', f'<dimension ref="A1:{last}"/>',
+    tab = f'<tabColor rgb="{tab_color}"/>' if tab_color else ""
+    sheet_pr = f"<sheetPr>{tab}{page_pr}</sheetPr>" if tab or page_pr else ""
+    parts = [_HEAD, sheet_pr, f'<dimension ref="A1:{last}"/>',
              '<sheetViews><sheetView workbookViewId="0"><pane ySplit="2" topLeftCell="A3" '
              'activePane="bottomLeft" state="frozen"/><selection pane="bottomLeft" activeCell="A3" sqref="A3"/>'
              '</sheetView></sheetViews>',
@@ -147,10 +157,10 @@ def results_sheet_xml(table: pd.DataFrame, style_index: Callable[..., int], *, u
                                         + (' hidden="1" outlineLevel="1"/>' if c in hidden else "/>")
                                         for c, w in enumerate(layout.widths, start=1)) + "</cols>")
     parts.append("<sheetData>")
-    header_style, units_style = styles[st.HEADER_RESULT], styles[st.UNITS_RESULT]
-    for row, texts, style in ((1, layout.headers, header_style), (2, layout.units, units_style)):
-        name = st.HEADER_RESULT if row == 1 else st.UNITS_RESULT
-        title_cells = "".join(_cell(f"{letters[c]}{row}", texts[c], style, quote_of(name)) for c in range(n_cols))
+    for row, texts in ((1, layout.headers), (2, layout.units)):
+        names = [pair[row - 1] for pair in title_styles]
+        title_cells = "".join(_cell(f"{letters[c]}{row}", texts[c], style_index(names[c]), quote_of(names[c]))
+                              for c in range(n_cols))
         parts.append(f'<row r="{row}">{title_cells}</row>')
     if progress is not None:
         progress.start(n_rows, f"writing {title}")

@@ -39,7 +39,8 @@ from bearingheat.errors import (ExcelError, F2ChartError, InputError, SheetConte
                                WorkbookContentError)
 from bearingheat.io.excel.ownership import (COMPANION_MARKS, INPUT_MARK, RESULTS_MARK, choose_companion_sheet,
                                             choose_results_sheet, mark_value, read_companions, read_marks)
-from bearingheat.io.excel.package import InPlaceResult, Package, open_package, write_results_in_place
+from bearingheat.io.excel.opc import Package, open_package
+from bearingheat.io.excel.package import InPlaceResult, write_results_in_place
 from bearingheat.io.excel.reader import (EXCEL_SUFFIXES, SheetInfo, contract_name, defined_name_values,
                                          open_workbook, read_sheet)
 from bearingheat.io.excel.safety import unsupported_content

@@ -1,15 +1,16 @@
 """Write results to a workbook: a header row, a units row, one styled row per support.
 
 - :func:`write_results`: a DataFrame as a sheet of a new or existing
-  workbook (refused when a rewrite would lose content, see
-  :mod:`bearingheat.io.excel.safety`, or replace a sheet of the designer's).
+  workbook (an existing one is edited part by part, every other part kept
+  byte for byte: :mod:`bearingheat.io.excel.package`; a sheet of the
+  designer's is never replaced).
 - :func:`write_results_workbook`: the results of a CSV calc as a new workbook.
 - :func:`atomic_save`: save through a temporary file, so a failure leaves
   the target as it was.
 
 Units come from pint-pandas dtypes, a units mapping, or ``name [unit]``
-headers (:func:`split_header`); cells take the named styles of
-:mod:`bearingheat.io.excel.style`.
+headers (:func:`bearingheat.io.excel.layout.split_header`); cells take the
+named styles of :mod:`bearingheat.io.excel.style`.
 """
 from __future__ import annotations
 
@@ -18,7 +19,6 @@ import os
 from collections.abc import Iterable, Sequence
 from collections.abc import Set as AbstractSet
 from copy import copy
-from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -31,17 +31,17 @@ from openpyxl.utils import get_column_letter
 from openpyxl.workbook.defined_name import DefinedName
 from openpyxl.worksheet.worksheet import Worksheet
 
-from bearingheat.calc.contract import input_units, parse_header
-from bearingheat.errors import ExcelError, InputError
+from bearingheat.calc.contract import input_units
+from bearingheat.errors import ExcelError
 from bearingheat.io.excel import style as st
 from bearingheat.io.excel.freshness import ConditionalRule
-from bearingheat.io.excel.ownership import TABLE_MARK, mark_value, table_mark_slots, written_sheets
-from bearingheat.io.excel.reader import (DEFAULT_SHEET, EXCEL_SUFFIXES, RESULTS_SHEET, SheetInfo, contract_name,
-                                         defined_name_values, open_workbook)
+from bearingheat.io.excel.layout import sheet_layout
+from bearingheat.io.excel.ownership import TABLE_MARK, mark_value, sheet_name_problem
+from bearingheat.io.excel.opc import open_package
+from bearingheat.io.excel.package import write_table_in_place
+from bearingheat.io.excel.reader import DEFAULT_SHEET, EXCEL_SUFFIXES, RESULTS_SHEET, SheetInfo, contract_name
 from bearingheat.io.excel.printing import PrintSetup
-from bearingheat.io.excel.style import number_format
-from bearingheat.io.excel.safety import refuse_lossy_rewrite
-from bearingheat.io.files import atomic_write
+from bearingheat.io.files import atomic_write, workbook_lock
 
 if TYPE_CHECKING:
     from bearingheat.io.console import Progress
@@ -50,7 +50,6 @@ __all__ = [
     "write_results",
     "write_results_workbook",
     "atomic_save",
-    "split_header",
     "results_sheet_name",
     "result_table",
     "install_sheet",
@@ -65,37 +64,6 @@ def results_sheet_name(input_sheet: str) -> str:
     return f"{input_sheet[:23]} results"
 
 
-def _column_style(unit: str) -> str:
-    """Numbers with a unit get the number format of the unit; coefficients (unit 1) and text stay as they are."""
-    return st.RESULT if unit in ("-", "", "1") else st.RESULT_NUMBER
-
-
-def _column_format(unit: str, is_input: bool) -> str | None:
-    """The number format of a column (:func:`bearingheat.io.excel.style.number_format`), None: the style's own."""
-    return None if is_input or unit in ("-", "", "1") else number_format(unit)
-
-
-#: the width of the message column (its text wraps), and about how many characters fill one of its lines
-MESSAGE_WIDTH = 60
-_MESSAGE_LINE = 66
-#: the height of one line of text [pt]
-LINE_HEIGHT = 15.0
-
-
-def message_heights(messages: Iterable[object]) -> dict[int, float]:
-    """Row position -> height [pt] of the rows whose message takes more than one line of the message column.
-
-    >>> message_heights(["", "short", "x" * 140])
-    {2: 45.0}
-    """
-    out: dict[int, float] = {}
-    for position, text in enumerate(messages):
-        lines = math.ceil(len(text) / _MESSAGE_LINE) if isinstance(text, str) else 1
-        if lines > 1:
-            out[position] = LINE_HEIGHT * lines
-    return out
-
-
 def _cell_value(value: object) -> object:
     if value is None:
         return None
@@ -108,55 +76,6 @@ def _cell_value(value: object) -> object:
     if value is pd.NA or value is pd.NaT:
         return None
     return value
-
-
-@dataclass
-class SheetLayout:
-    """What a results sheet shows, column by column: header, unit, style name, number format (None: the
-    style's; formula cells: General), values and width; and the heights of rows with a long message."""
-
-    headers: list[str]
-    units: list[str]
-    styles: list[str]
-    values: list[np.ndarray]
-    widths: list[float]
-    input_columns: list[bool]
-    formats: list[str | None]
-    heights: dict[int, float]
-
-    def formula_format(self, column: int) -> str:
-        """The number format of a formula cell of ``column`` (coefficients and text: General)."""
-        return self.formats[column] or "General"
-
-
-def sheet_layout(table: pd.DataFrame, units: dict[str, str] | None = None,
-                 input_columns: AbstractSet[str] = frozenset()) -> SheetLayout:
-    """The header row, units row, cell style and width of every column of ``table`` (values as objects)."""
-    headers: list[str] = []
-    unit_row: list[str] = []
-    styles: list[str] = []
-    magnitudes: list[np.ndarray] = []
-    widths: list[float] = []
-    inputs: list[bool] = []
-    formats: list[str | None] = []
-    for header in table.columns:
-        column = table[header]
-        name, unit = split_header(header, column, units)
-        headers.append(name)
-        unit_row.append(unit)
-        if str(column.dtype).startswith("pint["):
-            column = pd.Series(column.pint.magnitude, index=column.index)
-        inputs.append(header in input_columns)
-        styles.append(st.INPUT if header in input_columns else
-                      st.MESSAGE if name == "message" else _column_style(unit))
-        formats.append(_column_format(unit, header in input_columns))
-        values = column.to_numpy(dtype=object)
-        magnitudes.append(values)
-        sample = [len(str(v)) for v in values[:200] if isinstance(v, str)]
-        width = min(max([len(str(name)), len(str(unit)), 6] + sample) + 2, 40)
-        widths.append(MESSAGE_WIDTH if name == "message" else width)
-    heights = message_heights(table["message"]) if "message" in table.columns else {}
-    return SheetLayout(headers, unit_row, styles, magnitudes, widths, inputs, formats, heights)
 
 
 def fill_sheet(ws: Worksheet, table: pd.DataFrame, *, units: dict[str, str] | None = None,
@@ -248,32 +167,6 @@ def _style_arrays(ws: Worksheet, keys: Iterable[tuple[str, str | None]]) -> dict
     return arrays
 
 
-def _unit_text(unit: object) -> str:
-    """A pint unit as typed in a units row: 'kN', 'rpm', 'mm^2/s'."""
-    return format(unit, "~C").replace("**", "^")
-
-
-def split_header(header: str, values: pd.Series | None = None, units: dict[str, str] | None = None) -> tuple[str, str]:
-    """(name, unit text) of a DataFrame column for a header row and a units row.
-
-    The unit comes from a pint-pandas dtype, from ``units``, from a
-    ``name [unit]`` header; '-' marks text, '1' a plain number.
-    """
-    if values is not None and str(values.dtype).startswith("pint["):
-        return str(header), _unit_text(values.pint.units)
-    if units is not None and header in units:
-        return str(header), units[header]
-    try:
-        name, unit = parse_header(header)
-    except InputError:
-        name, unit = str(header), None
-    if unit is not None:
-        return name, unit
-    if values is not None and (pd.api.types.is_numeric_dtype(values.dtype) and not pd.api.types.is_bool_dtype(values.dtype)):
-        return name, "1"
-    return name, "-"
-
-
 def result_table(result: pd.DataFrame, table: pd.DataFrame, info: SheetInfo) -> pd.DataFrame:
     """The columns of the results sheet: the input row, id/designation (support, case, type and series where
     the sheet gives them), then every result column."""
@@ -316,44 +209,44 @@ def write_results(results: pd.DataFrame, path: str | os.PathLike[str], *, sheet:
                   formulas: dict[tuple[str, int], str] | None = None) -> Path:
     """Write ``results`` as sheet ``sheet`` of the workbook ``path`` (header row, units row, one row each).
 
-    A new workbook is created when ``path`` does not exist; in an existing
-    workbook the sheet is added, or replaced where bearingheat wrote it
-    (a results sheet, one of its companions, or a sheet of an earlier
-    ``write_results``: :mod:`.ownership`), and every other sheet kept. A
-    sheet of that name (compared without case, as Excel does) that the
-    designer made is never replaced: :class:`ExcelError`, the file
-    unchanged. Refused as well when the workbook holds content openpyxl
-    would drop (:func:`bearingheat.io.excel.safety.unsupported_content`).
-    The sheet is marked as bearingheat's (a hidden defined name
-    ``_bearingheat_table_<k>``). The write is atomic. Units come from
-    pint-pandas dtypes, ``units``, or ``name [unit]`` headers; ``formulas``
-    maps (column, row position) to formula text written instead of the
-    value.
+    A new workbook is created when ``path`` does not exist. An existing
+    workbook is edited as ``calc --in-place`` edits it
+    (:func:`bearingheat.io.excel.package.write_table_in_place`): only this
+    sheet and what registers it are written, every other part (sheets,
+    charts, images, pivot tables, macros ...) is kept byte for byte. The
+    sheet is added after the last one, or replaced where bearingheat wrote
+    it (a results sheet, one of its companions, or a sheet of an earlier
+    ``write_results``: :mod:`.ownership`). A sheet of that name (compared
+    without case, as Excel does) that the designer made is never replaced:
+    :class:`ExcelError`, the file unchanged; so is a workbook the edit
+    cannot keep whole (:class:`~bearingheat.errors.WorkbookContentError`:
+    signed, encrypted, a protected structure ...) and one that Excel,
+    LibreOffice or another bearingheat run has open
+    (:func:`bearingheat.io.files.workbook_lock`). The sheet is marked as
+    bearingheat's (a hidden defined name ``_bearingheat_table_<k>``). The
+    write is atomic. Units come from pint-pandas dtypes, ``units``, or
+    ``name [unit]`` headers; ``input_columns`` are styled as inputs;
+    ``formulas`` maps (column, row position) to formula text written
+    instead of the value (the workbook recalculates when opened).
     """
     path = Path(path)
     if path.suffix.lower() not in EXCEL_SUFFIXES:
         raise ExcelError(f"{path}: an Excel workbook ends in .xlsx or .xlsm")
+    problem = sheet_name_problem(sheet)
+    if problem is not None:
+        raise ExcelError(f"{path}: sheet name {sheet!r} {problem}; nothing was written")
     if path.exists():
-        workbook = open_workbook(path, keep_vba=path.suffix.lower() == ".xlsm")
-        written = written_sheets(defined_name_values(workbook))
-        present = next((name for name in workbook.sheetnames if name.casefold() == sheet.casefold()), None)
-        if present is not None and present.casefold() not in written:
-            raise ExcelError(f"{path}: sheet {present!r} is not a sheet bearingheat wrote (it has no bearingheat "
-                             "mark), so it is kept; the file is unchanged. Write the table to a sheet of another "
-                             "name")
-        refuse_lossy_rewrite(path, workbook, option="write_results")
-        ws = install_sheet(workbook, present if present is not None else sheet)  # (a sheet keeps its own name)
-    else:
-        if path.suffix.lower() == ".xlsm":
-            raise ExcelError(f"{path}: a new workbook is written as .xlsx (a .xlsm needs its macros)")
-        workbook = Workbook()
-        ws = workbook.active
-        ws.title = sheet
-        written = {}
-    if ws.title.casefold() not in written:  # (a results sheet or a table keeps the mark it has)
-        slot = 1 + max(table_mark_slots(workbook.defined_names), default=0)
-        workbook.defined_names[f"{TABLE_MARK}{slot}"] = DefinedName(f"{TABLE_MARK}{slot}", hidden=True,
-                                                                    attr_text=mark_value(ws.title))
+        with workbook_lock(path) as lock:
+            write_table_in_place(open_package(path, action="write_results"), sheet, results, lock=lock,
+                                 units=units, input_columns=set(input_columns), formulas=formulas)
+        return path
+    if path.suffix.lower() == ".xlsm":
+        raise ExcelError(f"{path}: a new workbook is written as .xlsx (a .xlsm needs its macros)")
+    workbook = Workbook()
+    ws = workbook.active
+    ws.title = sheet
+    workbook.defined_names[f"{TABLE_MARK}1"] = DefinedName(f"{TABLE_MARK}1", hidden=True,
+                                                          attr_text=mark_value(ws.title))
     fill_sheet(ws, results, units=units, input_columns=set(input_columns), formulas=formulas)
     atomic_save(workbook, path)
     return path

@@ -1,4 +1,5 @@
-"""``calc --in-place`` over a corpus of varied workbooks (tests/workbook_corpus.py): nothing else changes.
+"""``calc --in-place`` and ``write_results`` over a corpus of varied workbooks (tests/workbook_corpus.py):
+nothing else changes.
 
 For every workbook: either refused with the file byte-identical, or every
 ZIP part except those that register the results sheet (xl/workbook.xml, its
@@ -10,17 +11,20 @@ without adding anything.
 """
 from __future__ import annotations
 
+import io
 import os
 import zipfile
 
 import numpy as np
 import openpyxl
+import pandas as pd
 import pytest
 from lxml import etree
 from workbook_corpus import CASES, results_part
 
 from bearingheat.errors import ExcelError, WorkbookContentError
 from bearingheat.io.excel.workbook import calc_workbook
+from bearingheat.io.excel.writer import write_results
 
 pytestmark = pytest.mark.filterwarnings("ignore:.*extension is not supported:UserWarning")
 
@@ -223,3 +227,50 @@ def test_a_copy_is_what_in_place_writes_into_the_workbook(name, tmp_path):
     in_place.write_bytes(data)
     calc_workbook(in_place, in_place=True, sheet=case.sheets[0], formulas=case.formulas)
     assert copy.read_bytes() == in_place.read_bytes()
+
+
+#: the table write_results adds to every workbook of the corpus: text that looks like a formula stays text
+TABLE = pd.DataFrame({"case": ["a", "=b"], "x [mm]": [1.0, 2.5], "n [rpm]": [1480, np.nan]})
+TABLE_SHEET = "Shaft loads"
+
+
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_write_results_changes_only_its_own_sheet(name, tmp_path):
+    """write_results into an existing workbook is the same surgical edit as --in-place: a new last sheet (and
+    what registers it), every other part byte for byte and in order; a second write replaces only that sheet's
+    part. Where the edit cannot keep the workbook whole it is refused, naming write_results, the file unchanged."""
+    case = CASES[name](tmp_path)
+    folder_before = sorted(os.listdir(tmp_path))
+    data_before = case.path.read_bytes()
+    try:
+        write_results(TABLE, case.path, sheet=TABLE_SHEET)
+    except ExcelError as exc:
+        # refused where --in-place is refused for the whole workbook, or where no sheet may be added
+        assert case.refused or name == "openpyxl_structure_protected_after_first_run", (name, str(exc))
+        if isinstance(exc, WorkbookContentError):
+            assert str(exc).startswith(f"{case.path}: write_results refused, "), str(exc)
+            assert str(exc).endswith("; the file is unchanged. Write the table to a new workbook instead")
+        assert case.path.read_bytes() == data_before
+        assert sorted(os.listdir(tmp_path)) == folder_before
+        return
+    assert not case.refused or "now holds" in case.refused, name  # (a chart on calc's results sheet: not this one)
+    after = parts(case.path)
+    table_part = results_part(case.path, TABLE_SHEET)
+    assert_surgical(parts_of(data_before), after, table_part)
+    workbook = openpyxl.load_workbook(case.path)
+    assert workbook.sheetnames[-1] == TABLE_SHEET
+    ws = workbook[TABLE_SHEET]
+    assert [[c.value for c in row] for row in ws.iter_rows()] == [["case", "x", "n"], ["-", "mm", "rpm"],
+                                                                    ["a", 1, 1480], ["=b", 2.5, None]]
+    assert ws["A4"].data_type == "s" and ws["A4"].quotePrefix
+    write_results(TABLE.iloc[::-1], case.path, sheet=TABLE_SHEET.upper())  # the same sheet, compared without case
+    again = parts(case.path)
+    assert list(again) == list(after)
+    assert {n for n in after if again[n] != after[n]} == {table_part}
+    assert openpyxl.load_workbook(case.path)[TABLE_SHEET]["A3"].value == "=b"
+    assert sorted(os.listdir(tmp_path)) == folder_before
+
+
+def parts_of(data: bytes) -> dict[str, bytes]:
+    with zipfile.ZipFile(io.BytesIO(data)) as archive:
+        return {info.filename: archive.read(info.filename) for info in archive.infolist()}
