@@ -260,7 +260,7 @@ def evaluate_models(supports: SupportArrays, model_codes: np.ndarray, model_name
     for name in present:
         rows = np.flatnonzero(np.array([n == name for n in model_names], dtype=bool)[model_codes])
         with np.errstate(all="ignore"):
-            part, part_problems = MODELS[name].evaluate(supports.take(rows), labels, f2_chart)
+            part, part_problems = MODELS[name].evaluate(supports.take(rows), labels.subset(rows), f2_chart)
         _scatter(results, part, rows, size)
         position = {int(r): k for k, r in enumerate(rows)}
         for problem in part_problems:

@@ -171,3 +171,18 @@ def test_a_workbook_part_that_is_not_xml_is_a_damaged_workbook(tmp_path):
     with pytest.raises(ExcelError, match=f"^{re.escape(message)}$"):
         calc_workbook(path, tmp_path / "copy.xlsx")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["damaged.xlsx"]
+
+
+def test_messages_of_a_table_of_two_models_name_their_own_cells(tmp_path):
+    """Rows of each friction model are computed as a table of their own; their messages still name the cell of
+    their row on the sheet (row 4 is the skf row, row 5 the second schaeffler row)."""
+    header = ["designation", "model", "d", "D", "n", "Fr", "Fa", "nu", "lubrication"]
+    units = ["-", "-", "mm", "mm", "rpm", "kN", "kN", "mm^2/s", "-"]
+    rows = [["6208", "schaeffler", 40, 80, 1000, 1.0, 0, 20, "oil_bath"],
+            ["6208", "skf", 40, 80, 1000, 1.0, 0, 20, "oil_bath"],
+            ["6208", "schaeffler", 40, 80, 1000, 1.0, 0, -1, "oil_bath"]]
+    path = make_workbook(tmp_path / "models.xlsx", header, units, rows)
+    result = calc_workbook(path).result
+    assert list(result["status"]) == ["ok", "error", "error"]
+    assert result["message"][1].startswith("Supports row 4 oil_level [mm]: missing; an oil bath needs the oil level")
+    assert result["message"][2].startswith("Supports!H5 nu [mm^2/s]: -1 must be > 0; ")
