@@ -221,9 +221,10 @@ def _model_error(name: str) -> str:
     return f"model: {name!r} is not one of {', '.join(MODELS)}"
 
 
-def _message_at(problem: Problem, position: dict[int, int], row: int) -> str:
-    """The message of ``problem`` (found on a subset of rows) for ``row`` of the whole table."""
-    return problem.message(position[row])
+def _message_at(problem: Problem, position: np.ndarray, row: int) -> str:
+    """The message of ``problem`` (found on a subset of rows) for ``row`` of the whole table (``position``: each
+    row's place in the subset)."""
+    return problem.message(int(position[row]))
 
 
 def _scatter(results: dict, part: dict, rows: np.ndarray, size: int) -> None:
@@ -262,7 +263,8 @@ def evaluate_models(supports: SupportArrays, model_codes: np.ndarray, model_name
         with np.errstate(all="ignore"):
             part, part_problems = MODELS[name].evaluate(supports.take(rows), labels.subset(rows), f2_chart)
         _scatter(results, part, rows, size)
-        position = {int(r): k for k, r in enumerate(rows)}
+        position = np.empty(size, dtype=np.intp)  # a row's place among this model's rows (no dict per row)
+        position[rows] = np.arange(len(rows))
         for problem in part_problems:
             mask = np.zeros(size, dtype=bool)
             mask[rows] = problem.mask
