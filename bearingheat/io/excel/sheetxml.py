@@ -16,6 +16,7 @@ as the bytes of a worksheet part (ECMA-376 Part 1, 18.3 ``worksheet``):
 """
 from __future__ import annotations
 
+import functools
 import math
 import re
 from collections.abc import Callable
@@ -37,21 +38,24 @@ _HEAD = ('<?xml version="1.0" encoding="UTF-8" standalone="yes"?>\n'
          'xmlns:r="http://schemas.openxmlformats.org/officeDocument/2006/relationships">')
 _INVALID = re.compile("[\x00-\x08\x0b\x0c\x0d\x0e-\x1f\ufffe\uffff]")
 _ESCAPE_LOOKALIKE = re.compile(r"_(x[0-9A-Fa-f]{4}_)")
+_SURROGATE = re.compile("[\ud800-\udfff]")
 #: text a spreadsheet would read as a formula when the cell is edited
 _FORMULA_START = ("=", "+", "-", "@")
 DEFAULT_MARGINS = '<pageMargins left="0.7" right="0.7" top="0.75" bottom="0.75" header="0.3" footer="0.3"/>'
 
 
+@functools.lru_cache(maxsize=1 << 16)  # a sheet repeats its texts (designations, statuses, messages)
 def xstring(text: str) -> str:
     """Text as an ST_Xstring in XML: '_xHHHH_' look-alikes and characters XML 1.0 cannot hold escaped, then &<>.
 
     >>> xstring("a<b & _x0041_ \\x01")
     'a&lt;b &amp; _x005F_x0041_ _x0001_'
+    >>> xstring("lone \\ud800 surrogate") == "lone \\N{REPLACEMENT CHARACTER} surrogate"
+    True
     """
     text = _ESCAPE_LOOKALIKE.sub(r"_x005F_\1", text)
     text = _INVALID.sub(lambda m: f"_x{ord(m.group()):04X}_", text)
-    text = "".join(c if not 0xD800 <= ord(c) <= 0xDFFF else "\ufffd" for c in text)
-    return escape(text)
+    return escape(_SURROGATE.sub("\ufffd", text))  # a lone surrogate cannot be written as UTF-8
 
 
 def _number(value) -> str | None:
