@@ -10,11 +10,12 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 
 import numpy as np
+import pandas as pd
 
 from bearingheat.calc.contract import range_problems
 from bearingheat.errors import BearingheatError
 
-__all__ = ["check_ranges", "point_warnings", "point_status", "where"]
+__all__ = ["check_ranges", "point_warnings", "point_status", "where", "shared_index"]
 
 
 def where(i: int, shape: tuple[int, ...]) -> str:
@@ -79,3 +80,36 @@ def point_status(size: int, every: list[str], some: dict[int, list[str]]) -> tup
         status[i] = "warning"
         messages[i] = "; ".join(([common] if common else []) + own)
     return status, messages
+
+
+def _labels(index: pd.Index) -> str:
+    shown = ", ".join(map(repr, index[:3].tolist())) + (", ..." if len(index) > 3 else "")
+    return f"{len(index)} rows: {shown}"
+
+
+def shared_index(values: Mapping[str, object], error: type[BearingheatError]) -> pd.Index | None:
+    """The one index of the Series among ``values`` (by argument name), None without a Series.
+
+    Series are paired row by row, so they must have the same index (the same
+    labels in the same order); others raise ``error`` naming two arguments,
+    rather than pairing rows of different labels by position.
+
+    >>> from bearingheat.errors import FrictionInputError
+    >>> shared_index({"n": pd.Series([1.0, 2.0]), "Fr": 3.0}, FrictionInputError)
+    RangeIndex(start=0, stop=2, step=1)
+    >>> shared_index({"n": pd.Series([1.0, 2.0]), "Fr": pd.Series([3.0, 4.0], index=[1, 0])}, FrictionInputError)
+    Traceback (most recent call last):
+    ...
+    bearingheat.errors.FrictionInputError: n and Fr are Series with different indexes (2 rows: 0, 1 against 2 rows: 1, 0); give them one index, e.g. Fr.reindex(n.index), or pass arrays
+    """
+    first: tuple[str, pd.Index] | None = None
+    for name, value in values.items():
+        if not isinstance(value, pd.Series):
+            continue
+        if first is None:
+            first = (name, value.index)
+        elif not value.index.equals(first[1]):
+            raise error(f"{first[0]} and {name} are Series with different indexes ({_labels(first[1])} against "
+                        f"{_labels(value.index)}); give them one index, e.g. {name}.reindex({first[0]}.index), or "
+                        "pass arrays")
+    return None if first is None else first[1]

@@ -22,7 +22,7 @@ import numpy as np
 import numpy.typing as npt
 import pandas as pd
 
-from bearingheat.api._checks import point_status, point_warnings, where
+from bearingheat.api._checks import point_status, point_warnings, shared_index, where
 from bearingheat.api.results import Result
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.contract import column
@@ -303,7 +303,7 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
     for name, factor in zip(_FACTORS, (Y, e, X0, Y0, f0, f1, f2)):
         inputs[name] = _dimensionless(factor, name)
 
-    index = next((v.index for v in inputs.values() if isinstance(v, pd.Series)), None)
+    index = shared_index(inputs, FrictionInputError)
     arrays = {k: (v.to_numpy(dtype=float) if isinstance(v, pd.Series) else np.asarray(v, dtype=float))
               for k, v in inputs.items()}
     # blank dimensions, ratings and factors from the bearing table (Schaeffler HR 1, 2006)

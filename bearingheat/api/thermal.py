@@ -15,7 +15,7 @@ import numpy as np
 import numpy.typing as npt
 import pandas as pd
 
-from bearingheat.api._checks import check_ranges
+from bearingheat.api._checks import check_ranges, shared_index
 from bearingheat.api.results import Result
 from bearingheat.calc.fill import fill_from_catalogue
 from bearingheat.calc.messages import Labels
@@ -269,16 +269,12 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
             "Q_E": Q_E, "nu40": nu40, "nu100": nu100, "iso_vg": iso_vg, "VI": VI,
             "n_G": n_G, "n_thr_catalogue": n_thr_catalogue}
     columns: dict[str, float | np.ndarray] = {}
-    index: pd.Index | None = None
-    for name, value in args.items():
-        column, unit = _API_COLUMNS[name]
-        mag = _frame_column(value, unit, name)
+    magnitudes = {name: _frame_column(value, _API_COLUMNS[name][1], name) for name, value in args.items()}
+    index = shared_index(magnitudes, HeatBalanceError)
+    for name, mag in magnitudes.items():
         if mag is None:
             continue
-        if isinstance(mag, pd.Series):
-            index = mag.index if index is None else index
-            mag = mag.to_numpy(dtype=float)
-        columns[column] = mag
+        columns[_API_COLUMNS[name][0]] = mag.to_numpy(dtype=float) if isinstance(mag, pd.Series) else mag
     shape = np.broadcast_shapes(*(np.shape(v) for v in columns.values()))
     range_warnings = check_ranges(columns, shape, HeatBalanceError)
     if "n" not in columns:
@@ -370,7 +366,9 @@ def thermal_reference_speed(designation: str | None = None, *, d: Quantity, D: Q
     Returns
     -------
     pint.Quantity [1/min]
-        n_θr, a float or an array of the broadcast shape.
+        n_θr, a float or an array of the broadcast shape (a pint-pandas
+        Series with their index for Series arguments, which must share one
+        index).
 
     Raises
     ------
@@ -400,6 +398,8 @@ def thermal_reference_speed(designation: str | None = None, *, d: Quantity, D: Q
         columns["B"] = magnitude(B, "mm", "B")
     if T is not None:
         columns["T"] = magnitude(T, "mm", "T")
+    index = shared_index(columns, HeatBalanceError)
+    columns = {k: v.to_numpy(dtype=float) if isinstance(v, pd.Series) else v for k, v in columns.items()}
     shape = np.broadcast_shapes(*(np.shape(v) for v in columns.values()))
     size = int(np.prod(shape)) if shape else 1
     frame = pd.DataFrame({k: np.broadcast_to(np.asarray(v, dtype=float), shape).ravel() for k, v in columns.items()})
@@ -414,4 +414,6 @@ def thermal_reference_speed(designation: str | None = None, *, d: Quantity, D: Q
         where = f" (row {bad.index[0]})" if size > 1 else ""
         raise HeatBalanceError(f"{label}{where}: {bad.iloc[0]}")
     values = result.to_numpy(dtype=float)
+    if index is not None:
+        return quantity(pd.Series(values, index=index), "1/min")
     return quantity(values.reshape(shape) if shape else float(values[0]), "1/min")

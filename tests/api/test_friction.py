@@ -1,6 +1,8 @@
 """The unit-aware friction API: the same answer in any unit, scalar = array = Series, clear unit errors."""
 import math
 
+import re
+
 import numpy as np
 import pandas as pd
 import pint
@@ -137,3 +139,21 @@ def test_application_registry_is_used_not_changed():
     assert pint.get_application_registry() is before
     assert r.MR._REGISTRY is before.get() if hasattr(before, "get") else before
 
+
+
+def test_series_of_different_indexes_are_refused_not_paired_by_position():
+    """Series are paired row by row: the same labels in another order (or other labels, or another length)
+    would pair rows of different labels, so they are refused, naming both arguments; one index works."""
+    n = pd.Series([1000.0, 2000.0, 3000.0], index=[0, 1, 2], dtype="pint[rpm]")
+    for Fr in (pd.Series([3.0, 1.0, 2.0], index=[2, 0, 1], dtype="pint[kN]"),
+               pd.Series([3.0, 1.0, 2.0], index=["a", "b", "c"], dtype="pint[kN]"),
+               pd.Series([3.0, 1.0], index=[0, 1], dtype="pint[kN]")):
+        labels = ", ".join(map(repr, Fr.index.tolist()))
+        message = (f"n and Fr are Series with different indexes (3 rows: 0, 1, 2 against {len(Fr)} rows: {labels}); "
+                   "give them one index, e.g. Fr.reindex(n.index), or pass arrays")
+        with pytest.raises(FrictionInputError, match=f"^{re.escape(message)}$"):
+            mr(n=n, Fr=Fr)
+    aligned = friction_torque("6205", d=25 * u.mm, D=52 * u.mm, C0=7.8 * u.kN, lubrication="oil_bath", nu=12 * NU,
+                              n=n, Fr=pd.Series([3.0, 1.0, 2.0], index=[2, 0, 1], dtype="pint[kN]").reindex(n.index))
+    by_label = [mr(n=s * u.rpm, Fr=f * u.kN, Fa=0 * u.N) for s, f in ((1000, 1.0), (2000, 2.0), (3000, 3.0))]
+    np.testing.assert_allclose(aligned.MR.pint.to("N*mm").pint.magnitude.to_numpy(dtype=float), by_label, rtol=1e-15)

@@ -7,6 +7,7 @@ import re
 import numpy as np
 import pandas as pd
 import pint
+import pint_pandas  # noqa: F401  (registers the pint[...] dtype)
 import pytest
 
 from bearingheat.api.thermal import heat_balance, thermal_reference_speed
@@ -148,3 +149,27 @@ def test_approximation_method_close_to_exact():
     assert approx.n_per.magnitude == pytest.approx(exact.n_per.magnitude, rel=0.03)
     with pytest.raises(ValueError, match=re.escape("method: 'closed' is not one of exact, approximation")):
         base_case(method="closed")
+
+
+def test_heat_balance_and_reference_speed_refuse_series_of_different_indexes():
+    args = dict(nu=40 * u("mm^2/s"), lubrication="oil_bath", T_amb=u.Quantity(20, "degC"),
+                T_bearing=u.Quantity(70, "degC"))
+    n = pd.Series([1000.0, 3000.0], index=["a", "b"], dtype="pint[rpm]")
+    Fr = pd.Series([8.0, 1.0], index=["b", "a"], dtype="pint[kN]")
+    message = ("n and Fr are Series with different indexes (2 rows: 'a', 'b' against 2 rows: 'b', 'a'); give them "
+               "one index, e.g. Fr.reindex(n.index), or pass arrays")
+    with pytest.raises(HeatBalanceError, match=f"^{re.escape(message)}$"):
+        heat_balance("6208", n=n, Fr=Fr, **args)
+    aligned = heat_balance("6208", n=n, Fr=Fr.reindex(n.index), **args)
+    by_label = [heat_balance("6208", n=s * u.rpm, Fr=f * u.kN, **args).T_op.to("degC").magnitude
+                for s, f in ((1000, 1.0), (3000, 8.0))]
+    np.testing.assert_allclose(aligned.T_op.pint.to("degC").pint.magnitude.to_numpy(dtype=float), by_label,
+                               rtol=1e-12)
+    d = pd.Series([40.0, 50.0], index=[0, 1], dtype="pint[mm]")
+    D = pd.Series([80.0, 90.0], index=[1, 0], dtype="pint[mm]")
+    with pytest.raises(HeatBalanceError, match="^d and D are Series with different indexes"):
+        thermal_reference_speed("6208", d=d, D=D, B=18 * u.mm, C0=18 * u.kN)
+    speeds = thermal_reference_speed("6208", d=d, D=D.reindex(d.index), B=18 * u.mm, C0=18 * u.kN)
+    assert isinstance(speeds, pd.Series) and list(speeds.index) == [0, 1]
+    single = thermal_reference_speed("6208", d=40 * u.mm, D=90 * u.mm, B=18 * u.mm, C0=18 * u.kN)
+    assert speeds.pint.to("1/min").pint.magnitude[0] == pytest.approx(single.to("1/min").magnitude, rel=1e-15)
