@@ -35,8 +35,8 @@ from bearingheat.calc.thermal import (DEFAULT_SPEED_FACTOR_METHOD, DEFAULT_VISCO
 from bearingheat.calc.contract import (LABEL_COLUMNS, PLAIN_TYPES, TEXT_DTYPE, input_units, output_header,
                                        output_units, parse_header, range_problems)
 from bearingheat.calc.messages import ERROR, WARNING, Labels, status_codes, status_column, with_texts
-from bearingheat.calc.supports import (blanks_filled, number_column, per_distinct, text_categorical, text_column,
-                                       with_bearing_groups)
+from bearingheat.calc.supports import (blanks_filled, column_codes, number_column, per_distinct, text_categorical,
+                                       text_column, with_bearing_groups)
 from bearingheat.calc.distributed import calc_dask, is_dask_frame
 from bearingheat.calc.fill import fill_from_catalogue
 from bearingheat.calc.uncertainty import fill_from_coefficients, has_uncertainty, uncertainty_bands
@@ -111,7 +111,7 @@ def _convert_column(values: pd.Series, header: str, unit_text: str | None, targe
     if pd.api.types.is_bool_dtype(values.dtype):
         logical = np.ones(len(values), dtype=bool)
     elif values.dtype == object:  # a mixed column: True/False cells among numbers
-        logical = per_distinct(values, lambda v: isinstance(v, (bool, np.bool_))).astype(bool)
+        logical = _logical_cells(values)
     else:
         logical = np.zeros(len(values), dtype=bool)
     if isinstance(values.dtype, np.dtype) and values.dtype.kind in "iuf":  # numpy numbers (to_numeric would copy)
@@ -155,6 +155,27 @@ def _convert_column(values: pd.Series, header: str, unit_text: str | None, targe
     for i, message in found_warnings:
         warnings[i].append(message)
     return converted, factor
+
+
+def _is_logical(value) -> bool:
+    return isinstance(value, (bool, np.bool_))
+
+
+_LOGICAL = np.frompyfunc(_is_logical, 1, 1)
+
+
+def _logical_cells(values: pd.Series) -> np.ndarray:
+    """Which cells of an object column hold a logical value (True, False). Distinct values are hashed once, but
+    True == 1 and False == 0 hash alike, so the cells of a distinct value equal to 0 or 1 are looked at one by
+    one (an Excel TRUE among loads of 1 kN, a load of 0 among FALSE)."""
+    codes, uniques = column_codes(values)
+    logical = np.zeros(len(values), dtype=bool)
+    cells = values.to_numpy(dtype=object)
+    for code, unique in enumerate(uniques):
+        if isinstance(unique, (bool, np.bool_, int, float, np.number)) and unique in (0, 1):
+            rows = np.flatnonzero(codes == code)
+            logical[rows] = _LOGICAL(cells[rows]).astype(bool)
+    return logical
 
 
 def _text_cell(value) -> str:

@@ -63,6 +63,17 @@ def test_a_logical_value_is_not_a_load():
     assert out["message"].iat[0] == "True is a logical value, not a number for Fr [kN]"
 
 
+def test_logical_values_among_equal_numbers_are_told_apart():
+    """True == 1 and False == 0 in Python (and hash alike): an Excel TRUE among loads of 1 kN is still an error,
+    and loads of 0 among FALSE cells are still numbers, whichever comes first."""
+    out = run(row(**{"Fr [kN]": 1}), row(**{"Fr [kN]": True}), row(**{"Fa [kN]": False}), row(**{"Fa [kN]": 0}),
+              row(**{"Fa [kN]": 0.0}), row(**{"Fr [kN]": 1.0}))
+    assert out["status"].tolist() == ["ok", "error", "error", "ok", "ok", "ok"]
+    assert out["message"].tolist()[1:3] == ["True is a logical value, not a number for Fr [kN]",
+                                            "False is a logical value, not a number for Fa [kN]"]
+    assert out["MR [N*mm]"].iat[0] == out["MR [N*mm]"].iat[5]
+
+
 def test_ambient_temperature_in_kelvin_holding_celsius_is_refused():
     out = run(row(**{"T_amb [K]": 20.0, "B [mm]": 18.0}))
     assert out["status"].tolist() == ["error"]
