@@ -4,6 +4,7 @@ from __future__ import annotations
 import re
 import warnings
 
+import numpy as np
 import pint
 import pytest
 
@@ -43,3 +44,33 @@ def test_oil_viscosity_errors():
             "temperature: 60 delta_degree_Celsius is a temperature difference; give an absolute temperature "
             "(degC, K)")):
         oil_viscosity(u.Quantity(60, "delta_degC"), iso_vg=68)
+
+
+MM2S = u("mm^2/s")
+
+
+@pytest.mark.parametrize("temperature, data, message", [
+    (u.Quantity(70, "degC"), dict(nu40=68 * MM2S, nu100=80 * MM2S),
+     "nu40 and nu100: the viscosity must fall as the temperature rises (68 mm^2/s at 40 degC, 80 mm^2/s at 100 degC)"),
+    (u.Quantity(70, "degC"), dict(nu40=68 * MM2S, nu100=1 * MM2S), "nu100: 1 mm^2/s must be >= 2 (ASTM D341)"),
+    (u.Quantity(70, "degC"), dict(nu40=-68 * MM2S, nu100=8 * MM2S), "nu40: -68 mm^2/s must be >= 2 (ASTM D341)"),
+    (u.Quantity(70, "degC"), dict(nu40=float("nan") * MM2S, nu100=8 * MM2S),
+     "nu40: nan mm^2/s must be >= 2 (ASTM D341)"),
+    (u.Quantity(70, "degC"), dict(points=((68 * MM2S, u.Quantity(40, "degC")), (30 * MM2S, u.Quantity(40, "degC")))),
+     "points: both at 40 degC; two temperatures fix the line"),
+    (u.Quantity(70, "degC"), dict(points=((30 * MM2S, u.Quantity(40, "degC")), (68 * MM2S, u.Quantity(80, "degC")))),
+     "points: the viscosity must fall as the temperature rises (30 mm^2/s at 40 degC, 68 mm^2/s at 80 degC)"),
+    (u.Quantity(-200, "degC"), dict(nu40=68 * MM2S, nu100=8.6 * MM2S),
+     "temperature: -200 degC is so far below the oil's data that its viscosity line overflows (ASTM D341 holds down "
+     "to about the pour point)"),
+    (u.Quantity(-10, "K"), dict(nu40=68 * MM2S, nu100=8.6 * MM2S),
+     "temperature: -283.15 degC is at or below absolute zero"),
+    (u.Quantity(70, "degC"), dict(nu40=np.array([68.0, 5.0]) * MM2S, nu100=8.6 * MM2S),
+     "nu40 and nu100: the viscosity must fall as the temperature rises (5 mm^2/s at 40 degC, 8.6 mm^2/s at 100 degC) "
+     "(at index 1)"),
+])
+def test_oil_data_that_fix_no_line_are_refused(temperature, data, message):
+    """No NaN or infinite viscosity comes back: data that fix no Walther line, and temperatures it cannot reach,
+    raise with the value (calc refuses the same oil data per row)."""
+    with pytest.raises(ViscosityError, match=f"^{re.escape(message)}$"):
+        oil_viscosity(temperature, **data)
