@@ -1,6 +1,7 @@
 """Row messages of a calculation: which rows fail a check, and how a message names a column and a value."""
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from typing import Callable, Iterable
 
@@ -12,6 +13,8 @@ from bearingheat.calc.contract import input_units
 __all__ = ["Problem", "Labels", "at", "STATUS_LEVELS", "OK", "WARNING", "ERROR", "status_column", "status_codes",
            "with_texts", "row_status"]
 
+#: a message that begins with a column's name (and its unit): 'T [mm]: ...', 'lubrication: ...'
+_LEADING_COLUMN = re.compile(r"^(\w+)(?: \[[^\]]*\])?:")
 #: a row's status in calc's ``status`` column, by its code (the order of severity)
 STATUS_LEVELS = ("ok", "warning", "error")
 OK, WARNING, ERROR = range(3)
@@ -52,6 +55,23 @@ class Labels:
             return self
         cell, positions = self.cell, np.asarray(rows)
         return Labels(self.headers, lambda column, k: cell(column, int(positions[k])))
+
+    def cite(self, message: str, row: int) -> str:
+        """``message`` with the cell of ``row`` before it where it begins with an input column (``'lubrication:
+        ...'``, ``'T [mm]: ...'``) and names no cell yet: ``'Supports!I7 lubrication: ...'``; as it is without
+        cells (a CSV) or for any other beginning.
+
+        >>> Labels(cell=lambda column, row: f"Supports!X{row + 3}").cite("lubrication: missing", 4)
+        'Supports!X7 lubrication: missing'
+        >>> Labels().cite("lubrication: missing", 4), Labels(cell=str).cite("n_thr: no oil-bath f0", 4)
+        ('lubrication: missing', 'n_thr: no oil-bath f0')
+        """
+        if self.cell is None:
+            return message
+        found = _LEADING_COLUMN.match(message)
+        if found is None or found.group(1) not in input_units():
+            return message
+        return f"{self.cell(found.group(1), row)} {message}"
 
     def value(self, column: str, value: float) -> str:
         factor = self.headers.get(column, (None, 1.0))[1]

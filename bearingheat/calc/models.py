@@ -297,10 +297,10 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
     # rows with messages only: error and warning lists keyed by row position
     row_errors: defaultdict[int, list[str]] = defaultdict(list)
     for i in np.flatnonzero(~model_ok & ~plain).tolist():
-        row_errors[i].append(_model_error(model_names[model_codes[i]]))
+        row_errors[i].append(labels.cite(_model_error(model_names[model_codes[i]]), i))
     own_error = model_ok & catalogue_rows & ~plain
     for i in np.flatnonzero(own_error & nonblank(supports.error, n_rows)).tolist():
-        row_errors[i].append(supports.error if np.ndim(supports.error) == 0 else supports.error[i])
+        row_errors[i].append(labels.cite(supports.error if np.ndim(supports.error) == 0 else supports.error[i], i))
     # a row whose bearing did not resolve has its error already; rows of a model with its own tables report theirs
     resolved = (np.broadcast_to(supports.resolved, (n_rows,)) | ~catalogue_rows) & model_ok
 

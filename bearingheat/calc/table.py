@@ -408,11 +408,12 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
     results.index = table.index
     # the cell's own fault leads, before the model's message; an unknown designation without dimensions (why the
     # model's inputs are missing) leads before that
+    cite = converted.labels.cite  # (a workbook's messages name the cell of the column they begin with)
     _add_messages(results, [(i, "error", m, True) for i, errors in _flagged(converted.errors_by_row)
                             for m in reversed(errors)]
                   + [(i, "warning", m, False) for i, warnings in _flagged(converted.warnings_by_row) for m in warnings]
-                  + [(i, level, m, True) for i, level, m in fill_problems if level == "error"]
-                  + [(i, level, m, False) for i, level, m in
+                  + [(i, level, cite(m, i), True) for i, level, m in fill_problems if level == "error"]
+                  + [(i, level, cite(m, i), False) for i, level, m in
                      extra_problems + _implausible_relations(frame, converted.labels, from_table)])
     if effects is not None:
         effects.apply(frame, results)
@@ -420,7 +421,7 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
     for ext in EXTENSIONS.values():
         with np.errstate(all="ignore"):  # rows in error are computed too, and masked afterwards
             columns, problems = ext.extend(frame, results)
-        _add_messages(results, [(i, level, m, False) for i, level, m in problems])
+        _add_messages(results, [(i, level, cite(m, i), False) for i, level, m in problems])
         extension_columns.append((columns, output_units(owner=ext.owner)))
     if vm_read is not None and not np.isnan(vm_read).all():
         extension_columns.append((pd.DataFrame({"VM_chart": vm_read}, index=results.index), {"VM_chart": "1"}))

@@ -137,8 +137,8 @@ def test_a_row_computed_again_names_its_own_cell():
     assert out["status"].tolist() == ["ok", "error"]
     assert out["message"].iat[1] == (
         "Supports!nu8 nu [mm^2/s]: missing; the operating viscosity (base oil viscosity for grease) is needed; "
-        "nu [mm^2/s]: cannot be taken at T_op; no equilibrium below 150 degC: the friction heat exceeds the heat "
-        "carried away (the temperature runs away); give T_bearing; Supports!n8 n [rpm]: 60000 is above the "
+        "Supports!nu8 nu [mm^2/s]: cannot be taken at T_op; no equilibrium below 150 degC: the friction heat exceeds "
+        "the heat carried away (the temperature runs away); give T_bearing; Supports!n8 n [rpm]: 60000 is above the "
         "limiting speed n_G = 17000 1/min of 6205 (Schaeffler HR 1, 2006); check the speed and its unit")
 
 

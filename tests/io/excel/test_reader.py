@@ -186,3 +186,29 @@ def test_messages_of_a_table_of_two_models_name_their_own_cells(tmp_path):
     assert list(result["status"]) == ["ok", "error", "error"]
     assert result["message"][1].startswith("Supports row 4 oil_level [mm]: missing; an oil bath needs the oil level")
     assert result["message"][2].startswith("Supports!H5 nu [mm^2/s]: -1 must be > 0; ")
+
+
+def test_row_messages_name_the_cell_of_their_column(tmp_path):
+    """Messages of the bearing keys, the model name and the heat balance begin with the cell to fix, as the
+    friction model's own messages do (a blank cell of a column the sheet has, or the row where it has none)."""
+    header = ["id", "designation", "d", "D", "n", "Fr", "Fa", "nu", "lubrication", "arrangement", "T_amb", "model",
+              "B", "T", "n_G"]
+    units = ["-", "-", "mm", "mm", "1/min", "kN", "kN", "mm^2/s", "-", "-", "degC", "-", "mm", "mm", "1/min"]
+    good = ["6208", 40, 80, 1480, 3.2, 0.9, 40]
+    rows = [["x", *good, "Oil_Bath", None, 20, None, 18],
+            ["y", *good, None, None, 20, None, 18],
+            ["z", *good, "oil_bath", "triple", 20, None, 18],
+            ["m", *good, "oil_bath", None, 20, "foo", 18],
+            ["q", "XYZ123", *good[1:], "oil_bath", None, 20, None, 18],
+            ["t", *good, "oil_bath", None, None, None, 18],
+            ["w", *good, "oil_bath", None, 20, None, 18, None, -5]]
+    result = calc_workbook(make_workbook(tmp_path / "cells.xlsx", header, units, rows)).result
+    messages = result["message"].tolist()
+    assert messages[0] == "Supports!I3 lubrication: 'Oil_Bath' is not one of grease, oil_mist, oil_bath, circulating_oil"
+    assert messages[1] == "Supports!I4 lubrication: missing; expected one of grease, oil_mist, oil_bath, circulating_oil"
+    assert messages[2] == "Supports!J5 arrangement: 'triple' is not one of single, paired"
+    assert messages[3] == "Supports!L6 model: 'foo' is not one of schaeffler, skf"
+    assert messages[4].startswith("Supports!B7 designation: 'XYZ123' matches no row of the Schaeffler catalogue")
+    assert messages[5].startswith("Supports!K8 T_amb [degC]: missing; the heat balance (T_op, n_per) needs the ")
+    assert "Supports!O9 n_G [1/min]: -5 must be > 0" in messages[6].split("; ")
+    assert result["status"].tolist() == ["error"] * 5 + ["warning", "error"]
