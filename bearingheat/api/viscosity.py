@@ -6,6 +6,7 @@ ISO 3448 grades, ASTM D2270 viscosity index).
 from __future__ import annotations
 
 import warnings
+from collections.abc import Callable
 
 import numpy as np
 
@@ -136,7 +137,7 @@ def oil_viscosity(temperature: Quantity, *, nu40: Quantity | None = None, nu100:
     return quantity(nu, "mm^2/s")
 
 
-def _first(bad, message) -> None:
+def _first(bad: np.ndarray, message: Callable[[int, str], str]) -> None:
     """Raise :class:`ViscosityError` with ``message(i, where)`` of the first point where ``bad`` holds."""
     flat = np.ravel(bad)
     if flat.any():
@@ -152,7 +153,7 @@ def _line(pair: str, first: tuple[str, object, object], second: tuple[str, objec
     nu1, t1, nu2, t2 = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (nu1, t1, nu2, t2)))
     for name, nu in ((name1, nu1), (name2, nu2)):
         _first(~(nu >= MIN_VISCOSITY),
-               lambda i, at, name=name, nu=nu: f"{name}: {np.ravel(nu)[i]:g} mm^2/s{at} must be >= 2 (ASTM D341)")
+               lambda i, at: f"{name}: {np.ravel(nu)[i]:g} mm^2/s{at} must be >= 2 (ASTM D341)")
     _first(t1 == t2, lambda i, at: f"{pair}: both at {np.ravel(t1)[i]:g} degC{at}; two temperatures fix the line")
     _first((nu1 - nu2) * (t1 - t2) >= 0,
            lambda i, at: f"{pair}: the viscosity must fall as the temperature rises ({np.ravel(nu1)[i]:g} "
@@ -161,7 +162,7 @@ def _line(pair: str, first: tuple[str, object, object], second: tuple[str, objec
     return nu1, t1, nu2, t2
 
 
-def _check_result(nu, theta) -> None:
+def _check_result(nu: np.ndarray | float, theta: np.ndarray | float) -> None:
     """A viscosity the line gives as infinite or NaN (a temperature far below the oil's data) is refused."""
     _first(~np.isfinite(np.broadcast_to(nu, np.shape(theta)) if np.ndim(theta) else nu),
            lambda i, at: f"temperature: {np.ravel(theta)[i]:g} degC{at} is so far below the oil's data that its "

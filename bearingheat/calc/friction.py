@@ -98,7 +98,7 @@ def evaluate_catalogue_model(s: SupportArrays, labels: Labels, f2_chart: F2Chart
     bad_value("nu", "must be > 0", nu <= 0)
     bad_value("Fr", "must be >= 0", Fr < 0)
     bad_value("Fa", "must be >= 0", Fa < 0)
-    for col in ("f0", "f1", "f2"):
+    for col in ("f0", "f1", "f2", "X0", "Y0"):  # (a negative X0 or Y0 would hide behind P0 = max(..., Fr))
         bad_value(col, "must be >= 0", getattr(s, col) < 0)
 
     # --- f0: user value, or the table column of the lubrication (needle formulas need B)

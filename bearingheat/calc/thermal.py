@@ -424,6 +424,11 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
     columns: dict[str, np.ndarray | pd.Categorical] = {}
     wants_thr = bool({"B", "T", "d1", "D1"} & has) or "n_thr_catalogue" in has
     wants_balance = "T_amb" in has
+    for name, unit in (("T", "mm"), ("n_G", "1/min")):  # a width and a limiting speed are > 0 (B: the friction model)
+        values = number_column(frame, name)
+        with np.errstate(invalid="ignore"):
+            for i in np.flatnonzero(~failed & (values <= 0)):
+                problems.append((int(i), "error", f"{name} [{unit}]: {values[i]:g} must be > 0"))
     if not (wants_thr or wants_balance):
         return pd.DataFrame(index=frame.index), problems
     # (the details the heat balance reads are spread to the rows; without it n_thr and why a row has none)

@@ -148,3 +148,19 @@ def test_the_heat_balance_api_raises_for_an_ambient_temperature_out_of_range():
         bh.heat_balance("6205", d=25 * u.mm, D=52 * u.mm, B=15 * u.mm, C0=7.8 * u.kN, n=3000 * u.rpm,
                         nu=12 * u("mm^2/s"), T_amb=u.Quantity(20, "K"))
     assert str(exc.value) == "T_amb: -253.15 is outside the valid range -60 to 200 degC"
+
+
+@pytest.mark.parametrize("changes, message", [
+    ({"Y0": -1.0}, "Y0: -1 must be >= 0"),
+    ({"X0": -0.5}, "X0: -0.5 must be >= 0"),
+    ({"n_G [1/min]": -1.0}, "n_G [1/min]: -1 must be > 0"),
+    ({"n_G [1/min]": 0.0}, "n_G [1/min]: 0 must be > 0"),
+    ({"T [mm]": 0.0}, "T [mm]: 0 must be > 0"),
+])
+def test_factors_widths_and_limiting_speeds_out_of_their_range_are_errors(changes, message):
+    """A negative X0 or Y0 would hide behind P0 = max(X0*Fr + Y0*Fa, Fr); a limiting speed or a width <= 0 would
+    give n_per = n_G <= 0 or no n_thr under a mere warning."""
+    out = run(row(**changes))
+    assert out["status"].tolist() == ["error"]
+    assert message in out["message"].iat[0].split("; ")
+    assert math.isnan(out["MR [N*mm]"].iat[0])
