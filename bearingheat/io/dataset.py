@@ -18,6 +18,8 @@ import contextlib
 import glob
 import os
 import re
+import shutil
+import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -138,13 +140,39 @@ def calc_dataset(files: list[str], target, *, overwrite: bool = False, **options
     folder ``target`` (one part per input partition); ``options`` go to calc. Returns the folder."""
     import dask.dataframe as dd
 
+    _check_same_columns(files)
     supports = dd.read_parquet(files)
     results = calc(supports, **options)
     target = Path(target)
-    if overwrite and target.exists():
+    if target.exists() and any(target.iterdir()) and not overwrite:
+        raise InputError(f"-o {target} exists; give --force to replace it")
+    # written beside the target first: an earlier dataset is replaced only once every part is written
+    staging = Path(tempfile.mkdtemp(prefix=f".{target.name}.bearingheat-", suffix=".tmp",
+                                    dir=target.parent if str(target.parent) else "."))
+    try:
+        results.to_parquet(str(staging), write_index=False, schema=_schema(results._meta))  # noqa: SLF001
+        target.mkdir(exist_ok=True)
         clear_dataset(target)
-    results.to_parquet(str(target), write_index=False, schema=_schema(results._meta))  # noqa: SLF001
+        for part in sorted(staging.iterdir()):
+            os.replace(part, target / part.name)
+    finally:
+        shutil.rmtree(staging, ignore_errors=True)
     return target
+
+
+def _check_same_columns(files: list[str]) -> None:
+    """Every file of a fleet has the columns of the first (Dask computes each with the first's layout):
+    :class:`InputError` naming the first file that differs and how."""
+    first = parquet.read_schema(files[0]).names
+    for path in files[1:]:
+        names = parquet.read_schema(path).names
+        if set(names) != set(first):
+            lacks = [n for n in first if n not in names]
+            extra = [n for n in names if n not in first]
+            how = "; ".join(part for part in (f"lacks {', '.join(map(repr, lacks))}" if lacks else "",
+                                              f"has {', '.join(map(repr, extra))} besides" if extra else "") if part)
+            raise InputError(f"{path}: its columns differ from those of {files[0]} ({how}); every file of a "
+                             "fleet needs the same columns")
 
 
 def dataset_columns(target) -> list[str]:

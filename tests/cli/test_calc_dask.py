@@ -89,3 +89,27 @@ def test_force_replaces_only_the_parts_of_an_earlier_dataset(tmp_path):
     assert check_dataset_target(earlier, files, force=True) == earlier
     clear_dataset(earlier)
     assert list(earlier.iterdir()) == []
+
+
+def test_a_run_that_fails_keeps_the_earlier_dataset(tmp_path, capsys):
+    """--force replaces an earlier dataset only once every new part is written: a fleet whose files differ in
+    their columns, or whose units are wrong, is refused with the earlier parts as they were (and no staging
+    folder left behind)."""
+    fleet(tmp_path / "fleet")
+    out = tmp_path / "results"
+    assert main(["calc", str(tmp_path / "fleet"), "--dask", "--workers", "1", "-o", str(out), "-q"]) == 1
+    earlier = {p.name: p.read_bytes() for p in out.iterdir()}
+    demo = pd.read_csv(DEMO)
+    (tmp_path / "bad").mkdir()
+    demo.to_parquet(tmp_path / "bad" / "a.parquet", index=False)
+    demo.rename(columns={"Fr [kN]": "Fr [kg]"}).to_parquet(tmp_path / "bad" / "b.parquet", index=False)
+    assert main(["calc", str(tmp_path / "bad"), "--dask", "--workers", "1", "-o", str(out), "--force", "-q"]) == 2
+    assert capsys.readouterr().err.strip() == (
+        f"bearingheat calc: error: {tmp_path / 'bad' / 'b.parquet'}: its columns differ from those of "
+        f"{tmp_path / 'bad' / 'a.parquet'} (lacks 'Fr [kN]'; has 'Fr [kg]' besides); every file of a fleet needs "
+        "the same columns")
+    (tmp_path / "bad" / "a.parquet").unlink()  # one file, a unit of the wrong kind: refused while computing
+    assert main(["calc", str(tmp_path / "bad"), "--dask", "--workers", "1", "-o", str(out), "--force", "-q"]) == 2
+    assert "kilogram is a mass, not a force" in capsys.readouterr().err
+    assert {p.name: p.read_bytes() for p in out.iterdir()} == earlier
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["bad", "fleet", "results"]
