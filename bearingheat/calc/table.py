@@ -102,8 +102,8 @@ class ConvertedTable:
 
 def _convert_column(values: pd.Series, header: str, unit_text: str | None, target: str,
                     cell: Callable[[str, int], str] | None, name: str,
-                    errors: defaultdict[int, list[str]], warnings: defaultdict[int, list[str]]
-                    ) -> tuple[np.ndarray, float]:
+                    errors: defaultdict[int, list[str]], warnings: defaultdict[int, list[str]],
+                    decimal: str = ".") -> tuple[np.ndarray, float]:
     """Numbers of one column in the catalogue unit, and the catalogue units per user unit (NaN for an
     absolute temperature, which has no single factor). Cells that are no numbers, logical values,
     non-finite numbers and numbers outside the contract's valid range become row errors; numbers outside
@@ -117,8 +117,10 @@ def _convert_column(values: pd.Series, header: str, unit_text: str | None, targe
     if isinstance(values.dtype, np.dtype) and values.dtype.kind in "iuf":  # numpy numbers (to_numeric would copy)
         numeric = values.to_numpy(dtype=float)
     else:
-        numeric = pd.to_numeric(values.where(~logical, np.nan) if logical.any() else values,
-                                errors="coerce").to_numpy(dtype=float)
+        given = values.where(~logical, np.nan) if logical.any() else values
+        if decimal == ",":  # '3,2' is 3.2 and '1.480' no number (each distinct text looked at once)
+            given = pd.Series(per_distinct(given, _with_decimal_point), index=values.index, dtype=object)
+        numeric = pd.to_numeric(given, errors="coerce").to_numpy(dtype=float)
 
     def where(i):
         return f"{cell(name, i)}: " if cell else ""
@@ -135,7 +137,9 @@ def _convert_column(values: pd.Series, header: str, unit_text: str | None, targe
         if logical[i]:
             errors[i].append(f"{where(i)}{raw!r} is a logical value, not a number for {header}")
         elif not _blank(raw):
-            errors[i].append(f"{where(i)}{raw!r} is not a number for {header}")
+            mark = f" (the decimal mark is {decimal!r})" if isinstance(raw, str) and _DECIMAL_MARKS[decimal] in raw \
+                else ""
+            errors[i].append(f"{where(i)}{raw!r} is not a number for {header}{mark}")
     try:
         converted, factor = convert_column(numeric, unit_text, target, name=name, header=header, copy=False)
     except UnitError as exc:
@@ -155,6 +159,18 @@ def _convert_column(values: pd.Series, header: str, unit_text: str | None, targe
     for i, message in found_warnings:
         warnings[i].append(message)
     return converted, factor
+
+
+#: decimal mark -> the other mark, which in a number typed as text says the mark was taken wrongly
+_DECIMAL_MARKS = {".": ",", ",": "."}
+
+
+def _with_decimal_point(value):
+    """A text number with a decimal comma as pandas reads numbers ('3,2' -> '3.2'); text with a point is no
+    number then (None: '1.480' is no 1.48); numbers and blanks as they are."""
+    if not isinstance(value, str):
+        return value
+    return None if "." in value else value.replace(",", ".")
 
 
 def _is_logical(value) -> bool:
@@ -191,11 +207,12 @@ def _blank(value) -> bool:
 
 
 def to_catalogue_units(table: pd.DataFrame, *, units: dict[str, str] | None = None,
-                       cell: Callable[[str, int], str] | None = None) -> ConvertedTable:
+                       cell: Callable[[str, int], str] | None = None, decimal: str = ".") -> ConvertedTable:
     """Contract columns of ``table`` in catalogue units (unknown columns are passed through untouched).
 
     ``units`` maps a header to a unit typed in a separate units row (Excel);
-    a unit in the header itself wins.
+    a unit in the header itself wins. ``decimal`` is the decimal mark of
+    numbers typed as text ('.' or ',').
     """
     known = input_units()
     errors: defaultdict[int, list[str]] = defaultdict(list)  # only the rows that have messages
@@ -221,7 +238,7 @@ def to_catalogue_units(table: pd.DataFrame, *, units: dict[str, str] | None = No
                                       index=table.index)
             continue
         columns[name], factor = _convert_column(table[header], display, unit_text, target, cell, name, errors,
-                                                warnings)
+                                                warnings, decimal)
         headers[name] = (display, factor)
     # the arrays are calc's own (converted, or copied below): the frame takes them as they are, not stacked into
     # one block (a copy of every column, 0.08 s for 14 columns of 10^6 rows)
@@ -255,7 +272,7 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
          units: dict[str, str] | None = None, cell: Callable[[str, int], str] | None = None,
          effects=None, n_per_method: str = DEFAULT_SPEED_FACTOR_METHOD,
          viscosity_at: str = DEFAULT_VISCOSITY_AT, coefficients: pd.DataFrame | str | None = None,
-         uncertainty: str = "linearised") -> pd.DataFrame:
+         uncertainty: str = "linearised", decimal: str = ".") -> pd.DataFrame:
     """Run the friction model (and its extensions) on a table of supports.
 
     Returns the input columns followed by the result columns. ``model`` is
@@ -332,6 +349,10 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
         nu_op are one operating state; else at ``T_bearing``), 'operating'
         (T_op) or 'bearing' (``T_bearing``, the temperature n_per is found
         for). The columns ``nu_used`` and ``nu_at`` say which was used.
+    decimal : str, optional
+        The decimal mark of numbers typed as text in number columns: '.'
+        (default) or ',' (a European CSV: ``'3,2'`` is 3.2, and ``'1.480'``
+        is no number). Cells that are numbers are read as they are.
 
     Returns
     -------
@@ -370,7 +391,7 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
     if is_dask_frame(table):  # lazily, partition by partition (bearingheat.calc.distributed)
         return calc_dask(table, calc, model=model, f2_chart=f2_chart, vm_chart=vm_chart, units=units, effects=effects,
                          n_per_method=n_per_method, viscosity_at=viscosity_at, coefficients=coefficients,
-                         uncertainty=uncertainty)
+                         uncertainty=uncertainty, decimal=decimal)
     if isinstance(f2_chart, str):
         f2_chart = F2Chart.from_csv(f2_chart)
     if isinstance(vm_chart, str):
@@ -379,7 +400,9 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
         raise InputError(f"n_per_method: {n_per_method!r} is not one of {', '.join(SPEED_FACTOR_METHODS)}")
     if viscosity_at not in VISCOSITY_AT:
         raise InputError(f"viscosity_at: {viscosity_at!r} is not one of {', '.join(VISCOSITY_AT)}")
-    converted = to_catalogue_units(table, units=units, cell=cell)
+    if decimal not in (".", ","):
+        raise InputError(f"decimal: {decimal!r} is not one of '.', ','")
+    converted = to_catalogue_units(table, units=units, cell=cell, decimal=decimal)
     frame = with_bearing_groups(converted.frame)  # rows alike in every bearing input: one bearing
     if n_per_method != DEFAULT_SPEED_FACTOR_METHOD:  # the table's default for blank n_per_method cells
         frame = frame.assign(n_per_method=blanks_filled(frame, "n_per_method", n_per_method))
@@ -429,12 +452,12 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
     if coefficients is not None:
         table = fill_from_coefficients(table, pd.read_csv(coefficients) if isinstance(coefficients, str)
                                        else coefficients)
-        again = to_catalogue_units(table, units=units, cell=cell)
+        again = to_catalogue_units(table, units=units, cell=cell, decimal=decimal)
         frame = fill_from_catalogue(again.frame, again.labels)[0]  # the uncertainty columns, the same fill
     if has_uncertainty(table):
         def recalc(perturbed: pd.DataFrame) -> pd.DataFrame:
             return calc(perturbed, model=model, f2_chart=f2_chart, vm_chart=vm_chart, units=units, effects=effects,
-                        n_per_method=n_per_method, viscosity_at=viscosity_at)
+                        n_per_method=n_per_method, viscosity_at=viscosity_at, decimal=decimal)
         bands = uncertainty_bands(table, out, frame.reset_index(drop=True).set_axis(out.index), recalc,
                                   method=uncertainty)
         out = pd.concat([out.drop(columns=["status", "message"]), bands, out[["status", "message"]]], axis=1)

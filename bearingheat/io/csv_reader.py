@@ -347,11 +347,12 @@ def _read_with_pandas(text: str, path: Path, sep: str, decimal: str, text_column
 
 
 class CsvSource:
-    """A CSV file read: ``table`` (an Arrow table from pyarrow's reader, or a DataFrame from pandas' parser)
-    and ``lines``, the file line of each row (None when they cannot be told)."""
+    """A CSV file read: ``table`` (an Arrow table from pyarrow's reader, or a DataFrame from pandas' parser),
+    ``lines``, the file line of each row (None when they cannot be told), and the file's ``decimal`` mark (for
+    the numbers the readers left as text: calc reads them with it)."""
 
-    def __init__(self, table: pa.Table | pd.DataFrame, lines: RowLines | None):
-        self.table, self.lines = table, lines
+    def __init__(self, table: pa.Table | pd.DataFrame, lines: RowLines | None, decimal: str = "."):
+        self.table, self.lines, self.decimal = table, lines, decimal
 
     def __len__(self) -> int:
         return self.table.num_rows if isinstance(self.table, pa.Table) else len(self.table)
@@ -376,7 +377,7 @@ def read_source(path, *, sep: str | None = None, decimal: str | None = None, wha
     if table is None:
         table = _read_with_pandas(raw.decode("utf-8"), path, sep, decimal, text_columns)
     del raw
-    source = CsvSource(table, None)
+    source = CsvSource(table, None, decimal)
     if len(source) == 0:
         raise InputError(f"{path}: no {what} (only a header row)")
     source.lines = RowLines(lines) if len(lines) == len(source) else None

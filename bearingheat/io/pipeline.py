@@ -134,12 +134,12 @@ def _block_table(result: pd.DataFrame, block: pd.DataFrame, source: pa.Table | N
     return pa.Table.from_arrays(arrays, schema=pa.schema(fields))
 
 
-def _read(path, sep: str | None, decimal: str | None) -> tuple[pa.Table | pd.DataFrame, RowLines | None]:
-    """The input table (Arrow where pyarrow read it) and the file line of each row (CSV)."""
+def _read(path, sep: str | None, decimal: str | None) -> tuple[pa.Table | pd.DataFrame, RowLines | None, str]:
+    """The input table (Arrow where pyarrow read it), the file line of each row and the decimal mark (CSV)."""
     if Path(path).suffix.lower() in ARROW_SUFFIXES:
-        return read_arrow_table(path), None
+        return read_arrow_table(path), None, "."
     source = read_source(path, sep=sep, decimal=decimal)
-    return source.table, source.lines
+    return source.table, source.lines, source.decimal
 
 
 def calc_file(path, *, sep: str | None = None, decimal: str | None = None, progress=None,
@@ -151,7 +151,7 @@ def calc_file(path, *, sep: str | None = None, decimal: str | None = None, progr
     know pass through. ``progress`` (``start``, ``update``, ``finish``) is advanced block by block; ``options``
     go to calc. A table calc cannot use at all raises its :class:`~bearingheat.errors.InputError`.
     """
-    table, lines = _read(path, sep, decimal)
+    table, lines, mark = _read(path, sep, decimal)
     rows = table.num_rows if isinstance(table, pa.Table) else len(table)
     options = _loaded(options)
     blocks = []
@@ -166,7 +166,7 @@ def calc_file(path, *, sep: str | None = None, decimal: str | None = None, progr
         else:
             block = table.iloc[start:stop]
         usable, extras = set_aside(block)
-        result = calc(usable, **options)
+        result = calc(usable, decimal=mark, **options)
         for position, header, values in extras:
             result.insert(position, header, values.to_numpy())
         cite_rows(result, lines[start:stop] if lines is not None else None)

@@ -49,6 +49,7 @@ def _read_frame(path, *, sep: str | None, decimal: str | None, what: str) -> pd.
     table = source.table.to_pandas() if isinstance(source.table, pa.Table) else source.table
     table.attrs["lines"] = source.lines
     table.attrs["source"] = str(path)
+    table.attrs["decimal"] = source.decimal
     return table
 
 
@@ -60,7 +61,8 @@ def read_csv(path, *, sep: str | None = None, decimal: str | None = None) -> pd.
     (:func:`sniff_format`); a column named twice is refused by its name;
     columns the contract does not know are read as text and passed through
     untouched. ``attrs['lines']`` holds the file line number of each row
-    (the header is line 1), for :func:`cite_rows`.
+    (the header is line 1), for :func:`cite_rows`; ``attrs['decimal']`` the
+    decimal mark (calc's ``decimal``, for numbers left as text).
     """
     return _read_frame(path, sep=sep, decimal=decimal, what="supports")
 
@@ -136,7 +138,7 @@ def calc_csv(path, *, sep: str | None = None, decimal: str | None = None, **opti
     table = read_csv(path, sep=sep, decimal=decimal)
     lines = table.attrs.get("lines")
     usable, extras = set_aside(table)
-    result = calc(usable, **options)
+    result = calc(usable, decimal=table.attrs["decimal"], **options)
     for position, header, values in extras:
         result.insert(position, header, values.to_numpy())
     return cite_rows(result, lines)

@@ -289,3 +289,27 @@ def test_write_csv_writes_the_text_of_pandas_to_csv(tmp_path):
     assert (tmp_path / "out.csv").read_text() == escape_formulas(frame).to_csv(index=False)
     write_csv(frame, tmp_path / "raw.csv", escape=False)
     assert (tmp_path / "raw.csv").read_text() == frame.to_csv(index=False)
+
+
+def test_numbers_left_as_text_are_read_with_the_files_decimal_mark(tmp_path):
+    """A cell pyarrow cannot read as a number leaves its column as text; calc then reads the column's numbers with
+    the file's decimal mark: with decimal commas '3,2' is 3.2 and '1.480' (a grouped 1480?) no number, never
+    1.48; with decimal points '3,2' is no number, and the message says which mark was used."""
+    head = "id;designation;lubrication;n [rpm];Fr [kN];Fa [kN];nu [mm^2/s]\n"
+    path = tmp_path / "comma.csv"
+    path.write_text(head + "a;6208;oil_bath;1.480;3,2;0,9;40\nb;6208;oil_bath;1480;3,2;0,9;40\n"
+                           "c;6208;oil_bath;1480;tbd;0,9;40\n")
+    out = calc_csv(path, decimal=",")
+    assert out["status"].tolist() == ["error", "ok", "error"]
+    assert out["message"].iat[0].startswith("row 2 (id \"a\"): '1.480' is not a number for n [rpm] (the decimal mark "
+                                            "is ',')")
+    assert out["message"].iat[2] == "row 4 (id \"c\"): 'tbd' is not a number for Fr [kN]"
+    assert out["MR [N*mm]"].iat[1] == pytest.approx(138.478, abs=5e-4)  # Fr = 3.2 kN, as the demo's 6208
+    assert main(["calc", str(path), "--decimal", ",", "-o", str(tmp_path / "out.parquet"), "-q"]) == 1  # in blocks
+    blocks = pd.read_parquet(tmp_path / "out.parquet")
+    assert blocks["message"].tolist() == out["message"].tolist()
+    assert blocks["MR [N*mm]"].iat[1] == out["MR [N*mm]"].iat[1]
+    path.write_text(head + "a;6208;oil_bath;1.480;3,2;0,9;40\n")  # one point number: the file reads with points
+    message = calc_csv(path)["message"].iat[0]
+    assert message == ("row 2 (id \"a\"): '3,2' is not a number for Fr [kN] (the decimal mark is '.'); '0,9' is not a "
+                       "number for Fa [kN] (the decimal mark is '.')")
