@@ -5,6 +5,7 @@ an error, and a number that is only implausible (a unit mix-up, usually) is
 a warning naming the column, the value and the range.
 """
 import math
+import re
 
 import numpy as np
 import pandas as pd
@@ -13,6 +14,7 @@ import pytest
 
 import bearingheat as bh
 from bearingheat.calc.table import calc
+from bearingheat.errors import InputError
 
 u = pint.get_application_registry()
 
@@ -164,3 +166,24 @@ def test_factors_widths_and_limiting_speeds_out_of_their_range_are_errors(change
     assert out["status"].tolist() == ["error"]
     assert message in out["message"].iat[0].split("; ")
     assert math.isnan(out["MR [N*mm]"].iat[0])
+
+
+@pytest.mark.parametrize("header, written", [
+    ("fr [kN]", "Fr [kN]"), ("FR [kN]", "Fr [kN]"), ("Fr (kN)", "Fr [kN]"), ("Fr, kN", "Fr [kN]"),
+    ("Fr/kN", "Fr [kN]"), ("Fr in kN", "Fr [kN]"), ("FR", "Fr [N]"), ("Nu [cSt]", "nu [cSt]"),
+])
+def test_a_header_that_looks_like_a_missing_number_column_is_refused(header, written):
+    """Passed through as an unknown column, its loads would count as 0 with status ok."""
+    table = pd.DataFrame([{k: v for k, v in row().items() if not k.startswith(written.split(" ")[0] + " ")}])
+    table[header] = 3.2
+    meant = written.split(" ")[0]
+    message = (f"column {header!r} looks like {meant!r}, which calc would not read from it: name it {written!r} "
+               f"(headers are 'name [unit]', the name in its own letters); as it is, the table would be computed as if "
+               f"{meant} were not given")
+    with pytest.raises(InputError, match=f"^{re.escape(message)}$"):
+        calc(table)
+
+
+def test_columns_of_the_users_own_are_still_passed_through():
+    out = run(row(**{"ID": "x", "E": 2.1e5, "Fa (kN)": 9.0, "note": "spare"}))  # 'Fa [kN]' is there: Fa (kN) is his
+    assert out["status"].tolist() == ["ok"] and out["E"].iat[0] == 2.1e5
