@@ -334,6 +334,7 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
             contract_headers.setdefault(contract, header)
 
     wanted = [col for col, _ in columns]
+    _refuse_merged_data(ws, wanted, first_data)
     data: list[list] = [[] for _ in columns]
     rows: list[int] = []
     formula_cells: dict[tuple[str, int], str] = {}
@@ -386,6 +387,24 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
                      letters=letters, rows=rows, headers=contract_headers, formula_cells=formula_cells,
                      uncached=uncached)
     return table, info
+
+
+def _refuse_merged_data(ws: Worksheet, columns: list[int], first_data: int) -> None:
+    """:class:`ExcelError` for merged cells among the supports' rows: the sheet shows their value in every cell,
+    but only the first cell holds it, so the other rows would read as blank (a load of 0)."""
+    wanted = sorted(columns)
+    for merged in ws.merged_cells.ranges:
+        top = max(merged.min_row, first_data)
+        if merged.max_row < first_data:
+            continue
+        inside = sum(merged.min_col <= col <= merged.max_col for col in wanted)
+        cells = (merged.max_row - top + 1) * inside
+        first_inside = merged.min_row >= first_data and merged.min_col in wanted
+        if cells - first_inside > 0:
+            raise ExcelError(f"{_ref(ws.title)}!{merged.coord}: merged cells among the rows of supports; the sheet "
+                             f"shows their value on every row, but only {get_column_letter(merged.min_col)}"
+                             f"{merged.min_row} holds it, so the other rows would read as blank. Unmerge them and "
+                             "give each row its own value")
 
 
 def stored_cells(ws: Worksheet) -> dict[tuple[int, int], Any]:

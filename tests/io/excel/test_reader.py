@@ -212,3 +212,24 @@ def test_row_messages_name_the_cell_of_their_column(tmp_path):
     assert messages[5].startswith("Supports!K8 T_amb [degC]: missing; the heat balance (T_op, n_per) needs the ")
     assert "Supports!O9 n_G [1/min]: -5 must be > 0" in messages[6].split("; ")
     assert result["status"].tolist() == ["error"] * 5 + ["warning", "error"]
+
+
+def test_merged_cells_over_rows_of_supports_are_refused(tmp_path):
+    """A load merged over two rows shows 3.2 on both, but the second row holds no value (it would be 0 kN)."""
+    path = make_workbook(tmp_path / "merged.xlsx")
+    workbook = openpyxl.load_workbook(path)
+    ws = workbook["Supports"]
+    ws["F4"] = None
+    ws.merge_cells("F3:F4")
+    ws.merge_cells("N3:P5")  # a note of the designer's beside the table: not read, not refused
+    workbook.save(path)
+    message = ("Supports!F3:F4: merged cells among the rows of supports; the sheet shows their value on every row, "
+               "but only F3 holds it, so the other rows would read as blank. Unmerge them and give each row its own "
+               "value")
+    with pytest.raises(ExcelError, match=f"^{re.escape(message)}$"):
+        read_supports(path)
+    workbook["Supports"].unmerge_cells("F3:F4")
+    workbook["Supports"]["F4"] = 3.2
+    workbook.save(path)
+    table, _ = read_supports(path)
+    assert table["Fr"].tolist()[:2] == [3.2, 3.2]
