@@ -158,7 +158,9 @@ class _Row:
         cell = f"{self.info.sheet_ref}!{self.info.letters[header]}{self.source_row}"
         factor = self.factors[name]
         scaled = cell if factor == 1.0 else f"({cell}*{excel_number(factor)})"
-        return f"IF(ISBLANK({cell}),{blank},{scaled})"
+        # blank as calc reads it: an empty cell, or one of only spaces (ISBLANK is false there, and the
+        # arithmetic would give #VALUE!)
+        return f'IF(TRIM({cell}&"")="",{blank},{scaled})'
 
     def text(self, name: str) -> str | None:
         header = self.info.headers.get(name)

@@ -139,20 +139,20 @@ def test_formula_text_of_a_radial_ball_bearing(tmp_path):
     assert cell["M1 load"] == "P1: 3.3·Fa − 0.1·Fr (P1 >= Fr)"
     # the operating point in catalogue units: each input cell read once, with what a blank cell means to calc
     # (the loads 0, the bore of the designation, n and nu missing) and the unit factor of the units row
-    assert cell["dM"] == "=(IF(ISBLANK(Supports!C3),40,Supports!C3)+IF(ISBLANK(Supports!D3),80,Supports!D3))/2"
-    assert cell["n"] == "=IF(ISBLANK(Supports!E3),NA(),Supports!E3)"
-    assert cell["nu"] == "=IF(ISBLANK(Supports!H3),NA(),Supports!H3)"
-    assert cell["Fr"] == "=IF(ISBLANK(Supports!F3),0,(Supports!F3*1000))"
-    assert cell["Fa"] == "=IF(ISBLANK(Supports!G3),0,(Supports!G3*1000))"
+    assert cell["dM"] == "=(IF(TRIM(Supports!C3&\"\")=\"\",40,Supports!C3)+IF(TRIM(Supports!D3&\"\")=\"\",80,Supports!D3))/2"
+    assert cell["n"] == "=IF(TRIM(Supports!E3&\"\")=\"\",NA(),Supports!E3)"
+    assert cell["nu"] == "=IF(TRIM(Supports!H3&\"\")=\"\",NA(),Supports!H3)"
+    assert cell["Fr"] == "=IF(TRIM(Supports!F3&\"\")=\"\",0,(Supports!F3*1000))"
+    assert cell["Fa"] == "=IF(TRIM(Supports!G3&\"\")=\"\",0,(Supports!G3*1000))"
     # f0 of the 6208 (the Schaeffler catalogue table: 1.3 for grease and oil mist, 2 in an oil bath or circulating oil)
-    assert cell["f0"] == ('=IF(ISBLANK(Supports!T3),IF(OR(EXACT(TRIM(Supports!I3),"grease"),EXACT(TRIM(Supports!I3),'
+    assert cell["f0"] == ('=IF(TRIM(Supports!T3&\"\")=\"\",IF(OR(EXACT(TRIM(Supports!I3),"grease"),EXACT(TRIM(Supports!I3),'
                           '"oil_mist")),1.3,IF(OR(EXACT(TRIM(Supports!I3),"oil_bath"),EXACT(TRIM(Supports!I3),'
                           '"circulating_oil")),2,NA())),Supports!T3)')
     # f1 = 0.0009*(P0/C0)^0.5 of the 62 series; C0 of the table where the cell is blank (18 kN)
-    assert cell["f1"] == ("=IF(ISBLANK(Supports!U3),0.0009*(M3/IF(ISBLANK(Supports!L3),18000,(Supports!L3*1000)))"
+    assert cell["f1"] == ("=IF(TRIM(Supports!U3&\"\")=\"\",0.0009*(M3/IF(TRIM(Supports!L3&\"\")=\"\",18000,(Supports!L3*1000)))"
                           "^0.5,Supports!U3)")
     # P0 = max(X0*Fr + Y0*Fa, Fr) with X0 = 0.6, Y0 = 0.5 of the DP11A manual table 1 for a blank cell
-    assert cell["P0"] == ("=IF(L3>0,MAX(IFERROR(IF(ISBLANK(Supports!O3),0.6,Supports!O3)*K3+IF(ISBLANK(Supports!P3),"
+    assert cell["P0"] == ("=IF(L3>0,MAX(IFERROR(IF(TRIM(Supports!O3&\"\")=\"\",0.6,Supports!O3)*K3+IF(TRIM(Supports!P3&\"\")=\"\","
                           "0.5,Supports!P3)*L3,K3),K3),K3)")
     assert cell["P1"] == "=MAX(3.3*L3-0.1*K3,K3)"
     assert cell["M0"] == "=D3*IF(J3*I3>=2000,(J3*I3)^(2/3),160)*H3^3*1E-07"
@@ -162,7 +162,7 @@ def test_formula_text_of_a_radial_ball_bearing(tmp_path):
     assert cell["NR"] == "=R3*I3/9550"
     second = {name: ws.cell(4, header.index(name) + 1).value for name in header}  # NU208-E: M1 = f1*Fr*dM
     assert second["M1 load"] == "Fr" and second["P1"] is None
-    assert second["f1"] == "=IF(ISBLANK(Supports!U4),0.0003,Supports!U4)"
+    assert second["f1"] == "=IF(TRIM(Supports!U4&\"\")=\"\",0.0003,Supports!U4)"
     assert second["f2"] == "=IF(L4>0,NA(),0)"  # NU: no ribs on one ring, an axial load is an error of calc
     assert second["M1"] == "=E4*K4*H4"
     assert ws.cell(3, header.index("M0") + 1).style == "bearingheat formula"
@@ -191,3 +191,18 @@ def test_unit_factors_from_pint():
 @pytest.mark.parametrize("value", [1000.0, 4.4482216152605, 1e-07, 2.0 / 3.0, 25.4, 123456789.0, 1e22])
 def test_excel_number_reads_back_exactly(value):
     assert float(excel_number(value).replace("E", "e")) == value
+
+
+@pytest.mark.integration
+def test_a_cell_of_spaces_is_blank_to_the_formulas_as_to_calc(tmp_path):
+    """calc reads a cell of only spaces as blank (Fa given as nothing: 0); the live formulas test blanks the same
+    way, so they compute what calc computed instead of #VALUE!."""
+    require_soffice()
+    rows = [list(r) for r in ROWS[:3]]
+    rows[0][7] = "   "  # Fa of the radial ball bearing
+    rows[2][12] = " "  # Y of the tapered roller bearing: its table value
+    source = make_workbook(tmp_path / "spaces.xlsx", HEADER, UNITS, rows)
+    run = calc_workbook(source, tmp_path / "live.xlsx", formulas=True)
+    assert run.result["status"].tolist() == ["ok", "ok", "ok"]
+    (recalculated,) = convert([tmp_path / "live.xlsx"], "xlsx", tmp_path / "lo")
+    assert assert_formulas_equal_python(recalculated, run.result) == run.result[LIVE].notna().sum().sum()
