@@ -21,7 +21,9 @@ import pandas as pd
 from bearingheat.io.excel import style as st
 from bearingheat.io.excel.formulas import live_formulas
 from bearingheat.io.excel.freshness import ConditionalRule, conditional_rules, freshness_check, snapshot_base
+from bearingheat.io.excel.ownership import read_companions, read_marks
 from bearingheat.io.excel.printing import PrintSetup
+from bearingheat.io.excel.reader import defined_name_values
 from bearingheat.io.excel.sheetxml import cells_sheet_xml, results_sheet_xml
 from bearingheat.io.excel.writer import fill_sheet, result_table
 
@@ -112,7 +114,38 @@ def results_sheets(source: Path, workbook, table: pd.DataFrame, info, result: pd
         sheets.companions.append(CellsSheet("snapshot", snapshot_base(info.sheet), check.snapshot))
     if duty is not None:
         sheets.companions.append(TableSheet("duty", duty_base(info.sheet), duty))
+    sheets.companions += _emptied_companions(workbook, info.sheet, {c.role for c in sheets.companions})
     return sheets
+
+
+#: what an emptied companion sheet says, by role (its numbers would be stale beside the new results)
+_EMPTIED = {
+    "duty": "No duty cycle: the last run of calc on {sheet!r} found none (no support, case and time_share columns), "
+            "so this summary is empty; its earlier numbers would not match the results.",
+    "snapshot": "No live formulas: the last run of calc on {sheet!r} wrote numbers (without --formulas), so this copy "
+                "of the inputs is empty.",
+}
+
+
+def _emptied_companions(workbook, input_sheet: str, written: set[str]) -> list[CellsSheet]:
+    """The companion sheets an earlier run wrote for ``input_sheet`` that this run does not write (a duty cycle
+    since removed from the sheet, a run without --formulas after one with): each is written again holding only
+    a note, under its mark, so that no stale numbers stay beside the new results."""
+    pairs = defined_name_values(workbook)
+    marks, owned = read_marks(pairs), read_companions(pairs)
+    present = {name.casefold() for name in workbook.sheetnames}
+    emptied = []
+    for k, (results, source) in marks.items():
+        if source != input_sheet or results is None or results.casefold() not in present:
+            continue
+        for role, sheet in owned.get(k, {}).items():
+            if role in written or role not in _EMPTIED or sheet is None or sheet.casefold() not in present:
+                continue
+            hidden = next(ws.sheet_state != "visible" for ws in workbook.worksheets
+                          if ws.title.casefold() == sheet.casefold())
+            base = duty_base(input_sheet) if role == "duty" else snapshot_base(input_sheet)
+            emptied.append(CellsSheet(role, base, [(1, 1, _EMPTIED[role].format(sheet=input_sheet))], hidden))
+    return emptied
 
 
 def _title_columns(columns: list[str]) -> int:

@@ -118,3 +118,29 @@ def test_shares_not_summing_to_1_are_refused(duty_workbook, tmp_path, capsys):
         "bearingheat calc: error: support 'input shaft A': the time_share values of its cases (full load 0.3, "
         "part load 0.5, idle 0.3) sum to 1.1, not 1 (within 0.1%)\n")
     assert not (tmp_path / "out.xlsx").exists()
+
+
+@pytest.mark.parametrize("in_place", [True, False])
+def test_companions_a_run_no_longer_writes_are_emptied(duty_workbook, tmp_path, in_place):
+    """The designer removes the duty cycle (and runs without --formulas): the earlier 'Duty cycle' summary and
+    the hidden copy of the inputs are not left with numbers that no longer match the results; each keeps its
+    place, mark and visibility and holds a note instead."""
+    calc_workbook(duty_workbook, in_place=True, formulas=True)
+    workbook = openpyxl.load_workbook(duty_workbook)
+    ws = workbook["Supports"]
+    for name in ("support", "case", "time_share"):
+        ws.delete_cols([c.value for c in ws[1]].index(name) + 1)
+    workbook.save(duty_workbook)
+    out = duty_workbook if in_place else tmp_path / "copy.xlsx"
+    run = calc_workbook(duty_workbook, None if in_place else out, in_place=in_place)
+    assert run.duty is None
+    assert run.companions == {"duty": "Duty cycle", "snapshot": "Calc inputs"}
+    after = openpyxl.load_workbook(out)
+    assert after.sheetnames == ["Supports", "Results", "Instructions", "Lists", "Calc inputs", "Duty cycle"]
+    assert list(after["Duty cycle"].iter_rows(values_only=True)) == [(
+        "No duty cycle: the last run of calc on 'Supports' found none (no support, case and time_share columns), so "
+        "this summary is empty; its earlier numbers would not match the results.",)]
+    assert after["Duty cycle"].sheet_state == "visible" and after["Calc inputs"].sheet_state == "hidden"
+    assert list(after["Calc inputs"].iter_rows(values_only=True)) == [(
+        "No live formulas: the last run of calc on 'Supports' wrote numbers (without --formulas), so this copy of "
+        "the inputs is empty.",)]
