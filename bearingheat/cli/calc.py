@@ -109,9 +109,20 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     dask.add_argument("--scheduler", metavar="ADDRESS",
                       help="--dask: the scheduler of an existing dask.distributed cluster (tcp://host:8786); "
                            "default a local cluster of worker processes")
-    dask.add_argument("--workers", metavar="N", type=int,
+    dask.add_argument("--workers", metavar="N", type=_worker_count,
                       help="--dask without --scheduler: worker processes of the local cluster (default one per CPU "
                            "core)")
+
+
+def _worker_count(text: str) -> int:
+    """--workers: a whole number >= 1 (a usage error naming the value otherwise)."""
+    try:
+        count = int(text)
+    except ValueError:
+        count = 0
+    if count < 1:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number of worker processes (a whole number >= 1)")
+    return count
 
 
 def _load_effects(path: str | None):
@@ -124,6 +135,12 @@ def _load_effects(path: str | None):
         raise UsageError(f"--effects {path}: {exc}") from exc
 
 
+def _inputs(args: argparse.Namespace, source: Path) -> tuple:
+    """Every file the run reads: the table and the files of --f2-chart, --vm-chart, --effects, --coefficients
+    (no output may overwrite one of them)."""
+    return (source, args.f2_chart, args.vm_chart, args.effects, args.coefficients)
+
+
 def _output(args: argparse.Namespace, source: Path) -> Path | None:
     """The real file -o names, checked before any work: exists (needs --force), is the input, read-only ..."""
     if not args.output:
@@ -132,7 +149,7 @@ def _output(args: argparse.Namespace, source: Path) -> Path | None:
         check_table_suffix(args.output, also=EXCEL_SUFFIXES)
     except InputError as exc:
         raise UsageError(str(exc)) from exc
-    return safe_output(args.output, force=args.force, inputs=(source,))
+    return safe_output(args.output, force=args.force, inputs=_inputs(args, source))
 
 
 def _pdf(args: argparse.Namespace, workbook: Path | None, source: Path) -> Path | None:
@@ -142,7 +159,7 @@ def _pdf(args: argparse.Namespace, workbook: Path | None, source: Path) -> Path 
     if workbook is None or workbook.suffix.lower() not in EXCEL_SUFFIXES:
         raise UsageError("--pdf prints the results sheet of a workbook: give -o OUTPUT.xlsx (or --in-place)")
     from bearingheat.io.excel.printing import pdf_output
-    return pdf_output(workbook, force=args.force, inputs=(source,))
+    return pdf_output(workbook, force=args.force, inputs=_inputs(args, source))
 
 
 def _calc_options(args: argparse.Namespace) -> dict:
@@ -193,7 +210,7 @@ def run(args: argparse.Namespace) -> int:
 def _write_duty_beside(duty: pd.DataFrame, target: Path, source: Path, args: argparse.Namespace) -> None:
     """The duty-cycle summary per support beside the results: <name>.duty.<suffix>."""
     duty_target = safe_output(target.with_name(f"{target.stem}.duty{target.suffix}"), force=args.force,
-                              inputs=(source,))
+                              inputs=_inputs(args, source))
     write_table(duty, duty_target, escape=not args.no_csv_escape)
 
 

@@ -35,8 +35,10 @@ __all__ = ["dataset_files", "is_dataset", "check_dataset_target", "calc_dataset"
 
 
 def is_dataset(text: str) -> bool:
-    """True when an INPUT names a folder or a glob pattern (``*``, ``?``, ``[``) rather than one file."""
-    return Path(text).is_dir() or any(mark in text for mark in "*?[")
+    """True when an INPUT names a folder or a glob pattern (``*``, ``?``, ``[``) rather than one file (a file
+    that exists is a file, whatever its name holds: ``supports [v2].csv``)."""
+    path = Path(text)
+    return path.is_dir() or (not path.is_file() and any(mark in text for mark in "*?["))
 
 
 def dataset_files(text: str) -> list[str]:

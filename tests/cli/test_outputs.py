@@ -81,6 +81,32 @@ def test_output_is_never_the_input(tmp_path, capsys):
     assert digest(source) == before
 
 
+def test_output_is_never_a_file_the_run_reads(tmp_path, capsys):
+    """The f2 chart, VM chart and coefficients files are inputs as well: -o --force does not write over them."""
+    chart = tmp_path / "f2.csv"
+    chart.write_bytes((EXAMPLES.parent / "docs" / "f2_chart_example.csv").read_bytes())
+    before = digest(chart)
+    assert main(["calc", str(EXAMPLE_CSV), "--f2-chart", str(chart), "-o", str(chart), "--force", "-q"]) == 2
+    assert _err(capsys) == f"bearingheat calc: error: {chart} is the input file; write the results to another file"
+    assert digest(chart) == before
+
+
+def test_an_input_file_with_glob_characters_in_its_name_is_read(tmp_path, capsys):
+    source = tmp_path / "supports [v2].csv"
+    source.write_bytes(EXAMPLE_CSV.read_bytes())
+    assert main(["calc", str(source), "-q"]) == 0
+
+
+@pytest.mark.parametrize("workers", ["-1", "0", "two"])
+def test_workers_must_be_a_whole_number_of_at_least_one(tmp_path, capsys, workers):
+    with pytest.raises(SystemExit) as exc:
+        main(["calc", str(tmp_path), "--dask", "--workers", workers, "-o", str(tmp_path / "out")])
+    assert exc.value.code == 2
+    assert capsys.readouterr().err.splitlines()[-1] == (
+        f"bearingheat calc: error: argument --workers: {workers!r} is not a number of worker processes (a whole "
+        "number >= 1)")
+
+
 def test_output_through_a_symlink_writes_the_real_file(tmp_path, capsys):
     real = tmp_path / "real.csv"
     real.write_text("old")
