@@ -1,6 +1,8 @@
 """JSON writing helpers shared by the report writers and the command line."""
 from __future__ import annotations
 
+import datetime
+import decimal
 import json
 import math
 
@@ -16,8 +18,13 @@ def json_safe(value):
     Dicts, lists and tuples are walked (tuples become lists); numpy floats and
     integers become Python numbers.
 
+    Dates and times (a passed-through column) become ISO 8601 text, decimals
+    floats, bytes UTF-8 text.
+
     >>> json_safe({"f": float("nan"), "t": [1.5, float("inf")], "k": np.int64(3)})
     {'f': None, 't': [1.5, None], 'k': 3}
+    >>> json_safe([pd.Timestamp("2024-05-01"), datetime.date(2024, 5, 2), decimal.Decimal("1.25")])
+    ['2024-05-01T00:00:00', '2024-05-02', 1.25]
     """
     if isinstance(value, dict):
         return {k: json_safe(v) for k, v in value.items()}
@@ -27,6 +34,18 @@ def json_safe(value):
         return float(value) if math.isfinite(value) else None
     if isinstance(value, np.integer):
         return int(value)
+    if isinstance(value, (np.bool_,)):
+        return bool(value)
+    if value is pd.NaT:
+        return None
+    if isinstance(value, np.datetime64):
+        value = pd.Timestamp(value)
+    if isinstance(value, (datetime.date, datetime.time)):  # (a pd.Timestamp is a datetime.datetime)
+        return value.isoformat()
+    if isinstance(value, decimal.Decimal):
+        return float(value) if value.is_finite() else None
+    if isinstance(value, bytes):
+        return value.decode("utf-8", "replace")
     return value
 
 

@@ -229,3 +229,24 @@ def test_the_progress_bar_is_drawn_on_a_terminal_only(tmp_path, monkeypatch, cap
     monkeypatch.undo()
     assert main(["calc", str(source), "-o", str(tmp_path / "out.parquet"), "--force"]) == 1
     assert capsys.readouterr().err == ""  # stderr is no terminal here
+
+
+def test_json_carries_dates_and_decimals_of_passed_through_columns(tmp_path, capsys):
+    """A column calc does not know passes through, also into --json: dates as ISO 8601 text, decimals as numbers
+    (not a TypeError traceback)."""
+    import datetime
+    import decimal
+    import json
+
+    import pyarrow as pa
+    import pyarrow.parquet as parquet
+
+    table = pa.Table.from_pandas(pd.read_csv(EXAMPLE), preserve_index=False)
+    rows = table.num_rows
+    table = table.append_column("inspected", pa.array([datetime.date(2024, 5, 1)] * rows, pa.date32()))
+    table = table.append_column("logged", pa.array([datetime.datetime(2024, 5, 1, 8, 30)] * rows, pa.timestamp("s")))
+    table = table.append_column("price", pa.array([decimal.Decimal("12.50")] * rows, pa.decimal128(6, 2)))
+    parquet.write_table(table, tmp_path / "dated.parquet")
+    assert main(["calc", str(tmp_path / "dated.parquet"), "--json"]) == 0
+    first = json.loads(capsys.readouterr().out)["results"][0]
+    assert (first["inspected"], first["logged"], first["price"]) == ("2024-05-01", "2024-05-01T08:30:00", 12.5)
