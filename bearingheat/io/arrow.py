@@ -25,6 +25,7 @@ import pyarrow.parquet as parquet
 
 from bearingheat.calc.contract import parse_header
 from bearingheat.errors import InputError
+from bearingheat.io.csv_reader import refuse_duplicate_columns
 from bearingheat.io.files import atomic_write
 
 __all__ = ["ARROW_SUFFIXES", "read_arrow", "read_arrow_table", "write_arrow", "arrow_table", "arrow_column",
@@ -70,12 +71,24 @@ def read_arrow_table(path) -> pa.Table:
     path = Path(path)
     read, _ = _format(path)
     try:
+        refuse_duplicate_columns(path, _column_names(path))  # (read would fail on them without saying so)
         table = read(path)
     except (pa.ArrowInvalid, OSError) as exc:
         raise InputError(f"{path}: not a readable {path.suffix} table ({exc})") from exc
     if table.num_rows == 0:
         raise InputError(f"{path}: no rows")
     return table
+
+
+def _column_names(path: Path) -> list[str]:
+    """The column names of a Parquet or Arrow/Feather file, from its schema (the table is not read)."""
+    if path.suffix.lower() == ".parquet":
+        return parquet.read_schema(path).names
+    try:
+        with pa.memory_map(str(path)) as source:
+            return pa.ipc.open_file(source).schema.names
+    except pa.ArrowInvalid:  # a Feather version 1 file: no IPC schema (the read below reads it)
+        return []
 
 
 def read_arrow(path) -> pd.DataFrame:

@@ -39,7 +39,8 @@ from bearingheat.calc.contract import columns as contract_columns
 from bearingheat.calc.contract import input_units, parse_header
 from bearingheat.errors import InputError
 
-__all__ = ["SEPARATORS", "CsvSource", "RowLines", "read_text", "sniff_format", "separator", "read_source"]
+__all__ = ["SEPARATORS", "CsvSource", "RowLines", "read_text", "sniff_format", "separator", "read_source",
+           "refuse_duplicate_columns"]
 
 #: separator -> how a message names it (and how --sep accepts it)
 SEPARATORS = {",": "comma ','", ";": "semicolon ';'", "\t": "tab"}
@@ -260,7 +261,8 @@ class RowLines:
         return f"RowLines({len(self)} rows)"
 
 
-def _duplicates(path: Path, header: list[str]) -> None:
+def refuse_duplicate_columns(path: Path, header: list[str]) -> None:
+    """:class:`InputError` for a column name that appears twice in a file's header (blank names aside)."""
     seen: dict[str, int] = {}
     for position, name in enumerate(header, start=1):
         name = name.strip()
@@ -371,7 +373,7 @@ def read_source(path, *, sep: str | None = None, decimal: str | None = None, wha
     if sep == decimal:
         raise InputError(f"--decimal {decimal!r} is also the separator; give --sep ';' or --sep tab with it")
     header, lines = _records(raw, sep)
-    _duplicates(path, header)
+    refuse_duplicate_columns(path, header)
     text_columns = _text_columns(header)
     table = _read_with_pyarrow(raw, sep, decimal, header, text_columns)
     if table is None:

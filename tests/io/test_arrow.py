@@ -60,3 +60,27 @@ def test_a_damaged_parquet_file_is_named(tmp_path):
     with pytest.raises(InputError) as info:
         read_arrow(bad)
     assert str(info.value).startswith(f"{bad}: not a readable .parquet table (")
+
+
+@pytest.mark.parametrize("suffix", [".parquet", ".arrow", ".feather"])
+def test_a_column_named_twice_is_named(tmp_path, suffix):
+    """As in a CSV: pyarrow keeps both columns of one name (Feather gave an AttributeError, Parquet a message of
+    its own about dot paths)."""
+    import pyarrow as pa
+    import pyarrow.feather as feather
+
+    demo = pd.read_csv(DEMO)
+    columns = list(demo.columns)
+    position = columns.index("Fr [kN]")
+    arrays = [pa.array(demo[c]) for c in columns]
+    arrays.insert(position + 1, pa.array(demo["Fr [kN]"]))
+    table = pa.Table.from_arrays(arrays, names=columns[:position + 1] + ["Fr [kN]"] + columns[position + 1:])
+    path = tmp_path / f"twice{suffix}"
+    if suffix == ".parquet":
+        parquet.write_table(table, path)
+    else:
+        feather.write_feather(table, path)
+    with pytest.raises(InputError) as info:
+        read_arrow(path)
+    assert str(info.value) == (f"{path}: column 'Fr [kN]' appears twice (columns {position + 1} and {position + 2}); "
+                               "keep one")
