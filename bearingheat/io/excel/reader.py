@@ -334,7 +334,7 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
             contract_headers.setdefault(contract, header)
 
     wanted = [col for col, _ in columns]
-    _refuse_merged_data(ws, wanted, first_data)
+    _refuse_merged_data(ws, [col for (col, _), name in zip(columns, names) if name is not None], first_data)
     data: list[list] = [[] for _ in columns]
     rows: list[int] = []
     formula_cells: dict[tuple[str, int], str] = {}
@@ -390,8 +390,9 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
 
 
 def _refuse_merged_data(ws: Worksheet, columns: list[int], first_data: int) -> None:
-    """:class:`ExcelError` for merged cells among the supports' rows: the sheet shows their value in every cell,
-    but only the first cell holds it, so the other rows would read as blank (a load of 0)."""
+    """:class:`ExcelError` for merged cells among the supports' rows in the contract's ``columns``: the sheet shows
+    their value in every cell, but only the first cell holds it, so the other rows would read as blank (a load of
+    0). A column calc does not read is only passed through, so merged notes there are left alone."""
     wanted = sorted(columns)
     for merged in ws.merged_cells.ranges:
         top = max(merged.min_row, first_data)
