@@ -33,6 +33,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pyarrow as pa
+import pyarrow.compute as pc
 import pyarrow.csv as pa_csv
 
 from bearingheat.calc.contract import columns as contract_columns
@@ -317,9 +318,11 @@ def _read_with_pyarrow(raw: bytes, sep: str, decimal: str, header: list[str], te
     cannot split, or a column it reads as something other than numbers or text (dates)."""
     if not all(h.strip() for h in header) or _space_after_separator(raw, sep):
         return None
+    # pandas' missing-value words make number cells missing; a text column keeps them as typed ('NA', 'None'
+    # are an id or a note), only its empty cells are missing
     options = dict(read_options=pa_csv.ReadOptions(autogenerate_column_names=False),
                    parse_options=pa_csv.ParseOptions(delimiter=sep, quote_char='"', ignore_empty_lines=True),
-                   convert_options=pa_csv.ConvertOptions(null_values=_MISSING, strings_can_be_null=True,
+                   convert_options=pa_csv.ConvertOptions(null_values=_MISSING, strings_can_be_null=False,
                                                          decimal_point=decimal,
                                                          column_types={h: pa.large_string() for h in text_columns}))
     try:
@@ -332,20 +335,31 @@ def _read_with_pyarrow(raw: bytes, sep: str, decimal: str, header: list[str], te
     for i, field in enumerate(table.schema):
         if not any(kind(field.type) for kind in _ARROW_KINDS):
             return None
+        if pa.types.is_string(field.type) or pa.types.is_large_string(field.type):  # an empty text cell: missing
+            column = table.column(i)
+            table = table.set_column(i, field, pc.if_else(pc.equal(column, ""), pa.scalar(None, field.type), column))
         if pa.types.is_null(field.type):  # a column left blank: numbers, as pandas reads it
             table = table.set_column(i, field.with_type(pa.float64()), table.column(i).cast(pa.float64()))
     return table
 
 
-def _read_with_pandas(text: str, path: Path, sep: str, decimal: str, text_columns: list[str]) -> pd.DataFrame:
+def _read_with_pandas(text: str, path: Path, sep: str, decimal: str, header: list[str], text_columns: list[str]
+                      ) -> pd.DataFrame:
+    numbers = {name for h in header if h not in text_columns for name in (h, h.strip())}
     try:
-        return pd.read_csv(io.StringIO(text), sep=sep, decimal=decimal, skipinitialspace=True,
-                           dtype={h: str for h in text_columns})
+        # the missing-value words for number columns only; a text column keeps 'NA', 'None' as typed
+        table = pd.read_csv(io.StringIO(text), sep=sep, decimal=decimal, skipinitialspace=True,
+                            dtype={h: str for h in text_columns}, keep_default_na=False,
+                            na_values={name: _MISSING for name in numbers})
     except (pd.errors.ParserError, pd.errors.EmptyDataError, ValueError) as exc:
         raise InputError(f"{path}: not a readable CSV ({_parser_message(exc)}); its columns were read as "
                          f"separated by {SEPARATORS[sep]} with decimal mark {decimal!r}: if the file uses "
                          "another separator or decimal commas, give --sep (',', ';' or tab) and --decimal "
                          "(',' or '.')") from exc
+    for name in table.columns:
+        if name not in numbers:  # a text column: an empty cell is missing
+            table[name] = table[name].mask(table[name] == "")
+    return table
 
 
 class CsvSource:
@@ -377,7 +391,7 @@ def read_source(path, *, sep: str | None = None, decimal: str | None = None, wha
     text_columns = _text_columns(header)
     table = _read_with_pyarrow(raw, sep, decimal, header, text_columns)
     if table is None:
-        table = _read_with_pandas(raw.decode("utf-8"), path, sep, decimal, text_columns)
+        table = _read_with_pandas(raw.decode("utf-8"), path, sep, decimal, header, text_columns)
     del raw
     source = CsvSource(table, None, decimal)
     if len(source) == 0:

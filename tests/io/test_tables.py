@@ -313,3 +313,21 @@ def test_numbers_left_as_text_are_read_with_the_files_decimal_mark(tmp_path):
     message = calc_csv(path)["message"].iat[0]
     assert message == ("row 2 (id \"a\"): '3,2' is not a number for Fr [kN] (the decimal mark is '.'); '0,9' is not a "
                        "number for Fa [kN] (the decimal mark is '.')")
+
+
+@pytest.mark.parametrize("space", ["", " "])
+def test_text_that_looks_like_a_missing_value_passes_through(tmp_path, space):
+    """pandas' words for a missing cell ('NA', 'None', 'NULL', 'nan' ...) make a number cell missing, but a text
+    column keeps them as typed (an id 'NA', a note 'None'); an empty text cell is missing. pyarrow's reader and
+    pandas' parser (a space after a separator) read alike."""
+    path = tmp_path / "na.csv"
+    path.write_text("id,designation,lubrication,n [rpm],Fr [kN],Fa [kN],nu [mm^2/s],comment,serial\n"
+                    f"NA,{space}6208,oil_bath,1480,3.2,0.9,40,None,NULL\n"
+                    "nan,6208,oil_bath,1480,NA,0.9,40,N/A,null\n"
+                    ",6208,oil_bath,1480,3.2,,40,,\n")
+    table = read_csv(path)
+    assert table["id"].tolist()[:2] == ["NA", "nan"] and pd.isna(table["id"].iat[2])
+    assert table["comment"].tolist()[:2] == ["None", "N/A"] and pd.isna(table["comment"].iat[2])
+    assert table["serial"].tolist()[:2] == ["NULL", "null"]
+    assert pd.isna(table["Fr [kN]"].iat[1]) and pd.isna(table["Fa [kN]"].iat[2])
+    assert table["Fr [kN]"].dtype.kind == "f"
