@@ -44,7 +44,7 @@ from bearingheat.calc.contract import input_units, parse_header
 from bearingheat.errors import ExcelError, InputError, UnitError
 from bearingheat.io.excel.ownership import read_marks
 from bearingheat.io.files import EXCEL_SUFFIXES
-from bearingheat.units import parse_unit, quantity
+from bearingheat.units import convert_column, parse_unit, quantity
 
 if TYPE_CHECKING:
     from bearingheat.io.console import Progress
@@ -462,8 +462,15 @@ def _check_units(sheet: str, header_row: int, units_row: int, columns: Iterable[
             continue
         if header_unit is None or units[header] == "-":
             continue
-        try:
-            same = parse_unit(header_unit, name=header) == parse_unit(units[header], name=header)
+        target = input_units().get(contract_name(header) or "", "")
+        try:  # one unit spelled two ways (rpm and 1/min, cSt and mm^2/s) gives the same numbers
+            if target in ("", "1"):
+                same = parse_unit(header_unit, name=header) == parse_unit(units[header], name=header)
+            else:
+                points = np.array([0.0, 1.0])
+                same = bool(np.allclose(convert_column(points, header_unit, target, name=header)[0],
+                                        convert_column(points, units[header], target, name=header)[0],
+                                        rtol=1e-12, atol=0.0))
         except UnitError:
             same = False
         if not same:

@@ -126,6 +126,16 @@ def test_header_unit_contradicting_units_row(tmp_path):
         read_supports(path)
 
 
+@pytest.mark.parametrize("column, header, unit", [("n", "n [rpm]", "1/min"), ("nu", "nu [mm^2/s]", "cSt"),
+                                                  ("Fr", "Fr [kN]", "kN")])
+def test_one_unit_spelled_two_ways_does_not_contradict(tmp_path, column, header, unit):
+    """rpm and 1/min, cSt and mm^2/s are the same unit: the header and the units row agree."""
+    headers, units = list(HEADER), list(UNITS)
+    headers[HEADER.index(column)], units[HEADER.index(column)] = header, unit
+    result = calc_workbook(make_workbook(tmp_path / "same.xlsx", header=headers, units=units)).result
+    np.testing.assert_allclose(result["MR [N*mm]"], csv_result()["MR [N*mm]"], rtol=1e-12)
+
+
 def test_sheet_without_header_row(tmp_path):
     path = make_workbook(tmp_path / "none.xlsx", header=["a", "b"], units=None, rows=[[1, 2]])
     with pytest.raises(ExcelError, match=re.escape(
