@@ -94,6 +94,8 @@ class SheetInfo:
     headers: dict[str, str] = field(default_factory=dict)
     formula_cells: dict[tuple[str, int], str] = field(default_factory=dict)
     uncached: list[tuple[int, str, str]] = field(default_factory=list)
+    #: worksheet rows of supports that are hidden on the sheet (by hand or by a filter): computed like the others
+    hidden_rows: list[int] = field(default_factory=list)
 
     @property
     def sheet_ref(self) -> str:
@@ -383,9 +385,11 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
         else:
             frame_columns[header] = _numeric_if_possible(values)
     table = pd.DataFrame(frame_columns, index=pd.RangeIndex(len(rows)))
+    dimensions = ws.row_dimensions
+    hidden = [row for row in rows if row in dimensions and dimensions[row].hidden]
     info = SheetInfo(path=path, sheet=ws.title, header_row=header_row, units_row=units_row, units=units,
                      letters=letters, rows=rows, headers=contract_headers, formula_cells=formula_cells,
-                     uncached=uncached)
+                     uncached=uncached, hidden_rows=hidden)
     return table, info
 
 

@@ -303,4 +303,15 @@ def _run(source: Path, target: Path | None, edit: tuple[Package, WorkbookLock] |
                 companion.fill(install_sheet(workbook, companions[companion.role], after=after))
                 after = companions[companion.role]
             atomic_save(workbook, target)
+    if info.hidden_rows:  # not silently: a hidden row is a support like the others to calc
+        notes.insert(0, _hidden_note(info))
     return WorkbookRun(result, info, target, results_sheet, dropped, notes, companions, duty)
+
+
+def _hidden_note(info: SheetInfo) -> str:
+    """The note that rows of supports are hidden on the sheet (by hand or by a filter) and were computed."""
+    shown = ", ".join(map(str, info.hidden_rows[:10])) + (", ..." if len(info.hidden_rows) > 10 else "")
+    rows = "row" if len(info.hidden_rows) == 1 else "rows"
+    return (f"{rows} {shown} of sheet {info.sheet!r} {'is' if rows == 'row' else 'are'} hidden (by hand or by a "
+            f"filter) and computed like the others; delete {'it' if rows == 'row' else 'them'} to leave "
+            f"{'it' if rows == 'row' else 'them'} out")

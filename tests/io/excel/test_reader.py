@@ -243,3 +243,20 @@ def test_merged_cells_over_rows_of_supports_are_refused(tmp_path):
     workbook.save(path)
     table, _ = read_supports(path)
     assert table["Fr"].tolist()[:2] == [3.2, 3.2]
+
+
+def test_hidden_rows_are_computed_and_said(tmp_path, capsys):
+    """A row hidden by hand or by a filter is a support like the others; the run says so instead of silently
+    computing what the designer does not see."""
+    path = make_workbook(tmp_path / "hidden.xlsx")
+    workbook = openpyxl.load_workbook(path)
+    for row in (4, 6):
+        workbook["Supports"].row_dimensions[row].hidden = True
+    workbook.save(path)
+    run = calc_workbook(path)
+    assert len(run.result) == len(gearbox_rows())
+    assert run.notes == ["rows 4, 6 of sheet 'Supports' are hidden (by hand or by a filter) and computed like the "
+                         "others; delete them to leave them out"]
+    from bearingheat.cli import main
+    assert main(["calc", str(path), "-o", str(tmp_path / "out.xlsx")]) == 0
+    assert capsys.readouterr().err.splitlines()[0] == f"note: {run.notes[0]}"
