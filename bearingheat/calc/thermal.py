@@ -393,6 +393,9 @@ def _solve_operating_temperature(frame, results, rows, t_limit, flows, nu_at, nu
 
 
 def _no_equilibrium_text(status, T_amb, t_limit):
+    if status == 1 and T_amb >= t_limit:  # the search lies below the ambient: nothing is known about running away
+        return (f"the ambient temperature T_amb = {T_amb:g} degC is not below {t_limit:g} degC, the upper end of the "
+                "search for the operating temperature; T_op is not computed")
     if status == 1:
         return (f"no equilibrium below {t_limit:g} degC: the friction heat exceeds the heat carried away "
                 "(the temperature runs away)")

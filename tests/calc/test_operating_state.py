@@ -170,3 +170,16 @@ def test_a_row_off_the_f2_chart_at_T_op_is_told_where_nu_came_from():
     # at T_bearing (70 degC) the oil is thin enough for the chart
     assert bh.calc(_axially_loaded(**{"n [rpm]": 300}), f2_chart="docs/f2_chart_example.csv",
                    viscosity_at="bearing")["status"].tolist() == ["ok"]
+
+
+def test_an_ambient_at_or_above_the_search_limit_is_said_so_not_called_a_runaway():
+    """The search for T_op ends at 150 degC; an ambient of 160 degC leaves nothing to search, which is no proof
+    that the heat runs away (n_per says the bearing may run at n)."""
+    rows = pd.concat([table(**{"T_amb [degC]": 20.0}), table(**{"T_amb [degC]": 170.0, "T_bearing [degC]": 199.0})],
+                     ignore_index=True)
+    out = bh.calc(rows)
+    assert out["T_op [degC]"].iat[0] > 20.0 and np.isnan(out["T_op [degC]"].iat[1])
+    assert out["status"].iat[1] == "warning"
+    assert out["message"].iat[1].split("T_op: ")[-1] == (
+        "the ambient temperature T_amb = 170 degC is not below 150 degC, the upper end of the search for the operating "
+        "temperature; T_op is not computed")
