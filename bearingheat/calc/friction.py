@@ -164,6 +164,10 @@ def evaluate_catalogue_model(s: SupportArrays, labels: Labels, f2_chart: F2Chart
     add(s.no_axial & (Fa > 0), "error",
         lambda i: f"{labels.name('Fa', i)}: {value_of('Fa', i)} on {at(s.prefix, i)} {label(i)}: "
                   "one ring has no ribs, the bearing takes no axial load")
+    # --- radial load on thrust ball and thrust roller bearings: they support axial loads only (M1 takes Fa)
+    add(text_in(s.bearing_type, ("thrust_ball", "thrust_roller")) & (Fr > 0), "error",
+        lambda i: f"{labels.name('Fr', i)}: {value_of('Fr', i)} on {label(i)}: thrust ball and thrust roller "
+                  "bearings take no radial load (their M1 is f1*Fa*dM)")
     m2_rows = np.broadcast_to(s.m2 & (Fa > 0), shape)
     dM = friction.mean_diameter(d, D)
     # without M2 rows: scalars, spread to the rows as read-only views at the end (no memory per row)

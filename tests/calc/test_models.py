@@ -54,7 +54,7 @@ CASES = {
     "negative f1": (dict(f1=-0.1), "error", "f1: -0.1 must be >= 0"),
     "no C0": (dict(C0=None), "error",
         "C0 [N]: missing; f1 of deep groove ball bearing series 62 depends on P0/C0 (the Schaeffler catalogue, pp. 66-68)"),
-    "no C0 thrust ball": (dict(designation="51105", D=42, C0=None, Fa=1000), "error",
+    "no C0 thrust ball": (dict(designation="51105", D=42, C0=None, Fr=0, Fa=1000), "error",
         "C0 [N]: missing; f1 of thrust ball bearing series 511 depends on Fa/C0 (the Schaeffler catalogue, pp. 66-68)"),
     "zero C0": (dict(C0=0), "error", "C0 [N]: 0 must be > 0"),
     "needle without width": (dict(designation=None, type="needle_roller", series="NK", D=33, B=None), "error",
@@ -77,6 +77,13 @@ CASES = {
     "angular contact without angle": (dict(designation="7205", Fa=500), "error",
         "Y0: missing; P0 of single row angular contact ball bearing series 72 under axial load needs the catalogue "
         "value Y0 or the contact angle alpha (the DP11A manual, table 1: 18 to 36 deg)"),
+    "radial load on a thrust ball bearing": (dict(designation="51105", D=42, Fa=1000), "error",
+        "Fr [N]: 2000 on thrust ball bearing series 511: thrust ball and thrust roller bearings take no radial load "
+        "(their M1 is f1*Fa*dM)"),
+    "radial load on a thrust roller bearing": (dict(designation=None, type="thrust_roller", series="811", d=40, D=60,
+                                                    Fa=5000), "error",
+        "Fr [N]: 2000 on thrust roller bearing series 811: thrust ball and thrust roller bearings take no radial load "
+        "(their M1 is f1*Fa*dM)"),
     "axial load on NU": (dict(designation="NU206-E", Fa=500), "error",
         "Fa [N]: 500 on NU cylindrical roller bearing with cage series 2: one ring has no ribs, "
         "the bearing takes no axial load"),
