@@ -21,6 +21,8 @@ of one support are its cases (``case`` names them), each with a
 """
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 import pandas as pd
 
@@ -78,7 +80,7 @@ def _shares(frame: pd.DataFrame, supports: np.ndarray, cases: list[str]) -> tupl
     return values / totals, values
 
 
-def duty_cycle(results: pd.DataFrame) -> pd.DataFrame:
+def duty_cycle(results: pd.DataFrame, cell: Callable[[str, int], str] | None = None) -> pd.DataFrame:
     """One row per support of calc's results: time-weighted means and the worst case (see the module).
 
     Parameters
@@ -87,6 +89,9 @@ def duty_cycle(results: pd.DataFrame) -> pd.DataFrame:
         The output of :func:`bearingheat.calc` on a table with ``support``,
         ``case`` (optional: the row's position names it) and ``time_share``
         or ``duration [h]`` columns.
+    cell : callable, optional
+        (column, row position) -> where a message names a row, such as
+        'Supports!J7' (a workbook); without it 'row 3' (the table's third row).
 
     Returns
     -------
@@ -123,8 +128,10 @@ def duty_cycle(results: pd.DataFrame) -> pd.DataFrame:
     supports = np.array(text_column(frame, "support"), dtype=object)
     blank = np.flatnonzero(pd.isna(supports))
     if len(blank):
-        raise DutyCycleError(f"row {blank[0] + 1}: support is blank; every row of a duty cycle names its support")
-    cases = [c if c is not None else f"row {i + 1}" for i, c in enumerate(text_column(frame, "case"))]
+        where = cell("support", int(blank[0])) if cell is not None else f"row {blank[0] + 1}"
+        raise DutyCycleError(f"{where}: support is blank; every row of a duty cycle names its support")
+    cases = [c if c is not None else (cell("case", i) if cell is not None else f"row {i + 1}")
+             for i, c in enumerate(text_column(frame, "case"))]
     shares, durations = _shares(frame, supports, cases)
     designations = np.array(text_column(frame, "designation"), dtype=object)
     grouped = pd.DataFrame({"support": supports, "designation": designations}).groupby("support", sort=False)

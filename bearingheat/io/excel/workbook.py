@@ -91,7 +91,7 @@ def _duty_cycle(result: pd.DataFrame, info: SheetInfo) -> pd.DataFrame | None:
         return None
     named = {header: f"{header} [{unit}]" for header, unit in info.units.items()
              if unit not in ("", "-", "1") and "[" not in header and header in result.columns}
-    return duty_cycle(result.rename(columns=named))
+    return duty_cycle(result.rename(columns=named), cell=info.cell)
 
 
 def _input_error(exc: Exception, info: SheetInfo) -> ExcelError:

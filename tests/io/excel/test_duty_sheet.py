@@ -120,6 +120,25 @@ def test_shares_not_summing_to_1_are_refused(duty_workbook, tmp_path, capsys):
     assert not (tmp_path / "out.xlsx").exists()
 
 
+def test_a_blank_support_or_case_names_its_cell(duty_workbook, tmp_path, capsys):
+    workbook = openpyxl.load_workbook(duty_workbook)
+    ws = workbook["Supports"]
+    header = [c.value for c in ws[1]]
+    support, case = header.index("support") + 1, header.index("case") + 1
+    ws.cell(4, support).value = None
+    workbook.save(duty_workbook)
+    letter = openpyxl.utils.get_column_letter(support)
+    assert main(["calc", str(duty_workbook), "-o", str(tmp_path / "out.xlsx")]) == 2
+    assert capsys.readouterr().err == (f"bearingheat calc: error: Supports!{letter}4: support is blank; every row of a "
+                                       "duty cycle names its support\n")
+    ws.cell(4, support).value = ws.cell(3, support).value
+    ws.cell(4, case).value = None
+    ws.cell(4, header.index("time_share") + 1).value = 7  # shares not summing to 1 name the blank case by its cell
+    workbook.save(duty_workbook)
+    assert main(["calc", str(duty_workbook), "-o", str(tmp_path / "out.xlsx")]) == 2
+    assert f", Supports!{openpyxl.utils.get_column_letter(case)}4 7, " in capsys.readouterr().err
+
+
 @pytest.mark.parametrize("in_place", [True, False])
 def test_companions_a_run_no_longer_writes_are_emptied(duty_workbook, tmp_path, in_place):
     """The designer removes the duty cycle (and runs without --formulas): the earlier 'Duty cycle' summary and
