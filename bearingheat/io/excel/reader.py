@@ -208,29 +208,35 @@ def _find_header_row(ws: Worksheet, max_col: int, merged: MergedCells) -> int:
     return best_row
 
 
-def _looks_like_units_row(values: list[object], names: list[str | None]) -> bool:
-    """The row under the header holds units when its dimensional columns hold unit texts and no numbers."""
+def _looks_like_units_row(values: list[object], names: list[str | None]) -> tuple[bool, list[tuple[int, str]]]:
+    """(whether the row under the header holds units, the cells of it that are no unit: (position, why)).
+
+    It holds units when its dimensional columns hold no numbers and at least
+    one unit text; a text there that is no unit ('KN') is then a typo in the
+    units row, not a sign of a row of supports."""
     known = input_units()
     saw_unit = False
-    for value, name in zip(values, names):
+    unknown: list[tuple[int, str]] = []
+    for position, (value, name) in enumerate(zip(values, names)):
         if name is None or known.get(name, "") in ("", "1"):
             continue
         if _is_number(value):
-            return False
+            return False, []
         text = _text(value)
         if not text or text == "-":
             continue
         try:
             float(text)
-            return False
+            return False, []
         except ValueError:
             pass
         try:
             parse_unit(text, name=name)
-        except UnitError:
-            return False
+        except UnitError as exc:
+            unknown.append((position, str(exc)))
+            continue
         saw_unit = True
-    return saw_unit
+    return saw_unit, unknown if saw_unit else []
 
 
 def defined_name_values(workbook: Workbook) -> list[tuple[str, str | None]]:
@@ -318,7 +324,12 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
             raw_units.append(None)
         else:
             raw_units.append(ws.cell(candidate, col).value)
-    if _looks_like_units_row(raw_units, names):
+    is_units, unknown = _looks_like_units_row(raw_units, names)
+    if unknown:
+        position, why = unknown[0]
+        raise ExcelError(f"{_ref(ws.title)}!{get_column_letter(columns[position][0])}{candidate}: {why} in the units "
+                         "row; write a unit such as kN, N, rpm, mm^2/s (docs/excel.md lists them)")
+    if is_units:
         units_row = candidate
         for (col, header), value in zip(columns, raw_units):
             text = _text(value)

@@ -102,7 +102,11 @@ def _input_error(exc: Exception, info: SheetInfo) -> ExcelError:
         header = match.group("header")
         letter = info.letters.get(header) or info.letters.get(contract_name(header) or "")
         if letter is not None:
-            return ExcelError(f"{info.sheet_ref}!{letter}{info.units_row or info.header_row}: {message}")
+            # the header's cell, or the units row's where the unit the message is about was typed there (calc
+            # names such a column 'Fr [kg]', which no header of the sheet is)
+            typed_below = info.units.get(header) if header in info.letters else True
+            row = info.units_row if info.units_row and typed_below else info.header_row
+            return ExcelError(f"{info.sheet_ref}!{letter}{row}: {message}")
     return ExcelError(f"sheet {info.sheet!r} (header row {info.header_row}): {message}")
 
 

@@ -133,3 +133,22 @@ def test_no_progress_bar_when_not_a_terminal_or_small(tmp_path):
     quiet = Terminal()
     calc_workbook(path, tmp_path / "out2.xlsx", progress=Progress(stream=quiet, enabled=False))
     assert quiet.getvalue() == ""
+
+
+def test_a_typo_in_the_units_row_names_its_cell(tmp_path):
+    """One unit that is no unit ('KN') in a units row of units: the cell and the cause, not 'column d needs a
+    unit' (the whole row taken for a row of supports)."""
+    units = list(UNITS)
+    units[HEADER.index("Fr")] = "KN"
+    with pytest.raises(ExcelError) as exc:
+        calc_workbook(make_workbook(tmp_path / "typo.xlsx", units=units))
+    assert str(exc.value) == ("Supports!F2: Fr: unknown unit 'KN' in the units row; write a unit such as kN, N, rpm, "
+                              "mm^2/s (docs/excel.md lists them)")
+
+
+def test_a_column_named_twice_cites_its_header_cell(tmp_path):
+    header = list(HEADER) + ["Fr [N]"]
+    rows = [list(row) + [3200] for row in gearbox_rows()]
+    with pytest.raises(ExcelError) as exc:
+        calc_workbook(make_workbook(tmp_path / "twice.xlsx", header=header, units=list(UNITS) + [None], rows=rows))
+    assert str(exc.value) == "Supports!N1: column 'Fr [N]': Fr appears twice"
