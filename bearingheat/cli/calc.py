@@ -25,7 +25,7 @@ from bearingheat.io.dataset import (calc_dataset, check_dataset_target, dask_cli
 from bearingheat.io.pipeline import calc_file
 from bearingheat.io.json import results_json
 from bearingheat.io.files import EXCEL_SUFFIXES, safe_output, workbook_lock
-from bearingheat.io.tables import calc_csv, check_table_suffix, write_csv, write_table
+from bearingheat.io.tables import calc_csv, check_table_suffix, read_table, write_csv, write_table
 
 
 DESCRIPTION = f"""\
@@ -164,8 +164,10 @@ def _pdf(args: argparse.Namespace, workbook: Path | None, source: Path) -> Path 
 
 def _calc_options(args: argparse.Namespace) -> dict:
     """calc's options from the command line."""
+    # the coefficients file read as any table of the command line is: a damaged or empty one is named
+    coefficients = read_table(args.coefficients) if args.coefficients else None
     return dict(model=args.model, f2_chart=args.f2_chart, vm_chart=args.vm_chart, n_per_method=args.n_per_method,
-                effects=_load_effects(args.effects), viscosity_at=args.viscosity_at, coefficients=args.coefficients)
+                effects=_load_effects(args.effects), viscosity_at=args.viscosity_at, coefficients=coefficients)
 
 
 def run(args: argparse.Namespace) -> int:

@@ -91,3 +91,12 @@ def test_the_command_line_takes_the_audits_coefficients(tmp_path):
                  str(tmp_path / "out.csv"), "-q"]) == 0
     out = pd.read_csv(tmp_path / "out.csv")
     assert out["MR_low [N*mm]"].iat[0] < out["MR [N*mm]"].iat[0] < out["MR_high [N*mm]"].iat[0]
+
+
+def test_an_empty_or_missing_coefficients_file_is_named(tmp_path, capsys):
+    from bearingheat.cli import main
+    empty = tmp_path / "empty.csv"
+    empty.write_text("")
+    for path, why in ((empty, "not a readable CSV (the file is empty)"), (tmp_path / "none.csv", "no such file")):
+        assert main(["calc", str(DEMO), "--coefficients", str(path), "-q"]) == 2
+        assert capsys.readouterr().err == f"bearingheat calc: error: {path}: {why}\n"
