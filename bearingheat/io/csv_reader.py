@@ -393,8 +393,26 @@ def read_source(path, *, sep: str | None = None, decimal: str | None = None, wha
     if table is None:
         table = _read_with_pandas(raw.decode("utf-8"), path, sep, decimal, header, text_columns)
     del raw
+    rows = table.num_rows if isinstance(table, pa.Table) else len(table)
+    empty = _empty_rows(table)
+    if empty.any():  # lines of separators only (',,,,', as spreadsheets export rows they once used): no rows
+        keep = ~empty
+        table = table.filter(pa.array(keep)) if isinstance(table, pa.Table) else table[keep].reset_index(drop=True)
+        lines = np.asarray(lines)[keep] if len(lines) == rows else lines
     source = CsvSource(table, None, decimal)
     if len(source) == 0:
         raise InputError(f"{path}: no {what} (only a header row)")
     source.lines = RowLines(lines) if len(lines) == len(source) else None
     return source
+
+
+def _empty_rows(table: pa.Table | pd.DataFrame) -> np.ndarray:
+    """The rows whose every cell is missing."""
+    if isinstance(table, pd.DataFrame):
+        return table.isna().all(axis=1).to_numpy()
+    empty = np.ones(table.num_rows, dtype=bool)
+    for column in table.columns:
+        if column.null_count == 0:  # (a column without a missing cell: no row is empty)
+            return np.zeros(table.num_rows, dtype=bool)
+        empty &= pc.is_null(column).to_numpy(zero_copy_only=False)
+    return empty

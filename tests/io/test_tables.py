@@ -331,3 +331,16 @@ def test_text_that_looks_like_a_missing_value_passes_through(tmp_path, space):
     assert table["serial"].tolist()[:2] == ["NULL", "null"]
     assert pd.isna(table["Fr [kN]"].iat[1]) and pd.isna(table["Fa [kN]"].iat[2])
     assert table["Fr [kN]"].dtype.kind == "f"
+
+
+@pytest.mark.parametrize("space", ["", " "])
+def test_lines_of_separators_only_are_no_rows(tmp_path, space):
+    """Spreadsheets export rows they once used as ',,,,,,': skipped like blank lines, the rows after them still
+    cited by their own line (pyarrow's reader and pandas' parser alike)."""
+    path = tmp_path / "seps.csv"
+    path.write_text("id,designation,lubrication,n [rpm],Fr [kN],Fa [kN],nu [mm^2/s]\n"
+                    f"A,{space}6208,oil_bath,1480,3.2,0.9,40\n,,,,,,\nB,6208,oil_bath,1480,5,0.9,x\n,,,,,,\n")
+    out = calc_csv(path)
+    assert out["id"].tolist() == ["A", "B"]
+    assert out["status"].tolist() == ["ok", "error"]
+    assert out["message"].iat[1].startswith("row 4 (id \"B\"): 'x' is not a number for nu [mm^2/s]")
