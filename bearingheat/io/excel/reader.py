@@ -506,7 +506,8 @@ def _numeric_if_possible(values: list[Any]) -> pd.Series:
 
 def _cached_values(path: Path, sheet: str, cells: dict[tuple[str, int], str],
                    letters: dict[str, str]) -> dict[tuple[str, int], Any]:
-    """The values a spreadsheet program saved for formula cells (None where it saved none)."""
+    """The values a spreadsheet program saved for formula cells (None where it saved none; '' where it saved an
+    empty text, as Excel and LibreOffice do for a formula such as ="" or =IF(..., "", ...): a blank cell)."""
     workbook = open_workbook(path, read_only=True, data_only=True)
     try:
         wanted: dict[int, list[tuple[str, int]]] = {}
@@ -515,10 +516,13 @@ def _cached_values(path: Path, sheet: str, cells: dict[tuple[str, int], str],
         first, last = min(wanted), max(wanted)
         width = max(col for entries in wanted.values() for _, col in entries) + 1
         out: dict[tuple[str, int], Any] = {}
-        rows = workbook[sheet].iter_rows(min_row=first, max_row=last, max_col=width, values_only=True)
-        for row, values in enumerate(rows, start=first):
+        rows = workbook[sheet].iter_rows(min_row=first, max_row=last, max_col=width)
+        for row, cells in enumerate(rows, start=first):
             for header, col in wanted.get(row, ()):
-                out[(header, row)] = values[col] if col < len(values) else None
+                cell = cells[col] if col < len(cells) else None
+                value = getattr(cell, "value", None)
+                # t="str" with an empty <v>: a saved empty text (openpyxl reads it as None, as a value never saved)
+                out[(header, row)] = "" if value is None and getattr(cell, "data_type", None) == "str" else value
         return out
     finally:
         workbook.close()

@@ -108,6 +108,23 @@ def test_merged_header_cells_and_title_rows(tmp_path):
     np.testing.assert_allclose(run.result["MR [N*mm]"], csv_result()["MR [N*mm]"], rtol=1e-12)
 
 
+def test_a_formula_saved_with_an_empty_text_is_a_blank_cell(tmp_path):
+    """=IF(...,"",...) saved by Excel or LibreOffice holds an empty text (t="str", an empty <v>): a blank cell, as
+    typed blank (Fa not given: 0); a formula never saved is still refused."""
+    rows = gearbox_rows()
+    rows[0][6] = '=""'
+    path = make_workbook(tmp_path / "empty_text.xlsx", rows=rows)
+    result = calc_workbook(path).result
+    assert result["message"].iat[0].startswith("Supports!G3: formula =\"\" has no saved value")
+    edit_package(path, {"xl/worksheets/sheet1.xml": lambda data: re.sub(
+        rb'<c r="G3"([^>]*)><f>([^<]*)</f><v\s*/?>(</v>)?', rb'<c r="G3"\1 t="str"><f>\2</f><v></v>', data)})
+    rows[0][6] = None
+    blank = calc_workbook(make_workbook(tmp_path / "blank.xlsx", rows=rows)).result
+    result = calc_workbook(path).result
+    assert result["status"].iat[0] == blank["status"].iat[0] == "ok"
+    assert result["MR [N*mm]"].iat[0] == blank["MR [N*mm]"].iat[0]
+
+
 def test_formula_with_saved_value_is_read(tmp_path):
     rows = gearbox_rows()
     rows[1][4] = "=E3"
