@@ -20,6 +20,7 @@ value; the other rows are still computed. Input that cannot be used at all
 """
 from __future__ import annotations
 
+import datetime
 import math
 import re
 from collections import defaultdict
@@ -117,6 +118,9 @@ def _convert_column(values: pd.Series, header: str, unit_text: str | None, targe
         logical = np.zeros(len(values), dtype=bool)
     if isinstance(values.dtype, np.dtype) and values.dtype.kind in "iuf":  # numpy numbers (to_numeric would copy)
         numeric = values.to_numpy(dtype=float)
+    elif values.dtype.kind in "mM":  # dates or durations (pandas would give their nanoseconds): no numbers
+        values = pd.Series(values.to_numpy(dtype=object), index=values.index, dtype=object).where(values.notna())
+        numeric = np.full(len(values), np.nan)
     else:
         given = values.where(~logical, np.nan) if logical.any() else values
         if decimal == ",":  # '3,2' is 3.2 and '1.480' no number (each distinct text looked at once)
@@ -140,7 +144,7 @@ def _convert_column(values: pd.Series, header: str, unit_text: str | None, targe
         elif not _blank(raw):
             mark = f" (the decimal mark is {decimal!r})" if isinstance(raw, str) and _DECIMAL_MARKS[decimal] in raw \
                 else ""
-            errors[i].append(f"{where(i)}{raw!r} is not a number for {header}{mark}")
+            errors[i].append(f"{where(i)}{_as_typed(raw)!r} is not a number for {header}{mark}")
     try:
         converted, factor = convert_column(numeric, unit_text, target, name=name, header=header, copy=False)
     except UnitError as exc:
@@ -172,6 +176,13 @@ def _with_decimal_point(value):
     if not isinstance(value, str):
         return value
     return None if "." in value else value.replace(",", ".")
+
+
+def _as_typed(value):
+    """A cell as a message shows it: a date or time (a date typed into a number cell) as the sheet's text."""
+    if isinstance(value, datetime.datetime) and value.time() == datetime.time(0):
+        return value.date().isoformat()
+    return value.isoformat() if isinstance(value, (datetime.date, datetime.time)) else value
 
 
 def _is_logical(value) -> bool:

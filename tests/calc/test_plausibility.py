@@ -4,6 +4,7 @@ No result leaves calc or the API as NaN or inf with status ok: such a row is
 an error, and a number that is only implausible (a unit mix-up, usually) is
 a warning naming the column, the value and the range.
 """
+import datetime
 import math
 import re
 
@@ -187,3 +188,9 @@ def test_a_header_that_looks_like_a_missing_number_column_is_refused(header, wri
 def test_columns_of_the_users_own_are_still_passed_through():
     out = run(row(**{"ID": "x", "E": 2.1e5, "Fa (kN)": 9.0, "note": "spare"}))  # 'Fa [kN]' is there: Fa (kN) is his
     assert out["status"].tolist() == ["ok"] and out["E"].iat[0] == 2.1e5
+
+
+def test_a_date_in_a_number_cell_is_shown_as_the_sheet_shows_it():
+    out = run(row(**{"Fr [kN]": datetime.datetime(2024, 3, 2)}), row(**{"Fr [kN]": datetime.datetime(2024, 3, 2, 8, 30)}))
+    assert out["message"].tolist() == ["'2024-03-02' is not a number for Fr [kN]",
+                                       "'2024-03-02T08:30:00' is not a number for Fr [kN]"]
