@@ -202,11 +202,14 @@ def run(args: argparse.Namespace) -> int:
                 write_table(result, target, escape=not args.no_csv_escape)
     except UNUSABLE_INPUT as exc:
         raise UsageError(str(exc)) from exc
+    errors = int((result["status"] == "error").sum())
     if args.json:
         print(results_json(result, duty))
     elif not args.quiet:
         _print_results(result, duty, args.output)
-    return 1 if (result["status"] == "error").any() else 0
+    else:
+        _quiet_errors(errors, len(result), args.output)
+    return 1 if errors else 0
 
 
 def _write_duty_beside(duty: pd.DataFrame, target: Path, source: Path, args: argparse.Namespace) -> None:
@@ -240,11 +243,14 @@ def run_table(args: argparse.Namespace, source: Path, target: Path | None) -> in
             write_table(results, target, escape=not args.no_csv_escape)
     except UNUSABLE_INPUT as exc:
         raise UsageError(str(exc)) from exc
+    errors = pc.sum(pc.equal(results.column("status"), "error")).as_py() or 0
     if args.json:
         print(results_json(result if result is not None else results.to_pandas(), duty))
     elif not args.quiet:
         _print_results(results, duty, args.output)
-    return 1 if pc.any(pc.equal(results.column("status"), "error")).as_py() else 0
+    else:
+        _quiet_errors(errors, results.num_rows, args.output)
+    return 1 if errors else 0
 
 
 def run_dask(args: argparse.Namespace) -> int:
@@ -321,4 +327,15 @@ def run_calc_workbook(args: argparse.Namespace) -> int:
         if run.dropped:
             print(f"note: {args.output} lacks or has altered the {', '.join(run.dropped)} of {args.input} (openpyxl "
                   f"cannot copy them as they are); {args.input} is unchanged", file=sys.stderr)
-    return 1 if (run.result["status"] == "error").any() else 0
+    errors = int((run.result["status"] == "error").sum())
+    if args.quiet and not args.json:
+        _quiet_errors(errors, len(run.result), args.input if args.in_place else args.output)
+    return 1 if errors else 0
+
+
+def _quiet_errors(errors: int, total: int, output) -> None:
+    """-q prints nothing but errors: with rows in error, one line on stderr that says how many and where their
+    messages are (the exit code 1 says only that there are some)."""
+    if errors:
+        where = f"the message column of {output}" if output else "their messages (run without -q to see them)"
+        print(f"error: {errors} of {total} supports are in error; see {where}", file=sys.stderr)

@@ -109,3 +109,21 @@ def test_contact_quiet_prints_only_errors(tmp_path, capsys):
     assert main(["contact", str(table), "-q"]) == 1
     out, err = capsys.readouterr()
     assert out == "" and err == "bearingheat contact: error: row 2: dm_pitch: 'x' is not a number\n"
+
+
+def test_calc_quiet_says_how_many_rows_are_in_error_and_where(tmp_path, capsys):
+    """-q prints nothing but errors: nothing for a table without row errors, one line for rows in error (the exit
+    code alone says only that there are some), in each of the three ways calc writes."""
+    source = tmp_path / "in.csv"
+    source.write_text((EXAMPLES / "gearbox_shaft.csv").read_text())
+    assert main(["calc", str(source), "-q"]) == 0
+    assert capsys.readouterr() == ("", "")
+    text = source.read_text().splitlines()
+    text[2] = text[2].replace("oil_bath", "oil", 1)
+    source.write_text("\n".join(text) + "\n")
+    assert main(["calc", str(source), "-q"]) == 1
+    assert capsys.readouterr() == ("", "error: 1 of 6 supports are in error; see their messages (run without -q to see "
+                                       "them)\n")
+    out = tmp_path / "out.parquet"
+    assert main(["calc", str(source), "-q", "-o", str(out)]) == 1
+    assert capsys.readouterr().err == f"error: 1 of 6 supports are in error; see the message column of {out}\n"
