@@ -273,9 +273,12 @@ def run_dask(args: argparse.Namespace) -> int:
         shown = read_dataset_columns(target, summary_columns(dataset_columns(target)))
     except UNUSABLE_INPUT as exc:
         raise UsageError(str(exc)) from exc
+    errors = pc.sum(pc.equal(shown.column("status"), "error")).as_py() or 0
     if not args.quiet:
         print_summary(shown, f"{target}/ (Parquet dataset of {len(files)} input files)")
-    return 1 if pc.any(pc.equal(shown.column("status"), "error")).as_py() else 0
+    else:
+        _quiet_errors(errors, shown.num_rows, f"{target}/")
+    return 1 if errors else 0
 
 
 def run_calc_workbook(args: argparse.Namespace) -> int:
