@@ -98,6 +98,7 @@ def test_a_run_that_fails_keeps_the_earlier_dataset(tmp_path, capsys):
     fleet(tmp_path / "fleet")
     out = tmp_path / "results"
     assert main(["calc", str(tmp_path / "fleet"), "--dask", "--workers", "1", "-o", str(out), "-q"]) == 1
+    assert capsys.readouterr().err == f"error: 1 of 60 supports are in error; see the message column of {out}/\n"
     earlier = {p.name: p.read_bytes() for p in out.iterdir()}
     demo = pd.read_csv(DEMO)
     (tmp_path / "bad").mkdir()
