@@ -10,6 +10,7 @@ mapping, or ``name [unit]`` headers (:func:`split_header`).
 """
 from __future__ import annotations
 
+import datetime
 import math
 from collections.abc import Iterable
 from collections.abc import Set as AbstractSet
@@ -57,6 +58,25 @@ def message_heights(messages: Iterable[object]) -> dict[int, float]:
     return out
 
 
+#: the number formats of a column of dates, and of dates with times
+DATE_FORMAT, DATETIME_FORMAT = "yyyy-mm-dd", "yyyy-mm-dd hh:mm:ss"
+
+
+def _date_format(values: np.ndarray) -> str | None:
+    """:data:`DATE_FORMAT` for a column of dates, :data:`DATETIME_FORMAT` where some have a time of day, None for
+    a column that is not all dates (missing cells aside).
+
+    >>> import datetime
+    >>> _date_format(np.array([datetime.date(2024, 5, 1), None], dtype=object))
+    'yyyy-mm-dd'
+    """
+    present = [v for v in values if v is not None and not (isinstance(v, float) and math.isnan(v)) and v is not pd.NaT]
+    if not present or not all(isinstance(v, datetime.date) for v in present):  # (a datetime is a date)
+        return None
+    timed = any(isinstance(v, datetime.datetime) and v.time() != datetime.time(0) for v in present)
+    return DATETIME_FORMAT if timed else DATE_FORMAT
+
+
 @dataclass
 class SheetLayout:
     """What a results sheet shows, column by column: header, unit, style name, number format (None: the
@@ -98,6 +118,9 @@ def sheet_layout(table: pd.DataFrame, units: dict[str, str] | None = None,
                       st.MESSAGE if name == "message" else _column_style(unit))
         formats.append(_column_format(unit, header in input_columns))
         values = column.to_numpy(dtype=object)
+        dates = _date_format(values)
+        if dates is not None:  # a column of dates: Excel dates with a date format, whichever writer
+            formats[-1] = dates
         magnitudes.append(values)
         sample = [len(str(v)) for v in values[:200] if isinstance(v, str)]
         width = min(max([len(str(name)), len(str(unit)), 6] + sample) + 2, 40)

@@ -51,6 +51,7 @@ from typing import TYPE_CHECKING, Protocol
 
 import pandas as pd
 from lxml import etree
+from openpyxl.utils.datetime import CALENDAR_MAC_1904, CALENDAR_WINDOWS_1900
 
 from bearingheat.errors import ExcelError, SheetContentError
 from bearingheat.io.excel.ownership import (COMPANION_MARKS, INPUT_MARK, RESULTS_MARK, TABLE_MARK,
@@ -436,7 +437,7 @@ def write_results_in_place(package: Package, input_sheet: str, table: pd.DataFra
     edit.changes[sheet.part] = results_sheet_xml(table, edit.styles.index, units=units, formulas=cell_formulas,
                                                  kept=kept, print_setup=print_setup, rules=rules,
                                                  dxf_index=edit.styles.dxf, progress=progress, title=name,
-                                                 hidden_columns=hidden_columns)
+                                                 hidden_columns=hidden_columns, epoch=edit.epoch)
     workbook.set_marks(k, name, input_sheet, [j for j in stale if j != k], names)
     if print_setup is not None:
         workbook.print_titles(sheet, print_setup.print_titles(sheet_ref(name)))
@@ -479,7 +480,7 @@ def write_table_in_place(package: Package, sheet: str, table: pd.DataFrame, *, l
         workbook.add_mark(f"{TABLE_MARK}{slot}", mark_value(target.name))
     edit.changes[target.part] = results_sheet_xml(table, edit.styles.index, units=units, formulas=formulas,
                                                   kept=kept, dxf_index=edit.styles.dxf, title=target.name,
-                                                  input_columns=input_columns, tab_color=None)
+                                                  input_columns=input_columns, tab_color=None, epoch=edit.epoch)
     return edit.write(lock, package.path)
 
 
@@ -496,6 +497,9 @@ class _Edit:
         self.styles_part = (self.styles_rel[1] if self.styles_rel
                             else posixpath.join(posixpath.dirname(workbook.part), "styles.xml"))
         self.styles = StyleSheet(package.read(self.styles_part) if self.styles_rel else None)
+        properties = workbook.child("workbookPr")  # the date system of date cells: 1900, or 1904 where so saved
+        date1904 = properties is not None and properties.get("date1904") in ("1", "true")
+        self.epoch = CALENDAR_MAC_1904 if date1904 else CALENDAR_WINDOWS_1900
 
     def refuse_added_sheet(self) -> None:
         """Refuse the edit when the workbook's structure is protected: no sheet may be added."""

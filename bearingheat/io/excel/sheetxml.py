@@ -16,6 +16,7 @@ as the bytes of a worksheet part (ECMA-376 Part 1, 18.3 ``worksheet``):
 """
 from __future__ import annotations
 
+import datetime
 import functools
 import math
 import re
@@ -26,6 +27,7 @@ from xml.sax.saxutils import escape
 import numpy as np
 import pandas as pd
 from openpyxl.utils import get_column_letter
+from openpyxl.utils.datetime import CALENDAR_WINDOWS_1900, to_excel
 
 from bearingheat.io.excel import style as st
 from bearingheat.io.excel.layout import sheet_layout
@@ -70,11 +72,16 @@ def _number(value) -> str | None:
     return text[:-2] if text.endswith(".0") else text
 
 
-def _cell(ref: str, value, style: int, quote_style: Callable[[], int]) -> str:
-    """One <c> element: number, boolean, inline text or an empty styled cell (also for empty text, as openpyxl
-    writes it)."""
+def _cell(ref: str, value, style: int, quote_style: Callable[[], int], epoch: datetime.datetime = CALENDAR_WINDOWS_1900
+          ) -> str:
+    """One <c> element: number, boolean, date (its serial number of the workbook's ``epoch``, as Excel stores
+    dates), inline text or an empty styled cell (also for empty text, as openpyxl writes it)."""
     if value is None or value is pd.NA or value is pd.NaT or (isinstance(value, str) and value == ""):
         return f'<c r="{ref}" s="{style}"/>'
+    if isinstance(value, datetime.date):  # (a datetime and a pd.Timestamp are dates)
+        if isinstance(value, datetime.datetime) and value.tzinfo is not None:
+            value = value.replace(tzinfo=None)  # Excel has no time zones: the wall-clock time, as openpyxl writes
+        return f'<c r="{ref}" s="{style}"><v>{_number(to_excel(value, epoch))}</v></c>'
     if isinstance(value, (bool, np.bool_)):
         return f'<c r="{ref}" s="{style}" t="b"><v>{int(bool(value))}</v></c>'
     if isinstance(value, (int, float, np.integer, np.floating)):
@@ -98,7 +105,8 @@ def results_sheet_xml(table: pd.DataFrame, style_index: Callable[..., int], *, u
                       formulas: dict[tuple[str, int], str] | None = None, kept: dict[str, str] | None = None,
                       print_setup=None, rules=(), dxf_index: Callable[[str], int] | None = None,
                       progress=None, title: str = "Results", hidden_columns=(),
-                      input_columns: AbstractSet[str] = frozenset(), tab_color: str | None = TAB_COLOR) -> bytes:
+                      input_columns: AbstractSet[str] = frozenset(), tab_color: str | None = TAB_COLOR,
+                      epoch: datetime.datetime = CALENDAR_WINDOWS_1900) -> bytes:
     """The worksheet part of a results sheet.
 
     ``style_index(name, quote=False, number_format=None)`` gives the cellXfs
@@ -115,8 +123,9 @@ def results_sheet_xml(table: pd.DataFrame, style_index: Callable[..., int], *, u
     gives their differential formats' indices. ``hidden_columns`` are grouped
     and collapsed. ``input_columns`` are styled as inputs (as
     :func:`bearingheat.io.excel.writer.fill_sheet` styles them), ``tab_color``
-    is the tab's colour (ARGB; None: the workbook's default). ``progress``: an
-    object with start, update, finish.
+    is the tab's colour (ARGB; None: the workbook's default), ``epoch`` the
+    workbook's date system (1900, or 1904 of a workbook so saved) for its
+    date cells. ``progress``: an object with start, update, finish.
     """
     formulas = formulas or {}
     kept = dict(kept or {})
@@ -186,7 +195,7 @@ def results_sheet_xml(table: pd.DataFrame, style_index: Callable[..., int], *, u
                 name = st.STATUS.get(str(value), st.RESULT)
                 cells.append(_cell(ref, value, styles[name], quote_of(name)))
             else:
-                cells.append(_cell(ref, value, column_styles[c], column_quotes[c]))
+                cells.append(_cell(ref, value, column_styles[c], column_quotes[c], epoch))
         height = layout.heights.get(position)
         size = f' ht="{height:g}" customHeight="1"' if height else ""
         parts.append(f'<row r="{row}"{size}>{"".join(cells)}</row>')

@@ -1,6 +1,7 @@
 """Writing results sheets: header and units rows, extra columns, the pint-pandas round trip, other sheets kept."""
 from __future__ import annotations
 
+import datetime
 import re
 import zipfile
 
@@ -88,7 +89,9 @@ def test_a_table_sheet_looks_the_same_in_a_new_and_in_an_existing_workbook(tmp_p
     """openpyxl's writer (a new workbook) and the part edit (an existing one) render one layout: headers, units,
     values, formulas, named styles, number formats, widths, frozen panes."""
     frame = pd.DataFrame({"designation": ["6208", "=6209"], "Fr [kN]": [3.2, 4.1], "MR [N*mm]": [138.48, 1.5],
-                          "NR [W]": [np.nan, 2.25], "status": ["ok", "error"], "message": ["", "x" * 140]})
+                          "NR [W]": [np.nan, 2.25], "status": ["ok", "error"], "message": ["", "x" * 140],
+                          "inspected": [pd.Timestamp("2024-05-01"), pd.NaT],
+                          "logged": [datetime.datetime(2024, 5, 1, 8, 30), datetime.datetime(2024, 5, 2)]})
     options = dict(sheet="Loads", input_columns=["designation", "Fr [kN]"],
                    formulas={("NR [W]", 0): "=C3*1480/9550"})
     fresh = write_results(frame, tmp_path / "new.xlsx", **options)
@@ -103,10 +106,24 @@ def test_a_table_sheet_looks_the_same_in_a_new_and_in_an_existing_workbook(tmp_p
 
     assert shown(existing) == shown(fresh)
     cells = shown(existing)[0]
-    assert [c[2] for c in cells[0]] == ["bearingheat header"] * 2 + ["bearingheat result header"] * 4
+    assert [c[2] for c in cells[0]] == ["bearingheat header"] * 2 + ["bearingheat result header"] * 6
+    assert cells[2][6][0] == datetime.datetime(2024, 5, 1) and cells[2][6][3] == "yyyy-mm-dd"  # Excel dates
+    assert cells[2][7][0] == datetime.datetime(2024, 5, 1, 8, 30) and cells[2][7][3] == "yyyy-mm-dd hh:mm:ss"
     assert cells[2][3][:2] == ("=C3*1480/9550", "f")
     assert cells[3][0][:2] == ("=6209", "s") and cells[3][0][4]
     assert b'fullCalcOnLoad="1"' in zip_parts(existing)["xl/workbook.xml"]
+
+
+def test_dates_follow_the_date_system_of_the_workbook(tmp_path):
+    """A workbook saved with the 1904 date system counts its date cells from 1904: a date written into it shows
+    the same day as in a 1900 workbook."""
+    path = make_workbook(tmp_path / "mac.xlsx")
+    workbook = openpyxl.load_workbook(path)
+    workbook.epoch = openpyxl.utils.datetime.CALENDAR_MAC_1904
+    workbook.save(path)
+    write_results(pd.DataFrame({"inspected": [datetime.date(2024, 5, 1)]}), path, sheet="Dates")
+    assert openpyxl.load_workbook(path)["Dates"]["A3"].value == datetime.datetime(2024, 5, 1)
+    assert b'date1904="1"' in zip_parts(path)["xl/workbook.xml"]
 
 
 def test_write_results_refuses_a_sheet_it_wrote_that_now_holds_a_chart(tmp_path):
