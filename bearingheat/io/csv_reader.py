@@ -393,6 +393,10 @@ def read_source(path, *, sep: str | None = None, decimal: str | None = None, wha
     if table is None:
         table = _read_with_pandas(raw.decode("utf-8"), path, sep, decimal, header, text_columns)
     del raw
+    if isinstance(table, pd.DataFrame):  # a separator at the end of every line: a nameless column of nothing
+        nameless = [name for name, header in zip(table.columns, header) if not header.strip()
+                    and table[name].isna().all()]
+        table = table.drop(columns=nameless)
     rows = table.num_rows if isinstance(table, pa.Table) else len(table)
     empty = _empty_rows(table)
     if empty.any():  # lines of separators only (',,,,', as spreadsheets export rows they once used): no rows

@@ -344,3 +344,11 @@ def test_lines_of_separators_only_are_no_rows(tmp_path, space):
     assert out["id"].tolist() == ["A", "B"]
     assert out["status"].tolist() == ["ok", "error"]
     assert out["message"].iat[1].startswith("row 4 (id \"B\"): 'x' is not a number for nu [mm^2/s]")
+
+
+def test_a_separator_at_the_end_of_every_line_adds_no_column(tmp_path):
+    path = tmp_path / "trailing.csv"
+    path.write_text("id,designation,lubrication,n [rpm],Fr [kN],Fa [kN],nu [mm^2/s],\n"
+                    "A,6208,oil_bath,1480,3.2,0.9,40,\nB,6208,oil_bath,1480,5,0.9,40,\n")
+    assert list(read_csv(path).columns) == ["id", "designation", "lubrication", "n [rpm]", "Fr [kN]", "Fa [kN]",
+                                            "nu [mm^2/s]"]
