@@ -22,6 +22,7 @@ from bearingheat.cli.options import add_force, add_json, add_output, add_quiet
 from bearingheat.io.console import Progress, print_summary, print_table, summary_columns
 from bearingheat.io.dataset import (calc_dataset, check_dataset_target, dask_client, dataset_columns, dataset_files,
                                    is_dataset, read_dataset_columns)
+from bearingheat.io.arrow import ARROW_SUFFIXES
 from bearingheat.io.pipeline import calc_file
 from bearingheat.io.json import results_json
 from bearingheat.io.files import EXCEL_SUFFIXES, safe_output, workbook_lock
@@ -182,6 +183,8 @@ def run(args: argparse.Namespace) -> int:
         return run_calc_workbook(args)
     if args.in_place or args.formulas or args.sheet:
         raise UsageError("--in-place, --formulas and --sheet apply to Excel workbooks only")
+    if (args.sep or args.decimal) and source.suffix.lower() in ARROW_SUFFIXES:
+        raise UsageError("--sep and --decimal apply to CSV input only (a Parquet or Arrow file holds numbers)")
     target = _output(args, source)
     pdf = _pdf(args, target, source)
     if target is None or target.suffix.lower() not in EXCEL_SUFFIXES:

@@ -371,3 +371,12 @@ def test_contact_csv_semicolons_decimal_commas_and_escaped_text(tmp_path, capsys
     assert main(["contact", str(euro)]) == 0
     assert capsys.readouterr().out == first
     assert first.splitlines()[1].startswith("1,'=cmd,")
+
+
+def test_sep_and_decimal_are_refused_for_a_binary_table(tmp_path, capsys):
+    source = tmp_path / "in.parquet"
+    pd.read_csv(EXAMPLE_CSV).to_parquet(source, index=False)
+    for output in ([], ["-o", str(tmp_path / "out.xlsx")]):
+        assert main(["calc", str(source), "--decimal", ",", *output]) == 2
+        assert _err(capsys) == ("bearingheat calc: error: --sep and --decimal apply to CSV input only (a Parquet or "
+                                "Arrow file holds numbers)")
