@@ -287,6 +287,7 @@ RANGES: dict[str, tuple[tuple[float, float] | None, tuple[float, float] | None]]
     "n_thr_catalogue": ((-_INF, 1e7), None),
     "z": ((1.0, 1000.0), None),
     "Dw": ((-_INF, 1e4), None),
+    "oil_level": ((-_INF, 1e5), (-_INF, 5000.0)),   # mm: above 1.2 dm the drag is that of 1.2 dm (10000/3 p. 111)
     "dm_pitch": ((-_INF, 1e5), None),
     "f0_rel_unc": ((0.0, 1.0), (0.0, 0.5)),      # a half-width above 50 % is usually a percent typed as 1
     "f1_rel_unc": ((0.0, 1.0), (0.0, 0.5)),

@@ -85,3 +85,14 @@ def test_a_numeric_edition_column_is_read_as_the_edition():
     out = calc(pd.DataFrame([{**EXAMPLE, "skf_edition": 6000.0}, {**EXAMPLE, "skf_edition": None}]), model="skf")
     assert out["status"].tolist() == ["ok", "ok"]
     assert out["MR [N*mm]"].iat[0] == pytest.approx(331.075, abs=1e-3)
+
+
+def test_an_oil_level_far_beyond_any_bearing_is_refused_and_an_unlikely_one_said():
+    """The drag of H > 1.2 dm is that of 1.2 dm (SKF 10000/3, p. 111), so a mistyped level would change nothing
+    visible: 10^6 mm is outside the valid range, 8000 mm outside the plausible one."""
+    table = pd.read_csv("examples/gearbox_shaft_skf.csv").iloc[[0]]
+    rows = pd.concat([table.assign(**{"oil_level [mm]": level}) for level in (50.0, 8000.0, 1e6)], ignore_index=True)
+    out = calc(rows, model="skf")
+    assert out["status"].tolist() == ["ok", "warning", "error"]
+    assert out["message"].iat[2] == "oil_level [mm]: 1e+06 is outside the valid range up to 100000 mm"
+    assert out["message"].iat[1].startswith("oil_level [mm]: 8000 is outside the plausible range up to 5000 mm")
