@@ -517,9 +517,9 @@ def _cached_values(path: Path, sheet: str, cells: dict[tuple[str, int], str],
         width = max(col for entries in wanted.values() for _, col in entries) + 1
         out: dict[tuple[str, int], Any] = {}
         rows = workbook[sheet].iter_rows(min_row=first, max_row=last, max_col=width)
-        for row, cells in enumerate(rows, start=first):
+        for row, row_cells in enumerate(rows, start=first):
             for header, col in wanted.get(row, ()):
-                cell = cells[col] if col < len(cells) else None
+                cell = row_cells[col] if col < len(row_cells) else None
                 value = getattr(cell, "value", None)
                 # t="str" with an empty <v>: a saved empty text (openpyxl reads it as None, as a value never saved)
                 out[(header, row)] = "" if value is None and getattr(cell, "data_type", None) == "str" else value
