@@ -178,6 +178,8 @@ def magnitude(value: Any, unit: str, name: str) -> Magnitude:
     >>> u = ureg()
     >>> magnitude(2.5 * u.kN, "N", "Fr")
     2500.0
+    >>> magnitude(u.Quantity(553.15, "K"), "degC", "T")
+    280.0
     >>> magnitude(2 * u.kg, "N", "Fr")
     Traceback (most recent call last):
     ...
@@ -188,7 +190,8 @@ def magnitude(value: Any, unit: str, name: str) -> Magnitude:
     q, index = _as_quantity(value, name, unit)
     target = _units(unit)
     try:
-        if q._is_multiplicative:  # one scalar factor, one pass over an array
+        # one scalar factor, one pass over an array; an offset unit on either side (K to degC) is no factor
+        if q._is_multiplicative and _multiplicative(q._REGISTRY, unit):
             return _restore_index(_scaled(q.magnitude, _factor(q._REGISTRY, q.units._units, unit)), index)
         converted = q.to(target)
     except pint.errors.DimensionalityError as exc:
@@ -268,6 +271,12 @@ def _rpm_factor(registry: Any, units: Any) -> float | None:
         per_second /= TWO_PI  # rad/s -> rev/s
     factor = per_second * 60.0
     return 1.0 if abs(factor - 1.0) < 1e-15 else factor  # 1/min and rpm: exactly one revolution per minute
+
+
+@functools.lru_cache(maxsize=256)
+def _multiplicative(registry: Any, unit: str) -> bool:
+    """Whether ``unit`` converts by a factor alone (not degC or degF, which have an offset), once per unit."""
+    return bool(registry.Quantity(1.0, unit)._is_multiplicative)
 
 
 @functools.lru_cache(maxsize=256)

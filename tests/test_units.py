@@ -96,3 +96,14 @@ def test_units_follow_a_switched_application_registry():
     finally:
         pint.set_application_registry(before)
     assert quantity(1.0, "N")._REGISTRY is before
+
+
+@pytest.mark.parametrize("value, unit, expected", [
+    ((553.15, "K"), "degC", 280.0), ((0.0, "K"), "degC", -273.15), ((536.0, "degF"), "degC", 280.0),
+    ((20.0, "degC"), "K", 293.15), ((10.0, "K"), "delta_degC", 10.0), ((1.0, "kN"), "N", 1000.0),
+])
+def test_magnitude_converts_absolute_temperatures_with_their_offset(value, unit, expected):
+    """K to degC is no factor (1 K is not -272.15 degC per kelvin): the offset conversion is used wherever either
+    side has an offset (a bushing at 553.15 K read as -1.5e5 degC before)."""
+    from bearingheat.units import magnitude, ureg
+    assert magnitude(ureg().Quantity(*value), unit, "T") == pytest.approx(expected, rel=1e-12)
