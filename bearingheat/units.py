@@ -327,15 +327,16 @@ def quantity(mag: float | np.ndarray | pd.Series, unit: str) -> Quantity | pd.Se
     return u.Quantity(mag, _units(unit))
 
 
-def parse_quantity(text: str, *, name: str = "value") -> Quantity:
-    """Parse a command-line value with its unit, e.g. ``'2mm'``, ``'2.6kg*m^2'``, ``'3000rpm'``.
+def parse_quantity(text: str, *, name: str = "value", example: str | None = None) -> Quantity:
+    """Parse a command-line value with its unit, e.g. ``'2mm'``, ``'2.6kg*m^2'``, ``'3000rpm'``; ``example`` is a
+    unit of the option's kind, shown where the unit is missing.
 
     >>> parse_quantity('2.6kg*m^2', name='--I').to('kg*m^2').magnitude
     2.6
-    >>> parse_quantity('12', name='--dw')
+    >>> parse_quantity('3000', name='--n', example='rpm')
     Traceback (most recent call last):
     ...
-    bearingheat.errors.UnitError: --dw: '12' has no unit; write it with one, e.g. 12mm
+    bearingheat.errors.UnitError: --n: '3000' has no unit; write it with one, e.g. 3000rpm
     """
     raw = str(text).strip()
     match = re.match(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*)$", raw)
@@ -343,7 +344,8 @@ def parse_quantity(text: str, *, name: str = "value") -> Quantity:
         raise UnitError(f"{name}: {text!r} is not a number with a unit")
     number, unit_text = match.groups()
     if not unit_text:
-        raise UnitError(f"{name}: {text!r} has no unit; write it with one, e.g. {number}mm")
+        hint = f"e.g. {number}{example}" if example else "e.g. 12mm, 2kN, 3000rpm, 150degC"
+        raise UnitError(f"{name}: {text!r} has no unit; write it with one, {hint}")
     unit = parse_unit(unit_text, name=name)
     return ureg().Quantity(float(number), unit)
 

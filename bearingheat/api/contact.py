@@ -15,6 +15,7 @@ from typing import ClassVar
 
 import numpy as np
 
+from bearingheat.api._checks import check_ranges, where
 from bearingheat.api.results import Result
 from bearingheat.errors import ContactInputError, UnitError
 from bearingheat.kernels.contact import (axial_displacement, axial_displacement_ratio, hertz_coefficients,
@@ -162,6 +163,17 @@ def _angle_deg(value: Quantity, name: str) -> float | np.ndarray:
     return magnitude(value, "deg", name)
 
 
+def _require_finite(values: dict[str, float | np.ndarray]) -> None:
+    """:class:`ContactInputError` for the first argument that holds NaN or an infinite number (a kernel would
+    carry it into every result with status 'ok')."""
+    for name, value in values.items():
+        flat = np.ravel(np.asarray(value, dtype=float))
+        bad = np.flatnonzero(~np.isfinite(flat))
+        if len(bad):
+            raise ContactInputError(f"{name}: {flat[bad[0]]:g} is not a finite number"
+                                    + where(int(bad[0]), np.shape(value)))
+
+
 def _count(value: float | Quantity, name: str) -> float:
     if isinstance(value, Quantity):
         if not value.unitless:
@@ -212,6 +224,7 @@ def contact_angle_from_clearance(clearance: Quantity, r_i: Quantity, r_o: Quanti
     """
     e = magnitude(clearance, "mm", "clearance")
     ri, ro, dw = (magnitude(q, "mm", nm) for q, nm in ((r_i, "r_i"), (r_o, "r_o"), (d_w, "d_w")))
+    _require_finite({"clearance": e, "r_i": ri, "r_o": ro, "d_w": dw})
     return quantity(initial_contact_angle(e, ri, ro, dw), "deg")
 
 
@@ -287,11 +300,20 @@ def ball_bearing_contact(*, z: float, d_w: Quantity, d_m: Quantity, r_i: Quantit
         raise ContactInputError("give exactly one of alpha0 (an angle) or clearance (the mean radial clearance)")
     count = _count(z, "z")
     dw, dm, ri, ro = (magnitude(q, "mm", nm) for q, nm in ((d_w, "d_w"), (d_m, "d_m"), (r_i, "r_i"), (r_o, "r_o")))
+    _require_finite({"z": count, "d_w": dw, "d_m": dm, "r_i": ri, "r_o": ro})
     if alpha0 is not None:
         angle0 = _angle_deg(alpha0, "alpha0")
+        _require_finite({"alpha0": angle0})
     else:
-        angle0 = initial_contact_angle(magnitude(clearance, "mm", "clearance"), ri, ro, dw)
+        e = magnitude(clearance, "mm", "clearance")
+        _require_finite({"clearance": e})
+        angle0 = initial_contact_angle(e, ri, ro, dw)
     load = 0.0 if Fa is None else magnitude(Fa, "N", "Fa")
+    # NaN, infinite and absurd loads and speeds (beyond the contract's valid ranges: Fa up to 1e10 N, where the
+    # angle's root can still be bracketed) raise, naming the argument
+    check_ranges({"Fa": load} | ({"n": speed_rpm(n, "n")} if n is not None else {}),
+                 np.broadcast_shapes(np.shape(load), np.shape(speed_rpm(n, "n")) if n is not None else ()),
+                 ContactInputError)
 
     curv = race_curvatures(dw, dm, angle0, ri, ro)
     hertz_i, hertz_o = hertz_coefficients(curv.cos_tau_i), hertz_coefficients(curv.cos_tau_o)

@@ -67,9 +67,14 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_quiet(parser)
 
 
+#: a unit of each option's kind, for the message of a number typed without one
+_EXAMPLE_UNITS = {"--F": "kN", "--n": "rpm", "--d": "mm", "--life": "h", "--T": "degC", "--K": "N/mm^2*m/s",
+                  "--p-adm": "N/mm^2", "--cycles": "1/min", "--amplitude": "deg"}
+
+
 def _quantity(text, name):
     try:
-        return parse_quantity(text, name=name)
+        return parse_quantity(text, name=name, example=_EXAMPLE_UNITS.get(name))
     except UnitError as exc:
         raise UsageError(str(exc)) from exc
 

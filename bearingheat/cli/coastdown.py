@@ -73,9 +73,14 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--f0", type=float, default=None, help="catalogue f0 to audit against")
 
 
+#: a unit of each option's kind, for the message of a number typed without one
+_EXAMPLE_UNITS = {"--I": "kg*m^2", "--G": "N", "--r": "mm", "--dn": "rpm", "--dt": "s", "--nu": "mm^2/s",
+                  "--dM": "mm", "--P": "N"}
+
+
 def _quantity(text, name):
     try:
-        return parse_quantity(text, name=name)
+        return parse_quantity(text, name=name, example=_EXAMPLE_UNITS.get(name))
     except UnitError as exc:
         raise UsageError(str(exc)) from exc
 

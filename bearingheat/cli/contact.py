@@ -119,7 +119,8 @@ def _parse_argument(option: str, text: str) -> Any:
             return float(text)
         except ValueError:
             raise UnitError(f"--{option}: {text!r} is not a number") from None
-    return parse_quantity(text, name=f"--{option}")
+    return parse_quantity(text, name=f"--{option}", example={"length": "mm", "angle": "deg", "force": "N",
+                                                             "speed": "rpm"}.get(kind))
 
 
 def _evaluate(inputs: dict[str, Any]) -> tuple[dict[str, Any], str | None]:

@@ -61,7 +61,7 @@ def run(args: argparse.Namespace) -> int:
     nu = None
     if args.nu is not None:
         try:
-            viscosity = parse_quantity(args.nu, name="--nu")
+            viscosity = parse_quantity(args.nu, name="--nu", example="mm^2/s")
         except UnitError as exc:
             raise UsageError(str(exc)) from exc
         try:

@@ -60,3 +60,13 @@ def test_subprocess_python_m_bearingheat():
                           capture_output=True, text=True, cwd=REPO, timeout=120)
     assert proc.returncode == 0, proc.stderr
     assert "governed by pV: l = 94.5 mm" in proc.stdout
+
+
+@pytest.mark.parametrize("option, text, shown", [("--n", "500", "500rpm"), ("--T", "150", "150degC"),
+                                                 ("--life", "1000", "1000h")])
+def test_a_number_without_a_unit_is_shown_with_a_unit_of_its_kind(capsys, option, text, shown):
+    args = {"--F": "2kN", "--n": "500rpm", "--d": "25mm", "--shaft": "soft", "--life": "1000h",
+            "--load-type": "static", option: text}
+    assert main(["bushing", *[part for pair in args.items() for part in pair]]) == 2
+    assert capsys.readouterr().err.strip() == (f"bearingheat bushing: error: {option}: {text!r} has no unit; write it "
+                                               f"with one, e.g. {shown}")

@@ -59,4 +59,4 @@ def test_coastdown_bad_cell(tmp_path, capsys):
 def test_coastdown_rig_value_without_unit(capsys):
     assert main(["coastdown", str(EXAMPLE), "--G", "1100"]) == 2
     assert capsys.readouterr().err == (
-        "bearingheat coastdown: error: --G: '1100' has no unit; write it with one, e.g. 1100mm\n")
+        "bearingheat coastdown: error: --G: '1100' has no unit; write it with one, e.g. 1100N\n")

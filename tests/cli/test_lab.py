@@ -20,7 +20,7 @@ def test_cli_lab(tmp_path, capsys):
 def test_cli_lab_bad_nu(tmp_path, capsys):
     assert main(["lab", str(EXAMPLE), "--out-dir", str(tmp_path), "--nu", "20"]) == 2
     assert capsys.readouterr().err.strip() == (
-        "bearingheat lab: error: --nu: '20' has no unit; write it with one, e.g. 20mm")
+        "bearingheat lab: error: --nu: '20' has no unit; write it with one, e.g. 20mm^2/s")
 
 
 def test_subprocess_lab(tmp_path):
