@@ -75,3 +75,24 @@ def test_ball_contact_is_a_result_with_a_warning_below_the_minimum_axial_load():
     without_speed = ct.ball_bearing_contact(z=7, d_w=2 * u.mm, d_m=8.7355 * u.mm, r_i=1.05 * u.mm, r_o=1.16 * u.mm,
                                          alpha0=12 * u.deg, Fa=0.1 * u.gram_force)
     assert without_speed.status == ["ok"]  # no speed: no minimum load to compare with
+
+
+@pytest.mark.parametrize("changes, message", [
+    (dict(Fa=float("nan")), "Fa: nan is not a number; leave the argument out where it is not known"),
+    (dict(Fa=1e300), "Fa: 1e+300 is outside the valid range up to 1e+10 N"),
+    (dict(z=float("inf")), "z: inf is not a finite number"),
+    (dict(alpha0=float("nan")), "alpha0: nan is not a finite number"),
+    (dict(d_w=float("nan")), "d_w: nan is not a finite number"),
+    (dict(n=float("nan")), "n: nan is not a number; leave the argument out where it is not known"),
+])
+def test_numbers_that_are_not_finite_are_refused_by_name(changes, message):
+    """A kernel carries NaN and inf through to every result; the API says which argument holds one (a load so
+    large that no angle can be bracketed is outside the valid range)."""
+    u = ureg()
+    args = dict(z=7, d_w=2.0, d_m=8.7355, r_i=1.05, r_o=1.16, alpha0=12.0, Fa=1.0, n=3000.0)
+    args.update(changes)
+    units = dict(d_w=u.mm, d_m=u.mm, r_i=u.mm, r_o=u.mm, alpha0=u.deg, Fa=u.N, n=u.rpm)
+    quantities = {k: (v * units[k] if k in units else v) for k, v in args.items()}
+    with pytest.raises(ContactInputError) as exc:
+        ct.ball_bearing_contact(**quantities)
+    assert str(exc.value) == message
