@@ -68,10 +68,15 @@ class _PlainBearingSize(Result):
             unit = cls.UNITS.get(name)
             named[name] = quantity(value, unit) if unit and value is not None else value
         named.pop("kind")
-        life_known = bool(np.isfinite(values["life_fig86 [h]"]))
+        notes = []
         # the life line of fig. 86 covers part of the pV range: elsewhere the life is unknown, a warning
-        named["status"] = ["ok" if life_known else "warning"]
-        named["messages"] = ["" if life_known else f"life_fig86: {values['life_note']}"]
+        if not np.isfinite(values["life_fig86 [h]"]):
+            notes.append(f"life_fig86: {values['life_note']}")
+        if not np.isfinite(values["N_low [W]"]):  # no coefficient above 5 m/s: no power loss without f
+            notes.append("N: the DU/DP bushing handbook gives no friction coefficient above V = 5 m/s; give f for "
+                         "the power loss")
+        named["status"] = ["warning" if notes else "ok"]
+        named["messages"] = ["; ".join(notes)]
         return cls(**named)
 
     def to_dict(self) -> dict[str, float | str | None]:
@@ -139,6 +144,21 @@ class ThrustWasherSize(_PlainBearingSize):
     D_standard: Quantity
 
     kind: ClassVar[str] = "thrust_washer"
+
+
+def _friction(f: float | Quantity | None) -> float | None:
+    """The friction coefficient the user gave, a plain number (or a dimensionless Quantity) in (0, 1]; None when
+    not given (the handbook's range at V is used then)."""
+    if f is None:
+        return None
+    value = f.to("dimensionless").magnitude if isinstance(f, Quantity) else f
+    try:
+        value = float(value)  # (an array or a text is no one coefficient)
+    except (TypeError, ValueError):
+        raise BushingInputError(f"f = {value!r}: expected one friction coefficient, a number > 0 and <= 1") from None
+    if not 0.0 < value <= 1.0:  # (NaN fails too)
+        raise BushingInputError(f"f = {value:g}: expected a friction coefficient > 0 and <= 1")
+    return value
 
 
 def _admissible(application: str, shaft: str | None, life: Quantity | None, load_type: str, T: Quantity | None,
@@ -248,7 +268,7 @@ def size_bushing(F: Quantity, n: Quantity, d: Quantity, *, application: str = "b
     K_table, factor, T_c, p = _admissible(application, shaft, life, load_type, T, K, p_adm)
     lengths = None if standard_lengths is None else np.atleast_1d(magnitude(standard_lengths, "mm", "standard_lengths"))
     result = size_bushing_kernel(float(magnitude(F, "N", "F")), float(magnitude(n, "1/min", "n")),
-                                 float(magnitude(d, "mm", "d")), K_table * factor, p, lengths, f)
+                                 float(magnitude(d, "mm", "d")), K_table * factor, p, lengths, _friction(f))
     result.update({"K_table [N/mm^2*m/s]": K_table, "temperature_factor": factor, "T [degC]": T_c})
     return BushingSize._from_kernel(result)
 
@@ -340,6 +360,7 @@ def size_thrust_washer(F: Quantity, n: Quantity, d: Quantity, *, shaft: str | No
     diameters = None if standard_diameters is None else np.atleast_1d(
         magnitude(standard_diameters, "mm", "standard_diameters"))
     result = size_thrust_washer_kernel(float(magnitude(F, "N", "F")), float(magnitude(n, "1/min", "n")),
-                                       float(magnitude(d, "mm", "d")), K_table * factor, p, diameters, f)
+                                       float(magnitude(d, "mm", "d")), K_table * factor, p, diameters,
+                                       _friction(f))
     result.update({"K_table [N/mm^2*m/s]": K_table, "temperature_factor": factor, "T [degC]": T_c})
     return ThrustWasherSize._from_kernel(result)

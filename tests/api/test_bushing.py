@@ -6,6 +6,8 @@ import math
 import pytest
 
 from bearingheat.api import bushing as bu
+from bearingheat.api.bushing import size_bushing
+from bearingheat.errors import BushingInputError
 from bearingheat.catalogue.bushing import KGF_PER_CM2
 from bearingheat.units import ureg
 
@@ -54,3 +56,25 @@ def test_bushing_outside_the_life_line_is_a_warning():
     washer = bu.size_thrust_washer(20 * u.kN, 25 * u.rpm, 30 * u.mm, shaft="hardened", life=1000 * u.h,
                                    load_type="moving_load_severe")
     assert type(washer).__name__ == "ThrustWasherSize" and washer.to_dict()["kind"] == "thrust_washer"
+
+
+@pytest.mark.parametrize("f, message", [(-0.1, "f = -0.1: expected a friction coefficient > 0 and <= 1"),
+                                        (float("nan"), "f = nan: expected a friction coefficient > 0 and <= 1"),
+                                        (5.0, "f = 5: expected a friction coefficient > 0 and <= 1")])
+def test_a_friction_coefficient_out_of_its_range_is_refused(f, message):
+    u = ureg()
+    with pytest.raises(BushingInputError) as exc:
+        size_bushing(2 * u.kN, 500 * u.rpm, 25 * u.mm, shaft="soft", life=1000 * u.h, load_type="static", f=f)
+    assert str(exc.value) == message
+
+
+def test_no_power_loss_above_5_m_s_without_f_is_a_warning():
+    """The handbook's friction coefficients end at V = 5 m/s: N is NaN there, so the status says why."""
+    u = ureg()
+    out = size_bushing(2 * u.kN, 4600 * u.rpm, 25 * u.mm, shaft="soft", life=1000 * u.h, load_type="static")
+    assert out.status == ["warning"]
+    assert out.messages == ["N: the DU/DP bushing handbook gives no friction coefficient above V = 5 m/s; give f for "
+                            "the power loss"]
+    with_f = size_bushing(2 * u.kN, 4600 * u.rpm, 25 * u.mm, shaft="soft", life=1000 * u.h, load_type="static",
+                          f=0.1 * u.dimensionless)
+    assert with_f.N_low.to("W").magnitude == pytest.approx(0.1 * 2000 * with_f.V.to("m/s").magnitude, rel=1e-12)
