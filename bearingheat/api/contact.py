@@ -15,7 +15,7 @@ from typing import ClassVar
 
 import numpy as np
 
-from bearingheat.api._checks import check_ranges, where
+from bearingheat.api._checks import check_ranges, shared_index, where
 from bearingheat.api.results import Result
 from bearingheat.errors import ContactInputError, UnitError
 from bearingheat.kernels.contact import (axial_displacement, axial_displacement_ratio, hertz_coefficients,
@@ -152,8 +152,8 @@ class BallContact(Result):
             value = getattr(self, attribute)
             if value is None:
                 continue
-            mag = value.to(unit).magnitude if unit else value.to("dimensionless").magnitude
-            result[key] = mag.tolist() if isinstance(mag, np.ndarray) else float(mag)
+            mag = magnitude(value, unit or "dimensionless", key)  # (a Quantity, or a pint-pandas Series)
+            result[key] = np.asarray(mag).tolist() if np.ndim(mag) else float(mag)
         return result
 
 
@@ -298,6 +298,9 @@ def ball_bearing_contact(*, z: float, d_w: Quantity, d_m: Quantity, r_i: Quantit
     """
     if (alpha0 is None) == (clearance is None):
         raise ContactInputError("give exactly one of alpha0 (an angle) or clearance (the mean radial clearance)")
+    # pint-pandas Series are paired row by row: one index for all of them
+    shared_index({"d_w": d_w, "d_m": d_m, "r_i": r_i, "r_o": r_o, "alpha0": alpha0, "clearance": clearance, "Fa": Fa,
+                  "n": n}, ContactInputError)
     count = _count(z, "z")
     dw, dm, ri, ro = (magnitude(q, "mm", nm) for q, nm in ((d_w, "d_w"), (d_m, "d_m"), (r_i, "r_i"), (r_o, "r_o")))
     _require_finite({"z": count, "d_w": dw, "d_m": dm, "r_i": ri, "r_o": ro})

@@ -62,7 +62,10 @@ class Result:
             columns[output_header(name, unit) if unit else name] = np.broadcast_to(numbers, (len(self),))
         columns["status"] = list(self.status)
         columns["message"] = list(self.messages)
-        return pd.DataFrame(columns)
+        # the index of pint-pandas Series arguments (a result field is then a Series of the points), else 0, 1 ...
+        index = next((value.index for item in dataclasses.fields(self)  # type: ignore[arg-type]
+                      if isinstance(value := getattr(self, item.name), pd.Series) and len(value) == len(self)), None)
+        return pd.DataFrame(columns, index=index)
 
     def __repr__(self) -> str:
         counts = {s: self.status.count(s) for s in ("ok", "warning", "error") if self.status.count(s)}

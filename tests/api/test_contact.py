@@ -96,3 +96,18 @@ def test_numbers_that_are_not_finite_are_refused_by_name(changes, message):
     with pytest.raises(ContactInputError) as exc:
         ct.ball_bearing_contact(**quantities)
     assert str(exc.value) == message
+
+
+def test_series_in_series_out_with_their_index():
+    pd = pytest.importorskip("pandas")
+    pytest.importorskip("pint_pandas")
+    u = ureg()
+    geometry = dict(z=7, d_w=2 * u.mm, d_m=8.7355 * u.mm, r_i=1.05 * u.mm, r_o=1.16 * u.mm)
+    Fa = pd.Series([0.5, 1.0, 2.0], index=[10, 20, 30], dtype="pint[kgf]")
+    result = ct.ball_bearing_contact(**geometry, alpha0=12 * u.deg, Fa=Fa, n=3000 * u.rpm)
+    assert result.to_frame().index.tolist() == [10, 20, 30]
+    one = ct.ball_bearing_contact(**geometry, alpha0=12 * u.deg, Fa=1.0 * u.kgf, n=3000 * u.rpm)
+    assert result.to_dict()["alpha [deg]"][1] == pytest.approx(one.to_dict()["alpha [deg]"], rel=1e-12)
+    with pytest.raises(ContactInputError) as exc:
+        ct.ball_bearing_contact(**geometry, alpha0=pd.Series([12.0] * 3, index=[30, 20, 10], dtype="pint[deg]"), Fa=Fa)
+    assert str(exc.value).startswith("alpha0 and Fa are Series with different indexes")
