@@ -171,7 +171,8 @@ def _admissible(application: str, shaft: str | None, life: Quantity | None, load
         K_table = float(magnitude(K, "N/mm^2*m/s", "K"))
     T_c = None if T is None else float(magnitude(T, "degC", "T"))
     factor = 1.0 if T_c is None else temperature_factor_seed004(T_c)
-    p = pressure_limit_seed004(load_type) if p_adm is None else float(magnitude(p_adm, "N/mm^2", "p_adm"))
+    p_table = pressure_limit_seed004(load_type)  # (an unknown load type is refused whether or not p_adm is given)
+    p = p_table if p_adm is None else float(magnitude(p_adm, "N/mm^2", "p_adm"))
     return K_table, factor, T_c, p
 
 

@@ -175,6 +175,8 @@ def _require_finite(values: dict[str, float | np.ndarray]) -> None:
 
 
 def _count(value: float | Quantity, name: str) -> float:
+    if isinstance(value, (bool, np.bool_, str, bytes)):  # (True is 1 to Python, '7' no number)
+        raise ContactInputError(f"{name}: {value!r} is not a number of balls")
     if isinstance(value, Quantity):
         if not value.unitless:
             raise UnitError(f"{name}: {value} must be a plain number of balls, without a unit")

@@ -19,6 +19,7 @@ import argparse
 import importlib
 from collections.abc import Collection
 import importlib.metadata
+import os
 import sys
 import xml.etree.ElementTree as ElementTree
 import zipfile
@@ -134,6 +135,10 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(arguments)
     try:
         return int(args._module.run(args))
+    except BrokenPipeError:  # the reader of a pipe stopped early ('| head'): nothing more to say, and nowhere to
+        devnull = os.open(os.devnull, os.O_WRONLY)  # (Python would complain again when it flushes stdout at exit)
+        os.dup2(devnull, sys.stdout.fileno())
+        return 0
     except BearingheatError as exc:  # unusable input or argument (UsageError included): exit 2
         print(f"bearingheat {args.command}: error: {exc}", file=sys.stderr)
         return 2

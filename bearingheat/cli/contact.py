@@ -174,6 +174,8 @@ def _run_csv(path: str, as_json: bool, quiet: bool = False) -> int:
         missing.append("alpha0 [deg] or clearance [mm]")
     if missing:
         raise UsageError(f"{path}: missing column(s) {', '.join(missing)}")
+    if not any(any(cell.strip() for cell in row) for row in rows[1:]):
+        raise UsageError(f"{path}: no bearings (only a header row)")
 
     records: list[dict[str, Any]] = []
     failures = 0

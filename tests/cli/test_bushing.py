@@ -70,3 +70,17 @@ def test_a_number_without_a_unit_is_shown_with_a_unit_of_its_kind(capsys, option
     assert main(["bushing", *[part for pair in args.items() for part in pair]]) == 2
     assert capsys.readouterr().err.strip() == (f"bearingheat bushing: error: {option}: {text!r} has no unit; write it "
                                                f"with one, e.g. {shown}")
+
+
+def test_an_unknown_load_type_is_refused_with_p_adm_too(capsys):
+    assert main(["bushing", "--F", "2kN", "--n", "500rpm", "--d", "25mm", "--shaft", "soft", "--life", "1000h",
+                 "--load-type", "bogus", "--p-adm", "20N/mm^2"]) == 2
+    assert "load type 'bogus' unknown" in capsys.readouterr().err
+
+
+def test_a_closed_pipe_ends_the_output_quietly(tmp_path):
+    import subprocess
+    import sys
+    done = subprocess.run(f"{sys.executable} -m bearingheat lookup 6208 | head -1", shell=True, capture_output=True,
+                          text=True)
+    assert done.stdout == "designation: 6208\n" and done.stderr == ""

@@ -141,3 +141,21 @@ def test_subprocess_python_m_bearingheat():
     assert done.returncode == 0, done.stderr
     record = json.loads(done.stdout)
     assert abs(record["alpha [deg]"] - (14 + 28 / 60)) * 3600 <= 10
+
+
+def test_a_table_with_only_a_header_is_refused(tmp_path, capsys):
+    path = tmp_path / "head.csv"
+    path.write_text("designation,z,Dw [mm],dm_pitch [mm],ri [mm],ro [mm],alpha0 [deg],Fa [kgf],n [rpm]\n")
+    assert main(["contact", str(path)]) == 2
+    assert capsys.readouterr().err == f"bearingheat contact: error: {path}: no bearings (only a header row)\n"
+
+
+@pytest.mark.parametrize("z", [True, "7"])
+def test_a_count_of_balls_is_a_number(z):
+    from bearingheat.api.contact import ball_bearing_contact
+    from bearingheat.errors import ContactInputError
+    from bearingheat.units import ureg
+    u = ureg()
+    with pytest.raises(ContactInputError) as exc:
+        ball_bearing_contact(z=z, d_w=2 * u.mm, d_m=8.7355 * u.mm, r_i=1.05 * u.mm, r_o=1.16 * u.mm, alpha0=12 * u.deg)
+    assert str(exc.value) == f"z: {z!r} is not a number of balls"
