@@ -38,7 +38,7 @@ from scipy import stats
 
 from bearingheat.analysis.effects import (CANDIDATES, EFFECT_NAMES, FittedEffect, ModelData, bearing_keys,
                                           catalogue_arrays, format_value)
-from bearingheat.calc.contract import parse_header
+from bearingheat.calc.contract import column, parse_header
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.fill import fill_from_catalogue
 from bearingheat.calc.models import compute_supports
@@ -136,6 +136,11 @@ def _measured_column(table: pd.DataFrame, name: str, row_errors: list[list[str]]
     return np.asarray(converted, dtype=float)
 
 
+#: the oil temperatures a measurement may have [degC]: the valid range of the bearing temperature of the column
+#: contract (T_bearing)
+T_OIL_RANGE = column("T_bearing").valid
+
+
 def read_measurements(table: pd.DataFrame) -> MeasuredData:
     """Split a measured table (unit headers) into the calc frame and M, T_oil, t.
 
@@ -155,9 +160,15 @@ def read_measurements(table: pd.DataFrame) -> MeasuredData:
             row_errors[i].append(f"row {i + 1}: M is blank; every row needs a measured torque")
         elif value <= 0:
             row_errors[i].append(f"row {i + 1}: M = {value:g} N*mm must be > 0")
+        elif np.isinf(value):  # (one such row would make every error measure infinite)
+            row_errors[i].append(f"row {i + 1}: M = {value:g} N*mm is not a finite number")
+    low, high = T_OIL_RANGE
+    for i, value in enumerate(T_oil):
+        if not np.isnan(value) and not low <= value <= high:
+            row_errors[i].append(f"row {i + 1}: T_oil = {value:g} degC is outside {low:g} to {high:g} degC")
     for i, value in enumerate(t):
-        if value < 0:
-            row_errors[i].append(f"row {i + 1}: t = {value:g} h must be >= 0")
+        if value < 0 or np.isinf(value):
+            row_errors[i].append(f"row {i + 1}: t = {value:g} h must be >= 0 and finite")
     measured_headers = [h for h, n in zip(table.columns, names) if n in MEASURED_UNITS or n == "group"]
     try:
         converted = to_catalogue_units(table.drop(columns=measured_headers))

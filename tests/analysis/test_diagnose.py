@@ -96,6 +96,20 @@ def test_bad_torque_cells_are_row_errors():
     assert measured.row_errors[0] == []
 
 
+def test_infinite_torques_and_impossible_oil_temperatures_are_row_errors():
+    """One infinite torque made every error measure infinite (and diagnose name no effect, audit stop with a
+    traceback); an oil temperature below absolute zero passed silently."""
+    table = small_table(4)
+    table["M [N*mm]"] = table["M [N*mm]"].astype(float)
+    table.loc[1, "M [N*mm]"] = np.inf
+    table["T_oil [degC]"] = 50.0
+    table.loc[2, "T_oil [degC]"] = -400.0
+    measured = read_measurements(table)
+    assert measured.row_errors[1] == ["row 2: M = inf N*mm is not a finite number"]
+    assert measured.row_errors[2] == ["row 3: T_oil = -400 degC is outside -60 to 300 degC"]
+    assert measured.row_errors[0] == measured.row_errors[3] == []
+
+
 def test_too_few_rows():
     with pytest.raises(DiagnoseError, match=re.escape(
             "diagnose needs at least 20 usable rows of measured torque; got 3")):

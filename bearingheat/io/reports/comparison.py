@@ -13,6 +13,7 @@ import numpy as np
 
 from bearingheat.analysis.comparison import ModelComparison
 from bearingheat.io.files import write_outputs
+from bearingheat.io.json import json_safe
 from bearingheat.io.reports import FIGURE_DPI, matplotlib_figure
 
 __all__ = ["COMPARISON_FILES", "comparison_lines", "comparison_markdown", "plot_comparison", "write_comparison"]
@@ -81,7 +82,7 @@ def plot_comparison(comparison: ModelComparison, path: Path) -> None:
 
 def write_comparison(comparison: ModelComparison, out_dir, *, force: bool = False, inputs=()) -> None:
     """Write models.md, models.json and models.png into ``out_dir`` (atomically; existing files only with force)."""
-    text = json.dumps(comparison.summary(), indent=2, ensure_ascii=False)
+    text = json.dumps(json_safe(comparison.summary()), indent=2, ensure_ascii=False)  # strict JSON
     report = comparison_markdown(comparison)
     write_outputs(out_dir, {
         "models.md": lambda path: Path(path).write_text(report, encoding="utf-8"),

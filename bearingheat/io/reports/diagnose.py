@@ -21,6 +21,7 @@ import numpy as np
 from bearingheat.analysis.diagnose import (REGRESSOR_UNITS, CandidateScore, Diagnosis, format_value, key_regressor,
                                            regressors)
 from bearingheat.io.files import write_outputs as write_files
+from bearingheat.io.json import json_safe
 from bearingheat.io.reports import FIGURE_DPI, matplotlib_figure
 
 __all__ = ["plot_residuals", "plot_measured_vs_predicted", "report_markdown", "write_outputs", "summary_lines"]
@@ -149,7 +150,7 @@ def write_outputs(diagnosis: Diagnosis, out_dir: str | os.PathLike[str], *, forc
     summary = diagnosis.summary()
     key = key_regressor(diagnosis)
     summary["key_regressor"] = key
-    summary_text = json.dumps(summary, indent=2, ensure_ascii=False)
+    summary_text = json.dumps(json_safe(summary), indent=2, ensure_ascii=False)  # strict JSON: no Infinity, NaN
     report = report_markdown(diagnosis, summary, key)
     write_files(out_dir, {
         "residuals.png": partial(plot_residuals, diagnosis),
