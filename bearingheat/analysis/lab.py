@@ -82,18 +82,22 @@ def read_lab_table(table: pd.DataFrame) -> pd.DataFrame:
             out[name] = values[header].astype(str).str.strip()
             continue
         numbers = pd.to_numeric(values[header], errors="coerce").to_numpy(dtype=float)
-        bad = np.flatnonzero(np.isnan(numbers))
+        bad = np.flatnonzero(~np.isfinite(numbers))  # (text, a blank cell, inf)
         if len(bad):
             i = int(bad[0])
-            raise LabError(f"row {i + 1}: {values[header].iat[i]!r} is not a number for {header}")
+            cell = values[header].iat[i]
+            shown = "blank" if pd.isna(cell) else repr(cell.item() if isinstance(cell, np.generic) else cell)
+            raise LabError(f"row {i + 1}: {shown} is not a number for {header}")
         if unit_text is None or unit_text.strip() in ("", "-"):
             raise LabError(f"column {header!r}: needs a unit, e.g. '{name} [{target}]'")
         try:
             out[name] = convert_column(numbers, unit_text, target, name=name, header=header)[0]
         except UnitError as exc:
             raise LabError(f"column {header!r}: {exc}") from exc
-    for name, low, high, text in (("Q", 0.0, None, "must be > 0"), ("n", 0.0, None, "must be > 0"),
-                                  ("T", 0.0, None, "must be > 0"), ("beta", -1e-12, 90.0, "must be in 0..90 deg")):
+    checks = [("Q", 0.0, None, "must be > 0"), ("n", 0.0, None, "must be > 0"), ("T", 0.0, None, "must be > 0"),
+              ("beta", -1e-12, 90.0, "must be in 0..90 deg")]
+    checks += [("nu", 0.0, None, "must be > 0")] if "nu" in out else []
+    for name, low, high, text in checks:
         col = out[name].to_numpy(dtype=float)
         bad = (col <= low) | ((col > high) if high is not None else False)
         if bad.any():

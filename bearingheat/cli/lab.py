@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import argparse
+import math
 import json
 
 from bearingheat.analysis.lab import process_lab
@@ -68,6 +69,8 @@ def run(args: argparse.Namespace) -> int:
             nu = float(magnitude(viscosity, "mm^2/s", "--nu"))
         except UnitError as exc:
             raise UsageError(f"--nu: {args.nu!r} is not a kinematic viscosity (e.g. 20mm^2/s)") from exc
+        if not (math.isfinite(nu) and nu > 0):
+            raise UsageError(f"--nu: {args.nu.strip()} must be a viscosity > 0")
     check_outputs(args.out_dir, _KNOWN_FILES, force=args.force, inputs=(args.input,), create=False)
     table = read_table(args.input, args.sheet, sep=args.sep, decimal=args.decimal)
     try:

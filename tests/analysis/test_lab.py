@@ -100,3 +100,19 @@ def test_weight_as_force_is_refused():
     with pytest.raises(LabError, match=re.escape("column 'Q [N]': unit N cannot be converted to kg")):
         process_lab(pd.DataFrame({"bearing": ["101"], "Q [N]": [1.0], "beta [deg]": [0.0],
                                   "n [1/min]": [3000.0], "T [N*mm]": [0.1]}))
+
+
+@pytest.mark.parametrize("changes, message", [
+    ({"T [N*mm]": [np.inf]}, "row 1: inf is not a number for T [N*mm]"),
+    ({"T [N*mm]": [np.nan]}, "row 1: blank is not a number for T [N*mm]"),
+    ({"nu [mm^2/s]": [-5.0]}, "row 1: nu [mm^2/s] = -5 must be > 0"),
+    ({"nu [mm^2/s]": [0.0]}, "row 1: nu [mm^2/s] = 0 must be > 0"),
+])
+def test_readings_that_are_no_finite_numbers_or_no_viscosity_are_refused(changes, message):
+    """An infinite torque gave mu = inf, a viscosity <= 0 left the row's catalogue torque out of the median."""
+    row = {"bearing": ["101"], "Q [kg]": [1.0], "beta [deg]": [0.0], "n [1/min]": [3000.0], "T [N*mm]": [0.1],
+           "nu [mm^2/s]": [20.0]}
+    row.update(changes)
+    with pytest.raises(LabError) as exc:
+        process_lab(pd.DataFrame(row))
+    assert str(exc.value) == message
