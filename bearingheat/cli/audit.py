@@ -4,6 +4,7 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+from functools import partial
 from pathlib import Path
 
 from bearingheat.analysis.comparison import ALL_MODELS, compare_models_table, model_names
@@ -112,6 +113,7 @@ def run(args: argparse.Namespace) -> int:
     if out_dir:
         check_outputs(out_dir, [name for kind, _ in jobs for name in _FILES[kind]], force=args.force, inputs=inputs,
                       create=False)
+    writes = []  # every job is computed before any file is written: a job that fails leaves no file of another
     try:
         for kind, table in jobs:
             if kind == "coefficients":
@@ -122,8 +124,7 @@ def run(args: argparse.Namespace) -> int:
                     say(line)
                 flagged |= bool((result["flag"] != "").any() or (result["status"] != "ok").any())
                 printed["coefficients"] = result.to_dict(orient="records")
-                if out_dir:
-                    write_coefficients(result, out_dir, force=True, inputs=inputs)  # checked above
+                writes.append(partial(write_coefficients, result, out_dir, force=True, inputs=inputs))
             elif kind == "models":
                 try:
                     comparison = compare_models_table(table, args.model, k=args.folds)
@@ -133,18 +134,19 @@ def run(args: argparse.Namespace) -> int:
                     say(line)
                 flagged |= bool(comparison.excluded)
                 printed["model_comparison"] = comparison.summary()
-                if out_dir:
-                    write_comparison(comparison, out_dir, force=True, inputs=inputs)  # checked above
+                writes.append(partial(write_comparison, comparison, out_dir, force=True, inputs=inputs))
             else:
                 speeds = classify_reference_speeds(audit_reference_speeds(table, speed_column=args.speed_column))
                 for line in reference_speed_lines(speeds):
                     say(line)
                 flagged |= bool(len(speeds.flagged))
                 printed["reference_speed_groups"] = speeds.groups.to_dict(orient="records")
-                if out_dir:
-                    write_reference_speeds(speeds, out_dir, force=True, inputs=inputs)  # checked above
+                writes.append(partial(write_reference_speeds, speeds, out_dir, force=True, inputs=inputs))
     except AuditError as exc:
         raise UsageError(str(exc)) from exc
+    if out_dir:
+        for write in writes:  # (the files were checked before any work: force=True replaces only what was allowed)
+            write()
     if args.json:
         print(json.dumps(json_safe(printed), ensure_ascii=False, default=str))
     return 1 if flagged else 0

@@ -119,3 +119,14 @@ def test_audit_model_all_prints_the_comparison_after_the_coefficients(tmp_path, 
     assert "schaeffler fits these data better than skf" in printed
     assert {p.name for p in (tmp_path / "a").iterdir()} == {"coefficients.csv", "models.md", "models.json",
                                                            "models.png"}
+
+
+def test_audit_writes_no_file_when_one_of_its_jobs_fails(tmp_path, capsys):
+    """--model all on data the SKF model cannot use (no oil level): refused with exit 2, and the coefficients,
+    computed before the comparison failed, are not left in the folder (a rerun would need --force)."""
+    out = tmp_path / "a"
+    out.mkdir()
+    example = Path(__file__).resolve().parents[2] / "examples" / "measured_torque_example.csv"
+    assert main(["audit", str(example), "--model", "all", "--out-dir", str(out), "-q"]) == 2
+    assert "the model comparison needs" in capsys.readouterr().err
+    assert list(out.iterdir()) == []
