@@ -198,6 +198,9 @@ def interval_friction_table(t: npt.ArrayLike, n_smooth: npt.ArrayLike, I: float,
     if dt is not None:
         if not dt > 0:
             raise CoastdownError(f"intervals: Δt = {dt:g} s; expected a time step > 0 s")
+        if dt > t[-1] - t[0]:  # not one interval would fit: an empty table would say nothing
+            raise CoastdownError(f"intervals: Δt = {dt:g} s is longer than the recorded run-down "
+                                 f"({t[-1] - t[0]:g} s); give a shorter time step")
         edges_t = np.arange(t[0], t[-1] + 1e-9 * dt, dt)
         edges_n = np.interp(edges_t, t, speed)
     else:
@@ -207,6 +210,9 @@ def interval_friction_table(t: npt.ArrayLike, n_smooth: npt.ArrayLike, I: float,
             dn = (top - bottom) / count
         if not dn > 0:
             raise CoastdownError(f"intervals: Δn = {dn:g} 1/min; expected a speed step > 0 1/min")
+        if dn > top - bottom:
+            raise CoastdownError(f"intervals: Δn = {dn:g} 1/min is larger than the recorded speed range "
+                                 f"({top:g} to {bottom:g} 1/min); give a smaller speed step")
         edges_n = top - dn * np.arange(int(math.floor((top - bottom) / dn + 1e-9)) + 1)
         edges_t = np.array([_first_crossing(t, speed, level) for level in edges_n])
     rows = []

@@ -25,6 +25,20 @@ def test_interval_table_reproduces_formula2_on_a_straight_line():
     np.testing.assert_allclose(table_dt["n_from [1/min]"] - table_dt["n_to [1/min]"], 300.0)
 
 
+def test_a_step_larger_than_the_recording_is_refused():
+    """Not one interval of Δn or Δt fits in the run-down: an empty table would say nothing."""
+    t = np.linspace(0.0, 90.0, 91)
+    n = 900.0 - 10.0 * t
+    with pytest.raises(CoastdownError) as exc:
+        cd.interval_friction_table(t, n, 2.6, 1100.0, 25.0, dn=5000.0)
+    assert str(exc.value) == ("intervals: Δn = 5000 1/min is larger than the recorded speed range (900 to 0 1/min); "
+                              "give a smaller speed step")
+    with pytest.raises(CoastdownError) as exc:
+        cd.interval_friction_table(t, n, 2.6, 1100.0, 25.0, dt=1000.0)
+    assert str(exc.value) == ("intervals: Δt = 1000 s is longer than the recorded run-down (90 s); give a shorter "
+                              "time step")
+
+
 # ----------------------------------------------------------------- nested models
 def test_constant_f_data_come_back_as_coulomb_only():
     M_c = 0.02 * 1100 * 0.025  # f = 0.02 on the TMM-7M
