@@ -29,7 +29,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 import numpy.typing as npt
@@ -138,7 +138,7 @@ def _measured_column(table: pd.DataFrame, name: str, row_errors: list[list[str]]
 
 #: the oil temperatures a measurement may have [degC]: the valid range of the bearing temperature of the column
 #: contract (T_bearing)
-T_OIL_RANGE = column("T_bearing").valid
+T_OIL_RANGE = cast(tuple[float, float], column("T_bearing").valid)
 
 
 def read_measurements(table: pd.DataFrame) -> MeasuredData:

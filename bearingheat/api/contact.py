@@ -11,7 +11,7 @@ Source: В.А. Зайцев, В.А. Воронкин, «Расчёт осевы�
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import ClassVar
+from typing import Any, ClassVar
 
 import numpy as np
 
@@ -163,7 +163,7 @@ def _angle_deg(value: Quantity, name: str) -> float | np.ndarray:
     return magnitude(value, "deg", name)
 
 
-def _require_finite(values: dict[str, float | np.ndarray]) -> None:
+def _require_finite(values: dict[str, Any]) -> None:
     """:class:`ContactInputError` for the first argument that holds NaN or an infinite number (a kernel would
     carry it into every result with status 'ok')."""
     for name, value in values.items():

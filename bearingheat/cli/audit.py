@@ -4,6 +4,7 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+from collections.abc import Callable
 from functools import partial
 from pathlib import Path
 
@@ -113,7 +114,7 @@ def run(args: argparse.Namespace) -> int:
     if out_dir:
         check_outputs(out_dir, [name for kind, _ in jobs for name in _FILES[kind]], force=args.force, inputs=inputs,
                       create=False)
-    writes = []  # every job is computed before any file is written: a job that fails leaves no file of another
+    writes: list[Callable[[], object]] = []  # every job is computed before any file is written: a job that fails leaves no file of another
     try:
         for kind, table in jobs:
             if kind == "coefficients":
