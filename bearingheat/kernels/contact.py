@@ -212,6 +212,10 @@ def _check_balls(z):
 
 
 # --------------------------------------------------------------------------- initial contact angle
+#: relative rounding of a clearance typed at its limit (0.42 mm of 2*(1.05 + 1.16 - 2) mm; 420 um in mm)
+_ROUNDING = 1e-12
+
+
 @_kernel
 def initial_contact_angle(e, r_i, r_o, d_w):
     """Initial contact angle from the mean radial clearance [deg] (Zaitsev & Voronkin, p. 1).
@@ -230,10 +234,10 @@ def initial_contact_angle(e, r_i, r_o, d_w):
     _check_groove_sum(r_i, r_o, d_w)
     _refuse(e < 0, "e = {e:g} mm: the radial clearance must not be negative", e=e)
     span = 2.0 * (r_i + r_o - d_w)
-    _refuse(e > span,
+    _refuse(e > span * (1.0 + _ROUNDING),  # (the limit itself is valid: 90 deg; its float may round either way)
             "e = {e:g} mm exceeds 2*(r_i + r_o - d_w) = {span:g} mm: the contact angle would pass 90 deg",
             e=e, span=span)
-    return np.degrees(np.arccos(1.0 - e / span))
+    return np.degrees(np.arccos(1.0 - np.minimum(e / span, 1.0)))  # (at the limit: 90 deg, not 90 + 1e-14)
 
 
 @_kernel
@@ -249,10 +253,10 @@ def initial_contact_angle_052(e, d_w):
     e, d_w = _broadcast(e, d_w)
     _check_ball(d_w)
     _refuse(e < 0, "e = {e:g} mm: the radial clearance must not be negative", e=e)
-    _refuse(e > 0.08 * d_w,
+    _refuse(e > 0.08 * d_w * (1.0 + _ROUNDING),
             "e = {e:g} mm exceeds 0.08*d_w = {span:g} mm: the contact angle would pass 90 deg",
             e=e, span=0.08 * d_w)
-    return np.degrees(np.arccos(1.0 - 12.5 * e / d_w))
+    return np.degrees(np.arccos(1.0 - np.minimum(12.5 * e / d_w, 1.0)))
 
 
 # --------------------------------------------------------------------------- Hertz contact

@@ -345,3 +345,13 @@ def test_error_of_an_inner_kernel_names_the_element():
         ct.stiffness_characteristic(pd.Series([7, 6.5], index=["a", "b"]), 2.0, 8.7355, 12.0, 1.05, 1.16)
     assert str(info.value) == "z = 6.5: the number of balls must be a whole number of at least 1 (row b)"
     assert info.value.row == "b"
+
+
+def test_a_clearance_at_its_limit_is_90_degrees_whichever_way_its_float_rounds():
+    """e = 2(r_i + r_o - d_w) is valid (the docstring's range is closed): 0.42 mm, or 420 um converted to mm
+    (0.42000000000000004), gives 90 deg, not a refusal by rounding; 0.43 mm is still refused."""
+    from bearingheat.kernels.contact import initial_contact_angle
+    for e in (0.42, 420e-3, 0.42000000000000004):
+        assert initial_contact_angle(e, 1.05, 1.16, 2.0) == 90.0
+    with pytest.raises(Exception, match=r"^e = 0.43 mm exceeds 2\*\(r_i \+ r_o - d_w\) = 0.42 mm"):
+        initial_contact_angle(0.43, 1.05, 1.16, 2.0)
