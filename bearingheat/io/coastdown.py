@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import csv
 import io
+import math
 
 import numpy as np
 
@@ -12,6 +13,10 @@ from bearingheat.io.tables import read_text, separator, sniff_format
 from bearingheat.units import parse_unit, ureg
 
 __all__ = ["read_rundown"]
+
+
+#: the largest magnitude a time or speed reading may have (1e9 s is 30 years; 1e9 1/min no shaft turns so fast)
+_LARGEST = 1e9
 
 
 def read_rundown(path, *, sep: str | None = None, decimal: str | None = None):
@@ -55,8 +60,12 @@ def read_rundown(path, *, sep: str | None = None, decimal: str | None = None):
                 continue
             cell = row[col].strip() if col < len(row) else ""
             try:
-                values.append(float(cell.replace(",", ".") if decimal == "," else cell))
+                value = float(cell.replace(",", ".") if decimal == "," else cell)
             except ValueError:
                 raise InputError(f"{path} line {line}, column '{name}': {cell!r} is not a number") from None
+            if not math.isfinite(value) or abs(value) > _LARGEST:  # (1e300 made the rest of the run-down look flat)
+                raise InputError(f"{path} line {line}, column '{name}': {cell!r} is not a plausible reading (not "
+                                 f"finite, or beyond {_LARGEST:g})")
+            values.append(value)
         out[key] = ureg().Quantity(np.array(values), unit)
     return out["t"], out["n"]

@@ -60,3 +60,15 @@ def test_coastdown_rig_value_without_unit(capsys):
     assert main(["coastdown", str(EXAMPLE), "--G", "1100"]) == 2
     assert capsys.readouterr().err == (
         "bearingheat coastdown: error: --G: '1100' has no unit; write it with one, e.g. 1100N\n")
+
+
+@pytest.mark.parametrize("cell", ["1e300", "inf"])
+def test_coastdown_absurd_reading_is_named(tmp_path, capsys, cell):
+    """One absurd speed made the rest of the run-down look flat ('fewer than 4 samples above 2 %')."""
+    lines = EXAMPLE.read_text().splitlines()
+    lines.insert(3, f"5,{cell}")
+    path = tmp_path / "absurd.csv"
+    path.write_text("\n".join(lines) + "\n")
+    assert main(["coastdown", str(path)]) == 2
+    assert capsys.readouterr().err == (f"bearingheat coastdown: error: {path} line 4, column 'n [1/min]': {cell!r} is "
+                                       "not a plausible reading (not finite, or beyond 1e+09)\n")
