@@ -146,6 +146,16 @@ class ThrustWasherSize(_PlainBearingSize):
     kind: ClassVar[str] = "thrust_washer"
 
 
+def _one(value: Quantity, unit: str, name: str) -> float:
+    """One value of a sizing in ``unit``: a sizing is of one bushing (its standard size is looked up once), so an
+    array is refused with :class:`BushingInputError` rather than a TypeError."""
+    number = magnitude(value, unit, name)
+    if np.ndim(number) != 0 and np.size(number) != 1:
+        raise BushingInputError(f"{name}: {np.size(number)} values; a sizing is of one bushing, so give one {name} "
+                                "(and loop over the cases)")
+    return float(np.ravel(number)[0])
+
+
 def _friction(f: float | Quantity | None) -> float | None:
     """The friction coefficient the user gave, a plain number (or a dimensionless Quantity) in (0, 1]; None when
     not given (the handbook's range at V is used then)."""
@@ -268,8 +278,8 @@ def size_bushing(F: Quantity, n: Quantity, d: Quantity, *, application: str = "b
     """
     K_table, factor, T_c, p = _admissible(application, shaft, life, load_type, T, K, p_adm)
     lengths = None if standard_lengths is None else np.atleast_1d(magnitude(standard_lengths, "mm", "standard_lengths"))
-    result = size_bushing_kernel(float(magnitude(F, "N", "F")), float(magnitude(n, "1/min", "n")),
-                                 float(magnitude(d, "mm", "d")), K_table * factor, p, lengths, _friction(f))
+    result = size_bushing_kernel(_one(F, "N", "F"), _one(n, "1/min", "n"), _one(d, "mm", "d"), K_table * factor, p,
+                                 lengths, _friction(f))
     result.update({"K_table [N/mm^2*m/s]": K_table, "temperature_factor": factor, "T [degC]": T_c})
     return BushingSize._from_kernel(result)
 
@@ -360,8 +370,7 @@ def size_thrust_washer(F: Quantity, n: Quantity, d: Quantity, *, shaft: str | No
     K_table, factor, T_c, p = _admissible("thrust_washer", shaft, life, load_type, T, K, p_adm)
     diameters = None if standard_diameters is None else np.atleast_1d(
         magnitude(standard_diameters, "mm", "standard_diameters"))
-    result = size_thrust_washer_kernel(float(magnitude(F, "N", "F")), float(magnitude(n, "1/min", "n")),
-                                       float(magnitude(d, "mm", "d")), K_table * factor, p, diameters,
-                                       _friction(f))
+    result = size_thrust_washer_kernel(_one(F, "N", "F"), _one(n, "1/min", "n"), _one(d, "mm", "d"), K_table * factor,
+                                       p, diameters, _friction(f))
     result.update({"K_table [N/mm^2*m/s]": K_table, "temperature_factor": factor, "T [degC]": T_c})
     return ThrustWasherSize._from_kernel(result)

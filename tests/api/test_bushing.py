@@ -78,3 +78,12 @@ def test_no_power_loss_above_5_m_s_without_f_is_a_warning():
     with_f = size_bushing(2 * u.kN, 4600 * u.rpm, 25 * u.mm, shaft="soft", life=1000 * u.h, load_type="static",
                           f=0.1 * u.dimensionless)
     assert with_f.N_low.to("W").magnitude == pytest.approx(0.1 * 2000 * with_f.V.to("m/s").magnitude, rel=1e-12)
+
+
+def test_a_sizing_is_of_one_bushing():
+    import numpy as np
+    u = ureg()
+    with pytest.raises(BushingInputError) as exc:
+        size_bushing(np.array([1.0, 2.0]) * u.kN, 500 * u.rpm, 25 * u.mm, shaft="soft", life=1000 * u.h,
+                     load_type="static")
+    assert str(exc.value) == "F: 2 values; a sizing is of one bushing, so give one F (and loop over the cases)"
