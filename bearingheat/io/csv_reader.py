@@ -394,7 +394,7 @@ def read_source(path, *, sep: str | None = None, decimal: str | None = None, wha
         table = _read_with_pandas(raw.decode("utf-8"), path, sep, decimal, header, text_columns)
     del raw
     if isinstance(table, pd.DataFrame):  # a separator at the end of every line: a nameless column of nothing
-        nameless = [name for name, header in zip(table.columns, header) if not header.strip()
+        nameless = [name for name, typed in zip(table.columns, header) if not typed.strip()
                     and table[name].isna().all()]
         table = table.drop(columns=nameless)
     rows = table.num_rows if isinstance(table, pa.Table) else len(table)
