@@ -95,6 +95,7 @@ GYROSCOPIC_CONSTANT_KGF = 5.75e-12
 """Zaitsev & Voronkin constant of the minimum axial load, kgf·min²/mm⁴ (d_w, D0 in mm, n in 1/min)."""
 
 _DEG = math.pi / 180.0
+_ROUNDING = 1e-12  # relative rounding of a clearance typed at its limit (420 um in mm: 0.42000000000000004)
 
 
 # --------------------------------------------------------------------------- helpers
@@ -212,10 +213,6 @@ def _check_balls(z):
 
 
 # --------------------------------------------------------------------------- initial contact angle
-#: relative rounding of a clearance typed at its limit (0.42 mm of 2*(1.05 + 1.16 - 2) mm; 420 um in mm)
-_ROUNDING = 1e-12
-
-
 @_kernel
 def initial_contact_angle(e, r_i, r_o, d_w):
     """Initial contact angle from the mean radial clearance [deg] (Zaitsev & Voronkin, p. 1).
