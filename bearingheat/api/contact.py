@@ -314,11 +314,11 @@ def ball_bearing_contact(*, z: float, d_w: Quantity, d_m: Quantity, r_i: Quantit
         _require_finite({"clearance": e})
         angle0 = initial_contact_angle(e, ri, ro, dw)
     load = 0.0 if Fa is None else magnitude(Fa, "N", "Fa")
+    rpm = None if n is None else speed_rpm(n, "n")
     # NaN, infinite and absurd loads and speeds (beyond the contract's valid ranges: Fa up to 1e10 N, where the
     # angle's root can still be bracketed) raise, naming the argument
-    check_ranges({"Fa": load} | ({"n": speed_rpm(n, "n")} if n is not None else {}),
-                 np.broadcast_shapes(np.shape(load), np.shape(speed_rpm(n, "n")) if n is not None else ()),
-                 ContactInputError)
+    ranged = {"Fa": load} | ({"n": rpm} if rpm is not None else {})
+    check_ranges(ranged, np.broadcast_shapes(*(np.shape(v) for v in ranged.values())), ContactInputError)
 
     curv = race_curvatures(dw, dm, angle0, ri, ro)
     hertz_i, hertz_o = hertz_coefficients(curv.cos_tau_i), hertz_coefficients(curv.cos_tau_o)
@@ -329,8 +329,7 @@ def ball_bearing_contact(*, z: float, d_w: Quantity, d_m: Quantity, r_i: Quantit
     speed = fa_min = fa_min_working = None
     points = int(np.size(np.broadcast_arrays(angle, c_star, load)[0]))
     status, messages = ["ok"] * points, [""] * points
-    if n is not None:
-        rpm = speed_rpm(n, "n")
+    if rpm is not None:
         speed = quantity(rpm, "1/min")
         minimum = minimum_axial_load(count, dw, dm, rpm, angle0)
         fa_min = quantity(minimum, "N")

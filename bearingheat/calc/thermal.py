@@ -428,6 +428,8 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
     wants_thr = bool({"B", "T", "d1", "D1"} & has) or "n_thr_catalogue" in has
     wants_balance = "T_amb" in has
     for name, unit in (("T", "mm"), ("n_G", "1/min")):  # a width and a limiting speed are > 0 (B: the friction model)
+        if name not in has:
+            continue
         values = number_column(frame, name)
         with np.errstate(invalid="ignore"):
             for i in np.flatnonzero(~failed & (values <= 0)):

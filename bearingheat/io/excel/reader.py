@@ -408,7 +408,7 @@ def _refuse_merged_data(ws: Worksheet, columns: list[int], first_data: int) -> N
     """:class:`ExcelError` for merged cells among the supports' rows in the contract's ``columns``: the sheet shows
     their value in every cell, but only the first cell holds it, so the other rows would read as blank (a load of
     0). A column calc does not read is only passed through, so merged notes there are left alone."""
-    wanted = sorted(columns)
+    wanted = set(columns)
     for merged in ws.merged_cells.ranges:
         top = max(merged.min_row, first_data)
         if merged.max_row < first_data:

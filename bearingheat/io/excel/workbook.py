@@ -315,7 +315,6 @@ def _run(source: Path, target: Path | None, edit: tuple[Package, WorkbookLock] |
 def _hidden_note(info: SheetInfo) -> str:
     """The note that rows of supports are hidden on the sheet (by hand or by a filter) and were computed."""
     shown = ", ".join(map(str, info.hidden_rows[:10])) + (", ..." if len(info.hidden_rows) > 10 else "")
-    rows = "row" if len(info.hidden_rows) == 1 else "rows"
-    return (f"{rows} {shown} of sheet {info.sheet!r} {'is' if rows == 'row' else 'are'} hidden (by hand or by a "
-            f"filter) and computed like the others; delete {'it' if rows == 'row' else 'them'} to leave "
-            f"{'it' if rows == 'row' else 'them'} out")
+    rows, are, them = ("row", "is", "it") if len(info.hidden_rows) == 1 else ("rows", "are", "them")
+    return (f"{rows} {shown} of sheet {info.sheet!r} {are} hidden (by hand or by a filter) and computed like the "
+            f"others; delete {them} to leave {them} out")
