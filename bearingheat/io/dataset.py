@@ -145,12 +145,9 @@ def calc_dataset(files: list[str], target, *, overwrite: bool = False, **options
     _check_same_columns(files)
     supports = dd.read_parquet(files)
     results = calc(supports, **options)
-    target = Path(target)
-    if target.exists() and any(target.iterdir()) and not overwrite:
-        raise InputError(f"-o {target} exists; give --force to replace it")
+    target = check_dataset_target(target, files, force=overwrite)
     # written beside the target first: an earlier dataset is replaced only once every part is written
-    staging = Path(tempfile.mkdtemp(prefix=f".{target.name}.bearingheat-", suffix=".tmp",
-                                    dir=target.parent if str(target.parent) else "."))
+    staging = Path(tempfile.mkdtemp(prefix=f".{target.name}.bearingheat-", suffix=".tmp", dir=target.parent))
     try:
         results.to_parquet(str(staging), write_index=False, schema=_schema(results._meta))  # noqa: SLF001
         target.mkdir(exist_ok=True)
