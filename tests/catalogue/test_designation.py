@@ -47,7 +47,7 @@ EXPECTED = {
     "K20x24x10": ("needle_roller", "K", "", 20.0, "open"),
     "ZARN2052": ("combined", "ZARN", "", None, "open"),
     "1000095": ("deep_groove_ball", "619", "", 5.0, "open"),
-    "18": ("deep_groove_ball", "619", "", 8.0, "open"),
+    "18": ("deep_groove_ball", "60", "", 8.0, "open"),
     "101": ("deep_groove_ball", "60", "", 12.0, "open"),
 }
 
