@@ -293,6 +293,20 @@ def _text_columns(header: list[str]) -> list[str]:
     return [h for h, name in names.items() if name not in known or name in text]
 
 
+def _arrow_source(raw: bytes, file: Path | None) -> str | pa.BufferReader:
+    """What pyarrow's threaded CSV reader reads ``raw`` from: the file that holds it (opened by Arrow, read in
+    blocks), else a copy in Arrow's own memory; never a Python object. The reader may drop its last reference to
+    its source on one of its threads after read_csv has returned; a Python object there (a BytesIO) needs the GIL
+    to be freed, and in a process that is exiting that thread is stopped inside a C++ destructor: std::terminate,
+    'terminate called without an active exception', exit 134 (seen in about 1 of 40 short runs on a loaded
+    machine; core dump: PyReadableFile's destructor on an Arrow worker thread)."""
+    if file is not None:
+        return str(file)
+    stream = pa.BufferOutputStream()
+    stream.write(raw)
+    return pa.BufferReader(stream.getvalue())
+
+
 def _space_after_separator(raw: bytes, sep: str) -> bool:
     """True when a cell of the CSV text ``raw`` begins with a space or tab (outside quotes): pandas skips it
     (``skipinitialspace``), pyarrow would keep it."""
@@ -310,12 +324,13 @@ def _space_after_separator(raw: bytes, sep: str) -> bool:
     return False
 
 
-def _read_with_pyarrow(raw: bytes, sep: str, decimal: str, header: list[str], text_columns: list[str]
-                       ) -> pa.Table | None:
+def _read_with_pyarrow(raw: bytes, sep: str, decimal: str, header: list[str], text_columns: list[str],
+                       file: Path | None = None) -> pa.Table | None:
     """The Arrow table pyarrow's CSV reader makes of the UTF-8 bytes ``raw`` with pandas' conventions (its
     missing-value words, text columns as text, a column left blank as numbers), or None when the file needs
     pandas' parser for the same result: white space at the start of a cell, a blank header cell, a row pyarrow
-    cannot split, or a column it reads as something other than numbers or text (dates)."""
+    cannot split, or a column it reads as something other than numbers or text (dates). ``file``: the file
+    that holds exactly ``raw``, for the reader to open itself."""
     if not all(h.strip() for h in header) or _space_after_separator(raw, sep):
         return None
     # pandas' missing-value words make number cells missing; a text column keeps them as typed ('NA', 'None'
@@ -326,7 +341,7 @@ def _read_with_pyarrow(raw: bytes, sep: str, decimal: str, header: list[str], te
                                                          decimal_point=decimal,
                                                          column_types={h: pa.large_string() for h in text_columns}))
     try:
-        table = pa_csv.read_csv(io.BytesIO(raw), **options)
+        table = pa_csv.read_csv(_arrow_source(raw, file), **options)
     except (pa.ArrowInvalid, pa.ArrowNotImplementedError):
         return None
     pa.default_memory_pool().release_unused()  # the reader's freed buffers, back to the system
@@ -381,7 +396,10 @@ def read_source(path, *, sep: str | None = None, decimal: str | None = None, wha
     sep = separator(sep)
     if decimal not in (None, ".", ","):
         raise InputError(f"--decimal {decimal!r}: give '.' or ','")
-    raw = _utf8_bytes(path.read_bytes(), path)
+    as_read = path.read_bytes()
+    raw = _utf8_bytes(as_read, path)
+    unchanged = raw is as_read  # no byte-order mark taken off, no other encoding converted: pyarrow opens the file
+    del as_read
     sep, found_decimal = sniff_format(_sniffed_text(raw), sep)
     decimal = decimal or found_decimal
     if sep == decimal:
@@ -389,7 +407,7 @@ def read_source(path, *, sep: str | None = None, decimal: str | None = None, wha
     header, lines = _records(raw, sep)
     refuse_duplicate_columns(path, header)
     text_columns = _text_columns(header)
-    table = _read_with_pyarrow(raw, sep, decimal, header, text_columns)
+    table = _read_with_pyarrow(raw, sep, decimal, header, text_columns, path if unchanged else None)
     if table is None:
         table = _read_with_pandas(raw.decode("utf-8"), path, sep, decimal, header, text_columns)
     del raw

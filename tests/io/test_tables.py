@@ -352,3 +352,26 @@ def test_a_separator_at_the_end_of_every_line_adds_no_column(tmp_path):
                     "A,6208,oil_bath,1480,3.2,0.9,40,\nB,6208,oil_bath,1480,5,0.9,40,\n")
     assert list(read_csv(path).columns) == ["id", "designation", "lubrication", "n [rpm]", "Fr [kN]", "Fa [kN]",
                                             "nu [mm^2/s]"]
+
+
+@pytest.mark.parametrize("encoding, opened_by_arrow", [("utf-8", True), ("utf-8-sig", False), ("cp1252", False)])
+def test_pyarrow_reader_is_never_given_a_python_file(tmp_path, monkeypatch, encoding, opened_by_arrow):
+    """pyarrow's threaded CSV reader may drop its source on one of its threads after read_csv returned; a Python
+    file object freed there needs the GIL, and a process that is exiting then aborts (exit 134, 'terminate called
+    without an active exception'). So the reader opens the file itself where its bytes are the text read, and
+    reads an Arrow-owned copy where a byte-order mark was taken off or another encoding converted."""
+    from bearingheat.io import csv_reader
+
+    sources = []
+    read = csv_reader.pa_csv.read_csv
+    monkeypatch.setattr(csv_reader.pa_csv, "read_csv", lambda source, **options: (sources.append(source),
+                                                                                  read(source, **options))[1])
+    row = ["Lager vorn (Öl)" if encoding != "utf-8" else "front", *ROW[1:]]
+    path = _write(tmp_path / "in.csv", ",", ".", rows=(row,), encoding=encoding)
+    table = read_csv(path)
+    assert table.loc[0, "id"] == row[0] and table.loc[0, "Fr [kN]"] == 2.5
+    assert len(sources) == 1
+    if opened_by_arrow:
+        assert sources[0] == str(path)
+    else:
+        assert isinstance(sources[0], csv_reader.pa.BufferReader)
