@@ -14,9 +14,10 @@ candidate; the names are the public vocabulary of ``bearingheat diagnose``:
 name               extension                                                          parameters
 ================== =================================================================  =====================
 none               M = M0 + M1 + M2 (the catalogue model)                             (none)
-seal_drag          M += M_seal[bearing], constant in n (contact seals, the Schaeffler catalogue p.64)  M_seal [N*mm] per bearing
+seal_drag          M += M_seal[bearing], constant in n (contact seals: a component      M_seal [N*mm] per bearing
+                   without a term in the formulas, the Schaeffler catalogue p. 63)
 f0_scale           M0 -> k·M0 (oil level above the lowest rolling element: k <= 3,    k [1] >= 1
-                   freshly greased: k = 2..5; the Schaeffler catalogue p. 64)
+                   freshly greased: k = 2..5; the Schaeffler catalogue p. 65, fig. 2)
 viscosity_heating  the bearing runs ΔT = R_th·N_R above the oil temperature given, so   R_th [K/W] >= 0
                    ν -> ν·exp(−b·ΔT) with b = 0.03 1/K (self-consistent in N_R)
 drag_losses        M += c·1e-7·dM³·(n·dM/1000)^p, churning faster than n^(2/3)         c [1] >= 0, p in [0.9, 3]
@@ -301,7 +302,7 @@ class NoEffect(Candidate):
 
 class SealDrag(Candidate):
     name = "seal_drag"
-    description = "a contact-seal torque per bearing, constant in n (the Schaeffler catalogue p. 64: seal friction comes on top)"
+    description = "a contact-seal torque per bearing, constant in n (the Schaeffler catalogue p. 63: seal friction is a component without a term in the formulas)"
     key_regressor = "n"
     required = ("M_seal [N*mm]",)
 
@@ -336,7 +337,7 @@ class SealDrag(Candidate):
 
 class F0Scale(Candidate):
     name = "f0_scale"
-    description = "speed-dependent friction k times the table f0 (oil level, fresh grease; the Schaeffler catalogue p. 64)"
+    description = "speed-dependent friction k times the table f0 (oil level, fresh grease; the Schaeffler catalogue p. 65, fig. 2)"
     key_regressor = "nu*n"
     required = ("k",)
 

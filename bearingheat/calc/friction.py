@@ -180,8 +180,8 @@ def evaluate_catalogue_model(s: SupportArrays, labels: Labels, f2_chart: F2Chart
                       "axially loaded cylindrical roller bearings need Fr > 0 (the Schaeffler catalogue, p. 69)")
         fa_fr = Fa / Fr
         add(m2_rows & (Fr > 0) & (fa_fr > 0.4), "warning",
-            lambda i: f"Fa/Fr = {at(fa_fr, i):.3g} is above 0.4, the limit for axially loaded cylindrical roller "
-                      "bearings; M2 is uncertain there")
+            lambda i: f"Fa/Fr = {at(fa_fr, i):.3g} is above 0.4: M2 is uncertain there (bearingheat's caution for "
+                      "cylindrical roller bearings; the Schaeffler catalogue, p. 69, prints no limit)")
         A = friction.axial_load_parameter(s.kB, dM)
         Fa_over_A = np.where(m2_rows, Fa / A, np.nan)
         nu_n_dM = np.where(m2_rows, nu * n * dM, np.nan)
@@ -204,7 +204,8 @@ def evaluate_catalogue_model(s: SupportArrays, labels: Labels, f2_chart: F2Chart
                           f"digitised chart (--f2-chart); read it at Fa/A = {Fa_over_A[i]:.4g}, "
                           f"nu*n*dM = {nu_n_dM[i]:.4g} mm^3/(s*min) (the Schaeffler catalogue, p. 70, figs. 3 and 4)")
     add(np.equal(s.seal, "contact"), "warning",
-        lambda i: "contact seals: their friction comes on top of the catalogue model (the Schaeffler catalogue, p. 64)")
+        lambda i: "contact seals: their friction comes on top of the catalogue model (the Schaeffler catalogue, p. 63, "
+                  "lists seal friction among the components; its formulas have no term for it)")
 
     M0 = s.bearings * friction.speed_dependent_torque(f0, nu, n, dM)  # a pair: both bearings (see supports)
     M1 = friction.load_dependent_torque(f1, load, dM)

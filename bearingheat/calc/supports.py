@@ -304,7 +304,7 @@ def bearing_constants(resolved: ResolvedBearing, lubrication: str | None, arrang
         rule = entry.p1_single if arrangement == "single" else entry.p1_paired
         if rule is None:
             out["error"] = (f"arrangement: {arrangement!r} has no P1 rule for {entry.label} "
-                            "(the Schaeffler catalogue, p. 68 prints a dash)")
+                            "(the Schaeffler catalogue, p. 68, prints no rule for a pair)")
             return out
         out["p1_rule"] = rule
     return out

@@ -9,9 +9,11 @@ candidates that fit their parameters to measured torque are in
 References
 ----------
 The Schaeffler catalogue: Schaeffler, "Трение и нагрев" (friction and heating), catalogue
-pp. 64-70, after ISO 15312: M0 and its low-speed constant 160 (p. 64); seal
-friction comes on top of M_R and freshly greased bearings show an f0 2 to 5
-times the table (p. 64). ISO 3448: viscosity grades of mineral oils (the
+pp. 63-70, after ISO 15312: M0 and its low-speed constant 160 (p. 64); seal
+friction is among the components of p. 63 but has no term in the formulas (so it
+comes on top of M_R: bearingheat's reading); freshly greased bearings show an f0
+2 to 5 times the table and an oil level above the lowest rolling element raises
+f0 up to threefold (p. 65, fig. 2). ISO 3448: viscosity grades of mineral oils (the
 temperature coefficient b).
 """
 from __future__ import annotations
@@ -44,7 +46,7 @@ def seal_drag_torque(M_seal, bearing_code):
     M_seal [N·mm] >= 0, one per bearing; bearing_code [-] integer index of
     each row's bearing into M_seal. Valid for contact seals whose torque
     does not change with speed (the seal torque is added to M_R; the Schaeffler catalogue,
-    p. 64: seal friction comes on top of the bearing's).
+    p. 63, lists seal friction among the components, and its formulas have no term for it).
 
     >>> seal_drag_torque(np.array([5.0, 8.0]), np.array([0, 1, 1]))
     array([5., 8., 8.])
@@ -80,7 +82,7 @@ def run_in_factor(a, tau, t):
         k(t) = 1 + a \\, e^{-t/\\tau}
 
     a [-] >= 0, τ [h] > 0, t [h] >= 0 (running time since greasing or
-    assembly). The Schaeffler catalogue p. 64: freshly greased bearings show an f0 2 to 5
+    assembly). The Schaeffler catalogue p. 65: freshly greased bearings show an f0 2 to 5
     times the table, so a of 1 to 4 at t = 0, decaying to the table f0.
 
     >>> round(float(run_in_factor(2.0, 10.0, 10.0)), 6)

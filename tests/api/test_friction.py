@@ -111,7 +111,7 @@ def test_warnings_are_returned():
     r = friction_torque("6205-2RSR", d=25 * u.mm, D=52 * u.mm, C0=7.8 * u.kN, lubrication="grease",
                         n=3000 * u.rpm, Fr=2 * u.kN, nu=12 * NU)
     assert r.status == ["warning"]
-    assert r.messages == ["contact seals: their friction comes on top of the catalogue model (the Schaeffler catalogue, p. 64)"]
+    assert r.messages == ["contact seals: their friction comes on top of the catalogue model (the Schaeffler catalogue, p. 63, lists seal friction among the components; its formulas have no term for it)"]
 
 
 def test_errors_name_argument_value_and_index():

@@ -36,7 +36,7 @@ CASES = {
         "lubrication: 'circulating_oil' has no f0 for deep groove ball bearing series 622 (the Schaeffler catalogue prints a dash); "
         "use grease or oil_mist, or give f0"),
     "paired deep groove": (dict(arrangement="paired"), "error",
-        "arrangement: 'paired' has no P1 rule for deep groove ball bearing series 62 (the Schaeffler catalogue, p. 68 prints a dash)"),
+        "arrangement: 'paired' has no P1 rule for deep groove ball bearing series 62 (the Schaeffler catalogue, p. 68, prints no rule for a pair)"),
     "unknown arrangement": (dict(arrangement="triple"), "error",
         "arrangement: 'triple' is not one of single, paired"),
     "no bore": (dict(designation="62..", d=None), "error", "d [mm]: missing; the bore d gives dM = (d + D)/2"),
@@ -95,9 +95,10 @@ CASES = {
         "or a digitised chart (--f2-chart); read it at Fa/A = 15.61, nu*n*dM = 1.386e+06 mm^3/(s*min) "
         "(the Schaeffler catalogue, p. 70, figs. 3 and 4)"),
     "Fa/Fr above 0.4": (dict(designation="NJ206-E", Fr=1000, Fa=500, f2=0.01), "warning",
-        "Fa/Fr = 0.5 is above 0.4, the limit for axially loaded cylindrical roller bearings; M2 is uncertain there"),
+        "Fa/Fr = 0.5 is above 0.4: M2 is uncertain there (bearingheat's caution for cylindrical roller bearings; "
+        "the Schaeffler catalogue, p. 69, prints no limit)"),
     "contact seal": (dict(designation="6205-2RSR", lubrication="grease"), "warning",
-        "contact seals: their friction comes on top of the catalogue model (the Schaeffler catalogue, p. 64)"),
+        "contact seals: their friction comes on top of the catalogue model (the Schaeffler catalogue, p. 63, lists seal friction among the components; its formulas have no term for it)"),
     "not the E design": (dict(designation="NU206"), "warning",
         "the Schaeffler catalogue row for series 2 is for the E design (2..-E)"),
 }

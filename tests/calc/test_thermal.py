@@ -238,7 +238,7 @@ def test_row_problems_are_messages_not_exceptions():
     out = calc(table)
     assert out["status"].tolist() == ["warning", "error", "error", "error"]
     assert out.loc[0, "message"] == (
-        "contact seals: their friction comes on top of the catalogue model (the Schaeffler catalogue, p. 64); n_thr: the thermal "
+        "contact seals: their friction comes on top of the catalogue model (the Schaeffler catalogue, p. 63, lists seal friction among the components; its formulas have no term for it); n_thr: the thermal "
         "method (ISO 15312, DIN 732) does not apply to bearings with contact seals")
     assert "nu100 [mm^2/s]: missing; nu40 alone does not fix the viscosity-temperature line (ASTM D341)" \
         in out.loc[1, "message"]
