@@ -47,6 +47,8 @@ class _PlainBearingSize(Result):
     N_high: Quantity
     life_fig86: Quantity
     life_note: str
+    #: '' or why the size is conservative (V below 0.05 m/s, n above 15 000 1/min: the handbook allows smaller)
+    size_note: str
     status: list[str]
     messages: list[str]
 
@@ -68,13 +70,14 @@ class _PlainBearingSize(Result):
             unit = cls.UNITS.get(name)
             named[name] = quantity(value, unit) if unit and value is not None else value
         named.pop("kind")
-        notes = []
+        notes = [values["size_note"]] if values["size_note"] else []  # a conservative size
         # the life line of fig. 86 covers part of the pV range: elsewhere the life is unknown, a warning
         if not np.isfinite(values["life_fig86 [h]"]):
             notes.append(f"life_fig86: {values['life_note']}")
-        if not np.isfinite(values["N_low [W]"]):  # no coefficient above 5 m/s: no power loss without f
-            notes.append("N: the DU/DP bushing handbook gives no friction coefficient above V = 5 m/s; give f for "
-                         "the power loss")
+        if not np.isfinite(values["N_low [W]"]):  # no coefficient outside 0.05-5 m/s: no power loss without f
+            notes.append("N: the DU/DP bushing handbook gives no friction coefficient "
+                         f"{'below V = 0.05' if values['V [m/s]'] < 0.05 else 'above V = 5'} m/s; give f for the "
+                         "power loss")
         named["status"] = ["warning" if notes else "ok"]
         named["messages"] = ["; ".join(notes)]
         return cls(**named)
@@ -259,8 +262,9 @@ def size_bushing(F: Quantity, n: Quantity, d: Quantity, *, application: str = "b
         load type the tables do not have; a table 25 cell lost in the
         source's OCR; F, n, d, K or [p] not > 0; standard lengths not > 0.
     bearingheat.errors.OutsideMethodError
-        For n above 15 000 1/min, V below 0.05 m/s, or T outside -200 to
-        +280 °C (the range of the sizing method).
+        For T outside -200 to +280 °C (the range of table 25). Below
+        V = 0.05 m/s or above n = 15 000 1/min the size is computed and
+        the result warns that the handbook allows a smaller one there.
     bearingheat.errors.NoStandardSizeError
         When no standard length is as long as the required one.
     bearingheat.errors.UnitError
@@ -351,8 +355,9 @@ def size_thrust_washer(F: Quantity, n: Quantity, d: Quantity, *, shaft: str | No
         tables do not have; a table 25 cell lost in the source's OCR; F, n,
         d, K or [p] not > 0; standard diameters not > 0.
     bearingheat.errors.OutsideMethodError
-        For n above 15 000 1/min, V below 0.05 m/s, or T outside -200 to
-        +280 °C.
+        For T outside -200 to +280 °C (the range of table 25). Below
+        V = 0.05 m/s or above n = 15 000 1/min the size is computed and
+        the result warns that the handbook allows a smaller one there.
     bearingheat.errors.NoStandardSizeError
         When no standard diameter is as large as the required one.
     bearingheat.errors.UnitError

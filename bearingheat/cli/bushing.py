@@ -42,9 +42,12 @@ Oscillation: --cycles 30/min --amplitude 90deg instead of --n
 --json prints the result as JSON; -q prints nothing but errors (a duty outside
   the method is one: its message goes to stderr, exit 1).
 
-Exit codes: 0 sized; 1 the duty lies outside the DU/DP bushing handbook's method (V below
-0.05 m/s, n above 15 000 1/min, T outside -200..280 degC, no standard size
-large enough); 2 unusable input (bad value, unit or name)."""
+Below V = 0.05 m/s or above n = 15 000 1/min the handbook allows a smaller size
+than calculated: the size is given with a note that it is conservative.
+
+Exit codes: 0 sized; 1 the duty lies outside the DU/DP bushing handbook's method (T
+outside -200..280 degC, no standard size large enough); 2 unusable input (bad
+value, unit or name)."""
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -176,5 +179,8 @@ def render(r: dict, application: str) -> str:
             lines.append(f"  friction loss N = f·F·V = {r['N_low [W]']:.4g} to {r['N_high [W]']:.4g} W "
                          f"(f = {r['f_low']:g} to {r['f_high']:g}, the DU/DP bushing handbook)")
     else:
-        lines.append("  friction loss: the DU/DP bushing handbook gives no f above 5 m/s; give --f")
+        lines.append(f"  friction loss: the DU/DP bushing handbook gives no f "
+                     f"{'below 0.05' if r['V [m/s]'] < 0.05 else 'above 5'} m/s; give --f")
+    if r["size_note"]:
+        lines.append(f"  note: {r['size_note']}")
     return "\n".join(lines)

@@ -58,9 +58,10 @@ __all__ = [
     "size_thrust_washer_kernel",
 ]
 
-#: Below this sliding speed [m/s] the DU/DP bushing handbook's sizing method does not apply.
+#: Below this sliding speed [m/s] the DU/DP bushing handbook allows smaller bushings than its sizing gives, and its
+#: friction bands begin.
 SPEED_MIN = 0.05
-#: Above this shaft speed [1/min] the DU/DP bushing handbook's sizing method does not apply.
+#: Above this shaft speed [1/min] the DU/DP bushing handbook allows smaller bushings than its sizing gives.
 N_MAX = 15000.0
 
 #: Fig. 86 of the DU/DP bushing handbook: pV = 3.6 kgf/cm²·m/s gives 1000 h, pV = 18 gives 200 h.
@@ -271,18 +272,18 @@ def plain_bushing_power_loss(d, B, F, n, f=np.nan) -> PlainBushingLoss:
     """Friction power loss of plain (DU/DP) bushings, row by row, for ``calc`` (the DU/DP bushing handbook).
 
     d [mm] bore, B [mm] bushing length, F [N] radial load, n [1/min],
-    f [1] friction coefficient (NaN = not given). Returns p = F/(d·B)
+    f [1] friction coefficient (NaN = not given; calc's column f_plain, which the messages name). Returns p = F/(d·B)
     [N/mm²], V = π·d·n/60 000 [m/s], pV, the DU/DP bushing handbook's default f range at V,
     and N = f·F·V [W]. Without f, N uses the high end of the range (a
-    conservative estimate) and the row status is 'warning'. Rows with
-    V < 0.05 m/s or n > 15 000 1/min lie outside the DU/DP bushing handbook's method: status
-    'error', N = NaN. Inputs broadcast; a Series in gives Series out.
+    conservative estimate) and the row status is 'warning'. Outside
+    0.05-5 m/s the handbook gives no f: without f such a row is an error
+    (N = NaN). Inputs broadcast; a Series in gives Series out.
 
     >>> out = plain_bushing_power_loss(np.array([20.0, 20.0]), 20.0, 1000.0, np.array([1000.0, 10.0]))
     >>> out.power.round(2), list(out.status)
     (array([209.44,    nan]), ['warning', 'error'])
     >>> out.message[1]
-    "V = 0.01047 m/s is below 0.05 m/s: outside the DU/DP bushing handbook's method"
+    'V = 0.01047 m/s is below 0.05 m/s: the DU/DP bushing handbook gives no friction coefficient there; give f_plain'
     """
     series = _first_series((d, B, F, n, f))
     d_a, B_a, F_a, n_a, f_a = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (d, B, F, n, f)))
@@ -338,10 +339,12 @@ def _row_problem(d, B, F, n, f, V) -> tuple[str, bool]:
         (F >= 0, f"F = {F:g} N: expected a radial load >= 0 N"),
         (n >= 0, f"n = {n:g} 1/min: expected a speed >= 0 1/min"),
         (math.isnan(f) or 0 < f < 1, f"f = {f:g}: expected a friction coefficient between 0 and 1"),
-        (n <= N_MAX, f"n = {n:g} 1/min is above {N_MAX:,.0f} 1/min: outside the DU/DP bushing handbook's method".replace(",", " ")),
-        (V >= SPEED_MIN, f"V = {V:.4g} m/s is below {SPEED_MIN:g} m/s: outside the DU/DP bushing handbook's method"),
+        # the friction bands span 0.05-5 m/s (the DU/DP bushing handbook, 'Трение подшипников'): outside, f is needed
+        (not math.isnan(f) or V >= SPEED_MIN,
+         f"V = {V:.4g} m/s is below {SPEED_MIN:g} m/s: the DU/DP bushing handbook gives no friction coefficient "
+         "there; give f_plain"),
         (not math.isnan(f) or V <= 5.0,
-         f"V = {V:.4g} m/s is above 5 m/s: the DU/DP bushing handbook gives no friction coefficient there; give f"),
+         f"V = {V:.4g} m/s is above 5 m/s: the DU/DP bushing handbook gives no friction coefficient there; give f_plain"),
     )
     for position, (ok, text) in enumerate(checks):
         if not ok:  # NaN inputs fail every comparison and land here too
@@ -354,19 +357,18 @@ def _check_duty(F, n, d):
     for name, value, unit, rule in (("F", F, "N", "> 0"), ("n", n, "1/min", "> 0"), ("d", d, "mm", "> 0")):
         if not (math.isfinite(value) and value > 0):
             raise BushingInputError(f"{name} = {value:g} {unit}: expected a value {rule} {unit}")
-    if n > N_MAX:
-        raise OutsideMethodError(
-            f"n = {n:g} 1/min is above 15 000 1/min: outside the DU/DP bushing handbook's sizing method "
-            "(the handbook allows smaller bearings than calculated there)"
-        )
 
 
-def _check_speed(V):
-    if V < SPEED_MIN:
-        raise OutsideMethodError(
-            f"V = {V:.4g} m/s is below 0.05 m/s: outside the DU/DP bushing handbook's sizing method "
-            "(the handbook allows smaller bearings than calculated there)"
-        )
+def _size_note(V, n) -> str:
+    """'' inside the range the sizing is made for, else why the size is conservative: 'bushings and thrust washers
+    may be chosen smaller than calculated where V is below 0.05 m/s or n above 15 000 1/min' (the DU/DP bushing
+    handbook)."""
+    reasons = ([f"V = {V:.4g} m/s is below {SPEED_MIN:g} m/s"] if V < SPEED_MIN else []) + \
+              ([f"n = {n:g} 1/min is above 15 000 1/min"] if n > N_MAX else [])
+    if not reasons:
+        return ""
+    return (f"{' and '.join(reasons)}: the DU/DP bushing handbook allows a smaller size than calculated there "
+            "(the size is conservative)")
 
 
 def _round_up(required, standard, what):
@@ -383,7 +385,7 @@ def _round_up(required, standard, what):
 
 
 def _loss_and_life(F, V, pV, f):
-    f_low, f_high = friction_coefficient_range_seed004(V) if V <= 5.0 else (float("nan"), float("nan"))
+    f_low, f_high = friction_coefficient_range_seed004(V)  # NaN outside 0.05-5 m/s
     if f is not None:
         f_low = f_high = f
     try:
@@ -412,7 +414,6 @@ def size_bushing_kernel(F, n, d, K, p_adm, standard_lengths=None, f=None) -> dic
         if not (math.isfinite(value) and value > 0):
             raise BushingInputError(f"{name} = {value:g} {unit}: expected a value > 0")
     V = sliding_speed(d, n)
-    _check_speed(V)
     l_pv = bushing_length_pV_seed004(F, n, K)
     l_p = bushing_length_pressure_seed004(F, d, p_adm)
     governing = "pV" if l_pv >= l_p else "pressure"
@@ -423,7 +424,7 @@ def size_bushing_kernel(F, n, d, K, p_adm, standard_lengths=None, f=None) -> dic
     out = {"kind": "bushing", "F [N]": F, "n [1/min]": n, "d [mm]": d, "K [N/mm^2*m/s]": K, "p_adm [N/mm^2]": p_adm,
            "V [m/s]": V, "l_pV [mm]": l_pv, "p_at_l_pV [N/mm^2]": bearing_pressure(F, d, l_pv), "l_p [mm]": l_p,
            "governing": governing, "l_required [mm]": required, "l_standard [mm]": standard,
-           "p [N/mm^2]": p, "pV [N/mm^2*m/s]": p * V}
+           "p [N/mm^2]": p, "pV [N/mm^2*m/s]": p * V, "size_note": _size_note(V, n)}
     out.update(_loss_and_life(F, V, p * V, f))
     return out
 
@@ -451,11 +452,10 @@ def size_thrust_washer_kernel(F, n, d, K, p_adm, standard_diameters=None, f=None
     standard = _round_up(required, standard_diameters, "outer diameter")
     D = standard if math.isfinite(standard) else required
     V = sliding_speed(0.5 * (D + d), n)
-    _check_speed(V)
     p = 4.0 * F / (math.pi * (D * D - d * d))
     out = {"kind": "thrust_washer", "F [N]": F, "n [1/min]": n, "d [mm]": d, "K [N/mm^2*m/s]": K,
            "p_adm [N/mm^2]": p_adm, "b_pV [mm]": width, "D_pV [mm]": D_pv, "D_p [mm]": D_p, "governing": governing,
            "D_required [mm]": required, "D_standard [mm]": standard, "V [m/s]": V, "p [N/mm^2]": p,
-           "pV [N/mm^2*m/s]": p * V}
+           "pV [N/mm^2*m/s]": p * V, "size_note": _size_note(V, n)}
     out.update(_loss_and_life(F, V, p * V, f))
     return out

@@ -27,7 +27,8 @@ def test_plain_bushings_mix_with_rolling_bearings():
     assert out.loc[1, "message"] == ("f not given: N uses f = 0.2, the high end of the DU/DP bushing handbook's range 0.1-0.2 at "
                                      "V = 1.05 m/s (conservative)")
     assert out.loc[2, "NR [W]"] == pytest.approx(0.08 * 1000 * V, rel=1e-12)
-    assert out.loc[3, "message"] == "V = 0.01047 m/s is below 0.05 m/s: outside the DU/DP bushing handbook's method"
+    assert out.loc[3, "message"] == ("V = 0.01047 m/s is below 0.05 m/s: the DU/DP bushing handbook gives no friction "
+                                     "coefficient there; give f_plain")
     assert math.isnan(out.loc[3, "NR [W]"])
     assert np.isnan(out.loc[1, ["f0", "f1", "M0 [N*mm]"]].astype(float)).all()
     assert out.loc[0, "MR [N*mm]"] > 0

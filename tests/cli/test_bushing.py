@@ -30,12 +30,21 @@ def test_bushing_json(capsys):
     assert result["N_low [W]"] == result["N_high [W]"] == pytest.approx(0.12 * 2000 * 0.654498, rel=1e-5)
 
 
-def test_bushing_outside_method_exit_1(capsys):
+def test_bushing_below_minimum_speed_is_sized_with_a_note(capsys):
     assert main(["bushing", "--F", "2kN", "--n", "20rpm", "--d", "25mm", "--shaft", "soft", "--life", "1000h",
-                 "--load-type", "static"]) == 1
+                 "--load-type", "static"]) == 0
+    out = capsys.readouterr().out
+    assert "  friction loss: the DU/DP bushing handbook gives no f below 0.05 m/s; give --f\n" in out
+    assert out.endswith("  note: V = 0.02618 m/s is below 0.05 m/s: the DU/DP bushing handbook allows a smaller "
+                        "size than calculated there (the size is conservative)\n")
+
+
+def test_bushing_temperature_outside_table_exit_1(capsys):
+    assert main(["bushing", "--F", "2kN", "--n", "500rpm", "--d", "25mm", "--shaft", "soft", "--life", "1000h",
+                 "--load-type", "static", "--T", "300degC"]) == 1
     assert capsys.readouterr().err == (
-        "bearingheat bushing: V = 0.02618 m/s is below 0.05 m/s: outside the DU/DP bushing handbook's sizing method "
-        "(the handbook allows smaller bearings than calculated there)\n")
+        "bearingheat bushing: T = 300 °C is outside the range of the DU/DP bushing handbook table 25 "
+        "(-200 to +280 °C)\n")
 
 
 def test_bushing_lost_table_value_exit_2(capsys):

@@ -113,18 +113,22 @@ def test_size_bushing_lengthened_from_pressure():
     assert out["p [N/mm^2]"] == pytest.approx(141 * bu.KGF_PER_CM2)
 
 
-def test_size_bushing_below_minimum_speed_message():
-    with pytest.raises(OutsideMethodError, match=re.escape(
-            "V = 0.02618 m/s is below 0.05 m/s: outside the DU/DP bushing handbook's sizing method "
-            "(the handbook allows smaller bearings than calculated there)")):
-        bu.size_bushing_kernel(2000.0, 20.0, 25.0, 0.55, 55.0)
+def test_size_bushing_below_minimum_speed_is_sized_with_a_note():
+    """The handbook: bushings 'may be chosen smaller than calculated' where V < 0.05 m/s; the calculated size
+    stands, as a conservative one (V = pi*25*20/60000 = 0.02618 m/s; l = pi*n*F/(60000*K))."""
+    out = bu.size_bushing_kernel(2000.0, 20.0, 25.0, 0.55, 55.0)
+    assert out["l_pV [mm]"] == pytest.approx(math.pi * 20 * 2000 / (60000 * 0.55), rel=1e-12)
+    assert out["size_note"] == ("V = 0.02618 m/s is below 0.05 m/s: the DU/DP bushing handbook allows a smaller size "
+                                "than calculated there (the size is conservative)")
+    assert math.isnan(out["N_low [W]"])  # no friction band below 0.05 m/s
 
 
-def test_size_bushing_above_maximum_speed_message():
-    with pytest.raises(OutsideMethodError, match=re.escape(
-            "n = 16000 1/min is above 15 000 1/min: outside the DU/DP bushing handbook's sizing method "
-            "(the handbook allows smaller bearings than calculated there)")):
-        bu.size_bushing_kernel(2000.0, 16000.0, 25.0, 0.55, 55.0)
+def test_size_bushing_above_maximum_speed_is_sized_with_a_note():
+    out = bu.size_bushing_kernel(2000.0, 16000.0, 25.0, 0.55, 55.0)
+    assert out["l_pV [mm]"] == pytest.approx(math.pi * 16000 * 2000 / (60000 * 0.55), rel=1e-12)
+    assert out["size_note"] == ("n = 16000 1/min is above 15 000 1/min: the DU/DP bushing handbook allows a smaller "
+                                "size than calculated there (the size is conservative)")
+    assert bu.size_bushing_kernel(2000.0, 500.0, 25.0, 0.55, 55.0)["size_note"] == ""
 
 
 def test_no_standard_length_large_enough_message():
@@ -149,14 +153,24 @@ def test_power_loss_kernel_with_f_given_and_not_given():
 def test_power_loss_kernel_errors_per_row():
     out = bu.plain_bushing_power_loss(np.array([20.0, 20.0, -1.0, 30.0, 20.0]), 20.0, 1000.0,
                                       np.array([20000.0, 10.0, 100.0, 4000.0, 1000.0]))
+    # n = 20 000 1/min at d = 20 mm is V = 20.9 m/s: no friction band, so f is needed (not the speed limit of
+    # the sizing, which only makes a size conservative)
     assert list(out.status) == ["error", "error", "error", "error", "warning"]
     assert list(out.message[:4]) == [
-        "n = 20000 1/min is above 15 000 1/min: outside the DU/DP bushing handbook's method",
-        "V = 0.01047 m/s is below 0.05 m/s: outside the DU/DP bushing handbook's method",
+        "V = 20.94 m/s is above 5 m/s: the DU/DP bushing handbook gives no friction coefficient there; give f_plain",
+        "V = 0.01047 m/s is below 0.05 m/s: the DU/DP bushing handbook gives no friction coefficient there; give f_plain",
         "d = -1 mm: expected a bushing bore > 0 mm",
-        "V = 6.283 m/s is above 5 m/s: the DU/DP bushing handbook gives no friction coefficient there; give f",
+        "V = 6.283 m/s is above 5 m/s: the DU/DP bushing handbook gives no friction coefficient there; give f_plain",
     ]
     assert np.isnan(out.power[:4]).all() and np.isnan(out.p[2])
+
+
+def test_power_loss_kernel_outside_the_bands_with_f_given():
+    """With f given, a row below 0.05 m/s or above 15 000 1/min is computed: N = f*F*V."""
+    out = bu.plain_bushing_power_loss(np.array([20.0, 2.0]), 20.0, 1000.0, np.array([10.0, 16000.0]), f=0.15)
+    V = np.pi * np.array([20.0, 2.0]) * np.array([10.0, 16000.0]) / 60000
+    assert list(out.status) == ["ok", "ok"] and list(out.message) == ["", ""]
+    np.testing.assert_allclose(out.power, 0.15 * 1000 * V, rtol=1e-12)
 
 
 def test_power_loss_kernel_scalar_array_series_agree():
