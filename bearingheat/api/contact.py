@@ -15,7 +15,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-from bearingheat.api._checks import check_ranges, shared_index, where
+from bearingheat.api._checks import point_status, point_warnings, shared_index, where
 from bearingheat.api.results import Result
 from bearingheat.errors import ContactInputError, UnitError
 from bearingheat.kernels.contact import (axial_displacement, axial_displacement_ratio, hertz_coefficients,
@@ -318,7 +318,8 @@ def ball_bearing_contact(*, z: float, d_w: Quantity, d_m: Quantity, r_i: Quantit
     # NaN, infinite and absurd loads and speeds (beyond the contract's valid ranges: Fa up to 1e10 N, where the
     # angle's root can still be bracketed) raise, naming the argument
     ranged = {"Fa": load} | ({"n": rpm} if rpm is not None else {})
-    check_ranges(ranged, np.broadcast_shapes(*(np.shape(v) for v in ranged.values())), ContactInputError)
+    shape = np.broadcast_shapes(*(np.shape(v) for v in (count, dw, dm, ri, ro, angle0, *ranged.values())))
+    every, some = point_warnings(ranged, shape, ContactInputError)  # and plausibility warnings (Fa, n) per point
 
     curv = race_curvatures(dw, dm, angle0, ri, ro)
     hertz_i, hertz_o = hertz_coefficients(curv.cos_tau_i), hertz_coefficients(curv.cos_tau_o)
@@ -328,14 +329,17 @@ def ball_bearing_contact(*, z: float, d_w: Quantity, d_m: Quantity, r_i: Quantit
     xi_a = axial_displacement_ratio(angle, angle0)
     speed = fa_min = fa_min_working = None
     points = int(np.size(np.broadcast_arrays(angle, c_star, load)[0]))
-    status, messages = ["ok"] * points, [""] * points
+    status, messages = point_status(points, every, some)
     if rpm is not None:
         speed = quantity(rpm, "1/min")
         minimum = minimum_axial_load(count, dw, dm, rpm, angle0)
         fa_min = quantity(minimum, "N")
         fa_min_working = quantity(minimum_axial_load(count, dw, dm, rpm, angle), "N")
         if Fa is not None:
-            status, messages = _below_minimum_load(load, minimum, rpm)
+            for i, low in enumerate(_below_minimum_load(load, minimum, rpm)):
+                if low:
+                    status[i] = "warning"
+                    messages[i] = f"{messages[i]}; {low}" if messages[i] else low
     return BallContact(
         alpha0=quantity(angle0, "deg"),
         alpha=quantity(angle, "deg"),
@@ -357,15 +361,9 @@ def ball_bearing_contact(*, z: float, d_w: Quantity, d_m: Quantity, r_i: Quantit
     )
 
 
-def _below_minimum_load(load: float | np.ndarray, minimum: float | np.ndarray, rpm: float | np.ndarray
-                        ) -> tuple[list[str], list[str]]:
-    """Per point: 'warning' and its message where Fa < Fa_min (at α0, the source's rule), else 'ok'."""
+def _below_minimum_load(load: float | np.ndarray, minimum: float | np.ndarray, rpm: float | np.ndarray) -> list[str]:
+    """Per point: the message where Fa < Fa_min (at α0, the source's rule), else ''."""
     Fa, Fa_min, speed = (np.ravel(a) for a in np.broadcast_arrays(load, minimum, rpm))
-    status: list[str] = []
-    messages: list[str] = []
-    for fa, fa_min, n in zip(Fa.tolist(), Fa_min.tolist(), speed.tolist()):
-        low = fa < fa_min
-        status.append("warning" if low else "ok")
-        messages.append(f"Fa = {fa:.4g} N is below the minimum axial load Fa_min = {fa_min:.4g} N at n = {n:.6g} "
-                        "1/min (gyroscopic sliding of the balls, Zaitsev & Voronkin)" if low else "")
-    return status, messages
+    return [f"Fa = {fa:.4g} N is below the minimum axial load Fa_min = {fa_min:.4g} N at n = {n:.6g} 1/min "
+            "(gyroscopic sliding of the balls, Zaitsev & Voronkin)" if fa < fa_min else ""
+            for fa, fa_min, n in zip(Fa.tolist(), Fa_min.tolist(), speed.tolist())]

@@ -77,6 +77,22 @@ def test_ball_contact_is_a_result_with_a_warning_below_the_minimum_axial_load():
     assert without_speed.status == ["ok"]  # no speed: no minimum load to compare with
 
 
+def test_plausibility_warnings_of_fa_and_n_are_per_point():
+    """Fa above 1e8 N or n above 2e5 1/min are kept with a warning (the contract's plausible ranges), on the points
+    that have them, before the minimum-load warning of the same point."""
+    u = ureg()
+    geometry = dict(z=7, d_w=2 * u.mm, d_m=8.7355 * u.mm, r_i=1.05 * u.mm, r_o=1.16 * u.mm, alpha0=12 * u.deg)
+    r = ct.ball_bearing_contact(**geometry, Fa=np.array([2.0, 2e8]) * u.N, n=3000 * u.rpm)
+    assert r.status == ["ok", "warning"]
+    assert r.messages == ["", "Fa: 2e+08 is outside the plausible range up to 1e+08 N; check the number and its unit"]
+    fast = ct.ball_bearing_contact(**geometry, Fa=2 * u.kgf, n=3e5 * u.rpm)
+    assert fast.status == ["warning"]
+    assert fast.messages == [
+        "n: 300000 is outside the plausible range up to 200000 1/min; check the number and its unit; Fa = 19.61 N is "
+        "below the minimum axial load Fa_min = 101.9 N at n = 300000 1/min (gyroscopic sliding of the balls, "
+        "Zaitsev & Voronkin)"]
+
+
 @pytest.mark.parametrize("changes, message", [
     (dict(Fa=float("nan")), "Fa: nan is not a number; leave the argument out where it is not known"),
     (dict(Fa=1e300), "Fa: 1e+300 is outside the valid range up to 1e+10 N"),
