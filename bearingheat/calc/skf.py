@@ -392,7 +392,7 @@ def _seal_torques(x, text, ok, D, seals_designation, labels, add, shape):
         outside = np.zeros(shape, dtype=bool)
         outside[rows[~found["found"]]] = True
         ranges = "; ".join(r.range_text for r in table_rows)
-        add(outside, "error", lambda i, v=seal_type: (
+        add(outside, "error", lambda i, v=seal_type, ranges=ranges: (
             f"{labels.name('D', i)}: {labels.value('D', D[i])} is outside SKF table 4 (6000 p. 96) for {v} seals "
             f"on a {label(i)} ({ranges})"))
         needs_ds = np.zeros(shape, dtype=bool)

@@ -287,6 +287,15 @@ def test_bad_input_of_other_bearings():
     assert messages == {}
 
 
+def test_the_seal_range_message_quotes_the_range_of_its_own_seal_type():
+    """Table 4 (6000 p. 96): RSH on deep groove ball bearings only for D <= 52 mm; RZ up to 175 mm. A row of RZ
+    after a row of RSH must not lend the RSH message its range."""
+    row = dict(designation="6208", d=40.0, D=80.0, Fr=1000.0, n=3000.0, nu=20.0, lubrication="grease")
+    _, messages = run({**row, "seal": "RSH", "d_s": 50.0}, {**row, "seal": "RZ"})
+    assert messages == {0: [("error", "D [mm]: 80 is outside SKF table 4 (6000 p. 96) for RSH seals on a deep groove "
+                                      "ball bearing series 62 (D <= 52 mm)")]}
+
+
 def test_warnings():
     ball = dict(designation="6205", d=25.0, D=52.0, Fr=1000.0, n=2000.0, nu=40.0, lubrication="grease")
     cases = [
