@@ -282,10 +282,16 @@ def evaluate_skf_model(supports: SupportArrays, labels: Labels, f2_chart: F2Char
         lambda i: f"{labels.name('skf_edition', i)}: {at(edition, i)!r} is not one of "
                   f"{', '.join(catalogue.EDITIONS)}")
     dm = 0.5 * (d + D)
+    H_over_dm = H / dm
+
+    def at_level(i):
+        """' at H/dm = 0.0417' where the level and dm are known (their own messages say where not)."""
+        return f" at H/dm = {H_over_dm[i]:.3g}" if np.isfinite(H_over_dm[i]) else ""
+
     missing("VM", lambda i: f"an oil bath needs the drag loss factor VM: read it off "
                             f"{_DRAG_SOURCE.get(at(edition, i), _DRAG_SOURCE['10000'])} for "
-                            f"{'ball' if at(bearing_type, i) in catalogue.BALL_TYPES else 'roller'} bearings at "
-                            f"H/dm = {H[i] / dm[i]:.3g}, or digitise the diagram (calc --vm-chart)",
+                            f"{'ball' if at(bearing_type, i) in catalogue.BALL_TYPES else 'roller'} bearings"
+                            f"{at_level(i)}, or digitise the diagram (calc --vm-chart)",
             bath & np.isnan(VM) & known_edition)
     add(ok & ~np.isin(lubrication, ("oil_bath", "circulating_oil")) & ~np.isnan(VM), "warning",
         lambda i: f"{labels.name('VM', i)}: ignored; there is drag only in an oil bath or with oil jet")
@@ -390,7 +396,7 @@ def _seal_torques(x, text, ok, D, seals_designation, labels, add, shape):
             continue
         found = catalogue.seal_lookup(seal_type, bearing_type, D[rows])
         outside = np.zeros(shape, dtype=bool)
-        outside[rows[~found["found"]]] = True
+        outside[rows[~found["found"] & ~np.isnan(D[rows])]] = True   # a missing D has its own message
         ranges = "; ".join(r.range_text for r in table_rows)
         add(outside, "error", lambda i, v=seal_type, ranges=ranges: (
             f"{labels.name('D', i)}: {labels.value('D', D[i])} is outside SKF table 4 (6000 p. 96) for {v} seals "

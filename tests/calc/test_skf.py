@@ -296,6 +296,20 @@ def test_the_seal_range_message_quotes_the_range_of_its_own_seal_type():
                                       "ball bearing series 62 (D <= 52 mm)")]}
 
 
+def test_a_missing_value_is_said_once_and_no_message_prints_nan():
+    sealed = dict(designation="6205-2RSH", d=25.0, Fr=1000.0, n=2000.0, nu=40.0, lubrication="grease", d_s=31.0)
+    _, messages = run(sealed)
+    assert messages == {0: [("error", "D [mm]: missing; the outside diameter D gives dm = 0.5 (d + D) "
+                                      "(SKF 6000 p. 90)")]}
+    _, messages = run({**EXAMPLE, "oil_level": None, "VM": None})
+    assert messages == {0: [
+        ("error", "oil_level [mm]: missing; an oil bath needs the oil level H [mm] above the lowest contact point of "
+                  "the outer ring raceway (SKF 10000/3 p. 110, fig. 2)"),
+        ("error", "VM: missing; an oil bath needs the drag loss factor VM: read it off SKF 6000 diagram 2 (p. 99; red "
+                  "curve ball bearings, blue roller bearings) for roller bearings, or digitise the diagram "
+                  "(calc --vm-chart)")]}
+
+
 def test_warnings():
     ball = dict(designation="6205", d=25.0, D=52.0, Fr=1000.0, n=2000.0, nu=40.0, lubrication="grease")
     cases = [
