@@ -525,15 +525,18 @@ def skf_bearing(designation: str | None = None, bearing_type: str | None = None,
             raise DesignationError(f"{missing}: missing; give type and series together")
         _check_type(bearing_type, series)
         table_series = _explicit_series(bearing_type, str(series))
+        named_series = str(series)
     elif parsed is not None:
         bearing_type = parsed.bearing_type
         _check_type(bearing_type, parsed.series)
         table_series = _series_of(parsed)
+        named_series = parsed.series
     else:
         raise DesignationError("designation: missing; give a designation, or type and series")
     row = geometry_row(bearing_type, table_series)
     Kz, KL, irw = type_constants(bearing_type)
-    if parsed is not None and parsed.series in _DOUBLE_ROW_SERIES.get(bearing_type, ()):
+    # the series as named, not its table row ('all' for thrust ball bearings): 42 and 522 have two rows of balls
+    if _key(named_series) in _DOUBLE_ROW_SERIES.get(bearing_type, ()):
         irw = 2.0
     suffixes = parsed.suffixes if parsed else ()
     seal, seals = designation_seal(suffixes)

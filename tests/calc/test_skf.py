@@ -145,6 +145,20 @@ def test_tapered_roller_bearing_drag_of_2017_uses_t():
     assert float(results["MR"][0]) == pytest.approx(hand(Grr, Gsl, d, D, n, nu, Kz, 3e-8, 0.002, 0, drag), rel=1e-12)
 
 
+def test_a_double_row_series_given_as_type_and_series_has_the_drag_of_its_designation():
+    """6000 p. 99: Mdrag = VM·Kball·dm⁵·n², Kball = irw·Kz·(d + D)/(D − d)·10⁻¹²; irw = 2 for series 42 and 522."""
+    bath = dict(Fr=2000.0, n=3000.0, nu=20.0, lubrication="oil_bath", oil_level=3.0, VM=5e-5, skf_edition="6000")
+    deep = dict(bath, d=40.0, D=90.0, B=23.0)
+    thrust = dict(bath, d=40.0, D=90.0, Fr=0.0, Fa=2000.0)
+    results, messages = run({**deep, "designation": "4208"}, {**deep, "type": "deep_groove_ball", "series": "42"},
+                            {**thrust, "designation": "52208"}, {**thrust, "type": "thrust_ball", "series": "522"})
+    assert messages == {}
+    dm = 65.0
+    deep_drag = 5e-5 * (2 * 3.1 * 130 / 50 * 1e-12) * dm ** 5 * 3000 ** 2      # Kz = 3.1, table 5
+    thrust_drag = 5e-5 * (2 * 3.8 * 130 / 50 * 1e-12) * dm ** 5 * 3000 ** 2    # Kz = 3.8, table 5
+    assert results["M_drag"].tolist() == pytest.approx([deep_drag] * 2 + [thrust_drag] * 2, rel=1e-12)
+
+
 def test_oil_level_low_or_high():
     """Below the centre of the lowest rolling element: Krs = 3e-8; above it the text names no starvation."""
     results, _ = run(EXAMPLE, {**EXAMPLE, "oil_level": 10.0}, {**EXAMPLE, "oil_level": 15.0, "Dw": 40.0},

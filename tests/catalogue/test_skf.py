@@ -291,6 +291,17 @@ def test_constants_of_a_bearing():
     assert math.isnan(skf.skf_bearing("6205").mu_EHL_type)
 
 
+@pytest.mark.parametrize("bearing_type, series, designation", [
+    ("deep_groove_ball", "42", "4208"), ("deep_groove_ball", "43", "4308"), ("thrust_ball", "522", "52208"),
+    ("thrust_ball", "523", "52308"), ("thrust_ball", "542", "54208"), ("thrust_ball", "543", "54308")])
+def test_double_row_ball_series_count_two_rows_of_balls_by_type_and_series_too(bearing_type, series, designation):
+    # irw of table 5 (6000 p. 98): double row deep groove (42, 43), double direction thrust ball (522 ... 543)
+    assert skf.skf_bearing(bearing_type=bearing_type, series=series).irw == 2
+    assert skf.skf_bearing(designation).irw == 2
+    assert skf.skf_bearing(bearing_type=bearing_type, series="62" if bearing_type == "deep_groove_ball"
+                           else "511").irw == 1
+
+
 def test_starting_torque_factors_of_page_103():
     assert [skf.skf_bearing(t).start_factor for t in ("31305", "32210 B", "32310 B", "T7FC045", "30205", "29412 E",
                                                       "22208 E")] == [4, 4, 4, 4, 1, 8, 1]
