@@ -136,7 +136,10 @@ _SEAL_TABLE_TYPE = {"angular_contact_ball_double_row": "angular_contact_ball",
                     "cylindrical_roller_full_complement": "cylindrical_roller"}
 #: tapered series whose starting torque may be up to four times Msl + Mseal (6000 p. 103; 10000/3 p. 114)
 _START_X4_SERIES = {"313", "313 X", "322 B", "323 B", "T7FC"}
+_START_X4_KEYS = frozenset(re.sub(r"\s+", "", s) for s in _START_X4_SERIES)
 _TAPERED_INCH = re.compile(r"^(?P<series>LL|LM|L|HM|HH|H|M)\d{3,}")
+#: an ISO 355 tapered designation as SKF prints it, a space between the series code and the bore: 'T7FC 045'
+_ISO_355_SPACED = re.compile(r"^(?P<series>T\d[B-G][B-E])\s+(?P<bore>\d{3})(?=$|[\s/-])")
 
 
 def _key(text: str) -> str:
@@ -414,6 +417,8 @@ def _parse(text: str) -> _Parsed:
     parser of the catalogue model, then the series it does not know.
     """
     clean = re.sub(r"\s+", " ", text.strip().upper())
+    if _ISO_355_SPACED.match(clean):
+        text = clean = _ISO_355_SPACED.sub(r"\g<series>\g<bore>", clean)   # 'T7FC 045' is 'T7FC045'
     carb = _CARB.match(clean)
     if carb:
         suffixes = tuple(s for s in re.split(r"[-\s]", carb.group("suffix") or "") if s)
@@ -546,7 +551,8 @@ def skf_bearing(designation: str | None = None, bearing_type: str | None = None,
     R = [float(row[f"R{k}"]) for k in range(1, 5)]
     S = [float(row[f"S{k}"]) for k in range(1, 6)]
     start = 1.0
-    if bearing_type == "tapered_roller" and ({row["series"], parsed.series if parsed else ""} & _START_X4_SERIES):
+    # the row or the series as named: T7FC takes the row 'other' but starts up to four times higher
+    if bearing_type == "tapered_roller" and {_key(row["series"]), _key(named_series)} & _START_X4_KEYS:
         start = 4.0
     elif bearing_type == "axial_spherical_roller":
         start = 8.0

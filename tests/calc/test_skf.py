@@ -330,6 +330,12 @@ def test_warnings():
         ({"designation": "31305", "Y": 0.7, "Fa": 100.0},
          "M_start of a tapered roller bearing series 313 may be up to 4 times Msl + Mseal (SKF 6000 p. 103; "
          "10000/3 p. 114)"),
+        ({"designation": None, "type": "tapered_roller", "series": "T7FC"},
+         "M_start of a tapered roller bearing series other may be up to 4 times Msl + Mseal (SKF 6000 p. 103; "
+         "10000/3 p. 114)"),
+        ({"designation": "T7FC 045", "d": 45.0, "D": 95.0},
+         "M_start of a tapered roller bearing series other may be up to 4 times Msl + Mseal (SKF 6000 p. 103; "
+         "10000/3 p. 114)"),
         ({"lubrication": "oil_mist", "nu": 1.5},
          "nu [mm^2/s]: 1.5 is outside 2 to 500 mm²/s, the range of the SKF model for oil lubrication "
          "(SKF 10000/3 p. 100)"),

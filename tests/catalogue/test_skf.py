@@ -252,6 +252,8 @@ def test_formula_families_are_the_kernels_registry():
     ("32210 BJ2", "tapered_roller", "322 B", 50.0),
     ("LM11949", "tapered_roller", "LM", nan),
     ("T7FC045", "tapered_roller", "other", 45.0),
+    ("T7FC 045", "tapered_roller", "other", 45.0),          # SKF prints the ISO 355 code with a space
+    ("T2ED 045", "tapered_roller", "other", 45.0),
     ("22208 E", "spherical_roller", "222 E", 40.0),
     ("22208 EK", "spherical_roller", "222 E", 40.0),
     ("22208 CC", "spherical_roller", "222", 40.0),
@@ -305,6 +307,11 @@ def test_double_row_ball_series_count_two_rows_of_balls_by_type_and_series_too(b
 def test_starting_torque_factors_of_page_103():
     assert [skf.skf_bearing(t).start_factor for t in ("31305", "32210 B", "32310 B", "T7FC045", "30205", "29412 E",
                                                       "22208 E")] == [4, 4, 4, 4, 1, 8, 1]
+    # T7FC takes the row 'other' of table 3d, but keeps the factor 4 of p. 103 by type and series too
+    explicit = skf.skf_bearing(bearing_type="tapered_roller", series="T7FC")
+    assert (explicit.series, explicit.start_factor) == ("other", 4)
+    assert skf.skf_bearing("T7FC 045").start_factor == 4
+    assert skf.skf_bearing(bearing_type="tapered_roller", series="T2ED").start_factor == 1
 
 
 def test_seals_from_the_designation():
