@@ -56,8 +56,8 @@ _DRAG_SOURCE = {
 _NONE = np.array(None, dtype=object)
 _OIL = ("oil_mist", "oil_bath", "circulating_oil")  # oil-air, oil bath, oil jet (10000/3 p. 100)
 _CONSTANTS = ("R1", "R2", "R3", "R4", "S1", "S2", "S3", "S4", "S5", "Kz", "KL", "irw", "mu_EHL_type", "bore",
-              "start_factor")
-_TEXTS = ("bearing_type", "family", "label", "seal", "unknown_contact_seal")
+              "start_factor", "no_axial")
+_TEXTS = ("bearing_type", "family", "label", "prefix", "seal", "unknown_contact_seal")
 
 
 class _Extra:
@@ -158,7 +158,7 @@ def _constants_of(designation, bearing_type, series) -> dict:
     except BearingheatError as exc:
         return _blank(str(exc))
     out = {k: getattr(b, k) for k in _CONSTANTS}
-    out.update(bearing_type=b.bearing_type, family=b.family, label=b.label, seal=b.seal or "",
+    out.update(bearing_type=b.bearing_type, family=b.family, label=b.label, prefix=b.prefix, seal=b.seal or "",
                unknown_contact_seal=b.unknown_contact_seal,
                seals=math.nan if b.seals is None else float(b.seals), error="")
     return out
@@ -236,6 +236,10 @@ def evaluate_skf_model(supports: SupportArrays, labels: Labels, f2_chart: F2Char
     add(ok & thrust_only_fa & (Fr > 0), "warning",
         lambda i: f"{labels.name('Fr', i)}: {labels.value('Fr', Fr[i])} on a {label(i)}: its formulas "
                   "(SKF 6000 p. 92, table 2b) use Fa only")
+    add(ok & (row(c["no_axial"]) > 0) & (Fa > 0), "error",
+        lambda i: f"{labels.name('Fa', i)}: {labels.value('Fa', Fa[i])} on {at(text['prefix'], i)} {label(i)}: one "
+                  "ring has no ribs, the bearing takes no axial load (the term S1·dm^0.9·Fa of Gsl is the sliding at "
+                  "the ribs; SKF 6000 p. 91, table 2a)")
     add(ok & carb & (Fa > 0), "warning",
         lambda i: f"{labels.name('Fa', i)}: {labels.value('Fa', Fa[i])} on a {label(i)}: CARB bearings take no "
                   "axial load; their formulas (SKF 6000 p. 91, table 2a) use Fr only")

@@ -131,6 +131,8 @@ _ALL_SERIES = {"angular_contact_ball", "angular_contact_ball_double_row", "four_
                "cylindrical_roller_full_complement", "thrust_ball", "thrust_roller"}
 #: double row ball series (Kball counts the rows irw)
 _DOUBLE_ROW_SERIES = {"deep_groove_ball": {"42", "43"}, "thrust_ball": {"522", "523", "542", "543"}}
+#: cylindrical roller designs with one ring (or the shaft or housing in its place) without ribs; NN is refused
+_NO_AXIAL_PREFIXES = {"NU", "N", "RNU", "RN"}
 #: seal table 4 names bearing types by family; these types use the row of another
 _SEAL_TABLE_TYPE = {"angular_contact_ball_double_row": "angular_contact_ball",
                     "cylindrical_roller_full_complement": "cylindrical_roller"}
@@ -172,6 +174,7 @@ class SKFBearing:
     unknown_contact_seal: str    # a contact seal suffix table 4 does not list (2RS, 2RSR), '' otherwise
     source: str
     start_factor: float = 1.0    # the starting torque may be up to this many times Msl + Mseal (6000 p. 103)
+    prefix: str = ""             # the designation's prefix of a cylindrical roller bearing (NU, NJ, ...), '' otherwise
 
     @property
     def label(self) -> str:
@@ -181,6 +184,11 @@ class SKFBearing:
     @property
     def is_ball(self) -> bool:
         return self.bearing_type in BALL_TYPES
+
+    @property
+    def no_axial(self) -> bool:
+        """One ring has no ribs (NU, N, RNU, RN): the bearing takes no axial load."""
+        return self.prefix in _NO_AXIAL_PREFIXES
 
 
 @dataclass(frozen=True)
@@ -558,4 +566,4 @@ def skf_bearing(designation: str | None = None, bearing_type: str | None = None,
         start = 8.0
     return SKFBearing(bearing_type, row["series"], FORMULA_FAMILY[bearing_type], *R, *S, Kz, KL, irw,  # type: ignore[arg-type, call-arg]
                       _mu_ehl_type(bearing_type), parsed.bore if parsed else math.nan, seal, seals, unknown,
-                      row["source"], start)
+                      row["source"], start, parsed.prefix if parsed and parsed.bearing_type == bearing_type else "")

@@ -324,6 +324,21 @@ def test_a_missing_value_is_said_once_and_no_message_prints_nan():
                   "(calc --vm-chart)")]}
 
 
+def test_an_axial_load_on_a_bearing_with_a_ring_without_ribs_is_refused_as_the_catalogue_model_refuses_it():
+    row = dict(d=40.0, D=80.0, Fr=4000.0, Fa=1500.0, n=1500.0, nu=40.0, lubrication="grease")
+    designs = ("NU208-E", "N 208", "RNU 2210 ECJB", "NJ 208", "NUP 208", "NCF 2210 ECJB")
+    results, messages = run(*[{**row, "designation": d} for d in designs])
+    why = ("one ring has no ribs, the bearing takes no axial load (the term S1·dm^0.9·Fa of Gsl is the sliding at "
+           "the ribs; SKF 6000 p. 91, table 2a)")
+    assert messages == {
+        0: [("error", f"Fa [N]: 1500 on NU cylindrical roller bearing with cage series 2: {why}")],
+        1: [("error", f"Fa [N]: 1500 on N cylindrical roller bearing with cage series 2: {why}")],
+        2: [("error", f"Fa [N]: 1500 on RNU cylindrical roller bearing with cage series 22 high capacity: {why}")]}
+    assert np.all(results["MR"][3:] > 0)      # a rib on each ring (NJ, NUP) or ribs on one side (NCF) take Fa
+    _, messages = run({**row, "designation": "NU208-E", "Fa": 0.0})
+    assert messages == {}
+
+
 def test_warnings():
     ball = dict(designation="6205", d=25.0, D=52.0, Fr=1000.0, n=2000.0, nu=40.0, lubrication="grease")
     cases = [

@@ -289,6 +289,9 @@ def test_constants_of_a_bearing():
     assert b.label == "spherical roller bearing series 222 E"
     assert skf.skf_bearing("4205").irw == 2 and skf.skf_bearing("52210").irw == 2 and skf.skf_bearing("6205").irw == 1
     assert skf.skf_bearing("NU 206 ECP").mu_EHL_type == 0.02
+    assert [skf.skf_bearing(t).no_axial for t in ("NU 206 ECP", "N 206", "RNU 2210 ECJB", "NJ 206", "NCF 2210 ECJB",
+                                                   "6205")] == [True, True, True, False, False, False]
+    assert not skf.skf_bearing(bearing_type="cylindrical_roller", series="2").no_axial   # no prefix: not known
     assert skf.skf_bearing("30205").mu_EHL_type == 0.002
     assert math.isnan(skf.skf_bearing("6205").mu_EHL_type)
 
