@@ -89,7 +89,8 @@ class FrictionResult(Result):
     model_results : dict
         The other results of a model besides the catalogue model's, by
         contract name (the SKF model: M_rr, M_sl, M_seal, M_drag, M_start
-        [N·mm], G_rr, G_sl, phi_ish, phi_rs, phi_bl, mu_sl [1]).
+        [N·mm], of both bearings of a pair; G_rr, G_sl, phi_ish, phi_rs,
+        phi_bl, mu_sl [1], of one bearing).
 
     See Also
     --------
@@ -218,7 +219,8 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
         Dimension series with ``bearing_type``, e.g. '62', '302', '222'.
     arrangement : str, optional
         'single' (default) or 'paired': a pair in X or O arrangement is one
-        support, and the results are the pair's.
+        support, and the results are the pair's (the SKF model: each bearing
+        at Fr/2; an axial load on a pair is refused).
     Y : float or pint.Quantity [1], optional
         Catalogue axial load factor of tapered roller bearings (P1 under
         axial load); valid > 0.
@@ -323,7 +325,7 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
     if supports.error and friction_model.catalogue_keys:
         raise FrictionInputError(str(supports.error))
     supports.extra = {"designation": designation, "type": bearing_type, "series": series, "lubrication": lubrication,
-                      **_model_inputs(model_inputs or {}, friction_model.inputs)}
+                      "arrangement": arrangement, **_model_inputs(model_inputs or {}, friction_model.inputs)}
     with np.errstate(all="ignore"):
         results, problems = friction_model.evaluate(supports, Labels(), f2_chart)
     errors = [p for p in problems if p.level == "error"]

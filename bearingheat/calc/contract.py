@@ -136,7 +136,8 @@ CONTRACT: tuple[Column, ...] = (
     _in("lubrication", "", "grease, oil_mist, oil_bath or circulating_oil (drop-down list)", required=True,
         template=("-", 16)),
     _in("arrangement", "", "single (blank) or paired (drop-down list): a pair in X or O arrangement is one "
-        "support, and its results are the pair's", template=("-", 13)),
+        "support, and its results are the pair's (SKF model: each bearing at Fr/2, and Fa = 0 only)",
+        template=("-", 13)),
     _in("B", "mm", "width; needed for the f0 formula of needle roller bearings", template=("mm", 8)),
     _in("C0", "N", "static load rating; needed where f1 depends on P0/C0 or Fa/C0", template=("kN", 9)),
     _in("Y", "1", "catalogue axial factor of tapered roller bearings (P1 under axial load)", template=("1", 7)),
@@ -241,17 +242,22 @@ CONTRACT: tuple[Column, ...] = (
     _out("Q_S", "W", "heat carried away through the seat", "thermal"),
     _out("Q_L", "W", "heat carried away by the circulating oil", "thermal"),
     _out("Fa_min", "N", "minimum axial load against ball skidding", "contact"),
-    _out("G_rr", "1", "SKF model: rolling frictional variable", "skf"),
-    _out("G_sl", "1", "SKF model: sliding frictional variable", "skf"),
-    _out("M_rr", "N*mm", "SKF model: rolling frictional moment (before phi_ish, phi_rs)", "skf"),
-    _out("M_sl", "N*mm", "SKF model: sliding frictional moment", "skf"),
-    _out("M_seal", "N*mm", "SKF model: frictional moment of the seals", "skf"),
-    _out("M_drag", "N*mm", "SKF model: frictional moment of drag losses (oil bath, oil jet)", "skf"),
-    _out("phi_ish", "1", "SKF model: inlet shear heating reduction factor", "skf"),
-    _out("phi_rs", "1", "SKF model: kinematic replenishment/starvation reduction factor", "skf"),
-    _out("phi_bl", "1", "SKF model: weighting factor of the sliding friction coefficient", "skf"),
-    _out("mu_sl", "1", "SKF model: the sliding friction coefficient used", "skf", shown="mu_sl_used"),
-    _out("M_start", "N*mm", "SKF model: starting torque", "skf"),
+    _out("G_rr", "1", "SKF model: rolling frictional variable (of one bearing of a pair)", "skf"),
+    _out("G_sl", "1", "SKF model: sliding frictional variable (of one bearing of a pair)", "skf"),
+    _out("M_rr", "N*mm", "SKF model: rolling frictional moment (before phi_ish, phi_rs; of both bearings of a "
+         "pair)", "skf"),
+    _out("M_sl", "N*mm", "SKF model: sliding frictional moment (of both bearings of a pair)", "skf"),
+    _out("M_seal", "N*mm", "SKF model: frictional moment of the seals (of both bearings of a pair)", "skf"),
+    _out("M_drag", "N*mm", "SKF model: frictional moment of drag losses (oil bath, oil jet; of both bearings of a "
+         "pair)", "skf"),
+    _out("phi_ish", "1", "SKF model: inlet shear heating reduction factor (of one bearing of a pair)", "skf"),
+    _out("phi_rs", "1", "SKF model: kinematic replenishment/starvation reduction factor (of one bearing of a "
+         "pair)", "skf"),
+    _out("phi_bl", "1", "SKF model: weighting factor of the sliding friction coefficient (of one bearing of a "
+         "pair)", "skf"),
+    _out("mu_sl", "1", "SKF model: the sliding friction coefficient used (of one bearing of a pair)", "skf",
+         shown="mu_sl_used"),
+    _out("M_start", "N*mm", "SKF model: starting torque (of both bearings of a pair)", "skf"),
     _out("VM_chart", "1", "SKF model: the drag loss factor VM read off the digitised VM chart (calc --vm-chart) "
          "at the row's H/dm; blank where VM was given or not needed", "skf"),
     _out("status", "", "ok | warning | error", "table"),

@@ -111,8 +111,8 @@ SKF = FrictionModel(
     title=("SKF four-component model: M = phi_ish*phi_rs*M_rr + M_sl + M_seal + M_drag, SKF General Catalogue "
            "6000 (Russian edition), chapter 'Friction', pp. 87-105, and SKF Rolling bearings 10000/3 (2017), "
            "pp. 97-114"),
-    inputs=contract.columns(owner="skf") + ("designation", "type", "series", "lubrication", "d", "D", "B", "C0",
-                                             "Y", "Fr", "Fa", "n", "nu", "Dw", "T"),
+    inputs=contract.columns(owner="skf") + ("designation", "type", "series", "lubrication", "arrangement", "d",
+                                             "D", "B", "C0", "Y", "Fr", "Fa", "n", "nu", "Dw", "T"),
     outputs=SKF_RESULTS,
     evaluate=_evaluate_skf,
     catalogue_keys=False,

@@ -43,6 +43,7 @@ _DEFAULTS = {
     "VM": "required in an oil bath", "skf_edition": "10000", "seal": "from the designation suffix",
     "seals": "from the designation (2RSH: 2), else 2 where seal is given", "d_s": "required for contact seals",
     "Dw": "none: H < (D − d)/4 counts as low", "T": "required for tapered roller bearings",
+    "arrangement": "single; paired: the pair's moments, each bearing at Fr/2 (Fa = 0 only)",
 }
 #: inputs read from ``extra``: name -> (unit, meaning, default); unit and meaning from the column contract
 EXTRA_INPUTS = {name: (contract.column(name).unit, contract.column(name).meaning, default)
@@ -221,6 +222,19 @@ def evaluate_skf_model(supports: SupportArrays, labels: Labels, f2_chart: F2Char
     bad("nu", nu, "must be > 0", nu <= 0)
     bad("Fr", Fr, "must be >= 0", Fr < 0)
     bad("Fa", Fa, "must be >= 0", Fa < 0)
+    # --- a pair (X or O arrangement): the model is of one bearing; the pair's moment is the sum of its bearings',
+    # each at half the radial load; how a pair shares an axial load the model does not say
+    arrangement = _choice(x, "arrangement", contract.ARRANGEMENTS[0])
+    add(ok & ~np.isin(arrangement, contract.ARRANGEMENTS), "error",
+        lambda i: f"{labels.name('arrangement', i)}: {at(arrangement, i)!r} is not one of "
+                  f"{', '.join(contract.ARRANGEMENTS)}")
+    paired = np.equal(arrangement, "paired")
+    add(ok & paired & (Fa > 0), "error",
+        lambda i: f"{labels.name('Fa', i)}: {labels.value('Fa', Fa[i])} on a pair: how a pair shares an axial load "
+                  "depends on its arrangement and preload, which the SKF model does not cover; give the two bearings "
+                  "as two rows, each with the loads it carries, or use the catalogue model (model = schaeffler)")
+    bearings = row(np.where(paired, 2.0, 1.0))
+    Fr_bearing = Fr / bearings
     family = text["family"]
     bearing_type = text["bearing_type"]
     C0, Y = row(s.C0), row(s.Y)
@@ -310,11 +324,11 @@ def evaluate_skf_model(supports: SupportArrays, labels: Labels, f2_chart: F2Char
         rows = np.flatnonzero(ok & np.equal(family, fam))
         sub = {k: (v[rows] if many else v) for k, v in consts.items()}
         with np.errstate(all="ignore"):
-            Grr, Gsl = skf.rolling_sliding_variables(fam, sub, dm[rows], Fr[rows], Fa[rows], n[rows], nu[rows],
-                                                     C0[rows], Y[rows])
+            Grr, Gsl = skf.rolling_sliding_variables(fam, sub, dm[rows], Fr_bearing[rows], Fa[rows], n[rows],
+                                                     nu[rows], C0[rows], Y[rows])
             G_rr[rows], G_sl[rows] = Grr, Gsl
-            G_sl_start[rows] = (skf.rolling_sliding_variables(fam, sub, dm[rows], Fr[rows], Fa[rows], 0.0 * n[rows],
-                                                              nu[rows], C0[rows], Y[rows])[1]
+            G_sl_start[rows] = (skf.rolling_sliding_variables(fam, sub, dm[rows], Fr_bearing[rows], Fa[rows],
+                                                              0.0 * n[rows], nu[rows], C0[rows], Y[rows])[1]
                                 if fam in skf.SPEED_DEPENDENT_GSL else Gsl)
 
     # --- seals (6000 p. 90, table 4 p. 96; 10000/3 p. 109)
@@ -342,9 +356,11 @@ def evaluate_skf_model(supports: SupportArrays, labels: Labels, f2_chart: F2Char
     add(ok & (start_factor > 1), "warning",
         lambda i: f"M_start of a {label(i)} may be up to {start_factor[i]:g} times Msl + Mseal "
                   "(SKF 6000 p. 103; 10000/3 p. 114)")
-    results = {"G_rr": G_rr, "G_sl": G_sl, "M_rr": M_rr, "M_sl": M_sl, "M_seal": M_seal, "M_drag": M_drag,
-               "phi_ish": phi_ish, "phi_rs": phi_rs, "phi_bl": phi_bl, "mu_sl": mu_sl, "M_start": M_start,
-               "MR": MR, "NR": NR}
+    # the moments and the power of both bearings of a pair; G, φ and μsl stay those of one bearing
+    results = {"G_rr": G_rr, "G_sl": G_sl, "M_rr": bearings * M_rr, "M_sl": bearings * M_sl,
+               "M_seal": bearings * M_seal, "M_drag": bearings * M_drag, "phi_ish": phi_ish, "phi_rs": phi_rs,
+               "phi_bl": phi_bl, "mu_sl": mu_sl, "M_start": bearings * M_start, "MR": bearings * MR,
+               "NR": bearings * NR}
     return {k: np.broadcast_to(np.asarray(v, dtype=float), shape) for k, v in results.items()}, problems
 
 

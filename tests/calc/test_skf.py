@@ -111,6 +111,48 @@ def test_angular_contact_starting_torque_takes_gsl_at_standstill():
         1.30e-2 * dm ** 0.26 * ((1000 + Fg) ** (4 / 3) + 0.68 * 500 ** (4 / 3)), rel=1e-12)
 
 
+def test_a_pair_is_two_bearings_each_at_half_the_radial_load():
+    """The SKF model is of one bearing; a pair's moments are the sums of its two bearings' (Fa = 0)."""
+    row = dict(designation="7210-B", d=50.0, D=90.0, Fr=2000.0, n=3000.0, nu=22.0, lubrication="grease")
+    pair, messages = run({**row, "arrangement": "paired"})
+    assert messages == {}
+    one, _ = run({**row, "Fr": 1000.0})
+    for name in ("M_rr", "M_sl", "M_seal", "M_drag", "M_start", "MR", "NR"):
+        assert float(pair[name][0]) == pytest.approx(2 * float(one[name][0]), rel=1e-15), name
+    for name in ("G_rr", "G_sl", "phi_ish", "phi_rs", "phi_bl", "mu_sl"):
+        assert float(pair[name][0]) == float(one[name][0]), name
+    # by hand: table 3 (6000 p. 92), angular contact ball bearings: R1 5.03e-7, R3 1.90e-12, S1 1.30e-2,
+    # S3 1.91e-12; Kz = 4.4 (table 5); each bearing at Fr = 1000 N
+    dm, n = 70.0, 3000.0
+    Grr = 5.03e-7 * dm ** 1.97 * (1000 + 1.90e-12 * dm ** 4 * n ** 2) ** 0.54
+    Gsl = 1.30e-2 * dm ** 0.26 * (1000 + 1.91e-12 * dm ** 4 * n ** 2) ** (4 / 3)
+    assert float(pair["MR"][0]) == pytest.approx(2 * hand(Grr, Gsl, 50, 90, n, 22, 4.4, 6e-8, 0.05), rel=1e-12)
+
+
+def test_a_pair_has_the_seals_and_the_drag_of_both_bearings():
+    sealed = dict(designation="6205-2RSH", d=25.0, D=52.0, Fr=1000.0, n=2000.0, nu=40.0, lubrication="grease",
+                  d_s=31.0, arrangement="paired")
+    results, messages = run(sealed, {**EXAMPLE, "Fa": 0.0, "arrangement": "paired"})
+    assert messages == {}
+    rsh = 0.028 * 31 ** 2.25 + 2                     # table 4, RSH, D <= 52: both seals of one bearing
+    assert results["M_seal"].tolist() == pytest.approx([2 * rsh, 0.0], rel=1e-12)
+    one, _ = run({**EXAMPLE, "Fa": 0.0, "Fr": 1495.0})
+    assert float(results["M_drag"][1]) == pytest.approx(2 * 14.4598608, rel=1e-7)     # the example's drag, twice
+    assert float(results["MR"][1]) == pytest.approx(2 * float(one["MR"][0]), rel=1e-15)
+
+
+def test_a_pair_under_axial_load_or_an_unknown_arrangement_is_refused():
+    row = dict(designation="7210-B", d=50.0, D=90.0, Fr=2000.0, Fa=500.0, n=3000.0, nu=22.0, lubrication="grease")
+    results, messages = run({**row, "arrangement": "paired"}, {**row, "arrangement": "tandem"},
+                            {**row, "arrangement": None})
+    assert messages == {
+        0: [("error", "Fa [N]: 500 on a pair: how a pair shares an axial load depends on its arrangement and "
+                      "preload, which the SKF model does not cover; give the two bearings as two rows, each with the "
+                      "loads it carries, or use the catalogue model (model = schaeffler)")],
+        1: [("error", "arrangement: 'tandem' is not one of single, paired")]}
+    assert float(results["MR"][2]) > 0                   # blank: a single bearing
+
+
 def test_oil_bath_drag_of_the_2017_edition_by_hand():
     results, messages = run({**EXAMPLE, "skf_edition": "10000", "VM": 1.5e-4})
     assert messages == {}

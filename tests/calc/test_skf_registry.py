@@ -63,6 +63,18 @@ def test_the_heat_balance_of_the_skf_model_uses_the_bracketed_root():
     assert power == pytest.approx(out["Q_S [W]"].iat[0], rel=1e-9)
 
 
+def test_a_pair_through_calc_gives_the_pair_the_heat_balance_message_names():
+    """Both models report a paired row's MR and NR as the pair's, as the n_thr message of a pair says."""
+    from bearingheat.calc.reference_speed import PAIR_REASON
+
+    row = {"id": "spindle", "designation": "7210-B", "d [mm]": 50, "D [mm]": 90, "lubrication": "grease",
+           "n [1/min]": 6000, "Fr [N]": 1500, "nu [mm^2/s]": 22, "T_amb [degC]": 20, "T_bearing [degC]": 70}
+    out = calc(pd.DataFrame([{**row, "arrangement": "paired"}, {**row, "Fr [N]": 750}]), model="skf")
+    assert out["MR [N*mm]"].iat[0] == pytest.approx(2 * out["MR [N*mm]"].iat[1], rel=1e-15)
+    assert out["NR [W]"].iat[0] == pytest.approx(2 * out["NR [W]"].iat[1], rel=1e-15)
+    assert out["message"].iat[0] == PAIR_REASON
+
+
 def test_the_unit_aware_api_runs_the_skf_model():
     import pint
 
