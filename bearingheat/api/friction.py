@@ -305,27 +305,35 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
     for name, factor in zip(_FACTORS, (Y, e, X0, Y0, f0, f1, f2)):
         inputs[name] = _dimensionless(factor, name)
 
-    index = shared_index(inputs, FrictionInputError)
+    extra = _model_inputs(model_inputs or {}, friction_model.inputs)
+    # the model's own inputs are paired with the others by their index and broadcast with them
+    index = shared_index({**inputs, **extra}, FrictionInputError)
     arrays = {k: (v.to_numpy(dtype=float) if isinstance(v, pd.Series) else np.asarray(v, dtype=float))
               for k, v in inputs.items()}
+    extra_arrays = {k: (v.to_numpy() if isinstance(v, pd.Series) else np.asarray(v, dtype=object))
+                    for k, v in extra.items() if v is not None}
     # blank dimensions, ratings and factors from the bearing table (Schaeffler HR 1, 2006)
     typed = {k for k, v in {"d": d, "D": D, "B": B, "C0": C0, "Y": Y, "e": e, "Y0": Y0}.items() if v is not None}
     arrays, fill_notes, unknown = fill_arrays(designation, arrays, typed)
     if unknown is not None and D is None:
         raise FrictionInputError(f"{unknown}; or give d, D (and C0)")
-    shape = np.broadcast_shapes(*(v.shape for v in arrays.values()))
+    shape = np.broadcast_shapes(*(v.shape for v in (*arrays.values(), *extra_arrays.values())))
     given = {"n": n, "nu": nu, "Fr": Fr, "Fa": Fa, "C0": C0, "alpha": alpha, "d": d, "D": D, "B": B, "Y": Y,
              "e": e, "X0": X0, "Y0": Y0, "f0": f0, "f1": f1, "f2": f2}
     every, some = point_warnings({k: arrays[k] for k, v in given.items() if v is not None}, shape, FrictionInputError)
-    # arrays become one row axis; scalars stay scalars (no copies of constants)
-    flat: dict[str, object] = {k: (v if v.ndim == 0 else np.broadcast_to(v, shape).ravel()) for k, v in arrays.items()}
+    # arrays become one row axis; scalars stay scalars (no copies of constants), but the speed spans the rows (its
+    # length is the rows' count, also where only a model input varies)
+    flat: dict[str, object] = {k: (v if v.ndim == 0 and k != "n" else np.broadcast_to(v, shape).ravel())
+                               for k, v in arrays.items()}
     keys = {"designation": designation, "type": bearing_type, "series": series, "lubrication": lubrication,
             "arrangement": arrangement}
     supports = build_support_arrays(keys, flat)
     if supports.error and friction_model.catalogue_keys:
         raise FrictionInputError(str(supports.error))
     supports.extra = {"designation": designation, "type": bearing_type, "series": series, "lubrication": lubrication,
-                      "arrangement": arrangement, **_model_inputs(model_inputs or {}, friction_model.inputs)}
+                      "arrangement": arrangement,
+                      **{k: (extra[k] if v.ndim == 0 else np.broadcast_to(v, shape).ravel())
+                         for k, v in extra_arrays.items()}}
     with np.errstate(all="ignore"):
         results, problems = friction_model.evaluate(supports, Labels(), f2_chart)
     errors = [p for p in problems if p.level == "error"]

@@ -1,4 +1,5 @@
 """The unit-aware friction API with the SKF model: pairs, the model's own inputs, its notes and its series."""
+import pandas as pd
 import pint
 import pint_pandas  # noqa: F401  (registers the pint[...] dtype)
 import pytest
@@ -33,3 +34,35 @@ def test_a_pair_under_axial_load_is_refused():
     with pytest.raises(FrictionInputError) as info:
         friction_torque(**SPINDLE, Fr=2 * u.kN, arrangement="tandem")
     assert str(info.value) == "arrangement: 'tandem' is not one of single, paired"
+
+
+#: the worked example of SKF 6000 pp. 104-105 (22208 E in an oil bath), its model inputs besides the oil level
+EXAMPLE = dict(designation="22208 E", d=40 * u.mm, D=80 * u.mm, B=23 * u.mm, nu=68 * NU, Fr=2990 * u.N,
+               Fa=100 * u.N, lubrication="oil_bath", model="skf")
+BATH = dict(VM=0.3e-4, skf_edition="6000", mu_sl=0.05)
+
+
+def example_mr(oil_level, n=3500 * u.rpm):
+    r = friction_torque(**EXAMPLE, n=n, model_inputs=dict(BATH, oil_level=oil_level))
+    return r.MR.to("N*mm").magnitude
+
+
+def test_model_inputs_series_are_paired_by_their_index():
+    n = pd.Series([3000.0, 3500.0], index=["a", "b"], dtype="pint[rpm]")
+    H = pd.Series([40.0, 2.5], index=["a", "b"], dtype="pint[mm]")
+    r = friction_torque(**EXAMPLE, n=n, model_inputs=dict(BATH, oil_level=H))
+    assert r.MR.index.tolist() == ["a", "b"]
+    assert r.MR.pint.to("N*mm").pint.magnitude.tolist() == pytest.approx(
+        [example_mr(40 * u.mm, 3000 * u.rpm), example_mr(2.5 * u.mm)], rel=1e-15)
+    assert example_mr(2.5 * u.mm) == pytest.approx(331.075, abs=1e-3)     # the example (printed 334)
+    with pytest.raises(FrictionInputError) as info:
+        friction_torque(**EXAMPLE, n=n, model_inputs=dict(BATH, oil_level=H[["b", "a"]]))
+    assert str(info.value) == ("n and oil_level are Series with different indexes (2 rows: 'a', 'b' against 2 rows: "
+                               "'b', 'a'); give them one index, e.g. oil_level.reindex(n.index), or pass arrays")
+
+
+def test_model_inputs_broadcast_with_the_other_arguments():
+    r = friction_torque(**EXAMPLE, n=3500 * u.rpm, model_inputs=dict(BATH, oil_level=[2.5, 40.0] * u.mm))
+    assert r.MR.to("N*mm").magnitude.tolist() == pytest.approx([example_mr(2.5 * u.mm), example_mr(40 * u.mm)],
+                                                               rel=1e-15)
+    assert r.status == ["ok", "ok"]
