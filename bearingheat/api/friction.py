@@ -22,7 +22,7 @@ import numpy as np
 import numpy.typing as npt
 import pandas as pd
 
-from bearingheat.api._checks import point_status, point_warnings, shared_index, where
+from bearingheat.api._checks import broadcast_shape, point_status, point_warnings, shared_index, where
 from bearingheat.api.results import Result
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.contract import column
@@ -135,8 +135,21 @@ def _dimensionless(value: QuantityLike | npt.ArrayLike | None, name: str) -> Mag
         return magnitude(value, "dimensionless", name)
     if isinstance(value, pd.Series):
         return value
-    numbers = np.asarray(value, dtype=float)
+    try:
+        numbers = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        cells = np.asarray(value, dtype=object)
+        i = next(k for k, cell in enumerate(cells.ravel()) if not _is_number(cell))
+        raise FrictionInputError(f"{name}: {cells.ravel()[i]!r} is not a number{where(i, cells.shape)}") from None
     return numbers if numbers.ndim else float(numbers)
+
+
+def _is_number(value: object) -> bool:
+    try:
+        float(value)  # type: ignore[arg-type]
+    except (TypeError, ValueError):
+        return False
+    return True
 
 
 def _optional(value: QuantityLike | None, unit: str, name: str) -> Magnitude:
@@ -267,7 +280,8 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
     ------
     bearingheat.errors.FrictionInputError
         For an argument the model cannot use, naming the argument and the
-        value (and the index for arrays): NaN or infinite, outside its valid
+        value (and the index for arrays): NaN or infinite, not a number, an
+        array that does not broadcast with the others, outside its valid
         range, a required one missing (D; C0 or f2 where the model needs
         them), an unknown designation, lubrication or arrangement, an axial
         load on a bearing that takes none, a Fa/A or ν·n·dM outside the
@@ -317,7 +331,7 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
     arrays, fill_notes, unknown = fill_arrays(designation, arrays, typed)
     if unknown is not None and D is None:
         raise FrictionInputError(f"{unknown}; or give d, D (and C0)")
-    shape = np.broadcast_shapes(*(v.shape for v in (*arrays.values(), *extra_arrays.values())))
+    shape = broadcast_shape({k: v.shape for k, v in (*arrays.items(), *extra_arrays.items())}, FrictionInputError)
     given = {"n": n, "nu": nu, "Fr": Fr, "Fa": Fa, "C0": C0, "alpha": alpha, "d": d, "D": D, "B": B, "Y": Y,
              "e": e, "X0": X0, "Y0": Y0, "f0": f0, "f1": f1, "f2": f2}
     every, some = point_warnings({k: arrays[k] for k, v in given.items() if v is not None}, shape, FrictionInputError)

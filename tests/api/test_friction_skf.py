@@ -66,3 +66,26 @@ def test_model_inputs_broadcast_with_the_other_arguments():
     assert r.MR.to("N*mm").magnitude.tolist() == pytest.approx([example_mr(2.5 * u.mm), example_mr(40 * u.mm)],
                                                                rel=1e-15)
     assert r.status == ["ok", "ok"]
+
+
+@pytest.mark.parametrize("n, model_inputs, message", [
+    ([3500.0] * 3 * u.rpm, dict(BATH, oil_level=[2.5, 50.0] * u.mm),
+     "oil_level: an array of shape (2,) does not broadcast with n of shape (3,); give the arrays one shape, or one "
+     "value"),
+    (3500 * u.rpm, dict(BATH, oil_level=2.5 * u.mm, mu_sl="abc"), "mu_sl: 'abc' is not a number"),
+    (3500 * u.rpm, dict(BATH, oil_level=2.5 * u.mm, VM=[0.3e-4, "x"]), "VM: 'x' is not a number (at index 1)"),
+    (3500 * u.rpm, dict(BATH, oil_level=2.5 * u.mm, seal="CS", seals="two", d_s=60 * u.mm),
+     "seals: 'two' is not a number"),
+])
+def test_model_inputs_the_model_cannot_use_are_refused_naming_the_argument(n, model_inputs, message):
+    with pytest.raises(FrictionInputError) as info:
+        friction_torque(**EXAMPLE, n=n, model_inputs=model_inputs)
+    assert str(info.value) == message
+
+
+def test_arguments_of_different_lengths_are_refused_naming_both():
+    with pytest.raises(FrictionInputError) as info:
+        friction_torque(**{**EXAMPLE, "Fr": [1.0, 2.0, 3.0] * u.kN}, n=[3000.0, 3500.0] * u.rpm,
+                        model_inputs=dict(BATH, oil_level=2.5 * u.mm))
+    assert str(info.value) == ("Fr: an array of shape (3,) does not broadcast with n of shape (2,); give the arrays "
+                               "one shape, or one value")
