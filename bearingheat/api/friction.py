@@ -125,6 +125,9 @@ class FrictionResult(Result):
 
 
 _LENGTHS = ("d", "D", "B")
+#: the text columns a model reads that are arguments of friction_torque: column -> argument
+_KEY_ARGUMENTS = {"designation": "designation", "type": "bearing_type", "series": "series",
+                  "lubrication": "lubrication", "arrangement": "arrangement"}
 _FACTORS = ("Y", "e", "X0", "Y0", "f0", "f1", "f2")
 
 
@@ -399,9 +402,12 @@ def _model_inputs(values: Mapping[str, QuantityLike | npt.ArrayLike | None], acc
     """Model-specific arguments in catalogue units: Quantities converted by their contract unit, text kept."""
     out: dict[str, Magnitude | npt.ArrayLike | None] = {}
     for name, value in values.items():
+        if name in _KEY_ARGUMENTS:  # in model_inputs it would win over the argument of that name
+            raise FrictionInputError(f"model_inputs: {name!r} is an argument of friction_torque; give it as "
+                                     f"{_KEY_ARGUMENTS[name]}=")
         if name not in accepted:
-            raise FrictionInputError(f"model_inputs: {name!r} is not an input of this model; it reads "
-                                     f"{', '.join(n for n in accepted if n in EXTRA_INPUTS)}")
+            own = (n for n in accepted if n in EXTRA_INPUTS and n not in _KEY_ARGUMENTS)
+            raise FrictionInputError(f"model_inputs: {name!r} is not an input of this model; it reads {', '.join(own)}")
         unit = column(name).unit
         if unit == "" or value is None:
             out[name] = value

@@ -89,3 +89,13 @@ def test_arguments_of_different_lengths_are_refused_naming_both():
                         model_inputs=dict(BATH, oil_level=2.5 * u.mm))
     assert str(info.value) == ("Fr: an array of shape (3,) does not broadcast with n of shape (2,); give the arrays "
                                "one shape, or one value")
+
+
+def test_model_inputs_name_no_argument_of_friction_torque():
+    with pytest.raises(FrictionInputError) as info:
+        friction_torque(**EXAMPLE, n=3500 * u.rpm, model_inputs=dict(BATH, oil_level=2.5 * u.mm, arrangement="paired"))
+    assert str(info.value) == "model_inputs: 'arrangement' is an argument of friction_torque; give it as arrangement="
+    with pytest.raises(FrictionInputError) as info:
+        friction_torque(**EXAMPLE, n=3500 * u.rpm, model_inputs=dict(BATH, oil_level=2.5 * u.mm, oil_lvl=3 * u.mm))
+    assert str(info.value) == ("model_inputs: 'oil_lvl' is not an input of this model; it reads oil, mu_sl, mu_bl, "
+                               "oil_level, VM, skf_edition, seal, seals, d_s, Dw, T")
