@@ -327,7 +327,8 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
     index = shared_index({**inputs, **extra}, FrictionInputError)
     arrays = {k: (v.to_numpy(dtype=float) if isinstance(v, pd.Series) else np.asarray(v, dtype=float))
               for k, v in inputs.items()}
-    extra_arrays = {k: (v.to_numpy() if isinstance(v, pd.Series) else np.asarray(v, dtype=object))
+    extra_arrays = {k: (v.to_numpy(dtype=object if column(k).unit == "" else float) if isinstance(v, pd.Series)
+                        else np.asarray(v, dtype=object if column(k).unit == "" else float))
                     for k, v in extra.items() if v is not None}
     # blank dimensions, ratings and factors from the bearing table (Schaeffler HR 1, 2006)
     typed = {k for k, v in {"d": d, "D": D, "B": B, "C0": C0, "Y": Y, "e": e, "Y0": Y0}.items() if v is not None}
@@ -337,7 +338,9 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
     shape = broadcast_shape({k: v.shape for k, v in (*arrays.items(), *extra_arrays.items())}, FrictionInputError)
     given = {"n": n, "nu": nu, "Fr": Fr, "Fa": Fa, "C0": C0, "alpha": alpha, "d": d, "D": D, "B": B, "Y": Y,
              "e": e, "X0": X0, "Y0": Y0, "f0": f0, "f1": f1, "f2": f2}
-    every, some = point_warnings({k: arrays[k] for k, v in given.items() if v is not None}, shape, FrictionInputError)
+    numbers = {**{k: arrays[k] for k, v in given.items() if v is not None},
+               **{k: v for k, v in extra_arrays.items() if column(k).unit != ""}}  # the model's numbers too
+    every, some = point_warnings(numbers, shape, FrictionInputError)
     # arrays become one row axis; scalars stay scalars (no copies of constants), but the speed spans the rows (its
     # length is the rows' count, also where only a model input varies)
     flat: dict[str, object] = {k: (v if v.ndim == 0 and k != "n" else np.broadcast_to(v, shape).ravel())

@@ -53,6 +53,7 @@ __all__ = [
     "register_choices",
     "range_problems",
     "RANGES",
+    "RANGE_SOURCES",
     "choices",
     "template_columns",
     "help_text",
@@ -298,6 +299,15 @@ RANGES: dict[str, tuple[tuple[float, float] | None, tuple[float, float] | None]]
     "f0_rel_unc": ((0.0, 1.0), (0.0, 0.5)),      # a half-width above 50 % is usually a percent typed as 1
     "f1_rel_unc": ((0.0, 1.0), (0.0, 0.5)),
     "f_plain": ((0.0, 1.0), None),
+    "VM": (None, (-_INF, 1e-3)),
+    "mu_sl": (None, (-_INF, 0.3)),
+    "mu_bl": (None, (-_INF, 0.3)),
+}
+#: input -> where its plausible range comes from, said in the warning (the others are unit mix-ups of any bearing)
+RANGE_SOURCES = {
+    "VM": "30 times the 0.3·10⁻⁴ the worked example of SKF 6000 pp. 104-105 reads off diagram 2",
+    "mu_sl": "twice μbl ≈ 0.15 of SKF 6000 p. 101 and 10000/3 p. 103, the largest sliding coefficient of the model",
+    "mu_bl": "twice μbl ≈ 0.15 of SKF 6000 p. 101 and 10000/3 p. 103, the largest sliding coefficient of the model",
 }
 CONTRACT = tuple(dataclasses.replace(c, valid=RANGES[c.name][0], plausible=RANGES[c.name][1])
                  if c.kind == "input" and c.name in RANGES else c for c in CONTRACT)
@@ -464,7 +474,8 @@ def range_problems(name: str, values: np.ndarray, describe: Callable[[int], str]
             outside = np.isfinite(values) & ((values < low) | (values > high)) & ~reported
         reported |= outside
         span = f"{low:g} to {high:g}" if low > -_INF else f"up to {high:g}"
-        hint = "; check the number and its unit" if level == "plausible" else ""
+        source = f" ({RANGE_SOURCES[name]})" if level == "plausible" and name in RANGE_SOURCES else ""
+        hint = f"{source}; check the number and its unit" if level == "plausible" else ""
         for i in np.flatnonzero(outside):
             found.append((int(i), f"{describe(int(i))} is outside the {level} range {span} {unit}".rstrip() + hint))
     return errors, warnings

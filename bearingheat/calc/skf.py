@@ -332,6 +332,11 @@ def evaluate_skf_model(supports: SupportArrays, labels: Labels, f2_chart: F2Char
                                 if fam in skf.SPEED_DEPENDENT_GSL else Gsl)
 
     # --- seals (6000 p. 90, table 4 p. 96; 10000/3 p. 109)
+    d_s = x.number("d_s")
+    add(ok & (d_s > 0) & ((d_s <= d) | (d_s >= D)), "error",
+        lambda i: f"{labels.name('d_s', i)}: {value_of('d_s', d_s, i)} must lie between {labels.name('d', i)} = "
+                  f"{labels.value('d', d[i])} and {labels.name('D', i)} = {labels.value('D', D[i])}: the seal "
+                  "counterface diameter is d1, d2 or E of the bearing tables (SKF 6000 table 4, p. 96)")
     M_seal = _seal_torques(x, text, ok, D, row(c["seals"]), labels, add, shape)
 
     # --- drag (6000 p. 99; 10000/3 pp. 110-112)

@@ -381,6 +381,17 @@ def test_an_axial_load_on_a_bearing_with_a_ring_without_ribs_is_refused_as_the_c
     assert messages == {}
 
 
+def test_a_seal_counterface_diameter_outside_the_bearing_is_refused():
+    row = dict(designation="6205-2RSH", d=25.0, D=52.0, Fr=1000.0, n=2000.0, nu=40.0, lubrication="grease")
+    results, messages = run(*[{**row, "d_s": d_s} for d_s in (300.0, 25.0, 52.0, 31.0)])
+    why = "the seal counterface diameter is d1, d2 or E of the bearing tables (SKF 6000 table 4, p. 96)"
+    assert messages == {
+        0: [("error", f"d_s [mm]: 300 must lie between d [mm] = 25 and D [mm] = 52: {why}")],
+        1: [("error", f"d_s [mm]: 25 must lie between d [mm] = 25 and D [mm] = 52: {why}")],
+        2: [("error", f"d_s [mm]: 52 must lie between d [mm] = 25 and D [mm] = 52: {why}")]}
+    assert float(results["M_seal"][3]) == pytest.approx(0.028 * 31 ** 2.25 + 2, rel=1e-12)   # table 4, RSH
+
+
 def test_warnings():
     ball = dict(designation="6205", d=25.0, D=52.0, Fr=1000.0, n=2000.0, nu=40.0, lubrication="grease")
     cases = [

@@ -108,3 +108,18 @@ def test_an_oil_level_far_beyond_any_bearing_is_refused_and_an_unlikely_one_said
     assert out["status"].tolist() == ["ok", "warning", "error"]
     assert out["message"].iat[2] == "oil_level [mm]: 1e+06 is outside the valid range up to 100000 mm"
     assert out["message"].iat[1].startswith("oil_level [mm]: 8000 is outside the plausible range up to 5000 mm")
+
+
+def test_implausible_drag_and_sliding_coefficients_are_said_with_their_source():
+    """VM of the order 10^-4 (the worked example reads 0.3e-4 off diagram 2), mu_bl about 0.15 (6000 p. 101): a VM of
+    0.3 or a mu_sl of 5 is a slip of the exponent or of percent, and gives a warning, not a quiet torque."""
+    rows = pd.DataFrame([{**EXAMPLE, "VM": 0.3}, {**EXAMPLE, "mu_sl": 5}, {**EXAMPLE, "mu_bl": 3},
+                         {**EXAMPLE, "VM": 2e-4, "mu_sl": 0.12, "mu_bl": 0.2}])
+    out = calc(rows, model="skf")
+    assert out["status"].tolist() == ["warning", "warning", "warning", "ok"]
+    mu_source = "twice μbl ≈ 0.15 of SKF 6000 p. 101 and 10000/3 p. 103, the largest sliding coefficient of the model"
+    assert out["message"].tolist()[:3] == [
+        "VM: 0.3 is outside the plausible range up to 0.001 (30 times the 0.3·10⁻⁴ the worked example of SKF 6000 "
+        "pp. 104-105 reads off diagram 2); check the number and its unit",
+        f"mu_sl: 5 is outside the plausible range up to 0.3 ({mu_source}); check the number and its unit",
+        f"mu_bl: 3 is outside the plausible range up to 0.3 ({mu_source}); check the number and its unit"]
