@@ -365,7 +365,9 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
     for problem in problems:  # warnings of the points they concern
         for point in np.flatnonzero(np.broadcast_to(problem.mask, (size,))):
             some.setdefault(int(point), []).append(problem.message(int(point)))
-    every = every + list(supports.notes[0]) + fill_notes  # notes on the bearing: every point
+    # notes on the bearing, on every point: the designation's notes of the catalogue model's tables where the model
+    # uses them, and the bearing table's (the dimensions both models read)
+    every = every + (list(supports.notes[0]) if friction_model.catalogue_keys else []) + fill_notes
     status, messages = point_status(size, every, some)
     for name in ("MR", "NR"):
         bad = ~np.isfinite(results[name])
@@ -373,6 +375,8 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
             i = int(np.flatnonzero(bad)[0])
             raise FrictionInputError(f"{name}: the result is not a finite number for these inputs; check their "
                                      f"magnitudes and units{where(i, shape)}")
+
+    bearing_type_used, series_used = friction_model.bearing_keys(supports)  # of the tables the model used
 
     def number(name: str) -> Magnitude:
         """A dimensionless result in the shape of the arguments."""
@@ -393,7 +397,7 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
         M0=out("M0", "N*mm"), M1=out("M1", "N*mm"), M2=out("M2", "N*mm"), MR=out("MR", "N*mm"),
         NR=out("NR", "W"), Fa_over_A=number("Fa_over_A"), nu_n_dM=out("nu_n_dM", "mm^3/(s*min)"),
         status=status, messages=messages,
-        bearing_type=str(supports.bearing_type), series=str(supports.series),
+        bearing_type=str(bearing_type_used), series=str(series_used),
         model_results={name: number(name) if unit in ("", "1") else out(name, unit)
                        for name, unit in MODEL_REPORT_UNITS.items()
                        if name in results and name in friction_model.outputs},

@@ -30,7 +30,7 @@ from bearingheat.catalogue.vm_chart import VMChart
 from bearingheat.errors import BearingheatError
 from bearingheat.kernels import skf
 
-__all__ = ["RESULTS", "EXTRA_INPUTS", "evaluate_skf_model", "fill_vm_from_chart"]
+__all__ = ["RESULTS", "EXTRA_INPUTS", "evaluate_skf_model", "skf_bearing_keys", "fill_vm_from_chart"]
 
 #: the results of the SKF model, in the order calc writes them (catalogue units)
 RESULTS = ("G_rr", "G_sl", "M_rr", "M_sl", "M_seal", "M_drag", "phi_ish", "phi_rs", "phi_bl", "mu_sl", "M_start",
@@ -58,7 +58,7 @@ _NONE = np.array(None, dtype=object)
 _OIL = ("oil_mist", "oil_bath", "circulating_oil")  # oil-air, oil bath, oil jet (10000/3 p. 100)
 _CONSTANTS = ("R1", "R2", "R3", "R4", "S1", "S2", "S3", "S4", "S5", "Kz", "KL", "irw", "mu_EHL_type", "bore",
               "start_factor", "no_axial")
-_TEXTS = ("bearing_type", "family", "label", "prefix", "seal", "unknown_contact_seal")
+_TEXTS = ("bearing_type", "series", "family", "label", "prefix", "seal", "unknown_contact_seal")
 
 
 class _Extra:
@@ -159,10 +159,18 @@ def _constants_of(designation, bearing_type, series) -> dict:
     except BearingheatError as exc:
         return _blank(str(exc))
     out = {k: getattr(b, k) for k in _CONSTANTS}
-    out.update(bearing_type=b.bearing_type, family=b.family, label=b.label, prefix=b.prefix, seal=b.seal or "",
+    out.update(bearing_type=b.bearing_type, series=b.series, family=b.family, label=b.label, prefix=b.prefix,
+               seal=b.seal or "",
                unknown_contact_seal=b.unknown_contact_seal,
                seals=math.nan if b.seals is None else float(b.seals), error="")
     return out
+
+
+def skf_bearing_keys(supports: SupportArrays):
+    """The type and the series row of the SKF tables of every row (one pair of texts for one bearing, else
+    arrays); '' where the bearing does not resolve. ``supports.extra`` holds the designation, type and series."""
+    c, _ = _resolve(_Extra(supports.extra, supports.size), supports, supports.size)
+    return c["bearing_type"], c["series"]
 
 
 def evaluate_skf_model(supports: SupportArrays, labels: Labels, f2_chart: F2Chart | None = None,

@@ -110,3 +110,15 @@ def test_an_implausible_model_input_is_a_warning_of_the_points_it_concerns():
         friction_torque(**EXAMPLE, n=3500 * u.rpm, model_inputs=dict(BATH, oil_level=2.5 * u.mm, d_s=100 * u.mm))
     assert str(info.value) == ("d_s [mm]: 100 must lie between d [mm] = 40 and D [mm] = 80: the seal counterface "
                                "diameter is d1, d2 or E of the bearing tables (SKF 6000 table 4, p. 96)")
+
+
+def test_only_the_notes_and_the_series_of_the_model_that_computed_the_point():
+    args = dict(n=3000 * u.rpm, nu=20 * NU, Fr=1 * u.kN, lubrication="grease", d=40 * u.mm, D=80 * u.mm)
+    skf = friction_torque("NU 208", model="skf", **args)
+    assert (skf.status, skf.messages, skf.bearing_type, skf.series) == (["ok"], [""], "cylindrical_roller", "2")
+    catalogue = friction_torque("NU 208", **args)
+    assert catalogue.messages == ["the Schaeffler catalogue row for series 2 is for the E design (2..-E)"]
+    spherical = friction_torque("22208 E", model="skf", **args)
+    assert (spherical.bearing_type, spherical.series) == ("spherical_roller", "222 E")     # SKF table 3e
+    carb = friction_torque("C 2208", model="skf", **args)        # no row of the Schaeffler tables
+    assert (carb.bearing_type, carb.series) == ("carb_toroidal_roller", "C 22")            # SKF table 3f

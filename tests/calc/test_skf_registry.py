@@ -123,3 +123,11 @@ def test_implausible_drag_and_sliding_coefficients_are_said_with_their_source():
         "pp. 104-105 reads off diagram 2); check the number and its unit",
         f"mu_sl: 5 is outside the plausible range up to 0.3 ({mu_source}); check the number and its unit",
         f"mu_bl: 3 is outside the plausible range up to 0.3 ({mu_source}); check the number and its unit"]
+
+
+def test_a_designation_note_of_the_catalogue_tables_only_on_rows_of_the_catalogue_model():
+    row = {"designation": "NJ 208", "d [mm]": 40, "D [mm]": 80, "lubrication": "grease", "n [1/min]": 1500,
+           "Fr [N]": 4000, "nu [mm^2/s]": 40}
+    out = calc(pd.DataFrame([{**row, "model": "skf"}, {**row, "model": "schaeffler"}]))
+    assert out["status"].tolist() == ["ok", "warning"]
+    assert out["message"].tolist() == ["", "the Schaeffler catalogue row for series 2 is for the E design (2..-E)"]
