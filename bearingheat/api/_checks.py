@@ -15,7 +15,7 @@ import pandas as pd
 from bearingheat.calc.contract import range_problems
 from bearingheat.errors import BearingheatError
 
-__all__ = ["check_ranges", "point_warnings", "point_status", "where", "shared_index"]
+__all__ = ["check_ranges", "point_warnings", "point_status", "where", "shared_index", "broadcast_shape"]
 
 
 def where(i: int, shape: tuple[int, ...]) -> str:
@@ -113,3 +113,28 @@ def shared_index(values: Mapping[str, object], error: type[BearingheatError]) ->
                         f"{_labels(value.index)}); give them one index, e.g. {name}.reindex({first[0]}.index), or "
                         "pass arrays")
     return None if first is None else first[1]
+
+
+def broadcast_shape(shapes: Mapping[str, tuple[int, ...]], error: type[BearingheatError]) -> tuple[int, ...]:
+    """The shape the arrays of ``shapes`` (by argument name) broadcast to; arrays that do not broadcast raise
+    ``error`` naming two arguments and their shapes.
+
+    >>> from bearingheat.errors import FrictionInputError
+    >>> broadcast_shape({"n": (3,), "Fr": (), "oil_level": (3,)}, FrictionInputError)
+    (3,)
+    >>> broadcast_shape({"n": (3,), "Fr": (), "oil_level": (2,)}, FrictionInputError)
+    Traceback (most recent call last):
+    ...
+    bearingheat.errors.FrictionInputError: oil_level: an array of shape (2,) does not broadcast with n of shape (3,); give the arrays one shape, or one value
+    """
+    shape: tuple[int, ...] = ()
+    owner = ""  # the argument whose shape the others are broadcast to so far
+    for name, own in shapes.items():
+        try:
+            wider = np.broadcast_shapes(shape, own)
+        except ValueError:
+            raise error(f"{name}: an array of shape {own} does not broadcast with {owner} of shape {shape}; give the "
+                        "arrays one shape, or one value") from None
+        if wider != shape:
+            shape, owner = wider, name
+    return shape

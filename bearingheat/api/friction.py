@@ -22,7 +22,7 @@ import numpy as np
 import numpy.typing as npt
 import pandas as pd
 
-from bearingheat.api._checks import point_status, point_warnings, shared_index, where
+from bearingheat.api._checks import broadcast_shape, point_status, point_warnings, shared_index, where
 from bearingheat.api.results import Result
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.contract import column
@@ -89,7 +89,8 @@ class FrictionResult(Result):
     model_results : dict
         The other results of a model besides the catalogue model's, by
         contract name (the SKF model: M_rr, M_sl, M_seal, M_drag, M_start
-        [N·mm], G_rr, G_sl, phi_ish, phi_rs, phi_bl, mu_sl [1]).
+        [N·mm], of both bearings of a pair; G_rr, G_sl, phi_ish, phi_rs,
+        phi_bl, mu_sl [1], of one bearing).
 
     See Also
     --------
@@ -124,6 +125,9 @@ class FrictionResult(Result):
 
 
 _LENGTHS = ("d", "D", "B")
+#: the text columns a model reads that are arguments of friction_torque: column -> argument
+_KEY_ARGUMENTS = {"designation": "designation", "type": "bearing_type", "series": "series",
+                  "lubrication": "lubrication", "arrangement": "arrangement"}
 _FACTORS = ("Y", "e", "X0", "Y0", "f0", "f1", "f2")
 
 
@@ -134,8 +138,21 @@ def _dimensionless(value: QuantityLike | npt.ArrayLike | None, name: str) -> Mag
         return magnitude(value, "dimensionless", name)
     if isinstance(value, pd.Series):
         return value
-    numbers = np.asarray(value, dtype=float)
+    try:
+        numbers = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        cells = np.asarray(value, dtype=object)
+        i = next(k for k, cell in enumerate(cells.ravel()) if not _is_number(cell))
+        raise FrictionInputError(f"{name}: {cells.ravel()[i]!r} is not a number{where(i, cells.shape)}") from None
     return numbers if numbers.ndim else float(numbers)
+
+
+def _is_number(value: object) -> bool:
+    try:
+        float(value)  # type: ignore[arg-type]
+    except (TypeError, ValueError):
+        return False
+    return True
 
 
 def _optional(value: QuantityLike | None, unit: str, name: str) -> Magnitude:
@@ -218,7 +235,8 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
         Dimension series with ``bearing_type``, e.g. '62', '302', '222'.
     arrangement : str, optional
         'single' (default) or 'paired': a pair in X or O arrangement is one
-        support, and the results are the pair's.
+        support, and the results are the pair's (the SKF model: each bearing
+        at Fr/2; an axial load on a pair is refused).
     Y : float or pint.Quantity [1], optional
         Catalogue axial load factor of tapered roller bearings (P1 under
         axial load); valid > 0.
@@ -265,7 +283,8 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
     ------
     bearingheat.errors.FrictionInputError
         For an argument the model cannot use, naming the argument and the
-        value (and the index for arrays): NaN or infinite, outside its valid
+        value (and the index for arrays): NaN or infinite, not a number, an
+        array that does not broadcast with the others, outside its valid
         range, a required one missing (D; C0 or f2 where the model needs
         them), an unknown designation, lubrication or arrangement, an axial
         load on a bearing that takes none, a Fa/A or ν·n·dM outside the
@@ -303,27 +322,38 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
     for name, factor in zip(_FACTORS, (Y, e, X0, Y0, f0, f1, f2)):
         inputs[name] = _dimensionless(factor, name)
 
-    index = shared_index(inputs, FrictionInputError)
+    extra = _model_inputs(model_inputs or {}, friction_model.inputs)
+    # the model's own inputs are paired with the others by their index and broadcast with them
+    index = shared_index({**inputs, **extra}, FrictionInputError)
     arrays = {k: (v.to_numpy(dtype=float) if isinstance(v, pd.Series) else np.asarray(v, dtype=float))
               for k, v in inputs.items()}
+    extra_arrays = {k: (v.to_numpy(dtype=object if column(k).unit == "" else float) if isinstance(v, pd.Series)
+                        else np.asarray(v, dtype=object if column(k).unit == "" else float))
+                    for k, v in extra.items() if v is not None}
     # blank dimensions, ratings and factors from the bearing table (Schaeffler HR 1, 2006)
     typed = {k for k, v in {"d": d, "D": D, "B": B, "C0": C0, "Y": Y, "e": e, "Y0": Y0}.items() if v is not None}
     arrays, fill_notes, unknown = fill_arrays(designation, arrays, typed)
     if unknown is not None and D is None:
         raise FrictionInputError(f"{unknown}; or give d, D (and C0)")
-    shape = np.broadcast_shapes(*(v.shape for v in arrays.values()))
+    shape = broadcast_shape({k: v.shape for k, v in (*arrays.items(), *extra_arrays.items())}, FrictionInputError)
     given = {"n": n, "nu": nu, "Fr": Fr, "Fa": Fa, "C0": C0, "alpha": alpha, "d": d, "D": D, "B": B, "Y": Y,
              "e": e, "X0": X0, "Y0": Y0, "f0": f0, "f1": f1, "f2": f2}
-    every, some = point_warnings({k: arrays[k] for k, v in given.items() if v is not None}, shape, FrictionInputError)
-    # arrays become one row axis; scalars stay scalars (no copies of constants)
-    flat: dict[str, object] = {k: (v if v.ndim == 0 else np.broadcast_to(v, shape).ravel()) for k, v in arrays.items()}
+    numbers = {**{k: arrays[k] for k, v in given.items() if v is not None},
+               **{k: v for k, v in extra_arrays.items() if column(k).unit != ""}}  # the model's numbers too
+    every, some = point_warnings(numbers, shape, FrictionInputError)
+    # arrays become one row axis; scalars stay scalars (no copies of constants), but the speed spans the rows (its
+    # length is the rows' count, also where only a model input varies)
+    flat: dict[str, object] = {k: (v if v.ndim == 0 and k != "n" else np.broadcast_to(v, shape).ravel())
+                               for k, v in arrays.items()}
     keys = {"designation": designation, "type": bearing_type, "series": series, "lubrication": lubrication,
             "arrangement": arrangement}
     supports = build_support_arrays(keys, flat)
     if supports.error and friction_model.catalogue_keys:
         raise FrictionInputError(str(supports.error))
     supports.extra = {"designation": designation, "type": bearing_type, "series": series, "lubrication": lubrication,
-                      **_model_inputs(model_inputs or {}, friction_model.inputs)}
+                      "arrangement": arrangement,
+                      **{k: (extra[k] if v.ndim == 0 else np.broadcast_to(v, shape).ravel())
+                         for k, v in extra_arrays.items()}}
     with np.errstate(all="ignore"):
         results, problems = friction_model.evaluate(supports, Labels(), f2_chart)
     errors = [p for p in problems if p.level == "error"]
@@ -335,7 +365,9 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
     for problem in problems:  # warnings of the points they concern
         for point in np.flatnonzero(np.broadcast_to(problem.mask, (size,))):
             some.setdefault(int(point), []).append(problem.message(int(point)))
-    every = every + list(supports.notes[0]) + fill_notes  # notes on the bearing: every point
+    # notes on the bearing, on every point: the designation's notes of the catalogue model's tables where the model
+    # uses them, and the bearing table's (the dimensions both models read)
+    every = every + (list(supports.notes[0]) if friction_model.catalogue_keys else []) + fill_notes
     status, messages = point_status(size, every, some)
     for name in ("MR", "NR"):
         bad = ~np.isfinite(results[name])
@@ -343,6 +375,8 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
             i = int(np.flatnonzero(bad)[0])
             raise FrictionInputError(f"{name}: the result is not a finite number for these inputs; check their "
                                      f"magnitudes and units{where(i, shape)}")
+
+    bearing_type_used, series_used = friction_model.bearing_keys(supports)  # of the tables the model used
 
     def number(name: str) -> Magnitude:
         """A dimensionless result in the shape of the arguments."""
@@ -363,7 +397,7 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
         M0=out("M0", "N*mm"), M1=out("M1", "N*mm"), M2=out("M2", "N*mm"), MR=out("MR", "N*mm"),
         NR=out("NR", "W"), Fa_over_A=number("Fa_over_A"), nu_n_dM=out("nu_n_dM", "mm^3/(s*min)"),
         status=status, messages=messages,
-        bearing_type=str(supports.bearing_type), series=str(supports.series),
+        bearing_type=str(bearing_type_used), series=str(series_used),
         model_results={name: number(name) if unit in ("", "1") else out(name, unit)
                        for name, unit in MODEL_REPORT_UNITS.items()
                        if name in results and name in friction_model.outputs},
@@ -375,9 +409,12 @@ def _model_inputs(values: Mapping[str, QuantityLike | npt.ArrayLike | None], acc
     """Model-specific arguments in catalogue units: Quantities converted by their contract unit, text kept."""
     out: dict[str, Magnitude | npt.ArrayLike | None] = {}
     for name, value in values.items():
+        if name in _KEY_ARGUMENTS:  # in model_inputs it would win over the argument of that name
+            raise FrictionInputError(f"model_inputs: {name!r} is an argument of friction_torque; give it as "
+                                     f"{_KEY_ARGUMENTS[name]}=")
         if name not in accepted:
-            raise FrictionInputError(f"model_inputs: {name!r} is not an input of this model; it reads "
-                                     f"{', '.join(n for n in accepted if n in EXTRA_INPUTS)}")
+            own = (n for n in accepted if n in EXTRA_INPUTS and n not in _KEY_ARGUMENTS)
+            raise FrictionInputError(f"model_inputs: {name!r} is not an input of this model; it reads {', '.join(own)}")
         unit = column(name).unit
         if unit == "" or value is None:
             out[name] = value

@@ -53,6 +53,7 @@ __all__ = [
     "register_choices",
     "range_problems",
     "RANGES",
+    "RANGE_SOURCES",
     "choices",
     "template_columns",
     "help_text",
@@ -136,7 +137,8 @@ CONTRACT: tuple[Column, ...] = (
     _in("lubrication", "", "grease, oil_mist, oil_bath or circulating_oil (drop-down list)", required=True,
         template=("-", 16)),
     _in("arrangement", "", "single (blank) or paired (drop-down list): a pair in X or O arrangement is one "
-        "support, and its results are the pair's", template=("-", 13)),
+        "support, and its results are the pair's (SKF model: each bearing at Fr/2, and Fa = 0 only)",
+        template=("-", 13)),
     _in("B", "mm", "width; needed for the f0 formula of needle roller bearings", template=("mm", 8)),
     _in("C0", "N", "static load rating; needed where f1 depends on P0/C0 or Fa/C0", template=("kN", 9)),
     _in("Y", "1", "catalogue axial factor of tapered roller bearings (P1 under axial load)", template=("1", 7)),
@@ -241,17 +243,22 @@ CONTRACT: tuple[Column, ...] = (
     _out("Q_S", "W", "heat carried away through the seat", "thermal"),
     _out("Q_L", "W", "heat carried away by the circulating oil", "thermal"),
     _out("Fa_min", "N", "minimum axial load against ball skidding", "contact"),
-    _out("G_rr", "1", "SKF model: rolling frictional variable", "skf"),
-    _out("G_sl", "1", "SKF model: sliding frictional variable", "skf"),
-    _out("M_rr", "N*mm", "SKF model: rolling frictional moment (before phi_ish, phi_rs)", "skf"),
-    _out("M_sl", "N*mm", "SKF model: sliding frictional moment", "skf"),
-    _out("M_seal", "N*mm", "SKF model: frictional moment of the seals", "skf"),
-    _out("M_drag", "N*mm", "SKF model: frictional moment of drag losses (oil bath, oil jet)", "skf"),
-    _out("phi_ish", "1", "SKF model: inlet shear heating reduction factor", "skf"),
-    _out("phi_rs", "1", "SKF model: kinematic replenishment/starvation reduction factor", "skf"),
-    _out("phi_bl", "1", "SKF model: weighting factor of the sliding friction coefficient", "skf"),
-    _out("mu_sl", "1", "SKF model: the sliding friction coefficient used", "skf", shown="mu_sl_used"),
-    _out("M_start", "N*mm", "SKF model: starting torque", "skf"),
+    _out("G_rr", "1", "SKF model: rolling frictional variable (of one bearing of a pair)", "skf"),
+    _out("G_sl", "1", "SKF model: sliding frictional variable (of one bearing of a pair)", "skf"),
+    _out("M_rr", "N*mm", "SKF model: rolling frictional moment (before phi_ish, phi_rs; of both bearings of a "
+         "pair)", "skf"),
+    _out("M_sl", "N*mm", "SKF model: sliding frictional moment (of both bearings of a pair)", "skf"),
+    _out("M_seal", "N*mm", "SKF model: frictional moment of the seals (of both bearings of a pair)", "skf"),
+    _out("M_drag", "N*mm", "SKF model: frictional moment of drag losses (oil bath, oil jet; of both bearings of a "
+         "pair)", "skf"),
+    _out("phi_ish", "1", "SKF model: inlet shear heating reduction factor (of one bearing of a pair)", "skf"),
+    _out("phi_rs", "1", "SKF model: kinematic replenishment/starvation reduction factor (of one bearing of a "
+         "pair)", "skf"),
+    _out("phi_bl", "1", "SKF model: weighting factor of the sliding friction coefficient (of one bearing of a "
+         "pair)", "skf"),
+    _out("mu_sl", "1", "SKF model: the sliding friction coefficient used (of one bearing of a pair)", "skf",
+         shown="mu_sl_used"),
+    _out("M_start", "N*mm", "SKF model: starting torque (of both bearings of a pair)", "skf"),
     _out("VM_chart", "1", "SKF model: the drag loss factor VM read off the digitised VM chart (calc --vm-chart) "
          "at the row's H/dm; blank where VM was given or not needed", "skf"),
     _out("status", "", "ok | warning | error", "table"),
@@ -292,6 +299,15 @@ RANGES: dict[str, tuple[tuple[float, float] | None, tuple[float, float] | None]]
     "f0_rel_unc": ((0.0, 1.0), (0.0, 0.5)),      # a half-width above 50 % is usually a percent typed as 1
     "f1_rel_unc": ((0.0, 1.0), (0.0, 0.5)),
     "f_plain": ((0.0, 1.0), None),
+    "VM": (None, (-_INF, 1e-3)),
+    "mu_sl": (None, (-_INF, 0.3)),
+    "mu_bl": (None, (-_INF, 0.3)),
+}
+#: input -> where its plausible range comes from, said in the warning (the others are unit mix-ups of any bearing)
+RANGE_SOURCES = {
+    "VM": "30 times the 0.3·10⁻⁴ the worked example of SKF 6000 pp. 104-105 reads off diagram 2",
+    "mu_sl": "twice μbl ≈ 0.15 of SKF 6000 p. 101 and 10000/3 p. 103, the largest sliding coefficient of the model",
+    "mu_bl": "twice μbl ≈ 0.15 of SKF 6000 p. 101 and 10000/3 p. 103, the largest sliding coefficient of the model",
 }
 CONTRACT = tuple(dataclasses.replace(c, valid=RANGES[c.name][0], plausible=RANGES[c.name][1])
                  if c.kind == "input" and c.name in RANGES else c for c in CONTRACT)
@@ -458,7 +474,8 @@ def range_problems(name: str, values: np.ndarray, describe: Callable[[int], str]
             outside = np.isfinite(values) & ((values < low) | (values > high)) & ~reported
         reported |= outside
         span = f"{low:g} to {high:g}" if low > -_INF else f"up to {high:g}"
-        hint = "; check the number and its unit" if level == "plausible" else ""
+        source = f" ({RANGE_SOURCES[name]})" if level == "plausible" and name in RANGE_SOURCES else ""
+        hint = f"{source}; check the number and its unit" if level == "plausible" else ""
         for i in np.flatnonzero(outside):
             found.append((int(i), f"{describe(int(i))} is outside the {level} range {span} {unit}".rstrip() + hint))
     return errors, warnings

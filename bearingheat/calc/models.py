@@ -31,7 +31,7 @@ from bearingheat.calc import contract
 from bearingheat.calc.bushing import plain_rows
 from bearingheat.calc.friction import EXCEL_FORMULAS, RESULTS, catalogue_model_at_viscosity, evaluate_catalogue_model
 from bearingheat.calc.skf import RESULTS as SKF_RESULTS
-from bearingheat.calc.skf import evaluate_skf_model
+from bearingheat.calc.skf import evaluate_skf_model, skf_bearing_keys
 from bearingheat.calc.messages import ERROR, Labels, Problem, row_status, status_codes, with_texts
 from bearingheat.calc.supports import BEARING_GROUP, KEY_INPUTS, NUMBER_INPUTS, SupportArrays, \
     build_support_arrays, coded_categorical, column_codes, nonblank, number_column, text_codes
@@ -74,6 +74,8 @@ class FrictionModel:
     old one; rows without M2), so that a viscosity taken at the solved
     operating temperature costs no second evaluation
     (:func:`results_at_viscosity`); None means the rows are evaluated again.
+    ``bearing_keys(supports) -> (type, series)`` names the bearing type and
+    the series row of the model's own tables that a row was computed with.
     """
 
     name: str
@@ -87,6 +89,7 @@ class FrictionModel:
     fit_terms: Callable[[pd.DataFrame], dict[str, np.ndarray]] | None = None
     no_formulas: str = ""
     at_viscosity: Callable[[SupportArrays, dict[str, np.ndarray]], dict[str, np.ndarray]] | None = None
+    bearing_keys: Callable[[SupportArrays], tuple[Any, Any]] = lambda s: (s.bearing_type, s.series)
 
 
 SCHAEFFLER = FrictionModel(
@@ -111,8 +114,8 @@ SKF = FrictionModel(
     title=("SKF four-component model: M = phi_ish*phi_rs*M_rr + M_sl + M_seal + M_drag, SKF General Catalogue "
            "6000 (Russian edition), chapter 'Friction', pp. 87-105, and SKF Rolling bearings 10000/3 (2017), "
            "pp. 97-114"),
-    inputs=contract.columns(owner="skf") + ("designation", "type", "series", "lubrication", "d", "D", "B", "C0",
-                                             "Y", "Fr", "Fa", "n", "nu", "Dw", "T"),
+    inputs=contract.columns(owner="skf") + ("designation", "type", "series", "lubrication", "arrangement", "d",
+                                             "D", "B", "C0", "Y", "Fr", "Fa", "n", "nu", "Dw", "T"),
     outputs=SKF_RESULTS,
     evaluate=_evaluate_skf,
     catalogue_keys=False,
@@ -122,6 +125,7 @@ SKF = FrictionModel(
     fit_terms=lambda results: {
         "phi_ish*phi_rs*M_rr": (results["phi_ish"] * results["phi_rs"] * results["M_rr"]).to_numpy(dtype=float),
         "M_sl": results["M_sl"].to_numpy(dtype=float)},
+    bearing_keys=skf_bearing_keys,
 )
 
 #: name -> model; the keys come from the models themselves
@@ -316,7 +320,9 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
             else:
                 warnings_by_row[i].append(problem.message(i))
     notes_of = np.broadcast_to(supports.notes, (n_rows,))
-    for i in np.flatnonzero(np.broadcast_to(supports.noted, (n_rows,)) & ~plain).tolist():  # after the warnings
+    # the designation's notes concern the catalogue model's tables: rows of a model with its own tables skip them
+    noted = np.broadcast_to(supports.noted, (n_rows,)) & ~plain & catalogue_rows
+    for i in np.flatnonzero(noted).tolist():  # after the warnings
         warnings_by_row[i].append("; ".join(notes_of[i]))  # a designation's notes
     status, message = row_status(n_rows, warnings_by_row, row_errors)
     failed = status.codes == ERROR

@@ -30,7 +30,7 @@ from bearingheat.catalogue.vm_chart import VMChart
 from bearingheat.errors import BearingheatError
 from bearingheat.kernels import skf
 
-__all__ = ["RESULTS", "EXTRA_INPUTS", "evaluate_skf_model", "fill_vm_from_chart"]
+__all__ = ["RESULTS", "EXTRA_INPUTS", "evaluate_skf_model", "skf_bearing_keys", "fill_vm_from_chart"]
 
 #: the results of the SKF model, in the order calc writes them (catalogue units)
 RESULTS = ("G_rr", "G_sl", "M_rr", "M_sl", "M_seal", "M_drag", "phi_ish", "phi_rs", "phi_bl", "mu_sl", "M_start",
@@ -43,6 +43,7 @@ _DEFAULTS = {
     "VM": "required in an oil bath", "skf_edition": "10000", "seal": "from the designation suffix",
     "seals": "from the designation (2RSH: 2), else 2 where seal is given", "d_s": "required for contact seals",
     "Dw": "none: H < (D − d)/4 counts as low", "T": "required for tapered roller bearings",
+    "arrangement": "single; paired: the pair's moments, each bearing at Fr/2 (Fa = 0 only)",
 }
 #: inputs read from ``extra``: name -> (unit, meaning, default); unit and meaning from the column contract
 EXTRA_INPUTS = {name: (contract.column(name).unit, contract.column(name).meaning, default)
@@ -56,8 +57,8 @@ _DRAG_SOURCE = {
 _NONE = np.array(None, dtype=object)
 _OIL = ("oil_mist", "oil_bath", "circulating_oil")  # oil-air, oil bath, oil jet (10000/3 p. 100)
 _CONSTANTS = ("R1", "R2", "R3", "R4", "S1", "S2", "S3", "S4", "S5", "Kz", "KL", "irw", "mu_EHL_type", "bore",
-              "start_factor")
-_TEXTS = ("bearing_type", "family", "label", "seal", "unknown_contact_seal")
+              "start_factor", "no_axial")
+_TEXTS = ("bearing_type", "series", "family", "label", "prefix", "seal", "unknown_contact_seal")
 
 
 class _Extra:
@@ -158,10 +159,18 @@ def _constants_of(designation, bearing_type, series) -> dict:
     except BearingheatError as exc:
         return _blank(str(exc))
     out = {k: getattr(b, k) for k in _CONSTANTS}
-    out.update(bearing_type=b.bearing_type, family=b.family, label=b.label, seal=b.seal or "",
+    out.update(bearing_type=b.bearing_type, series=b.series, family=b.family, label=b.label, prefix=b.prefix,
+               seal=b.seal or "",
                unknown_contact_seal=b.unknown_contact_seal,
                seals=math.nan if b.seals is None else float(b.seals), error="")
     return out
+
+
+def skf_bearing_keys(supports: SupportArrays):
+    """The type and the series row of the SKF tables of every row (one pair of texts for one bearing, else
+    arrays); '' where the bearing does not resolve. ``supports.extra`` holds the designation, type and series."""
+    c, _ = _resolve(_Extra(supports.extra, supports.size), supports, supports.size)
+    return c["bearing_type"], c["series"]
 
 
 def evaluate_skf_model(supports: SupportArrays, labels: Labels, f2_chart: F2Chart | None = None,
@@ -221,6 +230,19 @@ def evaluate_skf_model(supports: SupportArrays, labels: Labels, f2_chart: F2Char
     bad("nu", nu, "must be > 0", nu <= 0)
     bad("Fr", Fr, "must be >= 0", Fr < 0)
     bad("Fa", Fa, "must be >= 0", Fa < 0)
+    # --- a pair (X or O arrangement): the model is of one bearing; the pair's moment is the sum of its bearings',
+    # each at half the radial load; how a pair shares an axial load the model does not say
+    arrangement = _choice(x, "arrangement", contract.ARRANGEMENTS[0])
+    add(ok & ~np.isin(arrangement, contract.ARRANGEMENTS), "error",
+        lambda i: f"{labels.name('arrangement', i)}: {at(arrangement, i)!r} is not one of "
+                  f"{', '.join(contract.ARRANGEMENTS)}")
+    paired = np.equal(arrangement, "paired")
+    add(ok & paired & (Fa > 0), "error",
+        lambda i: f"{labels.name('Fa', i)}: {labels.value('Fa', Fa[i])} on a pair: how a pair shares an axial load "
+                  "depends on its arrangement and preload, which the SKF model does not cover; give the two bearings "
+                  "as two rows, each with the loads it carries, or use the catalogue model (model = schaeffler)")
+    bearings = row(np.where(paired, 2.0, 1.0))
+    Fr_bearing = Fr / bearings
     family = text["family"]
     bearing_type = text["bearing_type"]
     C0, Y = row(s.C0), row(s.Y)
@@ -236,6 +258,10 @@ def evaluate_skf_model(supports: SupportArrays, labels: Labels, f2_chart: F2Char
     add(ok & thrust_only_fa & (Fr > 0), "warning",
         lambda i: f"{labels.name('Fr', i)}: {labels.value('Fr', Fr[i])} on a {label(i)}: its formulas "
                   "(SKF 6000 p. 92, table 2b) use Fa only")
+    add(ok & (row(c["no_axial"]) > 0) & (Fa > 0), "error",
+        lambda i: f"{labels.name('Fa', i)}: {labels.value('Fa', Fa[i])} on {at(text['prefix'], i)} {label(i)}: one "
+                  "ring has no ribs, the bearing takes no axial load (the term S1·dm^0.9·Fa of Gsl is the sliding at "
+                  "the ribs; SKF 6000 p. 91, table 2a)")
     add(ok & carb & (Fa > 0), "warning",
         lambda i: f"{labels.name('Fa', i)}: {labels.value('Fa', Fa[i])} on a {label(i)}: CARB bearings take no "
                   "axial load; their formulas (SKF 6000 p. 91, table 2a) use Fr only")
@@ -282,10 +308,16 @@ def evaluate_skf_model(supports: SupportArrays, labels: Labels, f2_chart: F2Char
         lambda i: f"{labels.name('skf_edition', i)}: {at(edition, i)!r} is not one of "
                   f"{', '.join(catalogue.EDITIONS)}")
     dm = 0.5 * (d + D)
+    H_over_dm = H / dm
+
+    def at_level(i):
+        """' at H/dm = 0.0417' where the level and dm are known (their own messages say where not)."""
+        return f" at H/dm = {H_over_dm[i]:.3g}" if np.isfinite(H_over_dm[i]) else ""
+
     missing("VM", lambda i: f"an oil bath needs the drag loss factor VM: read it off "
                             f"{_DRAG_SOURCE.get(at(edition, i), _DRAG_SOURCE['10000'])} for "
-                            f"{'ball' if at(bearing_type, i) in catalogue.BALL_TYPES else 'roller'} bearings at "
-                            f"H/dm = {H[i] / dm[i]:.3g}, or digitise the diagram (calc --vm-chart)",
+                            f"{'ball' if at(bearing_type, i) in catalogue.BALL_TYPES else 'roller'} bearings"
+                            f"{at_level(i)}, or digitise the diagram (calc --vm-chart)",
             bath & np.isnan(VM) & known_edition)
     add(ok & ~np.isin(lubrication, ("oil_bath", "circulating_oil")) & ~np.isnan(VM), "warning",
         lambda i: f"{labels.name('VM', i)}: ignored; there is drag only in an oil bath or with oil jet")
@@ -300,14 +332,19 @@ def evaluate_skf_model(supports: SupportArrays, labels: Labels, f2_chart: F2Char
         rows = np.flatnonzero(ok & np.equal(family, fam))
         sub = {k: (v[rows] if many else v) for k, v in consts.items()}
         with np.errstate(all="ignore"):
-            Grr, Gsl = skf.rolling_sliding_variables(fam, sub, dm[rows], Fr[rows], Fa[rows], n[rows], nu[rows],
-                                                     C0[rows], Y[rows])
+            Grr, Gsl = skf.rolling_sliding_variables(fam, sub, dm[rows], Fr_bearing[rows], Fa[rows], n[rows],
+                                                     nu[rows], C0[rows], Y[rows])
             G_rr[rows], G_sl[rows] = Grr, Gsl
-            G_sl_start[rows] = (skf.rolling_sliding_variables(fam, sub, dm[rows], Fr[rows], Fa[rows], 0.0 * n[rows],
-                                                              nu[rows], C0[rows], Y[rows])[1]
+            G_sl_start[rows] = (skf.rolling_sliding_variables(fam, sub, dm[rows], Fr_bearing[rows], Fa[rows],
+                                                              0.0 * n[rows], nu[rows], C0[rows], Y[rows])[1]
                                 if fam in skf.SPEED_DEPENDENT_GSL else Gsl)
 
     # --- seals (6000 p. 90, table 4 p. 96; 10000/3 p. 109)
+    d_s = x.number("d_s")
+    add(ok & (d_s > 0) & ((d_s <= d) | (d_s >= D)), "error",
+        lambda i: f"{labels.name('d_s', i)}: {value_of('d_s', d_s, i)} must lie between {labels.name('d', i)} = "
+                  f"{labels.value('d', d[i])} and {labels.name('D', i)} = {labels.value('D', D[i])}: the seal "
+                  "counterface diameter is d1, d2 or E of the bearing tables (SKF 6000 table 4, p. 96)")
     M_seal = _seal_torques(x, text, ok, D, row(c["seals"]), labels, add, shape)
 
     # --- drag (6000 p. 99; 10000/3 pp. 110-112)
@@ -332,9 +369,11 @@ def evaluate_skf_model(supports: SupportArrays, labels: Labels, f2_chart: F2Char
     add(ok & (start_factor > 1), "warning",
         lambda i: f"M_start of a {label(i)} may be up to {start_factor[i]:g} times Msl + Mseal "
                   "(SKF 6000 p. 103; 10000/3 p. 114)")
-    results = {"G_rr": G_rr, "G_sl": G_sl, "M_rr": M_rr, "M_sl": M_sl, "M_seal": M_seal, "M_drag": M_drag,
-               "phi_ish": phi_ish, "phi_rs": phi_rs, "phi_bl": phi_bl, "mu_sl": mu_sl, "M_start": M_start,
-               "MR": MR, "NR": NR}
+    # the moments and the power of both bearings of a pair; G, φ and μsl stay those of one bearing
+    results = {"G_rr": G_rr, "G_sl": G_sl, "M_rr": bearings * M_rr, "M_sl": bearings * M_sl,
+               "M_seal": bearings * M_seal, "M_drag": bearings * M_drag, "phi_ish": phi_ish, "phi_rs": phi_rs,
+               "phi_bl": phi_bl, "mu_sl": mu_sl, "M_start": bearings * M_start, "MR": bearings * MR,
+               "NR": bearings * NR}
     return {k: np.broadcast_to(np.asarray(v, dtype=float), shape) for k, v in results.items()}, problems
 
 
@@ -390,9 +429,9 @@ def _seal_torques(x, text, ok, D, seals_designation, labels, add, shape):
             continue
         found = catalogue.seal_lookup(seal_type, bearing_type, D[rows])
         outside = np.zeros(shape, dtype=bool)
-        outside[rows[~found["found"]]] = True
+        outside[rows[~found["found"] & ~np.isnan(D[rows])]] = True   # a missing D has its own message
         ranges = "; ".join(r.range_text for r in table_rows)
-        add(outside, "error", lambda i, v=seal_type: (
+        add(outside, "error", lambda i, v=seal_type, ranges=ranges: (
             f"{labels.name('D', i)}: {labels.value('D', D[i])} is outside SKF table 4 (6000 p. 96) for {v} seals "
             f"on a {label(i)} ({ranges})"))
         needs_ds = np.zeros(shape, dtype=bool)

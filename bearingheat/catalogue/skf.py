@@ -131,12 +131,17 @@ _ALL_SERIES = {"angular_contact_ball", "angular_contact_ball_double_row", "four_
                "cylindrical_roller_full_complement", "thrust_ball", "thrust_roller"}
 #: double row ball series (Kball counts the rows irw)
 _DOUBLE_ROW_SERIES = {"deep_groove_ball": {"42", "43"}, "thrust_ball": {"522", "523", "542", "543"}}
+#: cylindrical roller designs with one ring (or the shaft or housing in its place) without ribs; NN is refused
+_NO_AXIAL_PREFIXES = {"NU", "N", "RNU", "RN"}
 #: seal table 4 names bearing types by family; these types use the row of another
 _SEAL_TABLE_TYPE = {"angular_contact_ball_double_row": "angular_contact_ball",
                     "cylindrical_roller_full_complement": "cylindrical_roller"}
 #: tapered series whose starting torque may be up to four times Msl + Mseal (6000 p. 103; 10000/3 p. 114)
 _START_X4_SERIES = {"313", "313 X", "322 B", "323 B", "T7FC"}
+_START_X4_KEYS = frozenset(re.sub(r"\s+", "", s) for s in _START_X4_SERIES)
 _TAPERED_INCH = re.compile(r"^(?P<series>LL|LM|L|HM|HH|H|M)\d{3,}")
+#: an ISO 355 tapered designation as SKF prints it, a space between the series code and the bore: 'T7FC 045'
+_ISO_355_SPACED = re.compile(r"^(?P<series>T\d[B-G][B-E])\s+(?P<bore>\d{3})(?=$|[\s/-])")
 
 
 def _key(text: str) -> str:
@@ -169,6 +174,7 @@ class SKFBearing:
     unknown_contact_seal: str    # a contact seal suffix table 4 does not list (2RS, 2RSR), '' otherwise
     source: str
     start_factor: float = 1.0    # the starting torque may be up to this many times Msl + Mseal (6000 p. 103)
+    prefix: str = ""             # the designation's prefix of a cylindrical roller bearing (NU, NJ, ...), '' otherwise
 
     @property
     def label(self) -> str:
@@ -178,6 +184,11 @@ class SKFBearing:
     @property
     def is_ball(self) -> bool:
         return self.bearing_type in BALL_TYPES
+
+    @property
+    def no_axial(self) -> bool:
+        """One ring has no ribs (NU, N, RNU, RN): the bearing takes no axial load."""
+        return self.prefix in _NO_AXIAL_PREFIXES
 
 
 @dataclass(frozen=True)
@@ -414,6 +425,8 @@ def _parse(text: str) -> _Parsed:
     parser of the catalogue model, then the series it does not know.
     """
     clean = re.sub(r"\s+", " ", text.strip().upper())
+    if _ISO_355_SPACED.match(clean):
+        text = clean = _ISO_355_SPACED.sub(r"\g<series>\g<bore>", clean)   # 'T7FC 045' is 'T7FC045'
     carb = _CARB.match(clean)
     if carb:
         suffixes = tuple(s for s in re.split(r"[-\s]", carb.group("suffix") or "") if s)
@@ -525,15 +538,18 @@ def skf_bearing(designation: str | None = None, bearing_type: str | None = None,
             raise DesignationError(f"{missing}: missing; give type and series together")
         _check_type(bearing_type, series)
         table_series = _explicit_series(bearing_type, str(series))
+        named_series = str(series)
     elif parsed is not None:
         bearing_type = parsed.bearing_type
         _check_type(bearing_type, parsed.series)
         table_series = _series_of(parsed)
+        named_series = parsed.series
     else:
         raise DesignationError("designation: missing; give a designation, or type and series")
     row = geometry_row(bearing_type, table_series)
     Kz, KL, irw = type_constants(bearing_type)
-    if parsed is not None and parsed.series in _DOUBLE_ROW_SERIES.get(bearing_type, ()):
+    # the series as named, not its table row ('all' for thrust ball bearings): 42 and 522 have two rows of balls
+    if _key(named_series) in _DOUBLE_ROW_SERIES.get(bearing_type, ()):
         irw = 2.0
     suffixes = parsed.suffixes if parsed else ()
     seal, seals = designation_seal(suffixes)
@@ -543,10 +559,11 @@ def skf_bearing(designation: str | None = None, bearing_type: str | None = None,
     R = [float(row[f"R{k}"]) for k in range(1, 5)]
     S = [float(row[f"S{k}"]) for k in range(1, 6)]
     start = 1.0
-    if bearing_type == "tapered_roller" and ({row["series"], parsed.series if parsed else ""} & _START_X4_SERIES):
+    # the row or the series as named: T7FC takes the row 'other' but starts up to four times higher
+    if bearing_type == "tapered_roller" and {_key(row["series"]), _key(named_series)} & _START_X4_KEYS:
         start = 4.0
     elif bearing_type == "axial_spherical_roller":
         start = 8.0
     return SKFBearing(bearing_type, row["series"], FORMULA_FAMILY[bearing_type], *R, *S, Kz, KL, irw,  # type: ignore[arg-type, call-arg]
                       _mu_ehl_type(bearing_type), parsed.bore if parsed else math.nan, seal, seals, unknown,
-                      row["source"], start)
+                      row["source"], start, parsed.prefix if parsed and parsed.bearing_type == bearing_type else "")

@@ -111,6 +111,48 @@ def test_angular_contact_starting_torque_takes_gsl_at_standstill():
         1.30e-2 * dm ** 0.26 * ((1000 + Fg) ** (4 / 3) + 0.68 * 500 ** (4 / 3)), rel=1e-12)
 
 
+def test_a_pair_is_two_bearings_each_at_half_the_radial_load():
+    """The SKF model is of one bearing; a pair's moments are the sums of its two bearings' (Fa = 0)."""
+    row = dict(designation="7210-B", d=50.0, D=90.0, Fr=2000.0, n=3000.0, nu=22.0, lubrication="grease")
+    pair, messages = run({**row, "arrangement": "paired"})
+    assert messages == {}
+    one, _ = run({**row, "Fr": 1000.0})
+    for name in ("M_rr", "M_sl", "M_seal", "M_drag", "M_start", "MR", "NR"):
+        assert float(pair[name][0]) == pytest.approx(2 * float(one[name][0]), rel=1e-15), name
+    for name in ("G_rr", "G_sl", "phi_ish", "phi_rs", "phi_bl", "mu_sl"):
+        assert float(pair[name][0]) == float(one[name][0]), name
+    # by hand: table 3 (6000 p. 92), angular contact ball bearings: R1 5.03e-7, R3 1.90e-12, S1 1.30e-2,
+    # S3 1.91e-12; Kz = 4.4 (table 5); each bearing at Fr = 1000 N
+    dm, n = 70.0, 3000.0
+    Grr = 5.03e-7 * dm ** 1.97 * (1000 + 1.90e-12 * dm ** 4 * n ** 2) ** 0.54
+    Gsl = 1.30e-2 * dm ** 0.26 * (1000 + 1.91e-12 * dm ** 4 * n ** 2) ** (4 / 3)
+    assert float(pair["MR"][0]) == pytest.approx(2 * hand(Grr, Gsl, 50, 90, n, 22, 4.4, 6e-8, 0.05), rel=1e-12)
+
+
+def test_a_pair_has_the_seals_and_the_drag_of_both_bearings():
+    sealed = dict(designation="6205-2RSH", d=25.0, D=52.0, Fr=1000.0, n=2000.0, nu=40.0, lubrication="grease",
+                  d_s=31.0, arrangement="paired")
+    results, messages = run(sealed, {**EXAMPLE, "Fa": 0.0, "arrangement": "paired"})
+    assert messages == {}
+    rsh = 0.028 * 31 ** 2.25 + 2                     # table 4, RSH, D <= 52: both seals of one bearing
+    assert results["M_seal"].tolist() == pytest.approx([2 * rsh, 0.0], rel=1e-12)
+    one, _ = run({**EXAMPLE, "Fa": 0.0, "Fr": 1495.0})
+    assert float(results["M_drag"][1]) == pytest.approx(2 * 14.4598608, rel=1e-7)     # the example's drag, twice
+    assert float(results["MR"][1]) == pytest.approx(2 * float(one["MR"][0]), rel=1e-15)
+
+
+def test_a_pair_under_axial_load_or_an_unknown_arrangement_is_refused():
+    row = dict(designation="7210-B", d=50.0, D=90.0, Fr=2000.0, Fa=500.0, n=3000.0, nu=22.0, lubrication="grease")
+    results, messages = run({**row, "arrangement": "paired"}, {**row, "arrangement": "tandem"},
+                            {**row, "arrangement": None})
+    assert messages == {
+        0: [("error", "Fa [N]: 500 on a pair: how a pair shares an axial load depends on its arrangement and "
+                      "preload, which the SKF model does not cover; give the two bearings as two rows, each with the "
+                      "loads it carries, or use the catalogue model (model = schaeffler)")],
+        1: [("error", "arrangement: 'tandem' is not one of single, paired")]}
+    assert float(results["MR"][2]) > 0                   # blank: a single bearing
+
+
 def test_oil_bath_drag_of_the_2017_edition_by_hand():
     results, messages = run({**EXAMPLE, "skf_edition": "10000", "VM": 1.5e-4})
     assert messages == {}
@@ -143,6 +185,20 @@ def test_tapered_roller_bearing_drag_of_2017_uses_t():
     Grr = 1.76e-6 * dm ** 2.38 * (4000 + 10.9 * 1.6 * 1000) ** 0.31
     Gsl = 0.017 * dm ** 0.82 * (4000 + 2 * 1.6 * 1000)
     assert float(results["MR"][0]) == pytest.approx(hand(Grr, Gsl, d, D, n, nu, Kz, 3e-8, 0.002, 0, drag), rel=1e-12)
+
+
+def test_a_double_row_series_given_as_type_and_series_has_the_drag_of_its_designation():
+    """6000 p. 99: Mdrag = VM·Kball·dm⁵·n², Kball = irw·Kz·(d + D)/(D − d)·10⁻¹²; irw = 2 for series 42 and 522."""
+    bath = dict(Fr=2000.0, n=3000.0, nu=20.0, lubrication="oil_bath", oil_level=3.0, VM=5e-5, skf_edition="6000")
+    deep = dict(bath, d=40.0, D=90.0, B=23.0)
+    thrust = dict(bath, d=40.0, D=90.0, Fr=0.0, Fa=2000.0)
+    results, messages = run({**deep, "designation": "4208"}, {**deep, "type": "deep_groove_ball", "series": "42"},
+                            {**thrust, "designation": "52208"}, {**thrust, "type": "thrust_ball", "series": "522"})
+    assert messages == {}
+    dm = 65.0
+    deep_drag = 5e-5 * (2 * 3.1 * 130 / 50 * 1e-12) * dm ** 5 * 3000 ** 2      # Kz = 3.1, table 5
+    thrust_drag = 5e-5 * (2 * 3.8 * 130 / 50 * 1e-12) * dm ** 5 * 3000 ** 2    # Kz = 3.8, table 5
+    assert results["M_drag"].tolist() == pytest.approx([deep_drag] * 2 + [thrust_drag] * 2, rel=1e-12)
 
 
 def test_oil_level_low_or_high():
@@ -287,11 +343,66 @@ def test_bad_input_of_other_bearings():
     assert messages == {}
 
 
+def test_the_seal_range_message_quotes_the_range_of_its_own_seal_type():
+    """Table 4 (6000 p. 96): RSH on deep groove ball bearings only for D <= 52 mm; RZ up to 175 mm. A row of RZ
+    after a row of RSH must not lend the RSH message its range."""
+    row = dict(designation="6208", d=40.0, D=80.0, Fr=1000.0, n=3000.0, nu=20.0, lubrication="grease")
+    _, messages = run({**row, "seal": "RSH", "d_s": 50.0}, {**row, "seal": "RZ"})
+    assert messages == {0: [("error", "D [mm]: 80 is outside SKF table 4 (6000 p. 96) for RSH seals on a deep groove "
+                                      "ball bearing series 62 (D <= 52 mm)")]}
+
+
+def test_a_missing_value_is_said_once_and_no_message_prints_nan():
+    sealed = dict(designation="6205-2RSH", d=25.0, Fr=1000.0, n=2000.0, nu=40.0, lubrication="grease", d_s=31.0)
+    _, messages = run(sealed)
+    assert messages == {0: [("error", "D [mm]: missing; the outside diameter D gives dm = 0.5 (d + D) "
+                                      "(SKF 6000 p. 90)")]}
+    _, messages = run({**EXAMPLE, "oil_level": None, "VM": None})
+    assert messages == {0: [
+        ("error", "oil_level [mm]: missing; an oil bath needs the oil level H [mm] above the lowest contact point of "
+                  "the outer ring raceway (SKF 10000/3 p. 110, fig. 2)"),
+        ("error", "VM: missing; an oil bath needs the drag loss factor VM: read it off SKF 6000 diagram 2 (p. 99; red "
+                  "curve ball bearings, blue roller bearings) for roller bearings, or digitise the diagram "
+                  "(calc --vm-chart)")]}
+
+
+def test_an_axial_load_on_a_bearing_with_a_ring_without_ribs_is_refused_as_the_catalogue_model_refuses_it():
+    row = dict(d=40.0, D=80.0, Fr=4000.0, Fa=1500.0, n=1500.0, nu=40.0, lubrication="grease")
+    designs = ("NU208-E", "N 208", "RNU 2210 ECJB", "NJ 208", "NUP 208", "NCF 2210 ECJB")
+    results, messages = run(*[{**row, "designation": d} for d in designs])
+    why = ("one ring has no ribs, the bearing takes no axial load (the term S1·dm^0.9·Fa of Gsl is the sliding at "
+           "the ribs; SKF 6000 p. 91, table 2a)")
+    assert messages == {
+        0: [("error", f"Fa [N]: 1500 on NU cylindrical roller bearing with cage series 2: {why}")],
+        1: [("error", f"Fa [N]: 1500 on N cylindrical roller bearing with cage series 2: {why}")],
+        2: [("error", f"Fa [N]: 1500 on RNU cylindrical roller bearing with cage series 22 high capacity: {why}")]}
+    assert np.all(results["MR"][3:] > 0)      # a rib on each ring (NJ, NUP) or ribs on one side (NCF) take Fa
+    _, messages = run({**row, "designation": "NU208-E", "Fa": 0.0})
+    assert messages == {}
+
+
+def test_a_seal_counterface_diameter_outside_the_bearing_is_refused():
+    row = dict(designation="6205-2RSH", d=25.0, D=52.0, Fr=1000.0, n=2000.0, nu=40.0, lubrication="grease")
+    results, messages = run(*[{**row, "d_s": d_s} for d_s in (300.0, 25.0, 52.0, 31.0)])
+    why = "the seal counterface diameter is d1, d2 or E of the bearing tables (SKF 6000 table 4, p. 96)"
+    assert messages == {
+        0: [("error", f"d_s [mm]: 300 must lie between d [mm] = 25 and D [mm] = 52: {why}")],
+        1: [("error", f"d_s [mm]: 25 must lie between d [mm] = 25 and D [mm] = 52: {why}")],
+        2: [("error", f"d_s [mm]: 52 must lie between d [mm] = 25 and D [mm] = 52: {why}")]}
+    assert float(results["M_seal"][3]) == pytest.approx(0.028 * 31 ** 2.25 + 2, rel=1e-12)   # table 4, RSH
+
+
 def test_warnings():
     ball = dict(designation="6205", d=25.0, D=52.0, Fr=1000.0, n=2000.0, nu=40.0, lubrication="grease")
     cases = [
         ({"designation": "31305", "Y": 0.7, "Fa": 100.0},
          "M_start of a tapered roller bearing series 313 may be up to 4 times Msl + Mseal (SKF 6000 p. 103; "
+         "10000/3 p. 114)"),
+        ({"designation": None, "type": "tapered_roller", "series": "T7FC"},
+         "M_start of a tapered roller bearing series other may be up to 4 times Msl + Mseal (SKF 6000 p. 103; "
+         "10000/3 p. 114)"),
+        ({"designation": "T7FC 045", "d": 45.0, "D": 95.0},
+         "M_start of a tapered roller bearing series other may be up to 4 times Msl + Mseal (SKF 6000 p. 103; "
          "10000/3 p. 114)"),
         ({"lubrication": "oil_mist", "nu": 1.5},
          "nu [mm^2/s]: 1.5 is outside 2 to 500 mm²/s, the range of the SKF model for oil lubrication "

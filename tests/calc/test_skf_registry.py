@@ -63,6 +63,18 @@ def test_the_heat_balance_of_the_skf_model_uses_the_bracketed_root():
     assert power == pytest.approx(out["Q_S [W]"].iat[0], rel=1e-9)
 
 
+def test_a_pair_through_calc_gives_the_pair_the_heat_balance_message_names():
+    """Both models report a paired row's MR and NR as the pair's, as the n_thr message of a pair says."""
+    from bearingheat.calc.reference_speed import PAIR_REASON
+
+    row = {"id": "spindle", "designation": "7210-B", "d [mm]": 50, "D [mm]": 90, "lubrication": "grease",
+           "n [1/min]": 6000, "Fr [N]": 1500, "nu [mm^2/s]": 22, "T_amb [degC]": 20, "T_bearing [degC]": 70}
+    out = calc(pd.DataFrame([{**row, "arrangement": "paired"}, {**row, "Fr [N]": 750}]), model="skf")
+    assert out["MR [N*mm]"].iat[0] == pytest.approx(2 * out["MR [N*mm]"].iat[1], rel=1e-15)
+    assert out["NR [W]"].iat[0] == pytest.approx(2 * out["NR [W]"].iat[1], rel=1e-15)
+    assert out["message"].iat[0] == PAIR_REASON
+
+
 def test_the_unit_aware_api_runs_the_skf_model():
     import pint
 
@@ -96,3 +108,26 @@ def test_an_oil_level_far_beyond_any_bearing_is_refused_and_an_unlikely_one_said
     assert out["status"].tolist() == ["ok", "warning", "error"]
     assert out["message"].iat[2] == "oil_level [mm]: 1e+06 is outside the valid range up to 100000 mm"
     assert out["message"].iat[1].startswith("oil_level [mm]: 8000 is outside the plausible range up to 5000 mm")
+
+
+def test_implausible_drag_and_sliding_coefficients_are_said_with_their_source():
+    """VM of the order 10^-4 (the worked example reads 0.3e-4 off diagram 2), mu_bl about 0.15 (6000 p. 101): a VM of
+    0.3 or a mu_sl of 5 is a slip of the exponent or of percent, and gives a warning, not a quiet torque."""
+    rows = pd.DataFrame([{**EXAMPLE, "VM": 0.3}, {**EXAMPLE, "mu_sl": 5}, {**EXAMPLE, "mu_bl": 3},
+                         {**EXAMPLE, "VM": 2e-4, "mu_sl": 0.12, "mu_bl": 0.2}])
+    out = calc(rows, model="skf")
+    assert out["status"].tolist() == ["warning", "warning", "warning", "ok"]
+    mu_source = "twice μbl ≈ 0.15 of SKF 6000 p. 101 and 10000/3 p. 103, the largest sliding coefficient of the model"
+    assert out["message"].tolist()[:3] == [
+        "VM: 0.3 is outside the plausible range up to 0.001 (30 times the 0.3·10⁻⁴ the worked example of SKF 6000 "
+        "pp. 104-105 reads off diagram 2); check the number and its unit",
+        f"mu_sl: 5 is outside the plausible range up to 0.3 ({mu_source}); check the number and its unit",
+        f"mu_bl: 3 is outside the plausible range up to 0.3 ({mu_source}); check the number and its unit"]
+
+
+def test_a_designation_note_of_the_catalogue_tables_only_on_rows_of_the_catalogue_model():
+    row = {"designation": "NJ 208", "d [mm]": 40, "D [mm]": 80, "lubrication": "grease", "n [1/min]": 1500,
+           "Fr [N]": 4000, "nu [mm^2/s]": 40}
+    out = calc(pd.DataFrame([{**row, "model": "skf"}, {**row, "model": "schaeffler"}]))
+    assert out["status"].tolist() == ["ok", "warning"]
+    assert out["message"].tolist() == ["", "the Schaeffler catalogue row for series 2 is for the E design (2..-E)"]

@@ -252,6 +252,8 @@ def test_formula_families_are_the_kernels_registry():
     ("32210 BJ2", "tapered_roller", "322 B", 50.0),
     ("LM11949", "tapered_roller", "LM", nan),
     ("T7FC045", "tapered_roller", "other", 45.0),
+    ("T7FC 045", "tapered_roller", "other", 45.0),          # SKF prints the ISO 355 code with a space
+    ("T2ED 045", "tapered_roller", "other", 45.0),
     ("22208 E", "spherical_roller", "222 E", 40.0),
     ("22208 EK", "spherical_roller", "222 E", 40.0),
     ("22208 CC", "spherical_roller", "222", 40.0),
@@ -287,13 +289,32 @@ def test_constants_of_a_bearing():
     assert b.label == "spherical roller bearing series 222 E"
     assert skf.skf_bearing("4205").irw == 2 and skf.skf_bearing("52210").irw == 2 and skf.skf_bearing("6205").irw == 1
     assert skf.skf_bearing("NU 206 ECP").mu_EHL_type == 0.02
+    assert [skf.skf_bearing(t).no_axial for t in ("NU 206 ECP", "N 206", "RNU 2210 ECJB", "NJ 206", "NCF 2210 ECJB",
+                                                   "6205")] == [True, True, True, False, False, False]
+    assert not skf.skf_bearing(bearing_type="cylindrical_roller", series="2").no_axial   # no prefix: not known
     assert skf.skf_bearing("30205").mu_EHL_type == 0.002
     assert math.isnan(skf.skf_bearing("6205").mu_EHL_type)
+
+
+@pytest.mark.parametrize("bearing_type, series, designation", [
+    ("deep_groove_ball", "42", "4208"), ("deep_groove_ball", "43", "4308"), ("thrust_ball", "522", "52208"),
+    ("thrust_ball", "523", "52308"), ("thrust_ball", "542", "54208"), ("thrust_ball", "543", "54308")])
+def test_double_row_ball_series_count_two_rows_of_balls_by_type_and_series_too(bearing_type, series, designation):
+    # irw of table 5 (6000 p. 98): double row deep groove (42, 43), double direction thrust ball (522 ... 543)
+    assert skf.skf_bearing(bearing_type=bearing_type, series=series).irw == 2
+    assert skf.skf_bearing(designation).irw == 2
+    assert skf.skf_bearing(bearing_type=bearing_type, series="62" if bearing_type == "deep_groove_ball"
+                           else "511").irw == 1
 
 
 def test_starting_torque_factors_of_page_103():
     assert [skf.skf_bearing(t).start_factor for t in ("31305", "32210 B", "32310 B", "T7FC045", "30205", "29412 E",
                                                       "22208 E")] == [4, 4, 4, 4, 1, 8, 1]
+    # T7FC takes the row 'other' of table 3d, but keeps the factor 4 of p. 103 by type and series too
+    explicit = skf.skf_bearing(bearing_type="tapered_roller", series="T7FC")
+    assert (explicit.series, explicit.start_factor) == ("other", 4)
+    assert skf.skf_bearing("T7FC 045").start_factor == 4
+    assert skf.skf_bearing(bearing_type="tapered_roller", series="T2ED").start_factor == 1
 
 
 def test_seals_from_the_designation():

@@ -14,7 +14,7 @@ def test_formulas_refuse_the_skf_model_with_the_reason(tmp_path, capsys):
     shutil.copyfile(EXAMPLE, source)
     assert main(["calc", str(source), "-o", str(tmp_path / "out.xlsx"), "--formulas", "--model", "skf"]) == 2
     assert capsys.readouterr().err == (
-        "bearingheat calc: error: --formulas: the friction model 'skf' of row 7 has no Excel formulas: its "
+        "bearingheat calc: error: --formulas: the friction model 'skf' of row 8 has no Excel formulas: its "
         "per-type geometry constants (R1-R4, S1-S5), the seal and drag tables, the inlet shear and replenishment "
         "factors and the edition's drag formula would take some forty helper cells a row, too many to check by "
         "eye; bearingheat writes its results as numbers; run calc without --formulas\n")
