@@ -299,13 +299,14 @@ RANGES: dict[str, tuple[tuple[float, float] | None, tuple[float, float] | None]]
     "f0_rel_unc": ((0.0, 1.0), (0.0, 0.5)),      # a half-width above 50 % is usually a percent typed as 1
     "f1_rel_unc": ((0.0, 1.0), (0.0, 0.5)),
     "f_plain": ((0.0, 1.0), None),
-    "VM": (None, (-_INF, 1e-3)),
+    "VM": (None, (-_INF, 1e-2)),
     "mu_sl": (None, (-_INF, 0.3)),
     "mu_bl": (None, (-_INF, 0.3)),
 }
 #: input -> where its plausible range comes from, said in the warning (the others are unit mix-ups of any bearing)
 RANGE_SOURCES = {
-    "VM": "30 times the 0.3·10⁻⁴ the worked example of SKF 6000 pp. 104-105 reads off diagram 2",
+    "VM": "over 300 times the 0.3·10⁻⁴ the worked example of SKF 6000 pp. 104-105 reads off diagram 2; the diagram's "
+          "data are not in bearingheat, so the bound is wide",
     "mu_sl": "twice μbl ≈ 0.15 of SKF 6000 p. 101 and 10000/3 p. 103, the largest sliding coefficient of the model",
     "mu_bl": "twice μbl ≈ 0.15 of SKF 6000 p. 101 and 10000/3 p. 103, the largest sliding coefficient of the model",
 }
