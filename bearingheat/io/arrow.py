@@ -29,15 +29,23 @@ from bearingheat.io.csv_reader import refuse_duplicate_columns
 from bearingheat.io.files import atomic_write
 
 __all__ = ["ARROW_SUFFIXES", "read_arrow", "read_arrow_table", "write_arrow", "arrow_table", "arrow_column",
-           "column_units", "unit_of"]
+           "column_units", "unit_of", "parquet_writer"]
+
+def _text_fields(schema: pa.Schema) -> list[str]:
+    return [field.name for field in schema if pa.types.is_string(field.type) or pa.types.is_large_string(field.type)]
+
 
 def _write_parquet(table: pa.Table, path) -> None:
     """Parquet with dictionary encoding for the text columns only: their cells repeat (designations, status),
     the numbers seldom do, and trying a dictionary on each number column first took a third of the write
     (10^6 rows x 36 columns: 0.42 s against 0.63 s, 91 MB against 89 MB)."""
-    text = [field.name for field in table.schema
-            if pa.types.is_string(field.type) or pa.types.is_large_string(field.type)]
-    parquet.write_table(table, path, use_dictionary=text)
+    parquet.write_table(table, path, use_dictionary=_text_fields(table.schema))
+
+
+def parquet_writer(path, schema: pa.Schema) -> parquet.ParquetWriter:
+    """A Parquet writer of tables of ``schema`` to ``path``, encoded as :func:`write_arrow` encodes (dictionaries
+    for the text columns only); a table written is a row group."""
+    return parquet.ParquetWriter(path, schema, use_dictionary=_text_fields(schema))
 
 
 #: suffix -> (read a pyarrow table from a path, write one to a path)

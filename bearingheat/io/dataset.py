@@ -2,15 +2,19 @@
 
 The input is a folder of Parquet files (every ``*.parquet`` in it) or a glob
 pattern (``'fleet/*.parquet'``), each file with the ``name [unit]`` headers
-calc reads. Dask reads them on the workers (one partition per file or row
-group), :func:`bearingheat.calc.distributed.calc_dask` computes each
-partition, and the results are written as a Parquet dataset: a folder with
-one part file per input partition, each column's unit as field metadata.
-The cluster is a :class:`distributed.LocalCluster` of worker processes (one
-thread each) unless a scheduler address names an existing
-``dask.distributed`` cluster. Dask is an optional extra
-(``pip install 'bearingheat[dask]'``) and is imported only inside the
-functions here.
+calc reads. Each file is one piece of work (a big one a run of its row groups
+per piece, :data:`PIECE_BYTES`), read and computed on a worker as the
+single-file path computes a file (:func:`bearingheat.io.pipeline.calc_block`,
+a block of rows at a time), and written as one part of a Parquet dataset: a
+folder with one part file per piece. Every part has the same columns, those of
+the Dask path (:func:`bearingheat.calc.distributed.result_layout`: every
+result column of the contract), in the same types: the input columns as the
+files hold them, the results as the single-file path writes them, each
+column's unit as field metadata. The cluster is a
+:class:`distributed.LocalCluster` of worker processes (one thread each) unless
+a scheduler address names an existing ``dask.distributed`` cluster. Dask is an
+optional extra (``pip install 'bearingheat[dask]'``) and is imported only
+inside the functions here.
 """
 from __future__ import annotations
 
@@ -22,16 +26,16 @@ import shutil
 import tempfile
 from pathlib import Path
 
-import numpy as np
 import pyarrow as pa
 import pyarrow.parquet as parquet
 
-from bearingheat.calc.table import calc
+from bearingheat.calc.distributed import result_layout
 from bearingheat.errors import InputError
-from bearingheat.io.arrow import unit_of
+from bearingheat.io.arrow import parquet_writer
+from bearingheat.io.pipeline import ROWS_PER_BLOCK, calc_block
 
 __all__ = ["dataset_files", "is_dataset", "check_dataset_target", "calc_dataset", "dask_client", "local_cluster",
-           "dataset_columns", "read_dataset_columns", "WORKER_MMAP_THRESHOLD"]
+           "dataset_columns", "read_dataset_columns", "WORKER_MMAP_THRESHOLD", "PIECE_BYTES"]
 
 
 def is_dataset(text: str) -> bool:
@@ -81,6 +85,10 @@ def dask_client(scheduler: str | None = None, workers: int | None = None):
 #: 16 MiB come from the heap again with this (0.25 s); dask's trimming of freed memory stays.
 WORKER_MMAP_THRESHOLD = 16 * 2**20
 
+#: uncompressed bytes of a Parquet file's row groups computed as one piece (one part of the results): dask's
+#: own default block size of read_parquet
+PIECE_BYTES = 256 * 2**20
+
 
 @contextlib.contextmanager
 def local_cluster(workers: int | None = None):
@@ -93,16 +101,6 @@ def local_cluster(workers: int | None = None):
     with dask.config.set(environ), LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
                                                 processes=True, dashboard_address=None) as cluster:
         yield cluster
-
-
-def _schema(meta) -> pa.Schema:
-    """The Parquet schema of the results: pandas' types, text for text columns, each field's unit as metadata."""
-    fields = []
-    for name, dtype in meta.dtypes.items():
-        numeric = isinstance(dtype, np.dtype) and dtype.kind in "biufM"
-        kind = pa.from_numpy_dtype(dtype) if numeric else pa.string()
-        fields.append(pa.field(str(name), kind, metadata={"unit": unit_of(str(name))}))
-    return pa.schema(fields)
 
 
 #: the files of a Parquet dataset Dask writes (its parts and metadata), the only ones --force removes
@@ -137,19 +135,75 @@ def clear_dataset(target: Path) -> None:
             path.unlink()
 
 
+def _pieces(path: str) -> list[tuple[str, list[int]]]:
+    """The pieces a Parquet file is computed in: runs of its row groups of up to :data:`PIECE_BYTES` (one piece
+    of no row groups for a file without rows)."""
+    metadata = parquet.ParquetFile(path).metadata
+    pieces: list[tuple[str, list[int]]] = []
+    groups: list[int] = []
+    size = 0
+    for group in range(metadata.num_row_groups):
+        grown = size + metadata.row_group(group).total_byte_size
+        if groups and grown > PIECE_BYTES:
+            pieces.append((path, groups))
+            groups, grown = [], metadata.row_group(group).total_byte_size
+        groups.append(group)
+        size = grown
+    pieces.append((path, groups))
+    return pieces
+
+
+def _read_piece(path: str, groups: list[int], names: list[str]) -> pa.Table:
+    """The rows of the row groups ``groups`` of a Parquet file (its columns without rows when there are none),
+    its columns in the order ``names`` (the first file's: the files of a fleet may order them otherwise)."""
+    source = parquet.ParquetFile(path)
+    table = source.read_row_groups(groups) if groups else source.schema_arrow.empty_table()
+    return table.select(names)
+
+
+def _results_schema(source: pa.Table, options: dict, layout: dict) -> pa.Schema:
+    """The Arrow schema of every part: what :func:`calc_block` makes of a piece without rows (the input's own
+    types, the layout's for the results), each field's unit as metadata."""
+    return calc_block(source.to_pandas(), source, options, layout=layout).schema
+
+
+def _calc_piece(path: str, groups: list[int], names: list[str], part: str, schema: pa.Schema, layout: dict,
+                options: dict) -> int:
+    """calc of one piece of a Parquet file, a block of :data:`ROWS_PER_BLOCK` rows at a time as the single-file
+    path computes (:func:`bearingheat.io.pipeline.calc_block`), written to the part file ``part`` in ``schema``;
+    returns the rows written."""
+    table = _read_piece(path, groups, names)
+    with parquet_writer(part, schema) as writer:
+        for start in range(0, max(table.num_rows, 1), ROWS_PER_BLOCK):
+            source = table.slice(start, ROWS_PER_BLOCK)
+            writer.write_table(calc_block(source.to_pandas(), source, options, layout=layout).cast(schema))
+    return table.num_rows
+
+
 def calc_dataset(files: list[str], target, *, overwrite: bool = False, **options) -> Path:
-    """calc of every row of the Parquet ``files`` on the current Dask client, written as the Parquet dataset
-    folder ``target`` (one part per input partition); ``options`` go to calc. Returns the folder."""
-    import dask.dataframe as dd
+    """calc of every row of the Parquet ``files`` on the current Dask scheduler, written as the Parquet dataset
+    folder ``target``; ``options`` go to calc. Returns the folder.
+
+    Each file is computed in pieces of its row groups (one piece per file up to :data:`PIECE_BYTES`), a block of
+    rows at a time as the single-file path computes it, and each piece becomes one part file: every column of
+    the Dask path's layout (:func:`bearingheat.calc.distributed.result_layout`), the input columns in the types
+    the files hold them, the results in the types the single-file path writes.
+    """
+    import dask
 
     _check_same_columns(files)
-    supports = dd.read_parquet(files)
-    results = calc(supports, **options)
     target = check_dataset_target(target, files, force=overwrite)
+    names = parquet.read_schema(files[0]).names
+    layout = result_layout(names)
+    schema = _results_schema(_read_piece(files[0], [], names), options, layout)
+    pieces = [piece for path in files for piece in _pieces(path)]
     # written beside the target first: an earlier dataset is replaced only once every part is written
     staging = Path(tempfile.mkdtemp(prefix=f".{target.name}.bearingheat-", suffix=".tmp", dir=target.parent))
     try:
-        results.to_parquet(str(staging), write_index=False, schema=_schema(results._meta))  # noqa: SLF001
+        tasks = [dask.delayed(_calc_piece, pure=False)(path, groups, names, str(staging / f"part.{i}.parquet"),
+                                                      schema, layout, options)
+                 for i, (path, groups) in enumerate(pieces)]
+        dask.compute(*tasks)
         target.mkdir(exist_ok=True)
         clear_dataset(target)
         for part in sorted(staging.iterdir()):

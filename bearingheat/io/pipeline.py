@@ -25,6 +25,7 @@ import pandas as pd
 import pyarrow as pa
 
 from bearingheat.calc.contract import CONTRACT, output_header
+from bearingheat.calc.distributed import calc_partition
 from bearingheat.calc.table import calc
 from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.catalogue.vm_chart import VMChart
@@ -32,7 +33,7 @@ from bearingheat.io.arrow import ARROW_SUFFIXES, arrow_column, read_arrow_table,
 from bearingheat.io.csv_reader import RowLines, read_source
 from bearingheat.io.tables import cite_rows, set_aside
 
-__all__ = ["ROWS_PER_BLOCK", "calc_file", "ordered_union"]
+__all__ = ["ROWS_PER_BLOCK", "calc_file", "calc_block", "ordered_union"]
 
 #: rows calc computes at a time (5*10^4 rows of calc's working arrays take some 75 MB; 10^6 rows in blocks of
 #: 25 000 / 50 000 / 100 000 / 200 000 rows peaked at 0.70 / 0.75 / 0.84 / 0.96 GB in the same time)
@@ -134,6 +135,26 @@ def _block_table(result: pd.DataFrame, block: pd.DataFrame, source: pa.Table | N
     return pa.Table.from_arrays(arrays, schema=pa.schema(fields))
 
 
+def calc_block(block: pd.DataFrame, source: pa.Table | None, options: dict, *, mark: str = ".",
+               lines: RowLines | None = None, layout: dict | None = None) -> pa.Table:
+    """calc of one block of rows (``block``, read from the Arrow table ``source`` or None) as Arrow.
+
+    Columns calc cannot read the header of are set aside and put back in their places
+    (:func:`bearingheat.io.tables.set_aside`), row messages cite ``lines``; with a ``layout``
+    (:func:`bearingheat.calc.distributed.result_layout`) the block gets every column of it, as a partition of the
+    Dask path does (an empty block: the input's columns and the layout's, nothing computed).
+    """
+    usable, extras = set_aside(block)
+    if layout is None:
+        result = calc(usable, decimal=mark, **options)
+    else:
+        result = calc_partition(usable, calc, layout, {**options, "decimal": mark})
+    for position, header, values in extras:
+        result.insert(position, header, values.to_numpy())
+    cite_rows(result, lines)
+    return _block_table(result, block, source)
+
+
 def _read(path, sep: str | None, decimal: str | None) -> tuple[pa.Table | pd.DataFrame, RowLines | None, str]:
     """The input table (Arrow where pyarrow read it), the file line of each row and the decimal mark (CSV)."""
     if Path(path).suffix.lower() in ARROW_SUFFIXES:
@@ -165,13 +186,9 @@ def calc_file(path, *, sep: str | None = None, decimal: str | None = None, progr
             block = source.to_pandas()
         else:
             block = table.iloc[start:stop]
-        usable, extras = set_aside(block)
-        result = calc(usable, decimal=mark, **options)
-        for position, header, values in extras:
-            result.insert(position, header, values.to_numpy())
-        cite_rows(result, lines[start:stop] if lines is not None else None)
-        blocks.append(_block_table(result, block, source))
-        del result, block, usable
+        blocks.append(calc_block(block, source, options, mark=mark,
+                                 lines=lines[start:stop] if lines is not None else None))
+        del block
         if progress is not None:
             progress.update(stop)
     if progress is not None:

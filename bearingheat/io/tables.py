@@ -92,7 +92,7 @@ def read_table(path, sheet: str | None = None, *, sep: str | None = None, decima
     return table
 
 
-def cite_rows(result: pd.DataFrame, lines: list[int] | None) -> pd.DataFrame:
+def cite_rows(result: pd.DataFrame, lines: list[int] | RowLines | None) -> pd.DataFrame:
     """Begin each row message with where the row is in the file: ``row 7 (id "spindle rear"): ...``.
 
     ``lines`` are the file line numbers of the rows (``read_csv(...).attrs['lines']``); rows without a

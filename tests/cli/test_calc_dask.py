@@ -1,6 +1,8 @@
 """bearingheat calc FOLDER --dask -o OUT: Parquet files computed on a local cluster of two worker processes."""
 from __future__ import annotations
 
+import datetime
+import decimal
 from pathlib import Path
 
 import numpy as np
@@ -114,3 +116,50 @@ def test_a_run_that_fails_keeps_the_earlier_dataset(tmp_path, capsys):
     assert "kilogram is a mass, not a force" in capsys.readouterr().err
     assert {p.name: p.read_bytes() for p in out.iterdir()} == earlier
     assert sorted(p.name for p in tmp_path.iterdir()) == ["bad", "fleet", "results"]
+
+
+def typed_demo() -> pd.DataFrame:
+    """The demo in pandas' nullable types (``convert_dtypes``), with a column of every other kind a Parquet file
+    holds besides: nullable whole numbers, logical values, a category, durations, times with a time zone, dates
+    and decimals."""
+    table = pd.read_csv(DEMO).convert_dtypes()
+    table["serial"] = pd.array([1, None, 3, 4, 5, 6], dtype="Int64")
+    table["checked"] = pd.array([True, None, False, True, False, True], dtype="boolean")
+    table["grade"] = pd.Categorical(["A", "B"] * 3)
+    table["runtime"] = pd.to_timedelta(np.arange(6), unit="h")
+    table["installed"] = pd.date_range("2024-01-01", periods=6, tz="Europe/Berlin")
+    table["day"] = [datetime.date(2024, 1, i + 1) for i in range(6)]
+    table["price"] = [decimal.Decimal("1.25"), None] + [decimal.Decimal("2.50")] * 4
+    return table
+
+
+def test_every_column_type_comes_back_as_the_single_file_path_writes_it(tmp_path):
+    """The parts were written in a schema of text for every column pandas holds in no numpy type: nullable
+    numbers, logical values, durations and times with a time zone stopped the run with an ArrowTypeError, dates,
+    categories and decimals came back as text. Now every column has the type and the values of ``calc
+    FILE.parquet -o OUT.parquet``."""
+    table = typed_demo()
+    (tmp_path / "fleet").mkdir()
+    table.iloc[:3].to_parquet(tmp_path / "fleet" / "a.parquet", index=False)
+    table.iloc[3:].to_parquet(tmp_path / "fleet" / "b.parquet", index=False)
+    table.to_parquet(tmp_path / "whole.parquet", index=False)
+    single_out, out = tmp_path / "single.parquet", tmp_path / "results"
+    assert main(["calc", str(tmp_path / "whole.parquet"), "-o", str(single_out), "-q"]) == 0
+    assert main(["calc", str(tmp_path / "fleet"), "--dask", "--workers", "1", "-o", str(out), "-q"]) == 0
+    single, got = parquet.read_table(single_out), parquet.read_table(out)
+    for field in single.schema:
+        assert got.schema.field(field.name).type == field.type, field.name
+        assert got.column(field.name).to_pylist() == single.column(field.name).to_pylist(), field.name
+    assert got.column("serial").to_pylist() == [1, None, 3, 4, 5, 6]
+    assert got.column("checked").to_pylist() == [True, None, False, True, False, True]
+    assert str(got.schema.field("grade").type) == "dictionary<values=string, indices=int8, ordered=0>"
+    assert got.column("runtime").to_pylist()[2] == datetime.timedelta(hours=2)
+    assert str(got.schema.field("installed").type) == "timestamp[us, tz=Europe/Berlin]"
+    assert got.column("day").to_pylist()[5] == datetime.date(2024, 1, 6)
+    assert got.column("price").to_pylist()[:2] == [decimal.Decimal("1.25"), None]
+    expected = bh.calc(table)
+    assert got.column("status").to_pylist() == expected["status"].tolist() == ["ok"] * 4 + ["warning", "ok"]
+    np.testing.assert_allclose(got.column("MR [N*mm]").to_numpy(), expected["MR [N*mm]"].to_numpy(dtype=float),
+                               rtol=1e-12)
+    reread = pd.read_parquet(out)
+    assert reread[single.column_names].dtypes.to_dict() == pd.read_parquet(single_out).dtypes.to_dict()
