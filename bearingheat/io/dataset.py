@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import contextlib
 import glob
+import json
 import os
 import re
 import shutil
@@ -34,7 +35,7 @@ from bearingheat.errors import InputError
 from bearingheat.io.arrow import parquet_writer
 from bearingheat.io.pipeline import ROWS_PER_BLOCK, calc_block
 
-__all__ = ["dataset_files", "is_dataset", "check_dataset_target", "calc_dataset", "dask_client", "local_cluster",
+__all__ = ["dataset_files", "fleet_schema", "is_dataset", "check_dataset_target", "calc_dataset", "dask_client", "local_cluster",
            "dataset_columns", "read_dataset_columns", "WORKER_MMAP_THRESHOLD", "PIECE_BYTES"]
 
 
@@ -153,12 +154,41 @@ def _pieces(path: str) -> list[tuple[str, list[int]]]:
     return pieces
 
 
-def _read_piece(path: str, groups: list[int], names: list[str]) -> pa.Table:
+def fleet_schema(files: list[str]) -> pa.Schema:
+    """The columns of a fleet's files, in the first file's order, each in one type: a column Parquet holds
+    without a type in some file (the null type of a column all blank, or of text columns of a file without rows)
+    takes the type the other files give it."""
+    schemas = [parquet.read_schema(path) for path in files]
+    fields = []
+    for field in schemas[0]:
+        typed = [kind for kind in (schema.field(field.name).type for schema in schemas) if not pa.types.is_null(kind)]
+        fields.append(field.with_type(typed[0]) if typed else field)
+    return pa.schema(fields, metadata=schemas[0].metadata)
+
+
+def _without_pandas_columns(metadata: dict | None, names: set[str]) -> dict | None:
+    """Schema metadata without pandas' description of the columns ``names`` (their type was changed: pandas
+    would rebuild them in the type the file held)."""
+    if not metadata or b"pandas" not in metadata or not names:
+        return metadata
+    described = json.loads(metadata[b"pandas"])
+    described["columns"] = [c for c in described.get("columns", []) if c.get("field_name") not in names]
+    return {**metadata, b"pandas": json.dumps(described).encode()}
+
+
+def _read_piece(path: str, groups: list[int], schema: pa.Schema) -> pa.Table:
     """The rows of the row groups ``groups`` of a Parquet file (its columns without rows when there are none),
-    its columns in the order ``names`` (the first file's: the files of a fleet may order them otherwise)."""
+    with the fleet's columns of ``schema``, in their order and their types."""
     source = parquet.ParquetFile(path)
     table = source.read_row_groups(groups) if groups else source.schema_arrow.empty_table()
-    return table.select(names)
+    table = table.select(schema.names)
+    changed = {field.name for field, have in zip(schema, table.schema) if field.type != have.type}
+    if not changed:
+        return table
+    columns = [table.column(f.name).cast(f.type) if f.name in changed else table.column(f.name) for f in schema]
+    fields = [f.with_metadata(table.schema.field(f.name).metadata) for f in schema]
+    return pa.Table.from_arrays(columns, schema=pa.schema(fields, metadata=_without_pandas_columns(
+        table.schema.metadata, changed)))
 
 
 def _results_schema(source: pa.Table, options: dict, layout: dict) -> pa.Schema:
@@ -167,12 +197,12 @@ def _results_schema(source: pa.Table, options: dict, layout: dict) -> pa.Schema:
     return calc_block(source.to_pandas(), source, options, layout=layout).schema
 
 
-def _calc_piece(path: str, groups: list[int], names: list[str], part: str, schema: pa.Schema, layout: dict,
+def _calc_piece(path: str, groups: list[int], columns: pa.Schema, part: str, schema: pa.Schema, layout: dict,
                 options: dict) -> int:
     """calc of one piece of a Parquet file, a block of :data:`ROWS_PER_BLOCK` rows at a time as the single-file
-    path computes (:func:`bearingheat.io.pipeline.calc_block`), written to the part file ``part`` in ``schema``;
-    returns the rows written."""
-    table = _read_piece(path, groups, names)
+    path computes (:func:`bearingheat.io.pipeline.calc_block`), its input ``columns`` those of the fleet
+    (:func:`fleet_schema`), written to the part file ``part`` in ``schema``; returns the rows written."""
+    table = _read_piece(path, groups, columns)
     with parquet_writer(part, schema) as writer:
         for start in range(0, max(table.num_rows, 1), ROWS_PER_BLOCK):
             source = table.slice(start, ROWS_PER_BLOCK)
@@ -193,14 +223,14 @@ def calc_dataset(files: list[str], target, *, overwrite: bool = False, **options
 
     _check_same_columns(files)
     target = check_dataset_target(target, files, force=overwrite)
-    names = parquet.read_schema(files[0]).names
-    layout = result_layout(names)
-    schema = _results_schema(_read_piece(files[0], [], names), options, layout)
+    columns = fleet_schema(files)
+    layout = result_layout(columns.names)
+    schema = _results_schema(columns.empty_table(), options, layout)
     pieces = [piece for path in files for piece in _pieces(path)]
     # written beside the target first: an earlier dataset is replaced only once every part is written
     staging = Path(tempfile.mkdtemp(prefix=f".{target.name}.bearingheat-", suffix=".tmp", dir=target.parent))
     try:
-        tasks = [dask.delayed(_calc_piece, pure=False)(path, groups, names, str(staging / f"part.{i}.parquet"),
+        tasks = [dask.delayed(_calc_piece, pure=False)(path, groups, columns, str(staging / f"part.{i}.parquet"),
                                                       schema, layout, options)
                  for i, (path, groups) in enumerate(pieces)]
         dask.compute(*tasks)

@@ -7,12 +7,16 @@ from pathlib import Path
 
 import numpy as np
 import pandas as pd
+import pyarrow as pa
 import pyarrow.parquet as parquet
 import pytest
 
 import bearingheat as bh
 from bearingheat.cli import main
+from bearingheat.io.dataset import calc_dataset, dataset_files
+from bearingheat.io.pipeline import calc_file
 
+dask = pytest.importorskip("dask")
 pytest.importorskip("dask.dataframe")
 pytest.importorskip("distributed")
 
@@ -118,6 +122,23 @@ def test_a_run_that_fails_keeps_the_earlier_dataset(tmp_path, capsys):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["bad", "fleet", "results"]
 
 
+def same_as_the_single_file_path(got: pa.Table, single: pa.Table) -> None:
+    """Every column of the single-file path's results is in the dataset, in the same type with the same values
+    (the dataset has every contract column besides)."""
+    assert got.num_rows == single.num_rows
+    for field in single.schema:
+        assert got.schema.field(field.name).type == field.type, field.name
+        assert got.column(field.name).to_pylist() == single.column(field.name).to_pylist(), field.name
+
+
+def calc_fleet(folder: Path, out: Path, **options) -> pa.Table:
+    """calc_dataset of the Parquet files in ``folder`` on Dask's single-threaded scheduler (the parts are the
+    ones a cluster writes: the same tasks); the dataset as one Arrow table."""
+    with dask.config.set(scheduler="sync"):
+        calc_dataset(dataset_files(str(folder)), out, **options)
+    return parquet.read_table(out)
+
+
 def typed_demo() -> pd.DataFrame:
     """The demo in pandas' nullable types (``convert_dtypes``), with a column of every other kind a Parquet file
     holds besides: nullable whole numbers, logical values, a category, durations, times with a time zone, dates
@@ -147,9 +168,7 @@ def test_every_column_type_comes_back_as_the_single_file_path_writes_it(tmp_path
     assert main(["calc", str(tmp_path / "whole.parquet"), "-o", str(single_out), "-q"]) == 0
     assert main(["calc", str(tmp_path / "fleet"), "--dask", "--workers", "1", "-o", str(out), "-q"]) == 0
     single, got = parquet.read_table(single_out), parquet.read_table(out)
-    for field in single.schema:
-        assert got.schema.field(field.name).type == field.type, field.name
-        assert got.column(field.name).to_pylist() == single.column(field.name).to_pylist(), field.name
+    same_as_the_single_file_path(got, single)
     assert got.column("serial").to_pylist() == [1, None, 3, 4, 5, 6]
     assert got.column("checked").to_pylist() == [True, None, False, True, False, True]
     assert str(got.schema.field("grade").type) == "dictionary<values=string, indices=int8, ordered=0>"
@@ -163,3 +182,27 @@ def test_every_column_type_comes_back_as_the_single_file_path_writes_it(tmp_path
                                rtol=1e-12)
     reread = pd.read_parquet(out)
     assert reread[single.column_names].dtypes.to_dict() == pd.read_parquet(single_out).dtypes.to_dict()
+
+
+def test_a_first_file_without_rows_or_without_types_takes_the_types_of_the_others(tmp_path):
+    """The fleet took its column types from its first file: a file without rows written from text columns, or
+    one of blank rows only (Parquet's null type in every column), stopped the run. Now a column without a type in
+    some file takes the type the others give it; a file without rows gives an empty part."""
+    demo = pd.read_csv(DEMO)
+    blank = pd.DataFrame({column: [None, None] for column in demo.columns})
+    fleet = tmp_path / "fleet"
+    fleet.mkdir()
+    demo.iloc[:0].astype(object).to_parquet(fleet / "0_empty.parquet", index=False)
+    blank.to_parquet(fleet / "1_blank.parquet", index=False)
+    demo.iloc[:3].to_parquet(fleet / "2.parquet", index=False)
+    demo.iloc[3:].to_parquet(fleet / "3.parquet", index=False)
+    assert str(parquet.read_schema(fleet / "0_empty.parquet").field("d [mm]").type) == "null"
+    got = calc_fleet(fleet, tmp_path / "out")
+    parts = sorted((tmp_path / "out").glob("*.parquet"))
+    assert [parquet.read_metadata(p).num_rows for p in parts] == [0, 2, 3, 3]
+    assert parquet.read_schema(parts[0]) == parquet.read_schema(parts[3])
+    tables = [parquet.read_table(fleet / name) for name in ("1_blank.parquet", "2.parquet", "3.parquet")]
+    parquet.write_table(pa.concat_tables([tables[0].cast(tables[1].schema), *tables[1:]]), tmp_path / "whole.parquet")
+    same_as_the_single_file_path(got, calc_file(tmp_path / "whole.parquet"))
+    assert got.schema.field("d [mm]").type == pa.int64() and got.column("d [mm]").to_pylist()[:3] == [None, None, 40]
+    assert got.column("status").to_pylist()[:2] == ["error", "error"]
