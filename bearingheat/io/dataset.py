@@ -35,7 +35,7 @@ from bearingheat.errors import InputError
 from bearingheat.io.arrow import parquet_writer
 from bearingheat.io.pipeline import ROWS_PER_BLOCK, calc_block
 
-__all__ = ["dataset_files", "fleet_schema", "is_dataset", "check_dataset_target", "calc_dataset", "dask_client", "local_cluster",
+__all__ = ["dataset_files", "fleet_schema", "common_type", "is_dataset", "check_dataset_target", "calc_dataset", "dask_client", "local_cluster",
            "dataset_columns", "read_dataset_columns", "WORKER_MMAP_THRESHOLD", "PIECE_BYTES"]
 
 
@@ -155,15 +155,85 @@ def _pieces(path: str) -> list[tuple[str, list[int]]]:
 
 
 def fleet_schema(files: list[str]) -> pa.Schema:
-    """The columns of a fleet's files, in the first file's order, each in one type: a column Parquet holds
-    without a type in some file (the null type of a column all blank, or of text columns of a file without rows)
-    takes the type the other files give it."""
+    """The columns of a fleet's files, in the first file's order, each in one type that holds every file's values
+    unchanged (:func:`common_type`); :class:`InputError` naming the file, the column and both types where there is
+    none. A column Parquet holds without a type in some file (the null type of a column all blank, or of text
+    columns of a file without rows) takes the type the other files give it."""
     schemas = [parquet.read_schema(path) for path in files]
     fields = []
     for field in schemas[0]:
-        typed = [kind for kind in (schema.field(field.name).type for schema in schemas) if not pa.types.is_null(kind)]
-        fields.append(field.with_type(typed[0]) if typed else field)
+        kind, origin = field.type, files[0]
+        for path, schema in zip(files, schemas):
+            other = schema.field(field.name).type
+            if pa.types.is_null(other) or other == kind:
+                continue
+            if pa.types.is_null(kind):
+                kind, origin = other, path
+                continue
+            common = common_type(kind, other)
+            if common is None:
+                raise InputError(f"{path}: column {field.name!r} holds {_described(other)} where {origin} holds "
+                                 f"{_described(kind)}; every file of a fleet needs each column in one type")
+            kind = common
+        fields.append(field.with_type(kind))
     return pa.schema(fields, metadata=schemas[0].metadata)
+
+
+def _text(kind: pa.DataType) -> bool:
+    return pa.types.is_string(kind) or pa.types.is_large_string(kind) or (
+        pa.types.is_dictionary(kind) and _text(kind.value_type))
+
+
+def _holds(source: pa.DataType, target: pa.DataType) -> bool:
+    """True when every value of ``source`` is a value of ``target`` (whole numbers as floats up to 2**53: the
+    cast of each piece refuses a larger one)."""
+    types = pa.types
+    if source == target:
+        return True
+    if types.is_integer(source):
+        if types.is_floating(target) or types.is_decimal(target):
+            return True
+        if types.is_signed_integer(target):
+            return target.bit_width >= source.bit_width + types.is_unsigned_integer(source)
+        return types.is_unsigned_integer(target) and types.is_unsigned_integer(source) and \
+            target.bit_width >= source.bit_width
+    if types.is_floating(source):
+        return types.is_floating(target) and target.bit_width >= source.bit_width
+    if types.is_decimal(source):
+        return types.is_decimal(target)
+    if types.is_timestamp(source):
+        return types.is_timestamp(target) and source.tz == target.tz
+    if types.is_duration(source):
+        return types.is_duration(target)
+    return False
+
+
+def common_type(a: pa.DataType, b: pa.DataType) -> pa.DataType | None:
+    """The Arrow type that holds the values of the types ``a`` and ``b`` unchanged (whole numbers and decimals as
+    numbers, text of any kind as text, times at the finer unit), or None when there is none (numbers and text,
+    logical values and numbers, times with and without a time zone ...)."""
+    if a == b:
+        return a
+    if _text(a) and _text(b) and not (pa.types.is_dictionary(a) and pa.types.is_dictionary(b)):
+        return pa.large_string()
+    try:
+        common = pa.unify_schemas([pa.schema([pa.field("x", a)]), pa.schema([pa.field("x", b)])],
+                                  promote_options="permissive").field("x").type
+    except (pa.ArrowTypeError, pa.ArrowInvalid, pa.ArrowNotImplementedError):
+        return None
+    if pa.types.is_dictionary(common):
+        return common if a.value_type == b.value_type else None
+    return common if _holds(a, common) and _holds(b, common) else None
+
+
+def _described(kind: pa.DataType) -> str:
+    """An Arrow type in words, with its name: 'text (large_string)', 'whole numbers (int64)'."""
+    types = pa.types
+    words = next((word for test, word in (
+        (_text, "text"), (types.is_integer, "whole numbers"), (types.is_floating, "numbers"),
+        (types.is_decimal, "decimal numbers"), (types.is_boolean, "logical values"), (types.is_timestamp, "times"),
+        (types.is_date, "dates"), (types.is_duration, "durations")) if test(kind)), None)
+    return f"{words} ({kind})" if words else str(kind)
 
 
 def _without_pandas_columns(metadata: dict | None, names: set[str]) -> dict | None:
@@ -185,7 +255,16 @@ def _read_piece(path: str, groups: list[int], schema: pa.Schema) -> pa.Table:
     changed = {field.name for field, have in zip(schema, table.schema) if field.type != have.type}
     if not changed:
         return table
-    columns = [table.column(f.name).cast(f.type) if f.name in changed else table.column(f.name) for f in schema]
+    columns = []
+    for field in schema:
+        column = table.column(field.name)
+        if field.name in changed:
+            try:
+                column = column.cast(field.type)
+            except (pa.ArrowInvalid, pa.ArrowNotImplementedError) as exc:
+                raise InputError(f"{path}: column {field.name!r}: its {_described(column.type)} cannot all be held as "
+                                 f"{_described(field.type)}, the type of the fleet's other files ({exc})") from exc
+        columns.append(column)
     fields = [f.with_metadata(table.schema.field(f.name).metadata) for f in schema]
     return pa.Table.from_arrays(columns, schema=pa.schema(fields, metadata=_without_pandas_columns(
         table.schema.metadata, changed)))

@@ -206,3 +206,55 @@ def test_a_first_file_without_rows_or_without_types_takes_the_types_of_the_other
     same_as_the_single_file_path(got, calc_file(tmp_path / "whole.parquet"))
     assert got.schema.field("d [mm]").type == pa.int64() and got.column("d [mm]").to_pylist()[:3] == [None, None, 40]
     assert got.column("status").to_pylist()[:2] == ["error", "error"]
+
+
+def test_whole_numbers_in_one_file_and_decimals_in_another_are_one_number_column(tmp_path):
+    """Column types that differ between the files stopped the run with an Arrow error (int64 loads in one file,
+    float64 in the next). Now a column takes the type that holds every file's values (whole numbers and decimals:
+    float64) and the results are those of the same rows in one file."""
+    demo = pd.read_csv(DEMO)
+    first, second = demo.iloc[:3].copy(), demo.iloc[3:].copy()
+    first["Fa [kN]"] = [1, 0, 2]
+    second["Fa [kN]"] = [0.5, 2.0, 0.0]
+    fleet = tmp_path / "fleet"
+    fleet.mkdir()
+    first.to_parquet(fleet / "a.parquet", index=False)
+    second.to_parquet(fleet / "b.parquet", index=False)
+    assert parquet.read_schema(fleet / "a.parquet").field("Fa [kN]").type == pa.int64()
+    got = calc_fleet(fleet, tmp_path / "out")
+    assert got.schema.field("Fa [kN]").type == pa.float64()
+    assert got.column("Fa [kN]").to_pylist() == [1.0, 0.0, 2.0, 0.5, 2.0, 0.0]
+    whole = pd.concat([first, second], ignore_index=True)
+    whole.to_parquet(tmp_path / "whole.parquet", index=False)
+    same_as_the_single_file_path(got, calc_file(tmp_path / "whole.parquet"))
+    np.testing.assert_allclose(got.column("MR [N*mm]").to_numpy(), bh.calc(whole)["MR [N*mm]"].to_numpy(),
+                               rtol=1e-12)
+
+
+def test_a_column_of_numbers_in_one_file_and_of_text_in_another_is_refused_before_any_work(tmp_path, capsys):
+    demo = pd.read_csv(DEMO)
+    fleet = tmp_path / "fleet"
+    fleet.mkdir()
+    demo.iloc[:3].to_parquet(fleet / "a.parquet", index=False)
+    demo.iloc[3:].assign(id=[101, 102, 103]).to_parquet(fleet / "b.parquet", index=False)
+    out = tmp_path / "out"
+    assert main(["calc", str(fleet), "--dask", "--workers", "1", "-o", str(out), "-q"]) == 2
+    assert capsys.readouterr().err == (
+        f"bearingheat calc: error: {fleet / 'b.parquet'}: column 'id' holds whole numbers (int64) where "
+        f"{fleet / 'a.parquet'} holds text (large_string); every file of a fleet needs each column in one type\n")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["fleet"]
+
+
+def test_a_whole_number_a_float_cannot_hold_is_refused_naming_the_file_and_column(tmp_path):
+    demo = pd.read_csv(DEMO)
+    fleet = tmp_path / "fleet"
+    fleet.mkdir()
+    demo.iloc[:3].assign(serial=[1.5, 2.5, 3.5]).to_parquet(fleet / "a.parquet", index=False)
+    demo.iloc[3:].assign(serial=[2**53 + 1, 2, 3]).to_parquet(fleet / "b.parquet", index=False)
+    with pytest.raises(bh.InputError) as info:
+        calc_fleet(fleet, tmp_path / "out")
+    assert str(info.value) == (
+        f"{fleet / 'b.parquet'}: column 'serial': its whole numbers (int64) cannot all be held as numbers (double), "
+        "the type of the fleet's other files (Integer value 9007199254740993 not in range: -9007199254740992 to "
+        "9007199254740992)")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["fleet"]
