@@ -16,6 +16,7 @@ without parsing headers. Files are written atomically
 """
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import pandas as pd
@@ -29,7 +30,7 @@ from bearingheat.io.csv_reader import refuse_duplicate_columns
 from bearingheat.io.files import atomic_write
 
 __all__ = ["ARROW_SUFFIXES", "read_arrow", "read_arrow_table", "write_arrow", "arrow_table", "arrow_column",
-           "column_units", "unit_of", "parquet_writer"]
+           "column_units", "unit_of", "parquet_writer", "without_index"]
 
 def _text_fields(schema: pa.Schema) -> list[str]:
     return [field.name for field in schema if pa.types.is_string(field.type) or pa.types.is_large_string(field.type)]
@@ -74,8 +75,38 @@ def unit_of(header: str) -> str:
     return unit or ""
 
 
+def without_index(table: pa.Table, offset: int = 0) -> pa.Table:
+    """``table`` with the index pandas stored in it (``to_parquet`` keeps a frame's index) made plain columns:
+    a named index (``df.set_index('id')``) comes back as columns, first, as ``reset_index()`` puts them; an
+    unnamed one (the row labels pandas keeps, which ``to_csv(index=False)`` leaves out) is dropped. pandas'
+    description of the columns is kept (their dtypes), without the index. ``offset`` is the position of the
+    table's first row in its file (a named index of row numbers is stored as its start and step only)."""
+    described = table.schema.pandas_metadata
+    if not described or not described.get("index_columns"):
+        return table
+    entries = {entry.get("field_name"): entry for entry in described.get("columns", [])}
+    stored = [c for c in described["index_columns"] if isinstance(c, str) and c in table.column_names]
+    named = [c for c in stored if entries.get(c, {}).get("name") is not None]
+    ranges = [r for r in described["index_columns"] if isinstance(r, dict) and r.get("kind") == "range"
+              and r.get("name") is not None and str(r["name"]) not in table.column_names]
+    columns = [table.column(c) for c in named]
+    names = list(named)
+    for index in ranges:  # a named range of row numbers: its values, from the table's place in the file
+        first = index["start"] + offset * index["step"]
+        columns.append(pa.array(range(first, first + table.num_rows * index["step"], index["step"]), pa.int64()))
+        names.append(str(index["name"]))
+    others = [c for c in table.column_names if c not in stored]
+    described = {**described, "index_columns": [],
+                 "columns": [e for e in described.get("columns", []) if e.get("field_name") in names + others]}
+    fields = [pa.field(n, c.type) for n, c in zip(names[len(named):], columns[len(named):])]
+    schema = pa.schema([*(table.schema.field(c) for c in named), *fields, *(table.schema.field(c) for c in others)],
+                       metadata={**(table.schema.metadata or {}), b"pandas": json.dumps(described).encode()})
+    return pa.Table.from_arrays([*columns, *(table.column(c) for c in others)], schema=schema)
+
+
 def read_arrow_table(path) -> pa.Table:
-    """The table of a Parquet or Arrow/Feather file as Arrow; :class:`InputError` for a damaged or empty one."""
+    """The table of a Parquet or Arrow/Feather file as Arrow (an index pandas stored in it as columns,
+    :func:`without_index`); :class:`InputError` for a damaged or empty one."""
     path = Path(path)
     read, _ = _format(path)
     try:
@@ -85,7 +116,7 @@ def read_arrow_table(path) -> pa.Table:
         raise InputError(f"{path}: not a readable {path.suffix} table ({exc})") from exc
     if table.num_rows == 0:
         raise InputError(f"{path}: no rows")
-    return table
+    return without_index(table)
 
 
 def _column_names(path: Path) -> list[str]:

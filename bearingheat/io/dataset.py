@@ -32,7 +32,7 @@ import pyarrow.parquet as parquet
 
 from bearingheat.calc.distributed import result_layout
 from bearingheat.errors import InputError
-from bearingheat.io.arrow import parquet_writer
+from bearingheat.io.arrow import parquet_writer, without_index
 from bearingheat.io.pipeline import ROWS_PER_BLOCK, calc_block
 
 __all__ = ["dataset_files", "fleet_schema", "common_type", "is_dataset", "check_dataset_target", "calc_dataset", "dask_client", "local_cluster",
@@ -159,7 +159,8 @@ def fleet_schema(files: list[str]) -> pa.Schema:
     unchanged (:func:`common_type`); :class:`InputError` naming the file, the column and both types where there is
     none. A column Parquet holds without a type in some file (the null type of a column all blank, or of text
     columns of a file without rows) takes the type the other files give it."""
-    schemas = [parquet.read_schema(path) for path in files]
+    schemas = [_file_schema(path) for path in files]
+    _check_same_columns(files, schemas)
     fields = []
     for field in schemas[0]:
         kind, origin = field.type, files[0]
@@ -177,6 +178,12 @@ def fleet_schema(files: list[str]) -> pa.Schema:
             kind = common
         fields.append(field.with_type(kind))
     return pa.schema(fields, metadata=schemas[0].metadata)
+
+
+def _file_schema(path: str) -> pa.Schema:
+    """The columns of a Parquet file as calc reads them (an index pandas stored in it as columns,
+    :func:`bearingheat.io.arrow.without_index`), from its footer."""
+    return without_index(parquet.read_schema(path).empty_table()).schema
 
 
 def _text(kind: pa.DataType) -> bool:
@@ -248,9 +255,14 @@ def _without_pandas_columns(metadata: dict | None, names: set[str]) -> dict | No
 
 def _read_piece(path: str, groups: list[int], schema: pa.Schema) -> pa.Table:
     """The rows of the row groups ``groups`` of a Parquet file (its columns without rows when there are none),
-    with the fleet's columns of ``schema``, in their order and their types."""
+    with the fleet's columns of ``schema``, in their order and their types (an index pandas stored in the file
+    as columns, :func:`bearingheat.io.arrow.without_index`)."""
     source = parquet.ParquetFile(path)
-    table = source.read_row_groups(groups) if groups else source.schema_arrow.empty_table()
+    if groups:
+        offset = sum(source.metadata.row_group(group).num_rows for group in range(groups[0]))
+        table = without_index(source.read_row_groups(groups), offset)
+    else:
+        table = without_index(source.schema_arrow.empty_table())
     table = table.select(schema.names)
     changed = {field.name for field, have in zip(schema, table.schema) if field.type != have.type}
     if not changed:
@@ -300,7 +312,6 @@ def calc_dataset(files: list[str], target, *, overwrite: bool = False, **options
     """
     import dask
 
-    _check_same_columns(files)
     target = check_dataset_target(target, files, force=overwrite)
     columns = fleet_schema(files)
     layout = result_layout(columns.names)
@@ -322,12 +333,12 @@ def calc_dataset(files: list[str], target, *, overwrite: bool = False, **options
     return target
 
 
-def _check_same_columns(files: list[str]) -> None:
-    """Every file of a fleet has the columns of the first (Dask computes each with the first's layout):
-    :class:`InputError` naming the first file that differs and how."""
-    first = parquet.read_schema(files[0]).names
-    for path in files[1:]:
-        names = parquet.read_schema(path).names
+def _check_same_columns(files: list[str], schemas: list[pa.Schema]) -> None:
+    """Every file of a fleet has the columns of the first (in any order): :class:`InputError` naming the first
+    file that differs and how."""
+    first = schemas[0].names
+    for path, schema in zip(files[1:], schemas[1:]):
+        names = schema.names
         if set(names) != set(first):
             lacks = [n for n in first if n not in names]
             extra = [n for n in names if n not in first]

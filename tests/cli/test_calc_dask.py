@@ -258,3 +258,21 @@ def test_a_whole_number_a_float_cannot_hold_is_refused_naming_the_file_and_colum
         "the type of the fleet's other files (Integer value 9007199254740993 not in range: -9007199254740992 to "
         "9007199254740992)")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["fleet"]
+
+
+def test_ids_stored_as_pandas_index_come_back_as_the_id_column(tmp_path):
+    """A file written by ``df.set_index('id').to_parquet()`` holds the ids as pandas' index: the fleet dropped
+    them, and a file with an unnamed index (row labels after a filter) was refused as having a column
+    '__index_level_0__' besides. Now a named index comes back as its column and an unnamed one is left out, as
+    on the single-file path."""
+    demo = pd.read_csv(DEMO)
+    fleet = tmp_path / "fleet"
+    fleet.mkdir()
+    demo.iloc[:3].set_index("id").to_parquet(fleet / "a.parquet")
+    demo.iloc[3:].set_axis([13, 17, 21]).to_parquet(fleet / "b.parquet")  # row labels: pandas stores them
+    assert "__index_level_0__" in parquet.read_schema(fleet / "b.parquet").names
+    got = calc_fleet(fleet, tmp_path / "out")
+    assert got.column_names[:2] == ["id", "designation"] and "__index_level_0__" not in got.column_names
+    assert got.column("id").to_pylist() == demo["id"].tolist()
+    demo.to_parquet(tmp_path / "whole.parquet", index=False)
+    same_as_the_single_file_path(got, calc_file(tmp_path / "whole.parquet"))

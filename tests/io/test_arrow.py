@@ -84,3 +84,25 @@ def test_a_column_named_twice_is_named(tmp_path, suffix):
         read_arrow(path)
     assert str(info.value) == (f"{path}: column 'Fr [kN]' appears twice (columns {position + 1} and {position + 2}); "
                                "keep one")
+
+
+def test_an_index_pandas_stored_in_the_file_comes_back_as_columns(tmp_path, capsys):
+    """``df.set_index('id').to_parquet()`` stores the ids as pandas' index: calc dropped them (read_arrow gave
+    them as the index, calc's results have none). A named index now comes back as columns, first, as
+    ``reset_index()`` puts them (a named range of row numbers too); an unnamed one (the row labels pandas keeps)
+    is dropped, as ``to_csv(index=False)`` drops it."""
+    demo = pd.read_csv(DEMO)
+    demo.set_index("id").to_parquet(tmp_path / "named.parquet")
+    back = read_arrow(tmp_path / "named.parquet")
+    assert list(back.columns) == list(demo.columns) and back["id"].tolist() == demo["id"].tolist()
+    assert list(back.index) == list(range(len(demo)))
+    assert main(["calc", str(tmp_path / "named.parquet"), "-o", str(tmp_path / "out.csv"), "-q"]) == 0
+    assert pd.read_csv(tmp_path / "out.csv")["id"].tolist() == demo["id"].tolist()
+    assert calc_csv(tmp_path / "named.parquet")["id"].tolist() == demo["id"].tolist()
+    demo.set_index(pd.Index([5, 3, 1, 0, 2, 4])).to_parquet(tmp_path / "unnamed.parquet")
+    assert list(read_arrow(tmp_path / "unnamed.parquet").columns) == list(demo.columns)
+    demo.set_index(["id", "designation"]).to_parquet(tmp_path / "two.parquet")
+    assert list(read_arrow(tmp_path / "two.parquet").columns) == list(demo.columns)
+    demo.rename_axis("row").to_parquet(tmp_path / "rows.parquet")
+    rows = read_arrow(tmp_path / "rows.parquet")
+    assert list(rows.columns) == ["row", *demo.columns] and rows["row"].tolist() == list(range(len(demo)))
