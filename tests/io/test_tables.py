@@ -352,3 +352,20 @@ def test_a_separator_at_the_end_of_every_line_adds_no_column(tmp_path):
                     "A,6208,oil_bath,1480,3.2,0.9,40,\nB,6208,oil_bath,1480,5,0.9,40,\n")
     assert list(read_csv(path).columns) == ["id", "designation", "lubrication", "n [rpm]", "Fr [kN]", "Fa [kN]",
                                             "nu [mm^2/s]"]
+
+
+@pytest.mark.parametrize("cell", ["TRUE", "0x10"])
+def test_a_number_column_with_a_logical_word_or_a_hexadecimal_number_is_read_as_pandas_reads_it(tmp_path, cell):
+    """pyarrow's reader (the fast path) read a column of TRUE, 1, 0 as logical values (every row in error, the
+    output showing True) and 0x10 as 16 (status ok), where pandas' parser reads 1 and 0 as numbers and neither
+    TRUE nor 0x10 as one. Such files now go to pandas' parser: only the row of that cell is in error."""
+    path = tmp_path / "in.csv"
+    path.write_text("id,designation,d [mm],D [mm],C0 [kN],lubrication,n [rpm],Fr [kN],nu [mm^2/s]\n"
+                    f"a,6208,40,80,18,oil_bath,1480,{cell},40\nb,6208,40,80,18,oil_bath,1480,1,40\n"
+                    "c,6208,40,80,18,oil_bath,1480,0,40\n")
+    result = calc_csv(path)
+    assert result["Fr [kN]"].tolist() == [cell, "1", "0"]
+    assert result["status"].tolist() == ["error", "ok", "ok"]
+    assert result["message"].iloc[0] == f"row 2 (id \"a\"): '{cell}' is not a number for Fr [kN]"
+    assert main(["calc", str(path), "-o", str(tmp_path / "out.csv"), "-q"]) == 1
+    assert (tmp_path / "out.csv").read_text().splitlines()[1].startswith(f"a,6208,40,80,18,oil_bath,1480,{cell},40,")
