@@ -4,6 +4,7 @@ from __future__ import annotations
 import re
 
 import pandas as pd
+import pyarrow as pa
 import pytest
 from excel_helpers import EXAMPLE_CSV, csv_result
 
@@ -369,3 +370,28 @@ def test_a_number_column_with_a_logical_word_or_a_hexadecimal_number_is_read_as_
     assert result["message"].iloc[0] == f"row 2 (id \"a\"): '{cell}' is not a number for Fr [kN]"
     assert main(["calc", str(path), "-o", str(tmp_path / "out.csv"), "-q"]) == 1
     assert (tmp_path / "out.csv").read_text().splitlines()[1].startswith(f"a,6208,40,80,18,oil_bath,1480,{cell},40,")
+
+
+def test_times_dates_and_durations_are_written_as_to_csv_writes_them(tmp_path):
+    """The CSV writer wrote a duration of 1 h as 3600000000 (its microseconds), dates as
+    '2024-01-01 00:00:00.000000' and a time zone as '+0100'. They are now pandas' to_csv text, byte for byte."""
+    import datetime
+
+    frame = pd.DataFrame({
+        "id": ["a", "b", "c"],
+        "day": pd.to_datetime(["2024-01-01", None, "2024-03-01"]),
+        "at": pd.to_datetime(["2024-01-01 00:00:00", None, "2024-03-01 12:30:00"]),
+        "at_ms": pd.to_datetime(["2024-01-01 00:00:00.500", None, "2024-03-01 12:30:00.000"]),
+        "installed": pd.date_range("2024-01-01", periods=3, tz="Europe/Berlin"),
+        "runtime": pd.to_timedelta([3600, None, 90], unit="s"),
+        "days": pd.to_timedelta([1, 2, None], unit="D"),
+        "date": [datetime.date(2024, 1, 1), None, datetime.date(2024, 2, 29)],
+        "time": [datetime.time(12, 30), None, datetime.time(1, 2, 3, 4)],
+    })
+    write_csv(frame, tmp_path / "out.csv")
+    text = (tmp_path / "out.csv").read_text()
+    assert text == frame.to_csv(index=False)
+    assert text.splitlines()[1] == ("a,2024-01-01,2024-01-01 00:00:00,2024-01-01 00:00:00.500,2024-01-01 00:00:00+01:00,"
+                                    "0 days 01:00:00,1 days,2024-01-01,12:30:00")
+    write_csv(pa.Table.from_pandas(frame, preserve_index=False), tmp_path / "arrow.csv")
+    assert (tmp_path / "arrow.csv").read_text() == text
