@@ -150,7 +150,7 @@ def calc_block(block: pd.DataFrame, source: pa.Table | None, options: dict, *, m
     else:
         result = calc_partition(usable, calc, layout, {**options, "decimal": mark})
     for position, header, values in extras:
-        result.insert(position, header, values.to_numpy())
+        result.insert(position, header, values.array)
     cite_rows(result, lines)
     return _block_table(result, block, source)
 

@@ -276,3 +276,19 @@ def test_ids_stored_as_pandas_index_come_back_as_the_id_column(tmp_path):
     assert got.column("id").to_pylist() == demo["id"].tolist()
     demo.to_parquet(tmp_path / "whole.parquet", index=False)
     same_as_the_single_file_path(got, calc_file(tmp_path / "whole.parquet"))
+
+
+def test_a_header_calc_cannot_read_passes_through_the_fleet(tmp_path):
+    """'remark [see note]]' passed through 'calc FILE -o OUT.csv' but stopped --dask (calc refused the header in
+    every partition). The fleet now sets such columns aside and puts them back, as the single-file path does."""
+    demo = pd.read_csv(DEMO)
+    demo.insert(3, "remark [see note]]", [f"r{i}" for i in range(len(demo))])
+    fleet = tmp_path / "fleet"
+    fleet.mkdir()
+    demo.iloc[:4].to_parquet(fleet / "a.parquet", index=False)
+    demo.iloc[4:].to_parquet(fleet / "b.parquet", index=False)
+    got = calc_fleet(fleet, tmp_path / "out")
+    assert got.column_names.index("remark [see note]]") == 3
+    assert got.column("remark [see note]]").to_pylist() == ["r0", "r1", "r2", "r3", "r4", "r5"]
+    demo.to_parquet(tmp_path / "whole.parquet", index=False)
+    same_as_the_single_file_path(got, calc_file(tmp_path / "whole.parquet"))

@@ -395,3 +395,23 @@ def test_times_dates_and_durations_are_written_as_to_csv_writes_them(tmp_path):
                                     "0 days 01:00:00,1 days,2024-01-01,12:30:00")
     write_csv(pa.Table.from_pandas(frame, preserve_index=False), tmp_path / "arrow.csv")
     assert (tmp_path / "arrow.csv").read_text() == text
+
+
+@pytest.mark.parametrize("source_suffix, output_suffix", [(".csv", ".csv"), (".csv", ".xlsx"), (".parquet", ".csv"),
+                                                          (".parquet", ".xlsx"), (".parquet", ".parquet")])
+def test_a_header_calc_cannot_read_passes_through_every_output(tmp_path, source_suffix, output_suffix):
+    """A column whose brackets are no unit ('remark [see note]]') passed through to a CSV but was refused with
+    -o OUT.xlsx from a Parquet file (and by --dask): every output now passes it through, in its place."""
+    table = pd.read_csv(EXAMPLE_CSV)
+    table.insert(3, "remark [see note]]", [f"r{i}" for i in range(len(table))])
+    source = tmp_path / f"in{source_suffix}"
+    table.to_csv(source, index=False) if source_suffix == ".csv" else table.to_parquet(source, index=False)
+    out = tmp_path / f"out{output_suffix}"
+    assert main(["calc", str(source), "-o", str(out), "-q"]) == 0
+    if output_suffix == ".xlsx":  # a header row of names, a row of units below it
+        written = pd.read_excel(out, sheet_name="Results", skiprows=[1])
+    else:
+        written = pd.read_csv(out) if output_suffix == ".csv" else pd.read_parquet(out)
+    assert list(written.columns).index("remark [see note]]") == 3
+    assert written["remark [see note]]"].tolist() == ["r0", "r1", "r2", "r3", "r4", "r5"]
+    assert written["status"].tolist() == calc_csv(EXAMPLE_CSV)["status"].tolist()
