@@ -33,7 +33,7 @@ import pyarrow.parquet as parquet
 from bearingheat.calc.distributed import result_layout
 from bearingheat.errors import InputError
 from bearingheat.io.arrow import parquet_writer, without_index
-from bearingheat.io.pipeline import ROWS_PER_BLOCK, calc_block
+from bearingheat.io.pipeline import ROWS_PER_BLOCK, calc_block, load_options
 
 __all__ = ["dataset_files", "fleet_schema", "common_type", "is_dataset", "check_dataset_target", "calc_dataset", "dask_client", "local_cluster",
            "dataset_columns", "read_dataset_columns", "WORKER_MMAP_THRESHOLD", "PIECE_BYTES"]
@@ -314,14 +314,16 @@ def calc_dataset(files: list[str], target, *, overwrite: bool = False, **options
 
     target = check_dataset_target(target, files, force=overwrite)
     columns = fleet_schema(files)
+    options = load_options(options)  # the charts read here, once: a worker need not see the client's files
     layout = result_layout(columns.names)
     schema = _results_schema(columns.empty_table(), options, layout)
     pieces = [piece for path in files for piece in _pieces(path)]
     # written beside the target first: an earlier dataset is replaced only once every part is written
     staging = Path(tempfile.mkdtemp(prefix=f".{target.name}.bearingheat-", suffix=".tmp", dir=target.parent))
     try:
+        shared = dask.delayed(options, traverse=False)  # one key: sent to each worker once, not in every task
         tasks = [dask.delayed(_calc_piece, pure=False)(path, groups, columns, str(staging / f"part.{i}.parquet"),
-                                                      schema, layout, options)
+                                                      schema, layout, shared)
                  for i, (path, groups) in enumerate(pieces)]
         dask.compute(*tasks)
         target.mkdir(exist_ok=True)

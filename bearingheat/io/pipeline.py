@@ -33,7 +33,7 @@ from bearingheat.io.arrow import ARROW_SUFFIXES, arrow_column, read_arrow_table,
 from bearingheat.io.csv_reader import RowLines, read_source
 from bearingheat.io.tables import cite_rows, set_aside
 
-__all__ = ["ROWS_PER_BLOCK", "calc_file", "calc_block", "ordered_union"]
+__all__ = ["ROWS_PER_BLOCK", "calc_file", "calc_block", "load_options", "ordered_union"]
 
 #: rows calc computes at a time (5*10^4 rows of calc's working arrays take some 75 MB; 10^6 rows in blocks of
 #: 25 000 / 50 000 / 100 000 / 200 000 rows peaked at 0.70 / 0.75 / 0.84 / 0.96 GB in the same time)
@@ -108,9 +108,9 @@ def _concat(blocks: list[pa.Table]) -> pa.Table:
     return pa.concat_tables(tables)
 
 
-def _loaded(options: dict) -> dict:
+def load_options(options: dict) -> dict:
     """calc's options with the files it would read on every call read once (the f2 and VM charts, a coefficients
-    CSV)."""
+    CSV): the objects, not their paths."""
     options = dict(options)
     if isinstance(options.get("f2_chart"), str):
         options["f2_chart"] = F2Chart.from_csv(options["f2_chart"])
@@ -174,7 +174,7 @@ def calc_file(path, *, sep: str | None = None, decimal: str | None = None, progr
     """
     table, lines, mark = _read(path, sep, decimal)
     rows = table.num_rows if isinstance(table, pa.Table) else len(table)
-    options = _loaded(options)
+    options = load_options(options)
     blocks = []
     if progress is not None:
         progress.start(rows, "calc")

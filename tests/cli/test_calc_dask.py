@@ -292,3 +292,35 @@ def test_a_header_calc_cannot_read_passes_through_the_fleet(tmp_path):
     assert got.column("remark [see note]]").to_pylist() == ["r0", "r1", "r2", "r3", "r4", "r5"]
     demo.to_parquet(tmp_path / "whole.parquet", index=False)
     same_as_the_single_file_path(got, calc_file(tmp_path / "whole.parquet"))
+
+
+def test_the_charts_are_read_once_on_the_client_and_sent_to_the_workers(tmp_path, monkeypatch):
+    """--f2-chart and --vm-chart went to the workers as paths: a worker in another folder (or on another machine)
+    could not read them, and every partition read them again. They are now read once, before any work, and the
+    charts themselves go to the workers."""
+    from bearingheat.catalogue.f2chart import F2Chart
+
+    chart = tmp_path / "f2.csv"
+    chart.write_bytes((Path(__file__).resolve().parents[2] / "docs" / "f2_chart_example.csv").read_bytes())
+    reads = []
+    original = F2Chart.from_csv.__func__
+
+    def counted(cls, path):
+        reads.append(str(path))
+        return original(cls, path)
+
+    monkeypatch.setattr(F2Chart, "from_csv", classmethod(counted))
+    row = {"id": "NJ", "designation": "NJ206-E-XL", "d [mm]": 30, "D [mm]": 62, "B [mm]": 16, "C0 [kN]": 36,
+           "lubrication": "oil_bath", "Fa [kN]": 0.05, "nu40 [mm^2/s]": 68, "nu100 [mm^2/s]": 8.6,
+           "T_amb [degC]": 20, "T_bearing [degC]": 70}
+    table = pd.DataFrame([{**row, "n [rpm]": 100, "Fr [kN]": load} for load in (5.0, 4.0, 6.0, 5.5)])
+    fleet = tmp_path / "fleet"
+    fleet.mkdir()
+    for i in range(2):
+        table.iloc[2 * i:2 * i + 2].to_parquet(fleet / f"{i}.parquet", index=False)
+    got = calc_fleet(fleet, tmp_path / "out", f2_chart=str(chart))
+    assert reads == [str(chart)]
+    expected = bh.calc(table, f2_chart=str(chart))
+    assert (expected["M2 [N*mm]"] > 0).all() and expected["status"].tolist() == ["ok"] * 4
+    np.testing.assert_allclose(got.column("M2 [N*mm]").to_numpy(), expected["M2 [N*mm]"].to_numpy(), rtol=1e-12)
+    assert got.column("status").to_pylist() == ["ok"] * 4
