@@ -20,8 +20,9 @@ from bearingheat.errors import ExcelError, F2ChartError, InputError, VMChartErro
 # calc of a CSV or Parquet file starts 0.4 s sooner without them
 from bearingheat.cli.options import add_force, add_json, add_output, add_quiet
 from bearingheat.io.console import Progress, print_summary, print_table, summary_columns
-from bearingheat.io.dataset import (calc_dataset, check_dataset_target, dask_client, dataset_columns, dataset_files,
-                                   is_dataset, read_dataset_columns)
+from bearingheat.io.dataset import (calc_dataset, check_dataset_target, dask_client, dataset_columns,
+                                   read_dataset_columns)
+from bearingheat.io.fleet import dataset_files, is_dataset
 from bearingheat.io.arrow import ARROW_SUFFIXES
 from bearingheat.io.pipeline import calc_file
 from bearingheat.io.json import results_json

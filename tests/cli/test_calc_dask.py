@@ -13,7 +13,8 @@ import pytest
 
 import bearingheat as bh
 from bearingheat.cli import main
-from bearingheat.io.dataset import calc_dataset, dataset_files
+from bearingheat.io.dataset import calc_dataset
+from bearingheat.io.fleet import dataset_files
 from bearingheat.io.pipeline import calc_file
 
 dask = pytest.importorskip("dask")

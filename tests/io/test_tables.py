@@ -391,8 +391,8 @@ def test_times_dates_and_durations_are_written_as_to_csv_writes_them(tmp_path):
     write_csv(frame, tmp_path / "out.csv")
     text = (tmp_path / "out.csv").read_text()
     assert text == frame.to_csv(index=False)
-    assert text.splitlines()[1] == ("a,2024-01-01,2024-01-01 00:00:00,2024-01-01 00:00:00.500,2024-01-01 00:00:00+01:00,"
-                                    "0 days 01:00:00,1 days,2024-01-01,12:30:00")
+    assert text.splitlines()[1] == ("a,2024-01-01,2024-01-01 00:00:00,2024-01-01 00:00:00.500,"
+                                    "2024-01-01 00:00:00+01:00,0 days 01:00:00,1 days,2024-01-01,12:30:00")
     write_csv(pa.Table.from_pandas(frame, preserve_index=False), tmp_path / "arrow.csv")
     assert (tmp_path / "arrow.csv").read_text() == text
 
