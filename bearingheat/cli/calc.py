@@ -20,8 +20,7 @@ from bearingheat.errors import ExcelError, F2ChartError, InputError, VMChartErro
 # calc of a CSV or Parquet file starts 0.4 s sooner without them
 from bearingheat.cli.options import add_force, add_json, add_output, add_quiet
 from bearingheat.io.console import Progress, print_summary, print_table, summary_columns
-from bearingheat.io.dataset import (calc_dataset, check_dataset_target, dask_client, dataset_columns,
-                                   read_dataset_columns)
+from bearingheat.io.dataset import compute_dataset, dask_client, dataset_columns, plan_dataset, read_dataset_columns
 from bearingheat.io.fleet import dataset_files, is_dataset
 from bearingheat.io.arrow import ARROW_SUFFIXES
 from bearingheat.io.pipeline import calc_file
@@ -271,9 +270,10 @@ def run_dask(args: argparse.Namespace) -> int:
         raise UsageError("--workers sets up a local cluster; with --scheduler the cluster has its own workers")
     try:
         files = dataset_files(args.input)
-        target = check_dataset_target(args.output, files, force=args.force)
+        plan = plan_dataset(files, args.output, overwrite=args.force, **_calc_options(args))  # before the cluster
+        target = plan.target
         with dask_client(args.scheduler, args.workers):
-            calc_dataset(files, target, overwrite=args.force, **_calc_options(args))
+            compute_dataset(plan)
         shown = read_dataset_columns(target, summary_columns(dataset_columns(target)))
     except UNUSABLE_INPUT as exc:
         raise UsageError(str(exc)) from exc

@@ -23,6 +23,7 @@ import os
 import re
 import shutil
 import tempfile
+from dataclasses import dataclass
 from pathlib import Path
 
 import pyarrow as pa
@@ -34,8 +35,8 @@ from bearingheat.io.arrow import parquet_writer
 from bearingheat.io.fleet import fleet_pieces, fleet_schema, read_piece
 from bearingheat.io.pipeline import ROWS_PER_BLOCK, calc_block, load_options
 
-__all__ = ["check_dataset_target", "calc_dataset", "dask_client", "local_cluster", "dataset_columns",
-           "read_dataset_columns", "WORKER_MMAP_THRESHOLD"]
+__all__ = ["check_dataset_target", "calc_dataset", "plan_dataset", "compute_dataset", "DatasetPlan", "dask_client",
+           "local_cluster", "dataset_columns", "read_dataset_columns", "WORKER_MMAP_THRESHOLD"]
 
 
 @contextlib.contextmanager
@@ -129,31 +130,50 @@ def _calc_piece(path: str, groups: list[int], columns: pa.Schema, part: str, sch
     return table.num_rows
 
 
-def calc_dataset(files: list[str], target, *, overwrite: bool = False, **options) -> Path:
-    """calc of every row of the Parquet ``files`` on the current Dask scheduler, written as the Parquet dataset
-    folder ``target``; ``options`` go to calc. Returns the folder.
+@dataclass(frozen=True)
+class DatasetPlan:
+    """A fleet's computation as :func:`plan_dataset` checked it: the files and their pieces, the target folder,
+    the fleet's input columns (:func:`bearingheat.io.fleet.fleet_schema`), calc's options with their files read,
+    the layout of the results and the schema of every part."""
 
-    Each file is computed in pieces of its row groups (one piece per file up to
-    :data:`bearingheat.io.fleet.PIECE_BYTES`), a block of rows at a time as the single-file path computes it, and
-    each piece becomes one part file: every column of
-    the Dask path's layout (:func:`bearingheat.calc.distributed.result_layout`), the input columns in the types
-    the files hold them, the results in the types the single-file path writes.
-    """
-    import dask
+    files: list[str]
+    target: Path
+    overwrite: bool
+    columns: pa.Schema
+    options: dict
+    layout: dict
+    schema: pa.Schema
+    pieces: list[tuple[str, list[int]]]
 
+
+def plan_dataset(files: list[str], target, *, overwrite: bool = False, **options) -> DatasetPlan:
+    """Everything a fleet's computation checks before any work, on the client and without a cluster: the target
+    folder (:func:`check_dataset_target`), the files' columns and types (:func:`bearingheat.io.fleet.fleet_schema`),
+    calc's options with the charts they name read once (:func:`bearingheat.io.pipeline.load_options`), and the
+    schema of the parts. :class:`InputError` (or the chart's own error) says what is wrong."""
     target = check_dataset_target(target, files, force=overwrite)
     columns = fleet_schema(files)
     options = load_options(options)  # the charts read here, once: a worker need not see the client's files
     layout = result_layout(columns.names)
     schema = _results_schema(columns.empty_table(), options, layout)
     pieces = [piece for path in files for piece in fleet_pieces(path)]
-    # written beside the target first: an earlier dataset is replaced only once every part is written
+    return DatasetPlan(files, target, overwrite, columns, options, layout, schema, pieces)
+
+
+def compute_dataset(plan: DatasetPlan) -> Path:
+    """The computation :func:`plan_dataset` planned, on the current Dask scheduler: each piece becomes one part
+    file, written into a hidden folder beside the target first; an earlier dataset in the target is replaced
+    once every part is written. Returns the folder."""
+    import dask
+
+    target = plan.target
     staging = Path(tempfile.mkdtemp(prefix=f".{target.name}.bearingheat-", suffix=".tmp", dir=target.parent))
     try:
-        shared = dask.delayed(options, traverse=False)  # one key: sent to each worker once, not in every task
-        tasks = [dask.delayed(_calc_piece, pure=False)(path, groups, columns, str(staging / f"part.{i}.parquet"),
-                                                      schema, layout, shared)
-                 for i, (path, groups) in enumerate(pieces)]
+        shared = dask.delayed(plan.options, traverse=False)  # one key: sent to each worker once, not in every task
+        tasks = [dask.delayed(_calc_piece, pure=False)(path, groups, plan.columns,
+                                                      str(staging / f"part.{i}.parquet"), plan.schema, plan.layout,
+                                                      shared)
+                 for i, (path, groups) in enumerate(plan.pieces)]
         dask.compute(*tasks)
         target.mkdir(exist_ok=True)
         clear_dataset(target)
@@ -162,6 +182,20 @@ def calc_dataset(files: list[str], target, *, overwrite: bool = False, **options
     finally:
         shutil.rmtree(staging, ignore_errors=True)
     return target
+
+
+def calc_dataset(files: list[str], target, *, overwrite: bool = False, **options) -> Path:
+    """calc of every row of the Parquet ``files`` on the current Dask scheduler, written as the Parquet dataset
+    folder ``target``; ``options`` go to calc. Returns the folder (:func:`plan_dataset`, then
+    :func:`compute_dataset`).
+
+    Each file is computed in pieces of its row groups (one piece per file up to
+    :data:`bearingheat.io.fleet.PIECE_BYTES`), a block of rows at a time as the single-file path computes it, and
+    each piece becomes one part file: every column of the Dask path's layout
+    (:func:`bearingheat.calc.distributed.result_layout`), the input columns in the types the files hold them, the
+    results in the types the single-file path writes.
+    """
+    return compute_dataset(plan_dataset(files, target, overwrite=overwrite, **options))
 
 
 def dataset_columns(target) -> list[str]:

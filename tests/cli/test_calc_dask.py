@@ -325,3 +325,31 @@ def test_the_charts_are_read_once_on_the_client_and_sent_to_the_workers(tmp_path
     assert (expected["M2 [N*mm]"] > 0).all() and expected["status"].tolist() == ["ok"] * 4
     np.testing.assert_allclose(got.column("M2 [N*mm]").to_numpy(), expected["M2 [N*mm]"].to_numpy(), rtol=1e-12)
     assert got.column("status").to_pylist() == ["ok"] * 4
+
+
+def test_a_fleet_is_checked_before_the_cluster_starts(tmp_path, capsys, monkeypatch):
+    """docs/scale.md says a file whose columns differ is named before any work, but the check ran once the local
+    cluster had started. The files' columns and types, the target folder and the charts are now checked first."""
+    import bearingheat.cli.calc as command
+
+    def no_cluster(*args, **kwargs):
+        raise AssertionError("the cluster was started")
+
+    monkeypatch.setattr(command, "dask_client", no_cluster)
+    demo = pd.read_csv(DEMO)
+    fleet = tmp_path / "fleet"
+    fleet.mkdir()
+    demo.to_parquet(fleet / "a.parquet", index=False)
+    demo.rename(columns={"Fr [kN]": "Fr [kg]"}).to_parquet(fleet / "b.parquet", index=False)
+    out = tmp_path / "out"
+    assert main(["calc", str(fleet), "--dask", "-o", str(out)]) == 2
+    assert capsys.readouterr().err == (
+        f"bearingheat calc: error: {fleet / 'b.parquet'}: its columns differ from those of {fleet / 'a.parquet'} "
+        "(lacks 'Fr [kN]'; has 'Fr [kg]' besides); every file of a fleet needs the same columns\n")
+    (fleet / "b.parquet").unlink()
+    chart = tmp_path / "chart.csv"
+    chart.write_text("a,b\n")
+    assert main(["calc", str(fleet), "--dask", "-o", str(out), "--f2-chart", str(chart)]) == 2
+    assert capsys.readouterr().err == (f"bearingheat calc: error: {chart}: an f2 chart needs the columns curve, "
+                                       "Fa_over_A, nu_n_dM, f2 and a units row\n")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["chart.csv", "fleet"]
