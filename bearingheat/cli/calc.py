@@ -106,7 +106,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     dask = parser.add_argument_group("fleet scale (needs pip install 'bearingheat[dask]'; docs/scale.md)")
     dask.add_argument("--dask", action="store_true",
                       help="compute a folder or glob of Parquet files on a Dask cluster and write the results as a "
-                           "Parquet dataset, one part per input partition, into the folder -o names")
+                           "Parquet dataset, one part per input file (or run of row groups of a big file), into the "
+                           "folder -o names; a duty cycle's summary goes beside it as FOLDER.duty.parquet")
     dask.add_argument("--scheduler", metavar="ADDRESS",
                       help="--dask: the scheduler of an existing dask.distributed cluster (tcp://host:8786); "
                            "default a local cluster of worker processes")
@@ -273,13 +274,13 @@ def run_dask(args: argparse.Namespace) -> int:
         plan = plan_dataset(files, args.output, overwrite=args.force, **_calc_options(args))  # before the cluster
         target = plan.target
         with dask_client(args.scheduler, args.workers):
-            compute_dataset(plan)
+            run = compute_dataset(plan)
         shown = read_dataset_columns(target, summary_columns(dataset_columns(target)))
     except UNUSABLE_INPUT as exc:
         raise UsageError(str(exc)) from exc
     errors = pc.sum(pc.equal(shown.column("status"), "error")).as_py() or 0
     if not args.quiet:
-        print_summary(shown, f"{target}/ (Parquet dataset of {len(files)} input files)")
+        _print_results(shown, run.duty, f"{target}/ (Parquet dataset of {len(files)} input files)")
     else:
         _quiet_errors(errors, shown.num_rows, f"{target}/")
     return 1 if errors else 0

@@ -10,7 +10,9 @@ folder with one part file per piece. Every part has the same columns, those of
 the Dask path (:func:`bearingheat.calc.distributed.result_layout`: every
 result column of the contract), in the same types: the input columns as the
 files hold them, the results as the single-file path writes them, each
-column's unit as field metadata. The cluster is a
+column's unit as field metadata. A fleet with a duty cycle (a ``support``
+column) also gets its summary per support, ``<folder>.duty.parquet`` beside
+the folder, as the single-file path writes ``OUT.duty.parquet``. The cluster is a
 :class:`distributed.LocalCluster` of worker processes (one thread each) unless
 a scheduler address names an existing ``dask.distributed`` cluster. Dask is an
 optional extra (``pip install 'bearingheat[dask]'``) and is imported only
@@ -26,17 +28,21 @@ import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
+import pandas as pd
 import pyarrow as pa
 import pyarrow.parquet as parquet
 
+from bearingheat.calc.contract import parse_header
 from bearingheat.calc.distributed import result_layout
+from bearingheat.calc.duty import duty_cycle, has_duty_cycle
 from bearingheat.errors import InputError
-from bearingheat.io.arrow import parquet_writer
+from bearingheat.io.arrow import parquet_writer, write_arrow
+from bearingheat.io.files import safe_output
 from bearingheat.io.fleet import fleet_pieces, fleet_schema, read_piece
 from bearingheat.io.pipeline import ROWS_PER_BLOCK, calc_block, load_options
 
-__all__ = ["check_dataset_target", "calc_dataset", "plan_dataset", "compute_dataset", "DatasetPlan", "dask_client",
-           "local_cluster", "dataset_columns", "read_dataset_columns", "WORKER_MMAP_THRESHOLD"]
+__all__ = ["check_dataset_target", "calc_dataset", "plan_dataset", "compute_dataset", "DatasetPlan", "DatasetRun",
+           "dask_client", "local_cluster", "dataset_columns", "read_dataset_columns", "WORKER_MMAP_THRESHOLD"]
 
 
 @contextlib.contextmanager
@@ -134,7 +140,8 @@ def _calc_piece(path: str, groups: list[int], columns: pa.Schema, part: str, sch
 class DatasetPlan:
     """A fleet's computation as :func:`plan_dataset` checked it: the files and their pieces, the target folder,
     the fleet's input columns (:func:`bearingheat.io.fleet.fleet_schema`), calc's options with their files read,
-    the layout of the results and the schema of every part."""
+    the layout of the results, the schema of every part, and the file of the duty-cycle summary (a fleet with a
+    ``support`` column: ``<folder>.duty.parquet`` beside the folder) or None."""
 
     files: list[str]
     target: Path
@@ -144,26 +151,60 @@ class DatasetPlan:
     layout: dict
     schema: pa.Schema
     pieces: list[tuple[str, list[int]]]
+    duty: Path | None = None
+
+
+@dataclass(frozen=True)
+class DatasetRun:
+    """What :func:`compute_dataset` wrote: the dataset folder and the duty-cycle summary (None without one)."""
+
+    target: Path
+    duty: pd.DataFrame | None = None
 
 
 def plan_dataset(files: list[str], target, *, overwrite: bool = False, **options) -> DatasetPlan:
     """Everything a fleet's computation checks before any work, on the client and without a cluster: the target
     folder (:func:`check_dataset_target`), the files' columns and types (:func:`bearingheat.io.fleet.fleet_schema`),
     calc's options with the charts they name read once (:func:`bearingheat.io.pipeline.load_options`), and the
-    schema of the parts. :class:`InputError` (or the chart's own error) says what is wrong."""
+    schema of the parts; where the files hold a duty cycle (a ``support`` column), the summary's file beside the
+    folder, checked as any output file (:func:`bearingheat.io.files.safe_output`). :class:`InputError` (or the
+    chart's own error) says what is wrong."""
     target = check_dataset_target(target, files, force=overwrite)
     columns = fleet_schema(files)
     options = load_options(options)  # the charts read here, once: a worker need not see the client's files
     layout = result_layout(columns.names)
     schema = _results_schema(columns.empty_table(), options, layout)
     pieces = [piece for path in files for piece in fleet_pieces(path)]
-    return DatasetPlan(files, target, overwrite, columns, options, layout, schema, pieces)
+    duty = None
+    if has_duty_cycle(pd.DataFrame(columns=columns.names)):
+        duty = safe_output(target.with_name(f"{target.name}.duty.parquet"), force=overwrite, inputs=files)
+    return DatasetPlan(files, target, overwrite, columns, options, layout, schema, pieces, duty)
 
 
-def compute_dataset(plan: DatasetPlan) -> Path:
+#: the results a duty-cycle summary reads (:func:`bearingheat.calc.duty.duty_cycle`)
+_DUTY_NAMES = frozenset({"support", "case", "time_share", "duration", "designation", "n", "MR", "NR", "T_op", "n_per",
+                         "status", "message"})
+
+
+def _duty_summary(plan: DatasetPlan, parts: Path) -> pd.DataFrame | None:
+    """The duty-cycle summary of the parts in the folder ``parts`` (None for a fleet without rows): the columns it
+    reads, without the results the layout adds where pandas calc writes none (a column missing in every row), so
+    that it is the summary of the same rows in one file."""
+    wanted = [name for name in plan.schema.names if parse_header(name, strict=False)[0] in _DUTY_NAMES]
+    table = parquet.read_table(parts, columns=wanted)
+    if table.num_rows == 0:
+        return None
+    kept = [name for name in wanted if name in plan.columns.names or name not in plan.layout
+            or table.column(name).null_count < table.num_rows]
+    return duty_cycle(table.select(kept).to_pandas())
+
+
+def compute_dataset(plan: DatasetPlan) -> DatasetRun:
     """The computation :func:`plan_dataset` planned, on the current Dask scheduler: each piece becomes one part
-    file, written into a hidden folder beside the target first; an earlier dataset in the target is replaced
-    once every part is written. Returns the folder."""
+    file, written into a hidden folder beside the target first; the duty-cycle summary (where the plan has one)
+    is computed from those parts and written (a fleet without rows has none); an earlier dataset in the target
+    is replaced once every part is written and the summary is. A summary that cannot be made (shares that do not
+    sum to 1 ...) leaves the earlier dataset as it was."""
     import dask
 
     target = plan.target
@@ -175,13 +216,16 @@ def compute_dataset(plan: DatasetPlan) -> Path:
                                                       shared)
                  for i, (path, groups) in enumerate(plan.pieces)]
         dask.compute(*tasks)
+        duty = _duty_summary(plan, staging) if plan.duty is not None else None
+        if duty is not None and plan.duty is not None:
+            write_arrow(duty, plan.duty)
         target.mkdir(exist_ok=True)
         clear_dataset(target)
         for part in sorted(staging.iterdir()):
             os.replace(part, target / part.name)
     finally:
         shutil.rmtree(staging, ignore_errors=True)
-    return target
+    return DatasetRun(target, duty)
 
 
 def calc_dataset(files: list[str], target, *, overwrite: bool = False, **options) -> Path:
@@ -193,9 +237,11 @@ def calc_dataset(files: list[str], target, *, overwrite: bool = False, **options
     :data:`bearingheat.io.fleet.PIECE_BYTES`), a block of rows at a time as the single-file path computes it, and
     each piece becomes one part file: every column of the Dask path's layout
     (:func:`bearingheat.calc.distributed.result_layout`), the input columns in the types the files hold them, the
-    results in the types the single-file path writes.
+    results in the types the single-file path writes. A fleet with a duty cycle (a ``support`` column) also gets
+    its summary per support beside the folder, ``<folder>.duty.parquet``, as ``calc FILE -o OUT.parquet`` writes
+    ``OUT.duty.parquet``.
     """
-    return compute_dataset(plan_dataset(files, target, overwrite=overwrite, **options))
+    return compute_dataset(plan_dataset(files, target, overwrite=overwrite, **options)).target
 
 
 def dataset_columns(target) -> list[str]:

@@ -353,3 +353,51 @@ def test_a_fleet_is_checked_before_the_cluster_starts(tmp_path, capsys, monkeypa
     assert capsys.readouterr().err == (f"bearingheat calc: error: {chart}: an f2 chart needs the columns curve, "
                                        "Fa_over_A, nu_n_dM, f2 and a units row\n")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["chart.csv", "fleet"]
+
+
+def test_a_fleet_with_a_duty_cycle_gets_the_summary_of_the_single_file_path(tmp_path, capsys):
+    """--dask skipped the duty-cycle summary that 'calc FILE -o OUT.parquet' writes beside its results
+    (OUT.duty.parquet) without a word. The fleet now writes <folder>.duty.parquet beside its folder, from all its
+    parts (a support's cases may lie in different files), and prints it as the single-file path does."""
+    duty = pd.read_csv(Path(DEMO).with_name("gearbox_duty_cycle.csv"))
+    assert duty["support"].nunique() == 2 and len(duty) == 6
+    fleet = tmp_path / "fleet"
+    fleet.mkdir()
+    duty.iloc[:2].to_parquet(fleet / "a.parquet", index=False)  # support A's third case is in b.parquet
+    duty.iloc[2:].to_parquet(fleet / "b.parquet", index=False)
+    duty.to_parquet(tmp_path / "whole.parquet", index=False)
+    assert main(["calc", str(tmp_path / "whole.parquet"), "-o", str(tmp_path / "single.parquet"), "-q"]) == 0
+    out = tmp_path / "results"
+    assert main(["calc", str(fleet), "--dask", "--workers", "1", "-o", str(out)]) == 0
+    printed = capsys.readouterr().out
+    assert "duty cycle (time-weighted per support):" in printed
+    got, expected = pd.read_parquet(tmp_path / "results.duty.parquet"), pd.read_parquet(tmp_path / "single.duty.parquet")
+    pd.testing.assert_frame_equal(got, expected, check_exact=False, rtol=1e-12)
+    assert got["support"].tolist() == list(duty["support"].unique()) and got["cases"].tolist() == [3, 3]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["fleet", "results", "results.duty.parquet",
+                                                         "single.duty.parquet", "single.parquet", "whole.parquet"]
+    # the summary is an output as any other: an existing one is refused without --force, before any work
+    (tmp_path / "again.duty.parquet").write_bytes(b"mine")
+    assert main(["calc", str(fleet), "--dask", "--workers", "1", "-o", str(tmp_path / "again")]) == 2
+    assert capsys.readouterr().err == (f"bearingheat calc: error: {tmp_path / 'again.duty.parquet'} exists; give "
+                                       "--force to replace it\n")
+    assert (tmp_path / "again.duty.parquet").read_bytes() == b"mine" and not (tmp_path / "again").exists()
+
+
+def test_a_duty_cycle_whose_shares_do_not_sum_to_one_keeps_the_earlier_dataset(tmp_path):
+    duty = pd.read_csv(Path(DEMO).with_name("gearbox_duty_cycle.csv"))
+    fleet = tmp_path / "fleet"
+    fleet.mkdir()
+    duty.to_parquet(fleet / "a.parquet", index=False)
+    calc_fleet(fleet, tmp_path / "out")
+    earlier = {p.name: p.read_bytes() for p in tmp_path.iterdir() if p.is_file()}
+    earlier_parts = {p.name: p.read_bytes() for p in (tmp_path / "out").iterdir()}
+    duty.loc[0, "time_share"] = 0.3
+    duty.to_parquet(fleet / "a.parquet", index=False)
+    with pytest.raises(bh.InputError) as info:
+        calc_fleet(fleet, tmp_path / "out", overwrite=True)
+    assert str(info.value) == ("support 'input shaft A': the time_share values of its cases (full load 0.3, part load "
+                               "0.5, idle 0.3) sum to 1.1, not 1 (within 0.1%)")
+    assert {p.name: p.read_bytes() for p in tmp_path.iterdir() if p.is_file()} == earlier
+    assert {p.name: p.read_bytes() for p in (tmp_path / "out").iterdir()} == earlier_parts
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["fleet", "out", "out.duty.parquet"]
