@@ -20,7 +20,8 @@ from bearingheat.errors import ExcelError, F2ChartError, InputError, VMChartErro
 # calc of a CSV or Parquet file starts 0.4 s sooner without them
 from bearingheat.cli.options import add_force, add_json, add_output, add_quiet
 from bearingheat.io.console import Progress, print_summary, print_table, summary_columns
-from bearingheat.io.dataset import compute_dataset, dask_client, dataset_columns, plan_dataset, read_dataset_columns
+from bearingheat.io.dataset import (compute_dataset, dask_client, dataset_columns, plan_dataset, read_dataset_columns,
+                                   recover_target)
 from bearingheat.io.fleet import dataset_files, is_dataset
 from bearingheat.io.arrow import ARROW_SUFFIXES
 from bearingheat.io.pipeline import calc_file
@@ -50,7 +51,8 @@ know are passed through untouched.
 
 Output files: -o never replaces an existing file without --force, never
 writes over the input, and is written atomically (a temporary file beside it,
-renamed when complete). CSV cells of text that a spreadsheet would run as a
+renamed when complete; with --dask a hidden folder beside the output folder,
+swapped in by renames). CSV cells of text that a spreadsheet would run as a
 formula (starting with =, +, -, @, tab or CR) get a leading apostrophe;
 --no-csv-escape writes them as they are.
 
@@ -269,6 +271,8 @@ def run_dask(args: argparse.Namespace) -> int:
                          "--sheet, --pdf, --sep and --decimal do not apply")
     if args.scheduler and args.workers:
         raise UsageError("--workers sets up a local cluster; with --scheduler the cluster has its own workers")
+    for note in recover_target(args.output):  # what a run that was stopped left beside the folder
+        print(f"note: {note}", file=sys.stderr)
     try:
         files = dataset_files(args.input)
         plan = plan_dataset(files, args.output, overwrite=args.force, **_calc_options(args))  # before the cluster

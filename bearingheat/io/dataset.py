@@ -24,8 +24,7 @@ import contextlib
 import os
 import re
 import shutil
-import tempfile
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import pandas as pd
@@ -35,14 +34,15 @@ import pyarrow.parquet as parquet
 from bearingheat.calc.contract import parse_header
 from bearingheat.calc.distributed import result_layout
 from bearingheat.calc.duty import duty_cycle, has_duty_cycle
-from bearingheat.errors import InputError
+from bearingheat.errors import InputError, OutputFileError
 from bearingheat.io.arrow import parquet_writer, write_arrow
-from bearingheat.io.files import safe_output
+from bearingheat.io.files import run_folder, safe_output, stale_run_folders
 from bearingheat.io.fleet import fleet_pieces, fleet_schema, read_piece
 from bearingheat.io.pipeline import ROWS_PER_BLOCK, calc_block, load_options
 
-__all__ = ["check_dataset_target", "calc_dataset", "plan_dataset", "compute_dataset", "DatasetPlan", "DatasetRun",
-           "dask_client", "local_cluster", "dataset_columns", "read_dataset_columns", "WORKER_MMAP_THRESHOLD"]
+__all__ = ["check_dataset_target", "recover_target", "calc_dataset", "plan_dataset", "compute_dataset", "DatasetPlan",
+           "DatasetRun", "dask_client", "local_cluster", "dataset_columns", "read_dataset_columns",
+           "WORKER_MMAP_THRESHOLD"]
 
 
 @contextlib.contextmanager
@@ -109,11 +109,47 @@ def check_dataset_target(target, files: list[str], *, force: bool) -> Path:
     return target
 
 
-def clear_dataset(target: Path) -> None:
-    """Remove the parts and metadata of an earlier dataset in ``target`` (and nothing else)."""
-    for path in target.iterdir():
-        if _DATASET_FILE.match(path.name):
-            path.unlink()
+def recover_target(target) -> list[str]:
+    """Put right what a bearingheat run on the dataset folder ``target`` left when it was stopped (killed, a power
+    cut) and returns a note for each: a hidden folder of new parts is removed; an earlier dataset it had set aside
+    while moving the new one in is moved back where the target is missing, else (the new one was in place)
+    removed. Only folders bearingheat names for this target (:func:`bearingheat.io.files.run_folder`) of runs
+    that are no longer alive are touched."""
+    real = Path(os.path.realpath(target))
+    notes = []
+    for folder, kind in stale_run_folders(real):
+        if kind == "old" and not os.path.lexists(real):
+            os.rename(folder, real)
+            notes.append(f"moved {folder.name} back to {target}: the earlier dataset, set aside by a bearingheat "
+                         "run that was stopped before its new one was in place")
+            continue
+        shutil.rmtree(folder, ignore_errors=True)
+        what = "the new parts of" if kind == "tmp" else "the earlier dataset of"
+        notes.append(f"removed {folder.name}, {what} {target} left by a bearingheat run that was stopped")
+    return notes
+
+
+def _publish(staging: Path, target: Path) -> None:
+    """Put the folder ``staging`` in the place of the folder ``target`` (its real path) by renames, so that the
+    target is at every moment the earlier dataset or the new one: the earlier folder is renamed aside, the new
+    one into its place (on failure the earlier one back), then the earlier one is removed. The new folder gets
+    the earlier one's permission bits. :class:`OutputFileError` when a rename fails."""
+    try:
+        if not os.path.lexists(target):
+            os.rename(staging, target)
+            return
+        os.chmod(staging, os.stat(target).st_mode & 0o7777)
+        aside = run_folder(target, "old")
+        os.rename(target, aside)  # (a folder renamed onto the empty folder just made)
+        try:
+            os.rename(staging, target)
+        except OSError:
+            os.rename(aside, target)
+            raise
+    except OSError as exc:
+        raise OutputFileError(f"cannot write {target}: {exc.strerror or exc}; the earlier dataset is as it "
+                              "was") from exc
+    shutil.rmtree(aside, ignore_errors=True)
 
 
 def _results_schema(source: pa.Table, options: dict, layout: dict) -> pa.Schema:
@@ -140,8 +176,9 @@ def _calc_piece(path: str, groups: list[int], columns: pa.Schema, part: str, sch
 class DatasetPlan:
     """A fleet's computation as :func:`plan_dataset` checked it: the files and their pieces, the target folder,
     the fleet's input columns (:func:`bearingheat.io.fleet.fleet_schema`), calc's options with their files read,
-    the layout of the results, the schema of every part, and the file of the duty-cycle summary (a fleet with a
-    ``support`` column: ``<folder>.duty.parquet`` beside the folder) or None."""
+    the layout of the results, the schema of every part, the file of the duty-cycle summary (a fleet with a
+    ``support`` column: ``<folder>.duty.parquet`` beside the folder) or None, and notes on what an earlier run
+    that was stopped had left (:func:`recover_target`)."""
 
     files: list[str]
     target: Path
@@ -152,6 +189,7 @@ class DatasetPlan:
     schema: pa.Schema
     pieces: list[tuple[str, list[int]]]
     duty: Path | None = None
+    notes: list[str] = field(default_factory=list)
 
 
 @dataclass(frozen=True)
@@ -164,11 +202,12 @@ class DatasetRun:
 
 def plan_dataset(files: list[str], target, *, overwrite: bool = False, **options) -> DatasetPlan:
     """Everything a fleet's computation checks before any work, on the client and without a cluster: the target
-    folder (:func:`check_dataset_target`), the files' columns and types (:func:`bearingheat.io.fleet.fleet_schema`),
+    folder (:func:`check_dataset_target`, after :func:`recover_target`), the files' columns and types (:func:`bearingheat.io.fleet.fleet_schema`),
     calc's options with the charts they name read once (:func:`bearingheat.io.pipeline.load_options`), and the
     schema of the parts; where the files hold a duty cycle (a ``support`` column), the summary's file beside the
     folder, checked as any output file (:func:`bearingheat.io.files.safe_output`). :class:`InputError` (or the
     chart's own error) says what is wrong."""
+    notes = recover_target(target)
     target = check_dataset_target(target, files, force=overwrite)
     columns = fleet_schema(files)
     options = load_options(options)  # the charts read here, once: a worker need not see the client's files
@@ -178,7 +217,7 @@ def plan_dataset(files: list[str], target, *, overwrite: bool = False, **options
     duty = None
     if has_duty_cycle(pd.DataFrame(columns=columns.names)):
         duty = safe_output(target.with_name(f"{target.name}.duty.parquet"), force=overwrite, inputs=files)
-    return DatasetPlan(files, target, overwrite, columns, options, layout, schema, pieces, duty)
+    return DatasetPlan(files, target, overwrite, columns, options, layout, schema, pieces, duty, notes)
 
 
 #: the results a duty-cycle summary reads (:func:`bearingheat.calc.duty.duty_cycle`)
@@ -208,7 +247,8 @@ def compute_dataset(plan: DatasetPlan) -> DatasetRun:
     import dask
 
     target = plan.target
-    staging = Path(tempfile.mkdtemp(prefix=f".{target.name}.bearingheat-", suffix=".tmp", dir=target.parent))
+    real = Path(os.path.realpath(target))  # a link to the folder stays a link, to the new folder
+    staging = run_folder(real, "tmp")
     try:
         shared = dask.delayed(plan.options, traverse=False)  # one key: sent to each worker once, not in every task
         tasks = [dask.delayed(_calc_piece, pure=False)(path, groups, plan.columns,
@@ -219,10 +259,7 @@ def compute_dataset(plan: DatasetPlan) -> DatasetRun:
         duty = _duty_summary(plan, staging) if plan.duty is not None else None
         if duty is not None and plan.duty is not None:
             write_arrow(duty, plan.duty)
-        target.mkdir(exist_ok=True)
-        clear_dataset(target)
-        for part in sorted(staging.iterdir()):
-            os.replace(part, target / part.name)
+        _publish(staging, real)
     finally:
         shutil.rmtree(staging, ignore_errors=True)
     return DatasetRun(target, duty)

@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import datetime
 import decimal
+import os
 from pathlib import Path
 
 import numpy as np
@@ -86,16 +87,77 @@ def test_dask_refusals(tmp_path, capsys):
     assert "--scheduler and --workers apply with --dask only" in capsys.readouterr().err
 
 
-def test_force_replaces_only_the_parts_of_an_earlier_dataset(tmp_path):
-    from bearingheat.io.dataset import check_dataset_target, clear_dataset
-    files = [str(tmp_path / "in" / "a.parquet")]
-    earlier = tmp_path / "results"
-    earlier.mkdir()
+def test_force_replaces_an_earlier_dataset_at_once_and_keeps_it_when_the_move_fails(tmp_path, monkeypatch):
+    """An earlier dataset was replaced by deleting its parts and then moving the new ones in one by one: a failure
+    in between (a full disk, a kill) left a mix or nothing. The folder is now swapped by renames: the earlier one
+    aside, the new one into its place (the earlier one back if that fails), then the earlier one removed."""
+    from bearingheat.io import dataset
+
+    fleet(tmp_path / "fleet")
+    out = tmp_path / "results"
+    out.mkdir()
     for name in ("part.0.parquet", "part.1.parquet", "_metadata"):
-        (earlier / name).write_bytes(b"old")
-    assert check_dataset_target(earlier, files, force=True) == earlier
-    clear_dataset(earlier)
-    assert list(earlier.iterdir()) == []
+        (out / name).write_bytes(b"old " + name.encode())
+    out.chmod(0o750)
+    earlier = {p.name: p.read_bytes() for p in out.iterdir()}
+    renames = []
+    real_rename = os.rename
+
+    def failing(source, destination):
+        renames.append((Path(source).name, Path(destination).name))
+        if Path(destination) == out and ".bearingheat-" in Path(source).name and Path(source).suffix == ".tmp":
+            raise OSError(28, "No space left on device")
+        return real_rename(source, destination)
+
+    monkeypatch.setattr(dataset.os, "rename", failing)
+    with pytest.raises(bh.errors.OutputFileError) as info:
+        calc_fleet(tmp_path / "fleet", out, overwrite=True)
+    assert str(info.value) == f"cannot write {out}: No space left on device; the earlier dataset is as it was"
+    assert [(source.split(".")[-1], destination.split(".")[-1]) for source, destination in renames] == \
+        [("results", "old"), ("tmp", "results"), ("old", "results")]
+    assert {p.name: p.read_bytes() for p in out.iterdir()} == earlier
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["fleet", "results"]
+    monkeypatch.setattr(dataset.os, "rename", real_rename)
+    got = calc_fleet(tmp_path / "fleet", out, overwrite=True)
+    assert got.num_rows == 60 and sorted(p.name for p in tmp_path.iterdir()) == ["fleet", "results"]
+    assert "_metadata" not in {p.name for p in out.iterdir()} and out.stat().st_mode & 0o777 == 0o750
+
+
+def test_folders_left_by_a_run_that_was_stopped_are_put_right_with_a_note(tmp_path, capsys):
+    """Only bearingheat's own hidden folders beside the target, of runs no longer alive: new parts are removed; an
+    earlier dataset set aside is moved back when the target is missing, else removed."""
+    import subprocess
+    import time
+
+    from bearingheat.io.dataset import recover_target
+
+    process = subprocess.Popen(["true"])
+    process.wait()
+    dead = process.pid
+    out = tmp_path / "results"
+    staged = tmp_path / f".results.bearingheat-{dead}-0a1b2c3d.tmp"
+    aside = tmp_path / f".results.bearingheat-{dead}-0a1b2c3e.old"
+    young = tmp_path / f".results.bearingheat-{dead}-0a1b2c3f.tmp"
+    other = tmp_path / f".other.bearingheat-{dead}-0a1b2c40.tmp"
+    for folder in (staged, aside, young, other):
+        folder.mkdir()
+        (folder / "part.0.parquet").write_bytes(folder.name.encode())
+    long_ago = time.time() - 3600
+    for folder in (staged, aside, other):
+        os.utime(folder, (long_ago, long_ago))
+    assert recover_target(out) == [
+        f"removed {staged.name}, the new parts of {out} left by a bearingheat run that was stopped",
+        f"moved {aside.name} back to {out}: the earlier dataset, set aside by a bearingheat run that was stopped "
+        "before its new one was in place"]
+    assert (out / "part.0.parquet").read_bytes() == aside.name.encode()
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted([other.name, "results", young.name])
+    aside.mkdir()
+    os.utime(aside, (long_ago, long_ago))
+    fleet(tmp_path / "fleet")
+    assert main(["calc", str(tmp_path / "fleet"), "--dask", "--workers", "1", "-o", str(out), "-q"]) == 2
+    assert capsys.readouterr().err == (
+        f"note: removed {aside.name}, the earlier dataset of {out} left by a bearingheat run that was stopped\n"
+        f"bearingheat calc: error: -o {out} exists; give --force to replace it\n")
 
 
 def test_a_run_that_fails_keeps_the_earlier_dataset(tmp_path, capsys):
