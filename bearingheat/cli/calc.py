@@ -20,8 +20,8 @@ from bearingheat.errors import ExcelError, F2ChartError, InputError, VMChartErro
 # calc of a CSV or Parquet file starts 0.4 s sooner without them
 from bearingheat.cli.options import add_force, add_json, add_output, add_quiet
 from bearingheat.io.console import Progress, print_summary, print_table, summary_columns
-from bearingheat.io.dataset import (compute_dataset, dask_client, dataset_columns, plan_dataset, read_dataset_columns,
-                                   recover_target)
+from bearingheat.io.dataset import (check_scheduler, compute_dataset, dask_client, dataset_columns, plan_dataset,
+                                   read_dataset_columns, recover_target)
 from bearingheat.io.fleet import dataset_files, is_dataset
 from bearingheat.io.arrow import ARROW_SUFFIXES
 from bearingheat.io.pipeline import calc_file
@@ -274,6 +274,8 @@ def run_dask(args: argparse.Namespace) -> int:
     for note in recover_target(args.output):  # what a run that was stopped left beside the folder
         print(f"note: {note}", file=sys.stderr)
     try:
+        if args.scheduler:
+            check_scheduler(args.scheduler)
         files = dataset_files(args.input)
         plan = plan_dataset(files, args.output, overwrite=args.force, **_calc_options(args))  # before the cluster
         target = plan.target

@@ -40,9 +40,9 @@ from bearingheat.io.files import run_folder, safe_output, stale_run_folders
 from bearingheat.io.fleet import fleet_pieces, fleet_schema, read_piece
 from bearingheat.io.pipeline import ROWS_PER_BLOCK, calc_block, load_options
 
-__all__ = ["check_dataset_target", "recover_target", "calc_dataset", "plan_dataset", "compute_dataset", "DatasetPlan",
-           "DatasetRun", "dask_client", "local_cluster", "dataset_columns", "read_dataset_columns",
-           "WORKER_MMAP_THRESHOLD"]
+__all__ = ["check_dataset_target", "check_scheduler", "recover_target", "calc_dataset", "plan_dataset",
+           "compute_dataset", "DatasetPlan", "DatasetRun", "dask_client", "local_cluster", "dataset_columns",
+           "read_dataset_columns", "WORKER_MMAP_THRESHOLD"]
 
 
 @contextlib.contextmanager
@@ -54,6 +54,7 @@ def dask_client(scheduler: str | None = None, workers: int | None = None):
     except ImportError as exc:
         raise InputError("--dask needs Dask: pip install 'bearingheat[dask]'") from exc
     if scheduler is not None:
+        check_scheduler(scheduler)
         try:
             client = Client(scheduler, timeout="10s")
         except (OSError, TimeoutError) as exc:
@@ -63,6 +64,19 @@ def dask_client(scheduler: str | None = None, workers: int | None = None):
         return
     with local_cluster(workers) as cluster, Client(cluster) as client:
         yield client
+
+
+def check_scheduler(address: str) -> None:
+    """:class:`InputError` naming ``address`` when it is no address of a Dask scheduler (``tcp://HOST:PORT``)."""
+    try:
+        from distributed.comm import get_address_host_port
+    except ImportError as exc:
+        raise InputError("--dask needs Dask: pip install 'bearingheat[dask]'") from exc
+    try:
+        get_address_host_port(address)
+    except ValueError as exc:
+        raise InputError(f"--scheduler {address}: not the address of a Dask scheduler ({exc}); give it as "
+                         "tcp://HOST:PORT, such as tcp://scheduler:8786") from exc
 
 
 #: glibc's mmap threshold of the workers. dask.distributed starts its workers with MALLOC_TRIM_THRESHOLD_=65536,

@@ -55,7 +55,10 @@ def dataset_files(text: str) -> list[str]:
 def fleet_pieces(path: str) -> list[tuple[str, list[int]]]:
     """The pieces a Parquet file is computed in: runs of its row groups of up to :data:`PIECE_BYTES` (one piece
     of no row groups for a file without rows)."""
-    metadata = parquet.ParquetFile(path).metadata
+    try:
+        metadata = parquet.ParquetFile(path).metadata
+    except (pa.ArrowInvalid, OSError) as exc:
+        raise InputError(f"{path}: not a readable .parquet table ({exc})") from exc
     pieces: list[tuple[str, list[int]]] = []
     groups: list[int] = []
     size = 0
@@ -99,7 +102,10 @@ def fleet_schema(files: list[str]) -> pa.Schema:
 def _file_schema(path: str) -> pa.Schema:
     """The columns of a Parquet file as calc reads them (an index pandas stored in it as columns,
     :func:`bearingheat.io.arrow.without_index`), from its footer."""
-    return without_index(parquet.read_schema(path).empty_table()).schema
+    try:
+        return without_index(parquet.read_schema(path).empty_table()).schema
+    except (pa.ArrowInvalid, OSError) as exc:  # as read_arrow_table names a damaged file of the single-file path
+        raise InputError(f"{path}: not a readable .parquet table ({exc})") from exc
 
 
 def _text(kind: pa.DataType) -> bool:
@@ -173,12 +179,15 @@ def read_piece(path: str, groups: list[int], schema: pa.Schema) -> pa.Table:
     """The rows of the row groups ``groups`` of a Parquet file (its columns without rows when there are none),
     with the fleet's columns of ``schema``, in their order and their types (an index pandas stored in the file
     as columns, :func:`bearingheat.io.arrow.without_index`)."""
-    source = parquet.ParquetFile(path)
-    if groups:
-        offset = sum(source.metadata.row_group(group).num_rows for group in range(groups[0]))
-        table = without_index(source.read_row_groups(groups), offset)
-    else:
-        table = without_index(source.schema_arrow.empty_table())
+    try:
+        source = parquet.ParquetFile(path)
+        if groups:
+            offset = sum(source.metadata.row_group(group).num_rows for group in range(groups[0]))
+            table = without_index(source.read_row_groups(groups), offset)
+        else:
+            table = without_index(source.schema_arrow.empty_table())
+    except (pa.ArrowInvalid, OSError) as exc:  # (a file damaged or replaced since its footer was read)
+        raise InputError(f"{path}: not a readable .parquet table ({exc})") from exc
     table = table.select(schema.names)
     changed = {field.name for field, have in zip(schema, table.schema) if field.type != have.type}
     if not changed:

@@ -463,3 +463,31 @@ def test_a_duty_cycle_whose_shares_do_not_sum_to_one_keeps_the_earlier_dataset(t
     assert {p.name: p.read_bytes() for p in tmp_path.iterdir() if p.is_file()} == earlier
     assert {p.name: p.read_bytes() for p in (tmp_path / "out").iterdir()} == earlier_parts
     assert sorted(p.name for p in tmp_path.iterdir()) == ["fleet", "out", "out.duty.parquet"]
+
+
+def test_a_damaged_file_and_a_scheduler_that_is_no_address_are_one_line_errors(tmp_path, capsys, monkeypatch):
+    """A damaged Parquet file in a fleet stopped --dask with a traceback (ArrowInvalid: Parquet magic bytes not
+    found) where the single-file path names the file; --scheduler notanaddress with 'ValueError: missing port
+    number'. Both are now one line, before the cluster starts."""
+    import bearingheat.cli.calc as command
+
+    def no_cluster(*args, **kwargs):
+        raise AssertionError("the cluster was started")
+
+    monkeypatch.setattr(command, "dask_client", no_cluster)
+    fleet = tmp_path / "fleet"
+    fleet.mkdir()
+    pd.read_csv(DEMO).to_parquet(fleet / "a.parquet", index=False)
+    (fleet / "b.parquet").write_bytes(b"not parquet at all")
+    assert main(["calc", str(fleet / "b.parquet"), "-o", str(tmp_path / "single.csv")]) == 2
+    single = capsys.readouterr().err
+    assert single.startswith(f"bearingheat calc: error: {fleet / 'b.parquet'}: not a readable .parquet table (Parquet "
+                             "magic bytes not found in footer")
+    assert main(["calc", str(fleet), "--dask", "-o", str(tmp_path / "out")]) == 2
+    assert capsys.readouterr().err == single
+    (fleet / "b.parquet").unlink()
+    assert main(["calc", str(fleet), "--dask", "--scheduler", "notanaddress", "-o", str(tmp_path / "out")]) == 2
+    assert capsys.readouterr().err == (
+        "bearingheat calc: error: --scheduler notanaddress: not the address of a Dask scheduler (missing port number "
+        "in address 'notanaddress'); give it as tcp://HOST:PORT, such as tcp://scheduler:8786\n")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["fleet"]
