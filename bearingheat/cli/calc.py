@@ -285,7 +285,10 @@ def run_dask(args: argparse.Namespace) -> int:
     except UNUSABLE_INPUT as exc:
         raise UsageError(str(exc)) from exc
     errors = pc.sum(pc.equal(shown.column("status"), "error")).as_py() or 0
-    if not args.quiet:
+    if not args.quiet and shown.num_rows == 0:
+        print(f"0 supports: the {len(files)} input files have no rows; {target}/ holds a Parquet dataset of empty "
+              "parts")
+    elif not args.quiet:
         _print_results(shown, run.duty, f"{target}/ (Parquet dataset of {len(files)} input files)")
     else:
         _quiet_errors(errors, shown.num_rows, f"{target}/")

@@ -24,6 +24,7 @@ import contextlib
 import os
 import re
 import shutil
+import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -34,7 +35,7 @@ import pyarrow.parquet as parquet
 from bearingheat.calc.contract import parse_header
 from bearingheat.calc.distributed import result_layout
 from bearingheat.calc.duty import duty_cycle, has_duty_cycle
-from bearingheat.errors import InputError, OutputFileError
+from bearingheat.errors import BearingheatError, InputError, OutputFileError
 from bearingheat.io.arrow import parquet_writer, write_arrow
 from bearingheat.io.files import run_folder, safe_output, stale_run_folders
 from bearingheat.io.fleet import fleet_pieces, fleet_schema, read_piece
@@ -93,9 +94,13 @@ def local_cluster(workers: int | None = None):
     from distributed import LocalCluster
 
     environ = {"distributed.nanny.pre-spawn-environ.MALLOC_MMAP_THRESHOLD_": WORKER_MMAP_THRESHOLD}
-    with dask.config.set(environ), LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
-                                                processes=True, dashboard_address=None) as cluster:
-        yield cluster
+    with dask.config.set(environ):
+        with warnings.catch_warnings():  # the scheduler's HTTP port taken by another cluster: it takes a free one
+            warnings.filterwarnings("ignore", message="Port .* is already in use", category=UserWarning)
+            cluster = LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1, processes=True,
+                                   dashboard_address=None)
+        with cluster:
+            yield cluster
 
 
 #: the files of a Parquet dataset Dask writes (its parts and metadata), the only ones --force removes
@@ -104,7 +109,8 @@ _DATASET_FILE = re.compile(r"^(part\.\d+\.parquet|_metadata|_common_metadata)$")
 
 def check_dataset_target(target, files: list[str], *, force: bool) -> Path:
     """The folder a dataset of results goes to, checked before any work: not a file name with a table suffix,
-    not holding (or above) the input files, empty or (with ``force``) holding only a dataset's own files."""
+    not holding (or above) the input files, in a folder that exists, empty or (with ``force``) holding only a
+    dataset's own files."""
     target = Path(target)
     if target.suffix.lower() in (".csv", ".parquet", ".arrow", ".feather", ".xlsx", ".xlsm"):
         raise InputError(f"-o {target}: --dask writes a folder of Parquet parts; give a folder name")
@@ -113,6 +119,8 @@ def check_dataset_target(target, files: list[str], *, force: bool) -> Path:
         raise InputError(f"-o {target} holds the input files; give another folder")
     if target.exists() and not target.is_dir():
         raise InputError(f"-o {target} is a file; give a folder for the Parquet dataset")
+    if not target.parent.is_dir():
+        raise InputError(f"-o {target}: the folder {target.parent} does not exist; create it or give another folder")
     if target.exists() and any(target.iterdir()):
         if not force:
             raise InputError(f"-o {target} exists; give --force to replace it")
@@ -184,6 +192,28 @@ def _calc_piece(path: str, groups: list[int], columns: pa.Schema, part: str, sch
             source = table.slice(start, ROWS_PER_BLOCK)
             writer.write_table(calc_block(source.to_pandas(), source, options, layout=layout).cast(schema))
     return table.num_rows
+
+
+def _calc_piece_task(*arguments) -> int | BearingheatError:
+    """:func:`_calc_piece` as a task: the error of unusable input (a :class:`BearingheatError`: a unit of the
+    wrong kind, a missing column ...) is its result, to be raised on the client, rather than an exception the
+    worker would log at length ('Compute Failed', the task, its traceback) before the one-line message."""
+    try:
+        return _calc_piece(*arguments)
+    except BearingheatError as exc:
+        return exc
+
+
+def _run(tasks: list) -> None:
+    """Compute ``tasks`` on the current Dask scheduler, then raise the error the first of them returned (in the
+    order of the pieces, so the same fleet gives the same message). Every task runs to its end rather than being
+    cancelled at the first error: an input error stops a piece as its calc starts (calc checks the columns and
+    units first), and a cluster closed under running tasks logs its own tracebacks."""
+    import dask
+
+    for result in dask.compute(*tasks):
+        if isinstance(result, BearingheatError):
+            raise result
 
 
 @dataclass(frozen=True)
@@ -265,11 +295,11 @@ def compute_dataset(plan: DatasetPlan) -> DatasetRun:
     staging = run_folder(real, "tmp")
     try:
         shared = dask.delayed(plan.options, traverse=False)  # one key: sent to each worker once, not in every task
-        tasks = [dask.delayed(_calc_piece, pure=False)(path, groups, plan.columns,
-                                                      str(staging / f"part.{i}.parquet"), plan.schema, plan.layout,
-                                                      shared)
+        tasks = [dask.delayed(_calc_piece_task, pure=False)(path, groups, plan.columns,
+                                                           str(staging / f"part.{i}.parquet"), plan.schema,
+                                                           plan.layout, shared)
                  for i, (path, groups) in enumerate(plan.pieces)]
-        dask.compute(*tasks)
+        _run(tasks)
         duty = _duty_summary(plan, staging) if plan.duty is not None else None
         if duty is not None and plan.duty is not None:
             write_arrow(duty, plan.duty)

@@ -39,10 +39,14 @@ def is_dataset(text: str) -> bool:
 
 
 def dataset_files(text: str) -> list[str]:
-    """The Parquet files of a folder (every ``*.parquet`` in it) or of a glob pattern, sorted; :class:`InputError`
-    when there are none or some matched file is no Parquet file."""
+    """The Parquet files of a folder (every ``*.parquet`` in it) or of a glob pattern, sorted, or the one file
+    ``text`` names when it exists (whatever its name holds: ``supports [v2].parquet`` is no pattern);
+    :class:`InputError` when there are none or some matched file is no Parquet file."""
     folder = Path(text)
-    found = sorted(str(p) for p in folder.glob("*.parquet")) if folder.is_dir() else sorted(glob.glob(text))
+    if folder.is_file():
+        found = [text]
+    else:
+        found = sorted(str(p) for p in folder.glob("*.parquet")) if folder.is_dir() else sorted(glob.glob(text))
     if not found:
         where = "no *.parquet in the folder" if folder.is_dir() else "the pattern matches nothing"
         raise InputError(f"{text}: no Parquet files ({where})")

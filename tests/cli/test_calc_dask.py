@@ -491,3 +491,54 @@ def test_a_damaged_file_and_a_scheduler_that_is_no_address_are_one_line_errors(t
         "bearingheat calc: error: --scheduler notanaddress: not the address of a Dask scheduler (missing port number "
         "in address 'notanaddress'); give it as tcp://HOST:PORT, such as tcp://scheduler:8786\n")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["fleet"]
+
+
+def test_misleading_messages_of_the_fleet(tmp_path, capsys, monkeypatch):
+    """An existing file whose name holds brackets was taken for a glob pattern ('the pattern matches nothing'),
+    and a missing parent of -o was named by a temporary file inside it ('nonexist/sub/.out.bearingheat-xxx.tmp: No
+    such file or directory')."""
+    import bearingheat.cli.calc as command
+
+    demo = pd.read_csv(DEMO)
+    folder = tmp_path / "fl br"
+    folder.mkdir()
+    named = folder / "supports [v2].parquet"
+    demo.to_parquet(named, index=False)
+    assert dataset_files(str(named)) == [str(named)]
+    got = calc_fleet(named, tmp_path / "out")
+    assert got.column("id").to_pylist() == demo["id"].tolist()
+
+    def no_cluster(*args, **kwargs):
+        raise AssertionError("the cluster was started")
+
+    monkeypatch.setattr(command, "dask_client", no_cluster)
+    missing = tmp_path / "nonexist" / "sub"
+    assert main(["calc", str(named), "--dask", "-o", str(missing)]) == 2
+    assert capsys.readouterr().err == (f"bearingheat calc: error: -o {missing}: the folder {missing.parent} does not "
+                                       "exist; create it or give another folder\n")
+
+
+def test_a_fleet_without_rows_and_a_unit_of_the_wrong_kind_print_one_clear_line(tmp_path, capfd):
+    """A fleet whose files have no rows printed pandas' 'Empty DataFrame' repr; an input error on the workers
+    was preceded by the workers' 'Compute Failed' log of the task and its traceback. Both are one line now (the
+    workers' output is captured at the file descriptors)."""
+    demo = pd.read_csv(DEMO)
+    empty = tmp_path / "empty"
+    empty.mkdir()
+    demo.iloc[:0].to_parquet(empty / "a.parquet", index=False)
+    demo.iloc[:0].to_parquet(empty / "b.parquet", index=False)
+    assert main(["calc", str(empty), "--dask", "--workers", "2", "-o", str(tmp_path / "out")]) == 0
+    printed = capfd.readouterr()
+    assert printed.out == (f"0 supports: the 2 input files have no rows; {tmp_path / 'out'}/ holds a Parquet dataset "
+                           "of empty parts\n")
+    assert [parquet.read_metadata(p).num_rows for p in sorted((tmp_path / "out").iterdir())] == [0, 0]
+    wrong = tmp_path / "wrong"
+    wrong.mkdir()
+    for name, rows in (("a", slice(0, 3)), ("b", slice(3, 6))):
+        demo.iloc[rows].rename(columns={"Fr [kN]": "Fr [kg]"}).to_parquet(wrong / f"{name}.parquet", index=False)
+    assert main(["calc", str(wrong), "--dask", "--workers", "2", "-o", str(tmp_path / "out2"), "-q"]) == 2
+    printed = capfd.readouterr()
+    assert printed.out == ""
+    assert printed.err == ("bearingheat calc: error: column 'Fr [kg]': kilogram is a mass, not a force; for "
+                           "kilogram-force write kgf\n")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["empty", "out", "wrong"]
