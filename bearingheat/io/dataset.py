@@ -43,7 +43,7 @@ from bearingheat.io.pipeline import ROWS_PER_BLOCK, calc_block, load_options
 
 __all__ = ["check_dataset_target", "check_scheduler", "recover_target", "calc_dataset", "plan_dataset",
            "compute_dataset", "DatasetPlan", "DatasetRun", "dask_client", "local_cluster", "dataset_columns",
-           "read_dataset_columns", "WORKER_MMAP_THRESHOLD"]
+           "read_dataset_columns", "part_name", "WORKER_MMAP_THRESHOLD"]
 
 
 @contextlib.contextmanager
@@ -105,6 +105,13 @@ def local_cluster(workers: int | None = None):
 
 #: the files of a Parquet dataset Dask writes (its parts and metadata), the only ones --force removes
 _DATASET_FILE = re.compile(r"^(part\.\d+\.parquet|_metadata|_common_metadata)$")
+
+
+def part_name(position: int, count: int) -> str:
+    """The file name of the part at ``position`` of ``count``: ``part.<position>.parquet``, the number padded with
+    zeros to the width of the last one (part.07 before part.10), so that the parts' order by name, in which
+    readers take them, is the order of the rows."""
+    return f"part.{position:0{len(str(max(count - 1, 0)))}d}.parquet"
 
 
 def check_dataset_target(target, files: list[str], *, force: bool) -> Path:
@@ -296,8 +303,8 @@ def compute_dataset(plan: DatasetPlan) -> DatasetRun:
     try:
         shared = dask.delayed(plan.options, traverse=False)  # one key: sent to each worker once, not in every task
         tasks = [dask.delayed(_calc_piece_task, pure=False)(path, groups, plan.columns,
-                                                           str(staging / f"part.{i}.parquet"), plan.schema,
-                                                           plan.layout, shared)
+                                                           str(staging / part_name(i, len(plan.pieces))),
+                                                           plan.schema, plan.layout, shared)
                  for i, (path, groups) in enumerate(plan.pieces)]
         _run(tasks)
         duty = _duty_summary(plan, staging) if plan.duty is not None else None

@@ -542,3 +542,23 @@ def test_a_fleet_without_rows_and_a_unit_of_the_wrong_kind_print_one_clear_line(
     assert printed.err == ("bearingheat calc: error: column 'Fr [kg]': kilogram is a mass, not a force; for "
                            "kilogram-force write kgf\n")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["empty", "out", "wrong"]
+
+
+def test_the_parts_are_named_in_the_order_of_the_rows(tmp_path):
+    """Dask named the parts part.0, part.1, ... part.10, which sort as part.0, part.1, part.10, part.2: a reader
+    that takes the files by name got the rows out of order. The numbers are now zero-padded."""
+    from bearingheat.io.dataset import part_name
+
+    assert [part_name(i, 12) for i in (0, 9, 11)] == ["part.00.parquet", "part.09.parquet", "part.11.parquet"]
+    assert part_name(3, 4) == "part.3.parquet" and part_name(0, 1) == "part.0.parquet"
+    demo = pd.read_csv(DEMO)
+    fleet = tmp_path / "fleet"
+    fleet.mkdir()
+    table = pd.concat([demo] * 2, ignore_index=True).assign(id=[f"s{i:02d}" for i in range(12)])
+    for i in range(12):
+        table.iloc[[i]].to_parquet(fleet / f"{i:02d}.parquet", index=False)
+    got = calc_fleet(fleet, tmp_path / "out")
+    assert sorted(p.name for p in (tmp_path / "out").iterdir())[-3:] == ["part.09.parquet", "part.10.parquet",
+                                                                          "part.11.parquet"]
+    assert got.column("id").to_pylist() == table["id"].tolist()
+    assert pd.read_parquet(tmp_path / "out")["id"].tolist() == table["id"].tolist()
