@@ -69,7 +69,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("input", metavar="INPUT",
                         help="table of supports: CSV (.csv), Parquet (.parquet), Arrow/Feather (.arrow, .feather) or "
                              "an Excel workbook (.xlsx); with --dask a folder or a glob pattern of Parquet files")
-    add_output(parser, ".csv, .parquet, .arrow, .feather or .xlsx; with --dask a folder for the Parquet dataset")
+    add_output(parser, ".csv, .parquet, .arrow, .feather or .xlsx; with --dask a folder for the Parquet dataset",
+               without="the results are printed (--dask needs it)")
     parser.add_argument("--f2-chart", metavar="CSV",
                         help="digitised f2 chart (docs/friction.md gives the format)")
     parser.add_argument("--vm-chart", metavar="CSV",

@@ -562,3 +562,14 @@ def test_the_parts_are_named_in_the_order_of_the_rows(tmp_path):
                                                                           "part.11.parquet"]
     assert got.column("id").to_pylist() == table["id"].tolist()
     assert pd.read_parquet(tmp_path / "out")["id"].tolist() == table["id"].tolist()
+
+
+def test_the_help_says_dask_needs_an_output_and_how_it_is_written(capsys):
+    """-o's help said 'without it the results are printed', though --dask refuses to run without -o."""
+    with pytest.raises(SystemExit):
+        main(["calc", "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    assert ("file to write (.csv, .parquet, .arrow, .feather or .xlsx; with --dask a folder for the Parquet dataset); "
+            "without it the results are printed (--dask needs it)") in text
+    assert ("is written atomically (a temporary file beside it, renamed when complete; with --dask a hidden folder "
+            "beside the output folder, swapped in by renames)") in text
