@@ -1,7 +1,11 @@
 """Parquet and Arrow (Feather) tables of supports, read and written with pyarrow.
 
-The columns keep their ``name [unit]`` headers, so a table round-trips
-through any of the formats unchanged. A Parquet or Arrow file also carries
+The columns keep their ``name [unit]`` headers, so a table's columns
+round-trip through any of the formats unchanged, values and dtypes (a pandas
+frame is written with pandas' description of its columns: nullable numbers,
+logical values, categories and times come back as they were). The index is
+not written, as ``to_csv(index=False)`` does not write it; an index pandas
+stored in a file it wrote comes back as columns (:func:`without_index`). A Parquet or Arrow file also carries
 each column's unit as field metadata (key ``unit``; '' for text and
 dimensionless numbers), so tools that read the schema see the units
 without parsing headers. Files are written atomically
@@ -146,13 +150,26 @@ def arrow_column(values: pd.Series) -> pa.Array:
         return pa.array([None if gone else str(cell) for cell, gone in zip(cells, missing)], type=pa.string())
 
 
+def _pandas_metadata(frame: pd.DataFrame) -> dict:
+    """pandas' description of ``frame``'s columns (their dtypes: Int64, boolean, category, a time zone ...) as
+    Arrow schema metadata, without the index, so that ``to_pandas`` rebuilds the same dtypes; taken from the
+    frame without rows (a column of mixed cells, written as text, is then described as text)."""
+    try:
+        return pa.Schema.from_pandas(frame.iloc[:0], preserve_index=False).metadata or {}
+    except (pa.ArrowInvalid, pa.ArrowTypeError, pa.ArrowNotImplementedError, ValueError, TypeError):
+        return {}
+
+
 def arrow_table(frame: pd.DataFrame | pa.Table) -> pa.Table:
-    """``frame`` as an Arrow table (no index column), each field with its unit as metadata (key ``unit``)."""
+    """``frame`` as an Arrow table (no index column), each field with its unit as metadata (key ``unit``); a
+    pandas frame also with pandas' description of its columns, so that :func:`read_arrow` gives their dtypes
+    back."""
     if isinstance(frame, pa.Table):
         table = frame
     else:
         headers = [str(h) for h in frame.columns]
         table = pa.Table.from_arrays([arrow_column(frame.iloc[:, i]) for i in range(frame.shape[1])], names=headers)
+        table = table.replace_schema_metadata(_pandas_metadata(frame))
     fields = [table.schema.field(i).with_metadata({"unit": unit_of(str(name))})
               for i, name in enumerate(table.column_names)]
     return table.cast(pa.schema(fields, metadata=table.schema.metadata))

@@ -106,3 +106,25 @@ def test_an_index_pandas_stored_in_the_file_comes_back_as_columns(tmp_path, caps
     demo.rename_axis("row").to_parquet(tmp_path / "rows.parquet")
     rows = read_arrow(tmp_path / "rows.parquet")
     assert list(rows.columns) == ["row", *demo.columns] and rows["row"].tolist() == list(range(len(demo)))
+
+
+@pytest.mark.parametrize("suffix", [".parquet", ".arrow", ".feather"])
+def test_a_frame_round_trips_with_its_dtypes(tmp_path, suffix):
+    """The module says a table round-trips unchanged, but write_arrow wrote no pandas description of the columns:
+    Int64 came back as float64, boolean as object, Float64 as float64. Now the dtypes come back; the index is
+    not written (as to_csv(index=False) does not write it)."""
+    frame = pd.DataFrame({
+        "id": pd.array(["a", None, "007"], dtype="str"),
+        "Fr [kN]": [1.5, np.nan, 3.0],
+        "count": pd.array([1, None, 3], dtype="Int64"),
+        "checked": pd.array([True, None, False], dtype="boolean"),
+        "share": pd.array([1.0, None, 2.5], dtype="Float64"),
+        "grade": pd.Categorical(["u", "v", None]),
+        "installed": pd.to_datetime(["2024-01-01", None, "2024-03-01"]).tz_localize("Europe/Berlin"),
+        "runtime": pd.to_timedelta([1, None, 3], unit="h"),
+    })
+    path = write_arrow(frame.set_axis([10, 20, 30]), tmp_path / f"t{suffix}")
+    back = read_arrow(path)
+    pd.testing.assert_frame_equal(back, frame, check_exact=True)
+    assert back["count"].tolist()[0] == 1 and back["checked"].tolist()[2] is False
+    assert column_units(path)["Fr [kN]"] == "kN"
