@@ -8,7 +8,8 @@ not written, as ``to_csv(index=False)`` does not write it; an index pandas
 stored in a file it wrote comes back as columns (:func:`without_index`). A Parquet or Arrow file also carries
 each column's unit as field metadata (key ``unit``; '' for text and
 dimensionless numbers), so tools that read the schema see the units
-without parsing headers. Files are written atomically
+without parsing headers; the metadata a file had of its own (a field's
+``description``, the schema's ``source`` ...) is kept beside it. Files are written atomically
 (:func:`bearingheat.io.files.atomic_write`).
 
 >>> import tempfile, pathlib
@@ -34,7 +35,7 @@ from bearingheat.io.csv_reader import refuse_duplicate_columns
 from bearingheat.io.files import atomic_write
 
 __all__ = ["ARROW_SUFFIXES", "read_arrow", "read_arrow_table", "write_arrow", "arrow_table", "arrow_column",
-           "column_units", "unit_of", "parquet_writer", "without_index"]
+           "column_units", "unit_of", "parquet_writer", "without_index", "with_unit", "user_metadata"]
 
 def _text_fields(schema: pa.Schema) -> list[str]:
     return [field.name for field in schema if pa.types.is_string(field.type) or pa.types.is_large_string(field.type)]
@@ -170,9 +171,22 @@ def arrow_table(frame: pd.DataFrame | pa.Table) -> pa.Table:
         headers = [str(h) for h in frame.columns]
         table = pa.Table.from_arrays([arrow_column(frame.iloc[:, i]) for i in range(frame.shape[1])], names=headers)
         table = table.replace_schema_metadata(_pandas_metadata(frame))
-    fields = [table.schema.field(i).with_metadata({"unit": unit_of(str(name))})
-              for i, name in enumerate(table.column_names)]
+    fields = [with_unit(table.schema.field(i)) for i in range(table.num_columns)]
     return table.cast(pa.schema(fields, metadata=table.schema.metadata))
+
+
+def with_unit(field: pa.Field) -> pa.Field:
+    """``field`` with its unit as metadata (key ``unit``), beside the metadata it has (a user's ``description``
+    ...)."""
+    return field.with_metadata({**(field.metadata or {}), b"unit": unit_of(field.name).encode()})
+
+
+def user_metadata(schema: pa.Schema) -> dict | None:
+    """A table's schema metadata that also describes a table of other columns made from it (calc's results):
+    the user's keys (``source``, ``description`` ...), without pandas' description of the input frame."""
+    if not schema.metadata:
+        return None
+    return {key: value for key, value in schema.metadata.items() if key != b"pandas"} or None
 
 
 def write_arrow(frame: pd.DataFrame | pa.Table, path) -> Path:

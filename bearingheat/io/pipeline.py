@@ -29,7 +29,7 @@ from bearingheat.calc.distributed import calc_partition
 from bearingheat.calc.table import calc
 from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.catalogue.vm_chart import VMChart
-from bearingheat.io.arrow import ARROW_SUFFIXES, arrow_column, read_arrow_table, unit_of
+from bearingheat.io.arrow import ARROW_SUFFIXES, arrow_column, read_arrow_table, user_metadata, with_unit
 from bearingheat.io.csv_reader import RowLines, read_source
 from bearingheat.io.tables import cite_rows, set_aside
 
@@ -99,7 +99,7 @@ def _concat(blocks: list[pa.Table]) -> pa.Table:
                 kind = pa.unify_schemas([pa.schema([pa.field(name, kind)]), pa.schema([pa.field(name, other)])],
                                         promote_options="permissive").field(name).type
         fields[name] = pa.field(name, kind, metadata=present[0].metadata)
-    schema = pa.schema([fields[n] for n in names])
+    schema = pa.schema([fields[n] for n in names], metadata=blocks[0].schema.metadata)
     tables = []
     for block in blocks:
         columns = [block.column(n).cast(fields[n].type) if n in block.column_names
@@ -123,16 +123,19 @@ def load_options(options: dict) -> dict:
 
 def _block_table(result: pd.DataFrame, block: pd.DataFrame, source: pa.Table | None) -> pa.Table:
     """One block's results as Arrow: a column calc passed through unchanged is the input's own Arrow column
-    (no copy), the others are converted; each field with its unit as metadata."""
+    (no copy), the others are converted; each field with its unit as metadata, beside the metadata the input's
+    field of that name has; the input's schema metadata without pandas' (:func:`user_metadata`)."""
     arrays, fields = [], []
     for name in result.columns:
         values = result[name]
-        same = source is not None and name in source.column_names and name in block.columns and \
-            values.equals(block[name])
+        known = source is not None and name in source.column_names
+        same = known and name in block.columns and values.equals(block[name])
         column = source.column(name) if source is not None and same else arrow_column(values)
         arrays.append(column)
-        fields.append(pa.field(str(name), column.type, metadata={"unit": unit_of(str(name))}))
-    return pa.Table.from_arrays(arrays, schema=pa.schema(fields))
+        metadata = source.schema.field(name).metadata if source is not None and known else None
+        fields.append(with_unit(pa.field(str(name), column.type, metadata=metadata)))
+    return pa.Table.from_arrays(arrays, schema=pa.schema(
+        fields, metadata=user_metadata(source.schema) if source is not None else None))
 
 
 def calc_block(block: pd.DataFrame, source: pa.Table | None, options: dict, *, mark: str = ".",

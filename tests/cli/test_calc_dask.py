@@ -573,3 +573,19 @@ def test_the_help_says_dask_needs_an_output_and_how_it_is_written(capsys):
             "without it the results are printed (--dask needs it)") in text
     assert ("is written atomically (a temporary file beside it, renamed when complete; with --dask a hidden folder "
             "beside the output folder, swapped in by renames)") in text
+
+
+def test_the_users_own_metadata_is_kept_in_every_part(tmp_path):
+    demo = pa.Table.from_pandas(pd.read_csv(DEMO), preserve_index=False)
+    fields = [demo.schema.field(0).with_metadata({"description": "support label"}), *list(demo.schema)[1:]]
+    demo = demo.cast(pa.schema(fields, metadata={**demo.schema.metadata, b"source": b"plant A"}))
+    fleet = tmp_path / "fleet"
+    fleet.mkdir()
+    parquet.write_table(demo.slice(0, 3), fleet / "a.parquet")
+    parquet.write_table(demo.slice(3), fleet / "b.parquet")
+    calc_fleet(fleet, tmp_path / "out")
+    for part in sorted((tmp_path / "out").iterdir()):
+        schema = parquet.read_schema(part)
+        assert schema.metadata == {b"source": b"plant A"}
+        assert schema.field("id").metadata == {b"description": b"support label", b"unit": b""}
+        assert schema.field("NR [W]").metadata == {b"unit": b"W"}

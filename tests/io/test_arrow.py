@@ -128,3 +128,26 @@ def test_a_frame_round_trips_with_its_dtypes(tmp_path, suffix):
     pd.testing.assert_frame_equal(back, frame, check_exact=True)
     assert back["count"].tolist()[0] == 1 and back["checked"].tolist()[2] is False
     assert column_units(path)["Fr [kN]"] == "kN"
+
+
+def test_the_users_own_metadata_is_kept_beside_the_units(tmp_path):
+    """The unit metadata replaced the metadata a file had of its own: a field's 'description' and the schema's
+    'source' were gone from calc's results. They are kept now, bearingheat's unit beside them; pandas'
+    description of the input frame is not carried into results with other columns."""
+    import pyarrow as pa
+
+    from bearingheat.io.pipeline import calc_file
+
+    table = pa.Table.from_pandas(pd.read_csv(DEMO), preserve_index=False)
+    fields = [table.schema.field(0).with_metadata({"description": "support label"}), *list(table.schema)[1:]]
+    table = table.cast(pa.schema(fields, metadata={**table.schema.metadata, b"source": b"plant A"}))
+    parquet.write_table(table, tmp_path / "in.parquet")
+    for rows_per_block in (100, 4):  # one block, and blocks joined
+        results = calc_file(tmp_path / "in.parquet", rows_per_block=rows_per_block)
+        assert results.schema.metadata == {b"source": b"plant A"}
+        assert results.schema.field("id").metadata == {b"description": b"support label", b"unit": b""}
+    assert main(["calc", str(tmp_path / "in.parquet"), "-o", str(tmp_path / "out.parquet"), "-q"]) == 0
+    schema = parquet.read_schema(tmp_path / "out.parquet")
+    assert schema.metadata == {b"source": b"plant A"}
+    assert schema.field("id").metadata == {b"description": b"support label", b"unit": b""}
+    assert schema.field("MR [N*mm]").metadata == {b"unit": b"N*mm"}
