@@ -38,12 +38,13 @@ from bearingheat.calc.duty import duty_cycle, has_duty_cycle
 from bearingheat.errors import BearingheatError, InputError, OutputFileError
 from bearingheat.io.arrow import parquet_writer, write_arrow
 from bearingheat.io.files import run_folder, safe_output, stale_run_folders
-from bearingheat.io.fleet import fleet_pieces, fleet_schema, read_piece
+from bearingheat.io.fleet import dataset_files, fleet_pieces, fleet_schema, is_dataset, read_piece
 from bearingheat.io.pipeline import ROWS_PER_BLOCK, calc_block, load_options
 
 __all__ = ["check_dataset_target", "check_scheduler", "recover_target", "calc_dataset", "plan_dataset",
            "compute_dataset", "DatasetPlan", "DatasetRun", "dask_client", "local_cluster", "dataset_columns",
-           "read_dataset_columns", "part_name", "WORKER_MMAP_THRESHOLD"]
+           "read_dataset_columns", "part_name", "WORKER_MMAP_THRESHOLD",
+           "dataset_files", "is_dataset"]  # (the last two from io.fleet, where they moved, for callers of this module)
 
 
 @contextlib.contextmanager
