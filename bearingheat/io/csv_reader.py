@@ -15,10 +15,11 @@ pandas' result (10^6 rows in about half a second on two cores), else by pandas' 
 cell begins with white space (pandas skips it), a header cell is blank, a
 column would be read as dates or as logical values (pyarrow reads ``1`` and
 ``0`` as true and false beside ``TRUE``), or a column of whole numbers may hold
-a hexadecimal one (pyarrow reads ``0x10`` as 16; pandas and calc as no number). The file line of each row is found in arrays
-when no cell is quoted (no cell can then span lines), else with Python's csv
-module. Neither path holds more than the file's bytes, its table and (for
-the pandas path) its text at once.
+a hexadecimal one (pyarrow reads ``0x10`` as 16; pandas and calc as no
+number). The file line of each row is found in arrays when no cell is quoted
+(no cell can then span lines), else with Python's csv module. Neither path
+holds more than the file's bytes, its table and (for the pandas path) its text
+at once.
 
 >>> text = "id;d [mm];n [1/min]\\nspindle rear;40;1500,5\\n"
 >>> sniff_format(text)

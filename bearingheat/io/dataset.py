@@ -254,11 +254,12 @@ class DatasetRun:
 
 def plan_dataset(files: list[str], target, *, overwrite: bool = False, **options) -> DatasetPlan:
     """Everything a fleet's computation checks before any work, on the client and without a cluster: the target
-    folder (:func:`check_dataset_target`, after :func:`recover_target`), the files' columns and types (:func:`bearingheat.io.fleet.fleet_schema`),
-    calc's options with the charts they name read once (:func:`bearingheat.io.pipeline.load_options`), and the
-    schema of the parts; where the files hold a duty cycle (a ``support`` column), the summary's file beside the
-    folder, checked as any output file (:func:`bearingheat.io.files.safe_output`). :class:`InputError` (or the
-    chart's own error) says what is wrong."""
+    folder (:func:`check_dataset_target`, after :func:`recover_target`), the files' columns and types
+    (:func:`bearingheat.io.fleet.fleet_schema`), calc's options with the charts they name read once
+    (:func:`bearingheat.io.pipeline.load_options`), and the schema of the parts; where the files hold a duty
+    cycle (a ``support`` column), the summary's file beside the folder, checked as any output file
+    (:func:`bearingheat.io.files.safe_output`). :class:`InputError` (or the chart's own error) says what is
+    wrong."""
     notes = recover_target(target)
     target = check_dataset_target(target, files, force=overwrite)
     columns = fleet_schema(files)

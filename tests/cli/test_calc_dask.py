@@ -433,7 +433,8 @@ def test_a_fleet_with_a_duty_cycle_gets_the_summary_of_the_single_file_path(tmp_
     assert main(["calc", str(fleet), "--dask", "--workers", "1", "-o", str(out)]) == 0
     printed = capsys.readouterr().out
     assert "duty cycle (time-weighted per support):" in printed
-    got, expected = pd.read_parquet(tmp_path / "results.duty.parquet"), pd.read_parquet(tmp_path / "single.duty.parquet")
+    got = pd.read_parquet(tmp_path / "results.duty.parquet")
+    expected = pd.read_parquet(tmp_path / "single.duty.parquet")
     pd.testing.assert_frame_equal(got, expected, check_exact=False, rtol=1e-12)
     assert got["support"].tolist() == list(duty["support"].unique()) and got["cases"].tolist() == [3, 3]
     assert sorted(p.name for p in tmp_path.iterdir()) == ["fleet", "results", "results.duty.parquet",
