@@ -87,6 +87,7 @@ def check_scheduler(address: str) -> None:
 #: 16 MiB come from the heap again with this (0.25 s); dask's trimming of freed memory stays.
 WORKER_MMAP_THRESHOLD = 16 * 2**20
 
+
 @contextlib.contextmanager
 def local_cluster(workers: int | None = None):
     """A :class:`distributed.LocalCluster` of ``workers`` worker processes (default one per CPU core), one thread
@@ -104,7 +105,8 @@ def local_cluster(workers: int | None = None):
             yield cluster
 
 
-#: the files of a Parquet dataset Dask writes (its parts and metadata), the only ones --force removes
+#: the files of a Parquet dataset (its parts, and the metadata files Dask writes): a folder holding only these is
+#: an earlier dataset, which --force replaces
 _DATASET_FILE = re.compile(r"^(part\.\d+\.parquet|_metadata|_common_metadata)$")
 
 
@@ -163,22 +165,35 @@ def _publish(staging: Path, target: Path) -> None:
     """Put the folder ``staging`` in the place of the folder ``target`` (its real path) by renames, so that the
     target is at every moment the earlier dataset or the new one: the earlier folder is renamed aside, the new
     one into its place (on failure the earlier one back), then the earlier one is removed. The new folder gets
-    the earlier one's permission bits. :class:`OutputFileError` when a rename fails."""
-    try:
-        if not os.path.lexists(target):
+    the earlier one's permission bits. :class:`OutputFileError` when a rename fails, saying where the earlier
+    dataset is."""
+    def failed(exc: OSError, where: str) -> OutputFileError:
+        return OutputFileError(f"cannot write {target}: {exc.strerror or exc}; {where}")
+
+    if not os.path.lexists(target):
+        try:
             os.rename(staging, target)
-            return
+        except OSError as exc:
+            raise failed(exc, "nothing was written") from exc
+        return
+    aside = None
+    try:
         os.chmod(staging, os.stat(target).st_mode & 0o7777)
         aside = run_folder(target, "old")
         os.rename(target, aside)  # (a folder renamed onto the empty folder just made)
-        try:
-            os.rename(staging, target)
-        except OSError:
-            os.rename(aside, target)
-            raise
     except OSError as exc:
-        raise OutputFileError(f"cannot write {target}: {exc.strerror or exc}; the earlier dataset is as it "
-                              "was") from exc
+        if aside is not None:
+            with contextlib.suppress(OSError):
+                os.rmdir(aside)
+        raise failed(exc, "the earlier dataset is as it was") from exc
+    try:
+        os.rename(staging, target)
+    except OSError as exc:
+        try:
+            os.rename(aside, target)
+        except OSError:
+            raise failed(exc, f"the earlier dataset is in {aside}") from exc
+        raise failed(exc, "the earlier dataset is as it was") from exc
     shutil.rmtree(aside, ignore_errors=True)
 
 

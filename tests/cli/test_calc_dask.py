@@ -123,6 +123,28 @@ def test_force_replaces_an_earlier_dataset_at_once_and_keeps_it_when_the_move_fa
     assert "_metadata" not in {p.name for p in out.iterdir()} and out.stat().st_mode & 0o777 == 0o750
 
 
+def test_a_failed_swap_whose_undoing_fails_too_says_where_the_earlier_dataset_is(tmp_path, monkeypatch):
+    from bearingheat.io import dataset
+
+    fleet(tmp_path / "fleet")
+    out = tmp_path / "results"
+    out.mkdir()
+    (out / "part.0.parquet").write_bytes(b"old")
+    real_rename = os.rename
+
+    def failing(source, destination):
+        if Path(destination) == out and Path(source).suffix in (".tmp", ".old"):
+            raise OSError(5, "Input/output error")
+        return real_rename(source, destination)
+
+    monkeypatch.setattr(dataset.os, "rename", failing)
+    with pytest.raises(bh.errors.OutputFileError) as info:
+        calc_fleet(tmp_path / "fleet", out, overwrite=True)
+    aside = next(p for p in tmp_path.iterdir() if p.suffix == ".old")
+    assert str(info.value) == f"cannot write {out}: Input/output error; the earlier dataset is in {aside}"
+    assert (aside / "part.0.parquet").read_bytes() == b"old"
+
+
 def test_folders_left_by_a_run_that_was_stopped_are_put_right_with_a_note(tmp_path, capsys):
     """Only bearingheat's own hidden folders beside the target, of runs no longer alive: new parts are removed; an
     earlier dataset set aside is moved back when the target is missing, else removed."""
