@@ -612,3 +612,23 @@ def test_the_users_own_metadata_is_kept_in_every_part(tmp_path):
         assert schema.metadata == {b"source": b"plant A"}
         assert schema.field("id").metadata == {b"description": b"support label", b"unit": b""}
         assert schema.field("NR [W]").metadata == {b"unit": b"W"}
+
+
+def test_a_big_file_is_computed_in_pieces_of_its_row_groups(tmp_path, monkeypatch):
+    """A file above PIECE_BYTES is cut into runs of its row groups, each a part; the rows stay in order and a
+    named range index (stored as its start and step only) gets each piece's own row numbers."""
+    from bearingheat.io import fleet as fleet_module
+
+    monkeypatch.setattr(fleet_module, "PIECE_BYTES", 1)  # every row group a piece
+    demo = pd.read_csv(DEMO)
+    table = pd.concat([demo] * 2, ignore_index=True).rename_axis("row")
+    folder = tmp_path / "fleet"
+    folder.mkdir()
+    table.to_parquet(folder / "big.parquet", row_group_size=5)
+    assert parquet.ParquetFile(folder / "big.parquet").metadata.num_row_groups == 3
+    got = calc_fleet(folder, tmp_path / "out")
+    assert [parquet.read_metadata(p).num_rows for p in sorted((tmp_path / "out").iterdir())] == [5, 5, 2]
+    assert got.column("row").to_pylist() == list(range(12))
+    assert got.column("id").to_pylist() == table["id"].tolist()
+    np.testing.assert_allclose(got.column("MR [N*mm]").to_numpy(), bh.calc(table.reset_index())["MR [N*mm]"],
+                               rtol=1e-12)
