@@ -20,8 +20,9 @@ from bearingheat.errors import ExcelError, F2ChartError, InputError, VMChartErro
 # calc of a CSV or Parquet file starts 0.4 s sooner without them
 from bearingheat.cli.options import add_force, add_json, add_output, add_quiet
 from bearingheat.io.console import Progress, print_summary, print_table, summary_columns
-from bearingheat.io.dataset import (calc_dataset, check_dataset_target, dask_client, dataset_columns, dataset_files,
-                                   is_dataset, read_dataset_columns)
+from bearingheat.io.dataset import (check_scheduler, compute_dataset, dask_client, dataset_columns, plan_dataset,
+                                   read_dataset_columns, recover_target)
+from bearingheat.io.fleet import dataset_files, is_dataset
 from bearingheat.io.arrow import ARROW_SUFFIXES
 from bearingheat.io.pipeline import calc_file
 from bearingheat.io.json import results_json
@@ -50,7 +51,8 @@ know are passed through untouched.
 
 Output files: -o never replaces an existing file without --force, never
 writes over the input, and is written atomically (a temporary file beside it,
-renamed when complete). CSV cells of text that a spreadsheet would run as a
+renamed when complete; with --dask a hidden folder beside the output folder,
+swapped in by renames). CSV cells of text that a spreadsheet would run as a
 formula (starting with =, +, -, @, tab or CR) get a leading apostrophe;
 --no-csv-escape writes them as they are.
 
@@ -67,7 +69,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("input", metavar="INPUT",
                         help="table of supports: CSV (.csv), Parquet (.parquet), Arrow/Feather (.arrow, .feather) or "
                              "an Excel workbook (.xlsx); with --dask a folder or a glob pattern of Parquet files")
-    add_output(parser, ".csv, .parquet, .arrow, .feather or .xlsx; with --dask a folder for the Parquet dataset")
+    add_output(parser, ".csv, .parquet, .arrow, .feather or .xlsx; with --dask a folder for the Parquet dataset",
+               without="the results are printed (--dask needs it)")
     parser.add_argument("--f2-chart", metavar="CSV",
                         help="digitised f2 chart (docs/friction.md gives the format)")
     parser.add_argument("--vm-chart", metavar="CSV",
@@ -106,7 +109,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     dask = parser.add_argument_group("fleet scale (needs pip install 'bearingheat[dask]'; docs/scale.md)")
     dask.add_argument("--dask", action="store_true",
                       help="compute a folder or glob of Parquet files on a Dask cluster and write the results as a "
-                           "Parquet dataset, one part per input partition, into the folder -o names")
+                           "Parquet dataset, one part per input file (or run of row groups of a big file), into the "
+                           "folder -o names; a duty cycle's summary goes beside it as FOLDER.duty.parquet")
     dask.add_argument("--scheduler", metavar="ADDRESS",
                       help="--dask: the scheduler of an existing dask.distributed cluster (tcp://host:8786); "
                            "default a local cluster of worker processes")
@@ -268,17 +272,25 @@ def run_dask(args: argparse.Namespace) -> int:
                          "--sheet, --pdf, --sep and --decimal do not apply")
     if args.scheduler and args.workers:
         raise UsageError("--workers sets up a local cluster; with --scheduler the cluster has its own workers")
+    for note in recover_target(args.output):  # what a run that was stopped left beside the folder
+        print(f"note: {note}", file=sys.stderr)
     try:
+        if args.scheduler:
+            check_scheduler(args.scheduler)
         files = dataset_files(args.input)
-        target = check_dataset_target(args.output, files, force=args.force)
+        plan = plan_dataset(files, args.output, overwrite=args.force, **_calc_options(args))  # before the cluster
+        target = plan.target
         with dask_client(args.scheduler, args.workers):
-            calc_dataset(files, target, overwrite=args.force, **_calc_options(args))
+            run = compute_dataset(plan)
         shown = read_dataset_columns(target, summary_columns(dataset_columns(target)))
     except UNUSABLE_INPUT as exc:
         raise UsageError(str(exc)) from exc
     errors = pc.sum(pc.equal(shown.column("status"), "error")).as_py() or 0
-    if not args.quiet:
-        print_summary(shown, f"{target}/ (Parquet dataset of {len(files)} input files)")
+    if not args.quiet and shown.num_rows == 0:
+        print(f"0 supports: the {len(files)} input files have no rows; {target}/ holds a Parquet dataset of empty "
+              "parts")
+    elif not args.quiet:
+        _print_results(shown, run.duty, f"{target}/ (Parquet dataset of {len(files)} input files)")
     else:
         _quiet_errors(errors, shown.num_rows, f"{target}/")
     return 1 if errors else 0

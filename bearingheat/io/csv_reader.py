@@ -12,11 +12,14 @@ has a decimal point (:func:`sniff_format`).
 
 The cells are read by pyarrow's multi-threaded CSV reader where it gives
 pandas' result (10^6 rows in about half a second on two cores), else by pandas' own parser: when a
-cell begins with white space (pandas skips it), a header cell is blank, or a
-column would be read as dates. The file line of each row is found in arrays
-when no cell is quoted (no cell can then span lines), else with Python's csv
-module. Neither path holds more than the file's bytes, its table and (for
-the pandas path) its text at once.
+cell begins with white space (pandas skips it), a header cell is blank, a
+column would be read as dates or as logical values (pyarrow reads ``1`` and
+``0`` as true and false beside ``TRUE``), or a column of whole numbers may hold
+a hexadecimal one (pyarrow reads ``0x10`` as 16; pandas and calc as no
+number). The file line of each row is found in arrays when no cell is quoted
+(no cell can then span lines), else with Python's csv module. Neither path
+holds more than the file's bytes, its table and (for the pandas path) its text
+at once.
 
 >>> text = "id;d [mm];n [1/min]\\nspindle rear;40;1500,5\\n"
 >>> sniff_format(text)
@@ -56,9 +59,10 @@ _WHITE_SPACE = frozenset(b" \t\r\x0b\x0c")
 #: pandas' words for a missing cell (pandas.read_csv's default na_values), for pyarrow's reader
 _MISSING = ["", "#N/A", "#N/A N/A", "#NA", "-1.#IND", "-1.#QNAN", "-NaN", "-nan", "1.#IND", "1.#QNAN", "<NA>", "N/A",
             "NA", "NULL", "NaN", "None", "n/a", "nan", "null"]
-#: Arrow types pyarrow may give a column that is not text (else the file goes to pandas' parser)
-_ARROW_KINDS = (pa.types.is_integer, pa.types.is_floating, pa.types.is_boolean, pa.types.is_null,
-                pa.types.is_string, pa.types.is_large_string)
+#: Arrow types pyarrow may give a column that is not text (else the file goes to pandas' parser). Not logical
+#: values: pyarrow reads 1 and 0 as true and false where TRUE is in the column, pandas reads them as numbers
+_ARROW_KINDS = (pa.types.is_integer, pa.types.is_floating, pa.types.is_null, pa.types.is_string,
+                pa.types.is_large_string)
 #: bytes decoded at a time to check that a file is UTF-8
 _CHECK_BYTES = 1 << 24
 #: bytes scanned at a time for line breaks and spaces
@@ -329,8 +333,9 @@ def _read_with_pyarrow(raw: bytes, sep: str, decimal: str, header: list[str], te
     """The Arrow table pyarrow's CSV reader makes of the UTF-8 bytes ``raw`` with pandas' conventions (its
     missing-value words, text columns as text, a column left blank as numbers), or None when the file needs
     pandas' parser for the same result: white space at the start of a cell, a blank header cell, a row pyarrow
-    cannot split, or a column it reads as something other than numbers or text (dates). ``file``: the file
-    that holds exactly ``raw``, for the reader to open itself."""
+    cannot split, a column it reads as something other than numbers or text (dates, logical values), or whole
+    numbers in a file that holds '0x' (hexadecimal numbers pandas does not read). ``file``: the file that holds
+    exactly ``raw``, for the reader to open itself."""
     if not all(h.strip() for h in header) or _space_after_separator(raw, sep):
         return None
     # pandas' missing-value words make number cells missing; a text column keeps them as typed ('NA', 'None'
@@ -347,9 +352,14 @@ def _read_with_pyarrow(raw: bytes, sep: str, decimal: str, header: list[str], te
     pa.default_memory_pool().release_unused()  # the reader's freed buffers, back to the system
     if table.column_names != header:
         return None
+    hexadecimal = None
     for i, field in enumerate(table.schema):
         if not any(kind(field.type) for kind in _ARROW_KINDS):
             return None
+        if pa.types.is_integer(field.type):  # pyarrow reads 0x10 as 16; pandas (and calc) as no number
+            hexadecimal = (b"0x" in raw or b"0X" in raw) if hexadecimal is None else hexadecimal
+            if hexadecimal:
+                return None
         if pa.types.is_string(field.type) or pa.types.is_large_string(field.type):  # an empty text cell: missing
             column = table.column(i)
             table = table.set_column(i, field, pc.if_else(pc.equal(column, ""), pa.scalar(None, field.type), column))

@@ -12,7 +12,9 @@ The text is the one of ``to_csv(index=False)``: numbers in their shortest
 form that reads back to the same value, a float with a whole value with
 ``.0`` (``40.0``), missing cells empty, ``True``/``False``, and quotes only
 around the text that needs them (a comma, a quote or a line break; quotes
-inside doubled), as Python's csv module does. One difference: floats below
+inside doubled), as Python's csv module does; times, dates and durations in
+pandas' own forms (``2024-01-01``, ``2024-01-01 00:00:00+01:00``,
+``0 days 01:00:00``: those few columns are written by ``to_csv`` itself). One difference: floats below
 1e-4 may be written as ``0.00001`` where Python writes ``1e-05`` (the same
 number).
 
@@ -110,6 +112,22 @@ def _float_text(values: pa.Array) -> pa.Array:
     return text
 
 
+def _temporal(kind: pa.DataType) -> bool:
+    """Times, dates, times of day and durations: pandas writes them in forms of its own."""
+    types = pa.types
+    return types.is_timestamp(kind) or types.is_date(kind) or types.is_time(kind) or types.is_duration(kind)
+
+
+def _pandas_text(values: pa.Array) -> pa.Array:
+    """Cells of times, dates and durations as ``to_csv`` writes them, by ``to_csv`` itself: a column of dates
+    '2024-01-01' (times only where some value has one, to the finest fraction of a second used), times with a time
+    zone '2024-01-01 00:00:00+01:00', durations '0 days 01:00:00' ('1 days' in a column of whole days), missing
+    cells empty. Such columns are few, and none holds a separator or a quote."""
+    frame = pd.DataFrame({"cell": values.to_pandas(), "end": np.zeros(len(values), dtype=np.int8)})
+    text = frame.to_csv(index=False, header=False, sep="\x1f", lineterminator="\n")
+    return pa.array([line[:-2] for line in text.split("\n")[:-1]], pa.string())
+
+
 def _cell_text(values: pa.Array, escape: bool) -> pa.Array:
     """One column of a block as CSV cells: text, missing cells empty."""
     kind = values.type
@@ -124,6 +142,8 @@ def _cell_text(values: pa.Array, escape: bool) -> pa.Array:
         text = _quoted(escape_text(values) if escape else values)
     elif pa.types.is_null(kind):
         text = pa.nulls(len(values), pa.string())
+    elif _temporal(kind):
+        text = _pandas_text(values)
     else:
         try:
             text = pc.cast(values, pa.string())

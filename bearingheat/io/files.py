@@ -49,7 +49,8 @@ from pathlib import Path
 from bearingheat.errors import OutputFileError, WorkbookChangedError, WorkbookLockedError
 
 __all__ = ["safe_output", "atomic_write", "atomic_write_text", "workbook_lock", "WorkbookLock",
-           "remove_stale_temps", "temp_name", "check_outputs", "write_outputs", "file_fingerprint",
+           "remove_stale_temps", "temp_name", "check_outputs", "write_outputs", "file_fingerprint", "run_folder",
+           "stale_run_folders",
            "STALE_SECONDS", "EXCEL_SUFFIXES"]
 
 #: the workbook suffixes the Excel bridge reads and writes (here, so that code that only tells a workbook from a
@@ -63,6 +64,7 @@ STALE_SECONDS = 60.0
 _HELD: dict[Path, int] = {}
 
 _TEMP = re.compile(r"^\.(?P<name>.+)\.bearingheat-(?P<pid>\d+)-(?P<token>[0-9a-f]+)\.tmp$")
+_RUN_FOLDER = re.compile(r"^\.(?P<name>.+)\.bearingheat-(?P<pid>\d+)-(?P<token>[0-9a-f]+)\.(?P<kind>tmp|old)$")
 
 
 def _cause(exc: BaseException) -> str:
@@ -238,6 +240,41 @@ def remove_stale_temps(folder, name: str, *, older_than: float = STALE_SECONDS) 
             continue
         removed.append(path)
     return removed
+
+
+def run_folder(target, kind: str) -> Path:
+    """A new empty folder beside ``target`` that names this run: ``.<name>.bearingheat-<pid>-<random>.<kind>``
+    (``tmp``: the new contents of a folder being written; ``old``: its earlier contents set aside while the new
+    ones are moved in); its mode is the one a folder made here gets."""
+    target = Path(target)
+    path = target.with_name(f".{target.name}.bearingheat-{os.getpid()}-{secrets.token_hex(4)}.{kind}")
+    path.mkdir()
+    return path
+
+
+def stale_run_folders(target, *, older_than: float = STALE_SECONDS) -> list[tuple[Path, str]]:
+    """The folders :func:`run_folder` made beside ``target`` for runs that are no longer alive, older than
+    ``older_than`` seconds: (folder, kind), the newest first (then by name). Only bearingheat's own names are
+    looked at."""
+    target = Path(target)
+    found: list[tuple[float, Path, str]] = []
+    try:
+        entries = os.listdir(target.parent)
+    except OSError:
+        return []
+    now = time.time()
+    for entry in entries:
+        match = _RUN_FOLDER.match(entry)
+        if not match or match.group("name") != target.name or _alive(int(match.group("pid"))):
+            continue
+        path = target.parent / entry
+        try:
+            stat = os.lstat(path)
+        except OSError:
+            continue
+        if stat_module.S_ISDIR(stat.st_mode) and now - stat.st_mtime >= older_than:
+            found.append((stat.st_mtime, path, match.group("kind")))
+    return [(path, kind) for _, path, kind in sorted(found, key=lambda item: (-item[0], item[1].name))]
 
 
 def file_fingerprint(path) -> tuple[int, int, str]:

@@ -25,14 +25,15 @@ import pandas as pd
 import pyarrow as pa
 
 from bearingheat.calc.contract import CONTRACT, output_header
+from bearingheat.calc.distributed import calc_partition
 from bearingheat.calc.table import calc
 from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.catalogue.vm_chart import VMChart
-from bearingheat.io.arrow import ARROW_SUFFIXES, arrow_column, read_arrow_table, unit_of
+from bearingheat.io.arrow import ARROW_SUFFIXES, arrow_column, read_arrow_table, user_metadata, with_unit
 from bearingheat.io.csv_reader import RowLines, read_source
 from bearingheat.io.tables import cite_rows, set_aside
 
-__all__ = ["ROWS_PER_BLOCK", "calc_file", "ordered_union"]
+__all__ = ["ROWS_PER_BLOCK", "calc_file", "calc_block", "load_options", "ordered_union"]
 
 #: rows calc computes at a time (5*10^4 rows of calc's working arrays take some 75 MB; 10^6 rows in blocks of
 #: 25 000 / 50 000 / 100 000 / 200 000 rows peaked at 0.70 / 0.75 / 0.84 / 0.96 GB in the same time)
@@ -98,7 +99,7 @@ def _concat(blocks: list[pa.Table]) -> pa.Table:
                 kind = pa.unify_schemas([pa.schema([pa.field(name, kind)]), pa.schema([pa.field(name, other)])],
                                         promote_options="permissive").field(name).type
         fields[name] = pa.field(name, kind, metadata=present[0].metadata)
-    schema = pa.schema([fields[n] for n in names])
+    schema = pa.schema([fields[n] for n in names], metadata=blocks[0].schema.metadata)
     tables = []
     for block in blocks:
         columns = [block.column(n).cast(fields[n].type) if n in block.column_names
@@ -107,9 +108,9 @@ def _concat(blocks: list[pa.Table]) -> pa.Table:
     return pa.concat_tables(tables)
 
 
-def _loaded(options: dict) -> dict:
+def load_options(options: dict) -> dict:
     """calc's options with the files it would read on every call read once (the f2 and VM charts, a coefficients
-    CSV)."""
+    CSV): the objects, not their paths."""
     options = dict(options)
     if isinstance(options.get("f2_chart"), str):
         options["f2_chart"] = F2Chart.from_csv(options["f2_chart"])
@@ -122,16 +123,39 @@ def _loaded(options: dict) -> dict:
 
 def _block_table(result: pd.DataFrame, block: pd.DataFrame, source: pa.Table | None) -> pa.Table:
     """One block's results as Arrow: a column calc passed through unchanged is the input's own Arrow column
-    (no copy), the others are converted; each field with its unit as metadata."""
+    (no copy), the others are converted; each field with its unit as metadata, beside the metadata the input's
+    field of that name has; the input's schema metadata without pandas' (:func:`user_metadata`)."""
     arrays, fields = [], []
     for name in result.columns:
         values = result[name]
-        same = source is not None and name in source.column_names and name in block.columns and \
-            values.equals(block[name])
+        known = source is not None and name in source.column_names
+        same = known and name in block.columns and values.equals(block[name])
         column = source.column(name) if source is not None and same else arrow_column(values)
         arrays.append(column)
-        fields.append(pa.field(str(name), column.type, metadata={"unit": unit_of(str(name))}))
-    return pa.Table.from_arrays(arrays, schema=pa.schema(fields))
+        metadata = source.schema.field(name).metadata if source is not None and known else None
+        fields.append(with_unit(pa.field(str(name), column.type, metadata=metadata)))
+    return pa.Table.from_arrays(arrays, schema=pa.schema(
+        fields, metadata=user_metadata(source.schema) if source is not None else None))
+
+
+def calc_block(block: pd.DataFrame, source: pa.Table | None, options: dict, *, mark: str = ".",
+               lines: RowLines | None = None, layout: dict | None = None) -> pa.Table:
+    """calc of one block of rows (``block``, read from the Arrow table ``source`` or None) as Arrow.
+
+    Columns calc cannot read the header of are set aside and put back in their places
+    (:func:`bearingheat.io.tables.set_aside`), row messages cite ``lines``; with a ``layout``
+    (:func:`bearingheat.calc.distributed.result_layout`) the block gets every column of it, as a partition of the
+    Dask path does (an empty block: the input's columns and the layout's, nothing computed).
+    """
+    usable, extras = set_aside(block)
+    if layout is None:
+        result = calc(usable, decimal=mark, **options)
+    else:
+        result = calc_partition(usable, calc, layout, {**options, "decimal": mark})
+    for position, header, values in extras:
+        result.insert(position, header, values.array)
+    cite_rows(result, lines)
+    return _block_table(result, block, source)
 
 
 def _read(path, sep: str | None, decimal: str | None) -> tuple[pa.Table | pd.DataFrame, RowLines | None, str]:
@@ -153,7 +177,7 @@ def calc_file(path, *, sep: str | None = None, decimal: str | None = None, progr
     """
     table, lines, mark = _read(path, sep, decimal)
     rows = table.num_rows if isinstance(table, pa.Table) else len(table)
-    options = _loaded(options)
+    options = load_options(options)
     blocks = []
     if progress is not None:
         progress.start(rows, "calc")
@@ -165,13 +189,9 @@ def calc_file(path, *, sep: str | None = None, decimal: str | None = None, progr
             block = source.to_pandas()
         else:
             block = table.iloc[start:stop]
-        usable, extras = set_aside(block)
-        result = calc(usable, decimal=mark, **options)
-        for position, header, values in extras:
-            result.insert(position, header, values.to_numpy())
-        cite_rows(result, lines[start:stop] if lines is not None else None)
-        blocks.append(_block_table(result, block, source))
-        del result, block, usable
+        blocks.append(calc_block(block, source, options, mark=mark,
+                                 lines=lines[start:stop] if lines is not None else None))
+        del block
         if progress is not None:
             progress.update(stop)
     if progress is not None:

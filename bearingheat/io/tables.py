@@ -92,7 +92,7 @@ def read_table(path, sheet: str | None = None, *, sep: str | None = None, decima
     return table
 
 
-def cite_rows(result: pd.DataFrame, lines: list[int] | None) -> pd.DataFrame:
+def cite_rows(result: pd.DataFrame, lines: list[int] | RowLines | None) -> pd.DataFrame:
     """Begin each row message with where the row is in the file: ``row 7 (id "spindle rear"): ...``.
 
     ``lines`` are the file line numbers of the rows (``read_csv(...).attrs['lines']``); rows without a
@@ -134,13 +134,14 @@ def calc_csv(path, *, sep: str | None = None, decimal: str | None = None, **opti
     with brackets that are no unit in their names; ``options`` go to calc.
     """
     if Path(path).suffix.lower() in ARROW_SUFFIXES:  # a binary table: no separators, no file lines to cite
-        return calc(read_arrow(path), **options)
-    table = read_csv(path, sep=sep, decimal=decimal)
-    lines = table.attrs.get("lines")
+        table, lines, mark = read_arrow(path), None, "."
+    else:
+        table = read_csv(path, sep=sep, decimal=decimal)
+        lines, mark = table.attrs.get("lines"), table.attrs["decimal"]
     usable, extras = set_aside(table)
-    result = calc(usable, decimal=table.attrs["decimal"], **options)
+    result = calc(usable, decimal=mark, **options)
     for position, header, values in extras:
-        result.insert(position, header, values.to_numpy())
+        result.insert(position, header, values.array)
     return cite_rows(result, lines)
 
 

@@ -84,3 +84,70 @@ def test_a_column_named_twice_is_named(tmp_path, suffix):
         read_arrow(path)
     assert str(info.value) == (f"{path}: column 'Fr [kN]' appears twice (columns {position + 1} and {position + 2}); "
                                "keep one")
+
+
+def test_an_index_pandas_stored_in_the_file_comes_back_as_columns(tmp_path, capsys):
+    """``df.set_index('id').to_parquet()`` stores the ids as pandas' index: calc dropped them (read_arrow gave
+    them as the index, calc's results have none). A named index now comes back as columns, first, as
+    ``reset_index()`` puts them (a named range of row numbers too); an unnamed one (the row labels pandas keeps)
+    is dropped, as ``to_csv(index=False)`` drops it."""
+    demo = pd.read_csv(DEMO)
+    demo.set_index("id").to_parquet(tmp_path / "named.parquet")
+    back = read_arrow(tmp_path / "named.parquet")
+    assert list(back.columns) == list(demo.columns) and back["id"].tolist() == demo["id"].tolist()
+    assert list(back.index) == list(range(len(demo)))
+    assert main(["calc", str(tmp_path / "named.parquet"), "-o", str(tmp_path / "out.csv"), "-q"]) == 0
+    assert pd.read_csv(tmp_path / "out.csv")["id"].tolist() == demo["id"].tolist()
+    assert calc_csv(tmp_path / "named.parquet")["id"].tolist() == demo["id"].tolist()
+    demo.set_index(pd.Index([5, 3, 1, 0, 2, 4])).to_parquet(tmp_path / "unnamed.parquet")
+    assert list(read_arrow(tmp_path / "unnamed.parquet").columns) == list(demo.columns)
+    demo.set_index(["id", "designation"]).to_parquet(tmp_path / "two.parquet")
+    assert list(read_arrow(tmp_path / "two.parquet").columns) == list(demo.columns)
+    demo.rename_axis("row").to_parquet(tmp_path / "rows.parquet")
+    rows = read_arrow(tmp_path / "rows.parquet")
+    assert list(rows.columns) == ["row", *demo.columns] and rows["row"].tolist() == list(range(len(demo)))
+
+
+@pytest.mark.parametrize("suffix", [".parquet", ".arrow", ".feather"])
+def test_a_frame_round_trips_with_its_dtypes(tmp_path, suffix):
+    """The module says a table round-trips unchanged, but write_arrow wrote no pandas description of the columns:
+    Int64 came back as float64, boolean as object, Float64 as float64. Now the dtypes come back; the index is
+    not written (as to_csv(index=False) does not write it)."""
+    frame = pd.DataFrame({
+        "id": pd.array(["a", None, "007"], dtype="str"),
+        "Fr [kN]": [1.5, np.nan, 3.0],
+        "count": pd.array([1, None, 3], dtype="Int64"),
+        "checked": pd.array([True, None, False], dtype="boolean"),
+        "share": pd.array([1.0, None, 2.5], dtype="Float64"),
+        "grade": pd.Categorical(["u", "v", None]),
+        "installed": pd.to_datetime(["2024-01-01", None, "2024-03-01"]).tz_localize("Europe/Berlin"),
+        "runtime": pd.to_timedelta([1, None, 3], unit="h"),
+    })
+    path = write_arrow(frame.set_axis([10, 20, 30]), tmp_path / f"t{suffix}")
+    back = read_arrow(path)
+    pd.testing.assert_frame_equal(back, frame, check_exact=True)
+    assert back["count"].tolist()[0] == 1 and back["checked"].tolist()[2] is False
+    assert column_units(path)["Fr [kN]"] == "kN"
+
+
+def test_the_users_own_metadata_is_kept_beside_the_units(tmp_path):
+    """The unit metadata replaced the metadata a file had of its own: a field's 'description' and the schema's
+    'source' were gone from calc's results. They are kept now, bearingheat's unit beside them; pandas'
+    description of the input frame is not carried into results with other columns."""
+    import pyarrow as pa
+
+    from bearingheat.io.pipeline import calc_file
+
+    table = pa.Table.from_pandas(pd.read_csv(DEMO), preserve_index=False)
+    fields = [table.schema.field(0).with_metadata({"description": "support label"}), *list(table.schema)[1:]]
+    table = table.cast(pa.schema(fields, metadata={**table.schema.metadata, b"source": b"plant A"}))
+    parquet.write_table(table, tmp_path / "in.parquet")
+    for rows_per_block in (100, 4):  # one block, and blocks joined
+        results = calc_file(tmp_path / "in.parquet", rows_per_block=rows_per_block)
+        assert results.schema.metadata == {b"source": b"plant A"}
+        assert results.schema.field("id").metadata == {b"description": b"support label", b"unit": b""}
+    assert main(["calc", str(tmp_path / "in.parquet"), "-o", str(tmp_path / "out.parquet"), "-q"]) == 0
+    schema = parquet.read_schema(tmp_path / "out.parquet")
+    assert schema.metadata == {b"source": b"plant A"}
+    assert schema.field("id").metadata == {b"description": b"support label", b"unit": b""}
+    assert schema.field("MR [N*mm]").metadata == {b"unit": b"N*mm"}

@@ -4,6 +4,7 @@ from __future__ import annotations
 import re
 
 import pandas as pd
+import pyarrow as pa
 import pytest
 from excel_helpers import EXAMPLE_CSV, csv_result
 
@@ -375,3 +376,65 @@ def test_pyarrow_reader_is_never_given_a_python_file(tmp_path, monkeypatch, enco
         assert sources[0] == str(path)
     else:
         assert isinstance(sources[0], csv_reader.pa.BufferReader)
+
+
+@pytest.mark.parametrize("cell", ["TRUE", "0x10"])
+def test_a_number_column_with_a_logical_word_or_a_hexadecimal_number_is_read_as_pandas_reads_it(tmp_path, cell):
+    """pyarrow's reader (the fast path) read a column of TRUE, 1, 0 as logical values (every row in error, the
+    output showing True) and 0x10 as 16 (status ok), where pandas' parser reads 1 and 0 as numbers and neither
+    TRUE nor 0x10 as one. Such files now go to pandas' parser: only the row of that cell is in error."""
+    path = tmp_path / "in.csv"
+    path.write_text("id,designation,d [mm],D [mm],C0 [kN],lubrication,n [rpm],Fr [kN],nu [mm^2/s]\n"
+                    f"a,6208,40,80,18,oil_bath,1480,{cell},40\nb,6208,40,80,18,oil_bath,1480,1,40\n"
+                    "c,6208,40,80,18,oil_bath,1480,0,40\n")
+    result = calc_csv(path)
+    assert result["Fr [kN]"].tolist() == [cell, "1", "0"]
+    assert result["status"].tolist() == ["error", "ok", "ok"]
+    assert result["message"].iloc[0] == f"row 2 (id \"a\"): '{cell}' is not a number for Fr [kN]"
+    assert main(["calc", str(path), "-o", str(tmp_path / "out.csv"), "-q"]) == 1
+    assert (tmp_path / "out.csv").read_text().splitlines()[1].startswith(f"a,6208,40,80,18,oil_bath,1480,{cell},40,")
+
+
+def test_times_dates_and_durations_are_written_as_to_csv_writes_them(tmp_path):
+    """The CSV writer wrote a duration of 1 h as 3600000000 (its microseconds), dates as
+    '2024-01-01 00:00:00.000000' and a time zone as '+0100'. They are now pandas' to_csv text, byte for byte."""
+    import datetime
+
+    frame = pd.DataFrame({
+        "id": ["a", "b", "c"],
+        "day": pd.to_datetime(["2024-01-01", None, "2024-03-01"]),
+        "at": pd.to_datetime(["2024-01-01 00:00:00", None, "2024-03-01 12:30:00"]),
+        "at_ms": pd.to_datetime(["2024-01-01 00:00:00.500", None, "2024-03-01 12:30:00.000"]),
+        "installed": pd.date_range("2024-01-01", periods=3, tz="Europe/Berlin"),
+        "runtime": pd.to_timedelta([3600, None, 90], unit="s"),
+        "days": pd.to_timedelta([1, 2, None], unit="D"),
+        "date": [datetime.date(2024, 1, 1), None, datetime.date(2024, 2, 29)],
+        "time": [datetime.time(12, 30), None, datetime.time(1, 2, 3, 4)],
+    })
+    write_csv(frame, tmp_path / "out.csv")
+    text = (tmp_path / "out.csv").read_text()
+    assert text == frame.to_csv(index=False)
+    assert text.splitlines()[1] == ("a,2024-01-01,2024-01-01 00:00:00,2024-01-01 00:00:00.500,"
+                                    "2024-01-01 00:00:00+01:00,0 days 01:00:00,1 days,2024-01-01,12:30:00")
+    write_csv(pa.Table.from_pandas(frame, preserve_index=False), tmp_path / "arrow.csv")
+    assert (tmp_path / "arrow.csv").read_text() == text
+
+
+@pytest.mark.parametrize("source_suffix, output_suffix", [(".csv", ".csv"), (".csv", ".xlsx"), (".parquet", ".csv"),
+                                                          (".parquet", ".xlsx"), (".parquet", ".parquet")])
+def test_a_header_calc_cannot_read_passes_through_every_output(tmp_path, source_suffix, output_suffix):
+    """A column whose brackets are no unit ('remark [see note]]') passed through to a CSV but was refused with
+    -o OUT.xlsx from a Parquet file (and by --dask): every output now passes it through, in its place."""
+    table = pd.read_csv(EXAMPLE_CSV)
+    table.insert(3, "remark [see note]]", [f"r{i}" for i in range(len(table))])
+    source = tmp_path / f"in{source_suffix}"
+    table.to_csv(source, index=False) if source_suffix == ".csv" else table.to_parquet(source, index=False)
+    out = tmp_path / f"out{output_suffix}"
+    assert main(["calc", str(source), "-o", str(out), "-q"]) == 0
+    if output_suffix == ".xlsx":  # a header row of names, a row of units below it
+        written = pd.read_excel(out, sheet_name="Results", skiprows=[1])
+    else:
+        written = pd.read_csv(out) if output_suffix == ".csv" else pd.read_parquet(out)
+    assert list(written.columns).index("remark [see note]]") == 3
+    assert written["remark [see note]]"].tolist() == ["r0", "r1", "r2", "r3", "r4", "r5"]
+    assert written["status"].tolist() == calc_csv(EXAMPLE_CSV)["status"].tolist()
