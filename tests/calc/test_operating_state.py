@@ -147,7 +147,7 @@ def test_blocks_of_rows_give_the_same_numbers(monkeypatch):
     # on their own, so blocks of 2 rows give what one block of all rows gives, to the last bit
     import importlib
 
-    thermal = importlib.import_module("bearingheat.calc.thermal")
+    thermal = importlib.import_module("bearingheat.calc.operating_temperature")
     kernels = importlib.import_module("bearingheat.kernels.thermal")
     skf = pd.read_csv("examples/gearbox_shaft_skf.csv")
     rows = skf.drop(columns=["nu [mm^2/s]"]).assign(**{"nu40 [mm^2/s]": 68, "nu100 [mm^2/s]": 8.6})
