@@ -9,6 +9,8 @@ heating to cooling, then refined by :func:`~bearingheat.kernels.roots.bracketed_
 from __future__ import annotations
 
 import functools
+from dataclasses import dataclass
+from typing import Callable
 
 import numpy as np
 
@@ -19,7 +21,7 @@ from bearingheat.kernels.roots import bracketed_root
 from bearingheat.kernels.viscosity import KELVIN_OFFSET
 
 __all__ = ["OPERATING_TEMPERATURE_LIMIT", "BELOW_AMBIENT_SEARCH", "OPERATING_TEMPERATURE_CELLS", "ROOT_BLOCK",
-           "operating_point", "lowest_operating_temperature", "no_equilibrium_text"]
+           "OFF_CHART", "OperatingPoint", "operating_point", "lowest_operating_temperature", "no_equilibrium_text"]
 
 #: upper end of the search for the operating temperature [°C]; above it the heat is said to run away
 OPERATING_TEMPERATURE_LIMIT = 150.0
@@ -32,10 +34,60 @@ OPERATING_TEMPERATURE_CELLS = 24
 ROOT_BLOCK = 1 << 14
 
 
-def operating_point(frame, results, nu_at, nu_varies, Q_S, Q_L, Q_E, T_amb, t_limit, power=None):
-    """(T_op, status) at the operating speed: N_R(ν(T)) + Q_E = Q_S(T) + Q_L(T), N_R by each row's model
-    (``power``: the :class:`~bearingheat.calc.models.FrictionPower` of ``results`` where the caller has it);
-    ``nu_varies`` marks the rows whose ν follows T (Walther), ``nu_at`` gives ν(T) of every row."""
+@dataclass
+class OperatingPoint:
+    """The operating temperature of every row (:func:`operating_point`) and how it was searched.
+
+    ``T`` [°C] is NaN where ``status`` is not 0 (as :func:`lowest_operating_temperature`, and
+    :data:`OFF_CHART` where ν·n·dM lies off the f2 chart at every temperature of the search); ``balance(T)``
+    is N_R + Q_E − Q_S − Q_L [W]; ``T_low`` and ``T_high`` are the ends searched, narrowed on rows whose f2 is
+    read off the chart to the temperatures the chart reaches (``chart_low``, ``chart_high``: where it did).
+    """
+
+    T: np.ndarray
+    status: np.ndarray
+    balance: Callable
+    T_low: np.ndarray
+    T_high: np.ndarray
+    T_amb: np.ndarray
+    t_limit: float
+    power: FrictionPower
+    chart_low: np.ndarray
+    chart_high: np.ndarray
+
+    def why(self, i: int) -> str:
+        """Why row ``i`` has no T_op."""
+        status, T_amb, t_limit, power = self.status[i], self.T_amb[i], self.t_limit, self.power
+        if status == 1 and T_amb >= t_limit:  # the search lies below the ambient: nothing is known about running away
+            return (f"the ambient temperature T_amb = {T_amb:g} degC is not below {t_limit:g} degC, the upper end of "
+                    "the search for the operating temperature; T_op is not computed")
+        if status == OFF_CHART or (status == 1 and self.chart_high[i]) or (status == -1 and self.chart_low[i]):
+            x_lo, x_hi = power.chart_x[0][i], power.chart_x[1][i]
+            chart = f"the f2 chart at Fa/A = {power.Fa_over_A[i]:.4g}"
+            tail = "the Schaeffler catalogue forbids extrapolating the chart, so T_op is not computed"
+            if status == 1:
+                return (f"no equilibrium up to {self.T_high[i]:.4g} degC, where nu*n*dM falls to {x_lo:.4g} "
+                        f"mm^3/(s*min), the lower end of {chart}: the friction heat still exceeds the heat carried "
+                        f"away there; {tail}")
+            if status == -1:
+                return (f"no equilibrium down to {self.T_low[i]:.4g} degC, where nu*n*dM rises to {x_hi:.4g} "
+                        f"mm^3/(s*min), the upper end of {chart}: the heat carried away already exceeds the friction "
+                        f"heat there; {tail}")
+            return (f"nu*n*dM lies {'above' if self.chart_low[i] else 'below'} {chart} ({x_lo:.4g} to {x_hi:.4g} "
+                    f"mm^3/(s*min)) at every temperature from {T_amb - BELOW_AMBIENT_SEARCH:g} to {t_limit:g} "
+                    f"degC; {tail}")
+        return no_equilibrium_text(status, T_amb, t_limit)
+
+
+#: the status of a row whose ν·n·dM lies off its f2 chart at every temperature searched
+OFF_CHART = 3
+
+
+def operating_point(frame, results, nu_at, nu_varies, Q_S, Q_L, Q_E, T_amb, t_limit, power=None) -> OperatingPoint:
+    """The operating temperature at the operating speed: N_R(ν(T)) + Q_E = Q_S(T) + Q_L(T), N_R by each row's
+    model (``power``: the :class:`~bearingheat.calc.models.FrictionPower` of ``results`` where the caller has
+    it; rows whose f2 is read off a chart take M2 at ν(T)·n·dM); ``nu_varies`` marks the rows whose ν follows
+    T (Walther), ``nu_at`` gives ν(T) of every row."""
     n = number_column(frame, "n")
     power = power if power is not None else FrictionPower(frame, results)
     T_low = T_amb - BELOW_AMBIENT_SEARCH
@@ -52,6 +104,7 @@ def operating_point(frame, results, nu_at, nu_varies, Q_S, Q_L, Q_E, T_amb, t_li
         def balance(theta, rows=slice(None)):
             with np.errstate(invalid="ignore", over="ignore"):
                 return generated[rows] - Q_S(theta, rows) - Q_L(theta, rows)
+    T_low, T_high, chart_low, chart_high, off_chart = _chart_window(power, nu_at, n, nu_varies, T_low, T_high)
     # With the catalogue speed law N_R grows with ν, ν(T) is monotone (Walther or constant), Q_S = k_q·A_r·(T − T_amb)
     # and Q_L grow with T: where ν does not rise with T and k_q·A_r > 0 the balance falls strictly and has one root
     # (rows with a missing input compare as NaN: their balance is NaN at the ends, status 2 whatever the scan)
@@ -65,7 +118,31 @@ def operating_point(frame, results, nu_at, nu_varies, Q_S, Q_L, Q_E, T_amb, t_li
     affine = power.closed & ~nu_varies
     T_op, status = lowest_operating_temperature(balance, T_low, T_high, single_root=falling, affine=affine,
                                                 blocks=True)
-    return T_op, status, balance
+    status = np.where(off_chart, OFF_CHART, status)
+    return OperatingPoint(T_op, status, balance, T_low, T_high, T_amb, float(t_limit), power, chart_low, chart_high)
+
+
+def _chart_window(power, nu_at, n, nu_varies, T_low, T_high):
+    """[T_low, T_high] narrowed, on the rows whose f2 is read off the chart and whose ν follows T, to the
+    temperatures at which ν(T)·n·dM lies on the chart (ν falls as T rises: the chart's largest ν·n·dM is met at
+    the cold end); a hair inside, so that rounding does not carry an end off the chart. Returns the ends, where
+    the chart narrowed the low and the high end, and the rows the chart reaches at no temperature searched (their
+    range is left empty at T_low)."""
+    chart = power.chart_rows & nu_varies
+    no_rows = np.zeros(len(T_low), dtype=bool)
+    if not chart.any():
+        return T_low, T_high, no_rows, no_rows, no_rows
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        per_nu = n * power.dM
+        T_cold = nu_at.temperature_at(power.chart_x[1] / per_nu)
+        T_hot = nu_at.temperature_at(power.chart_x[0] / per_nu)
+        T_cold = T_cold + 1e-9 * (T_cold + KELVIN_OFFSET)
+        T_hot = T_hot - 1e-9 * (T_hot + KELVIN_OFFSET)
+        chart_low = chart & (T_cold > T_low)
+        chart_high = chart & (T_hot < T_high)
+        off = chart & ((T_cold >= T_high) | (T_hot <= T_low))
+    low, high = np.where(chart_low, T_cold, T_low), np.where(chart_high, T_hot, T_high)
+    return np.where(off, T_low, low), np.where(off, T_low, high), chart_low, chart_high, off
 
 
 def _side_of_the_regime_step(balance, nu_at, n, rows, T_low, T_high):

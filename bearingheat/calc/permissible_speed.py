@@ -107,13 +107,37 @@ def permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue, T_be
             out[sel] = f_n * n_used[sel]
     generic = rows & ~power.closed
     if generic.any():
-        out[generic] = generic_speed(power, nu, Q)[generic]
+        speed, status = generic_speed(power, nu, Q)
+        out[generic] = speed[generic]
+        _chart_refusals(power, nu, generic & (status != 0), status, problems)
         for i in np.flatnonzero(generic & (methods != "exact")):
+            why = ("a load torque that does not change with the speed; M2 read off the f2 chart at nu*n*dM does"
+                   if power.chart_rows[i] else "the catalogue model only")
             problems.append((int(i), "warning", f"n_per: the {SPEED_FACTOR_METHODS[methods[i]].title} holds for "
-                                                "the catalogue model only; the exact root is used"))
+                                                f"{why}; the exact root is used"))
     n_G = number_column(frame, "n_G")
     capped = rows & (out > n_G)
     for i in np.flatnonzero(capped):
         problems.append((int(i), "warning", f"n_per: the thermal value {out[i]:.5g} 1/min is above the limiting "
                                             f"speed n_G = {n_G[i]:g} 1/min; n_per = n_G"))
     return np.where(capped, n_G, out)
+
+
+def _chart_refusals(power, nu, unsolved, status, problems) -> None:
+    """Why the rows ``unsolved`` whose f2 is read off the chart have no n_per: the speed at which the friction
+    heat meets the heat carried away lies where ν(T_bearing)·n·dM is off the chart (the Schaeffler catalogue,
+    p. 70: the charts are not to be extrapolated)."""
+    low, high = power.speed_range(nu)
+    for i in np.flatnonzero(unsolved & power.chart_rows).tolist():
+        chart = f"of the f2 chart at Fa/A = {power.Fa_over_A[i]:.4g}; the Schaeffler catalogue forbids extrapolating it"
+        if status[i] == 1:
+            problems.append((i, "warning", f"n_per: the friction heat exceeds the heat carried away at T_bearing "
+                                           f"already at {low[i]:.5g} 1/min, where nu*n*dM = {power.chart_x[0][i]:.4g} "
+                                           f"mm^3/(s*min) is the lower end {chart}; n_per lies below"))
+        elif status[i] == -1:
+            problems.append((i, "warning", f"n_per: the friction heat stays below the heat carried away at T_bearing "
+                                           f"up to {high[i]:.5g} 1/min, where nu*n*dM = {power.chart_x[1][i]:.4g} "
+                                           f"mm^3/(s*min) is the upper end {chart}; n_per lies above"))
+        else:
+            problems.append((i, "warning", f"n_per: the friction heat is not a number at nu = {nu[i]:.4g} mm^2/s "
+                                           f"between {low[i]:.5g} and {high[i]:.5g} 1/min, the speeds {chart}"))

@@ -43,11 +43,11 @@ import pandas as pd
 from bearingheat.calc.contract import columns, register_choices
 from bearingheat.calc.models import DEFAULT_MODEL, FrictionPower, failed_rows, plain_bushing_rows, results_at_viscosity
 from bearingheat.calc.operating_temperature import (BELOW_AMBIENT_SEARCH, OPERATING_TEMPERATURE_LIMIT,
-                                                    lowest_operating_temperature, no_equilibrium_text,
-                                                    operating_point)
+                                                    lowest_operating_temperature, operating_point)
 from bearingheat.calc.permissible_speed import (DEFAULT_SPEED_FACTOR_METHOD, SPEED_FACTOR_METHODS, SpeedFactorMethod,
                                                 permissible_speed_rows)
 from bearingheat.calc.reference_speed import thermal_reference_speed_details, thermal_reference_speed_rows
+from bearingheat.calc.messages import with_texts
 from bearingheat.calc.supports import coded_categorical, nonblank, number_column, text_codes, with_columns
 from bearingheat.calc.heat_flows import (HEAT_BALANCE_DETAILS, OIL_DATA, heat_flow_setup, viscosity_of_rows,
                                          walther_columns)
@@ -77,10 +77,6 @@ __all__ = [
 #: the temperature [°C] of the provisional viscosity of the friction pass for rows whose ν is taken at T_op (only
 #: M0 depends on it, and M0 is computed again at ν(T_op))
 PROVISIONAL_TEMPERATURE = 70.0
-#: T_op of rows whose f2 is read off the chart at ν·n·dM is solved again until it moves less than this [K] ...
-SETTLED_TEMPERATURE = 1e-9
-#: ... in at most this many passes
-SETTLE_PASSES = 20
 #: where a row's ν comes from (the hidden column ``_nu_at``; '' for a row without oil data and without ν)
 NU_SOURCES = ("given", "T_bearing", "T_op", "")
 #: where the operating viscosity is taken when it comes from nu40/nu100 or iso_vg
@@ -178,8 +174,8 @@ def settle_viscosity(frame: pd.DataFrame, results: pd.DataFrame, *, t_limit: flo
     solved from its results, ``nu`` becomes ν(T_op) and the results follow
     it (:func:`~bearingheat.calc.models.results_at_viscosity`: M0, MR, NR
     of the catalogue model without a second evaluation). Where f2 is read
-    off the chart at ν·n·dM, M2 depends on ν too: T_op and ν are solved
-    again until T_op moves less than :data:`SETTLED_TEMPERATURE`. Returns
+    off the chart at ν·n·dM, the heat balance takes M2 at each trial
+    temperature's ν, so one solve gives the operating state. Returns
     (frame, results, problems); a row whose T_op has no solution is an
     error, or falls back to T_bearing in 'auto' mode.
     """
@@ -189,42 +185,26 @@ def settle_viscosity(frame: pd.DataFrame, results: pd.DataFrame, *, t_limit: flo
     fallback = frame["_nu_fallback"].to_numpy(dtype=bool)
     A, B = number_column(frame, "_walther_A"), number_column(frame, "_walther_B")
     frame = frame.drop(columns=["_nu_pending", "_nu_fallback"])
-    why_unsolved: dict[int, str] = {}
     failed_at_provisional = failed_rows(results)
-    T_op = np.full(len(frame), np.nan)
-    balance_T = balance_status = None  # the heat balance's T_op of every row, kept for heat_balance_rows
-    # the heat flows and ν(T) do not change from pass to pass (the pending rows' ν follows their Walther line)
-    flows, nu_at = heat_flow_setup(frame), viscosity_of_rows(frame, A, B)
-    solving = pending
-    for _ in range(SETTLE_PASSES):
-        T_new, unsolved, T_all, status_all = _solve_operating_temperature(frame, results, solving, t_limit,
-                                                                          flows, nu_at, ~np.isnan(A))
-        if balance_T is None:
-            balance_T, balance_status = T_all, status_all
-        else:
-            balance_T = np.where(solving, T_all, balance_T)
-            balance_status = np.where(solving, status_all, balance_status)
-        why_unsolved = {i: why for i, why in why_unsolved.items() if not solving[i]} | unsolved
-        moved = solving & ~(np.abs(T_new - T_op) <= SETTLED_TEMPERATURE)
-        T_op = np.where(solving, T_new, T_op)
-        nu = number_column(frame, "nu").copy()
-        back = fallback & np.isnan(T_op)
-        with np.errstate(invalid="ignore", over="ignore"):
-            nu[moved] = np.where(back, walther_viscosity(A, B, number_column(frame, "T_bearing")),
-                                 walther_viscosity(A, B, T_op))[moved]
-        frame["nu"] = nu
-        results = results_at_viscosity(frame, results, moved, f2_chart=f2_chart, labels=labels, model=model)
-        # M2 read off the f2 chart at nu*n*dM makes N_R depend on ν beyond the closed form: those rows again
-        solving = moved & ~np.isnan(T_op) & (results["M2"].to_numpy(dtype=float) > 0) & ~failed_rows(results)
-        if not solving.any():
-            break
+    details, _, T_amb, Q_E, Q_S, Q_L = heat_flow_setup(frame)
+    point = operating_point(frame, results, viscosity_of_rows(frame, A, B), ~np.isnan(A), Q_S, Q_L, Q_E, T_amb,
+                            t_limit, FrictionPower(frame, results, f2_chart))
+    # a row in error is left to its own message; a bearing without a heat balance says why
+    reasons = details["reason"].array  # (a categorical where spread from the distinct bearings: no text per row)
+    asked = pending & ~(failed_at_provisional | plain_bushing_rows(results))
+    refused = asked & nonblank(reasons, len(asked))
+    T_op = np.where(asked & ~refused & (point.status == 0), point.T, np.nan)
+    why_unsolved = {int(i): reasons[i] for i in np.flatnonzero(refused)}
+    why_unsolved.update({int(i): point.why(int(i)) for i in np.flatnonzero(asked & ~refused & (point.status != 0))})
+    nu = number_column(frame, "nu").copy()
+    with np.errstate(invalid="ignore", over="ignore"):
+        nu[pending] = np.where(fallback & np.isnan(T_op), walther_viscosity(A, B, number_column(frame, "T_bearing")),
+                               walther_viscosity(A, B, T_op))[pending]
+    frame["nu"] = nu
+    results = results_at_viscosity(frame, results, pending, f2_chart=f2_chart, labels=labels, model=model)
     problems = [(i, "error", f"nu [mm^2/s]: cannot be taken at T_op; {why}; give T_bearing")
                 for i, why in sorted(why_unsolved.items()) if not fallback[i]]
-    problems += [(int(i), "warning", f"T_op: did not settle within {SETTLED_TEMPERATURE:g} K in {SETTLE_PASSES} "
-                                     "passes (f2 read off the chart at nu*n*dM depends on the viscosity)")
-                 for i in np.flatnonzero(solving)]
-    # a row the model refuses only at ν(T_op) (f2 off its chart at that nu*n*dM) is told where ν came from
-    nu = number_column(frame, "nu")
+    # a row the model refuses only at ν(T_op) is told where ν came from
     problems += [(int(i), "error", f"nu [mm^2/s]: {nu[i]:.4g}, taken at the operating temperature T_op = "
                                    f"{T_op[i]:.4g} degC; give T_bearing and viscosity_at 'bearing', or nu, for "
                                    "another viscosity")
@@ -233,33 +213,18 @@ def settle_viscosity(frame: pd.DataFrame, results: pd.DataFrame, *, t_limit: flo
     source[pending & ~np.isnan(T_op)] = NU_SOURCES.index("T_op")
     source[pending & fallback & np.isnan(T_op)] = NU_SOURCES.index("T_bearing")
     frame["_nu_at"] = _nu_sources(source)
-    # the friction results the heat balance will solve T_op from are these (f0, M1, M2 as solved with): its T_op
-    # is this one, not solved again
-    frame["_T_op"], frame["_T_op_status"] = balance_T, balance_status
+    # the heat balance takes this T_op of every row (solved from f0, M1 and M2 as they are now), and why a row
+    # that the heat balance reports on has none, rather than solving again
+    said = np.flatnonzero(~failed_rows(results) & ~plain_bushing_rows(results) & ~np.isnan(T_amb)
+                          & ~np.isnan(details["A_r"].to_numpy(dtype=float)) & (point.status != 0))
+    frame["_T_op"] = point.T
+    frame["_T_op_why"] = with_texts(pd.Categorical.from_codes(np.zeros(len(frame), dtype=np.int8), pd.Index([""])),
+                                    said.tolist(), [point.why(int(i)) for i in said])
     return frame, results, problems
 
 
-def _solve_operating_temperature(frame, results, rows, t_limit, flows, nu_at, nu_varies):
-    """T_op of the selected rows from their friction results (the other rows NaN), {row: why} of the selected
-    rows whose T_op has no solution (a row in error is left to its own message), and the heat balance's T_op
-    and status of every row (:func:`_operating_point`; ``flows`` of
-    :func:`~bearingheat.calc.heat_flows.heat_flow_setup`)."""
-    details, k_q, T_amb, Q_E, Q_S, Q_L = flows
-    T, status, _ = operating_point(frame, results, nu_at, nu_varies, Q_S, Q_L, Q_E, T_amb, t_limit)
-    reasons = details["reason"].array  # (a categorical where spread from the distinct bearings: no text per row)
-    asked = rows & ~(failed_rows(results) | plain_bushing_rows(results))
-    refused = asked & nonblank(reasons, len(asked))
-    no_equilibrium = asked & ~refused & (status != 0)
-    unsolved = {int(i): reasons[i] for i in np.flatnonzero(refused)}
-    unsolved.update({int(i): no_equilibrium_text(status[i], T_amb[i], t_limit)
-                     for i in np.flatnonzero(no_equilibrium)})
-    return np.where(asked & ~refused & (status == 0), T, np.nan), unsolved, T, status
-
-
-
-
 def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str = "exact",
-                      t_limit: float = OPERATING_TEMPERATURE_LIMIT):
+                      t_limit: float = OPERATING_TEMPERATURE_LIMIT, f2_chart=None):
     """n_thr, n_per, T_op, nu_op, Q_S, Q_L of every row (catalogue units); returns (columns, problems).
 
     ``frame`` holds the calc inputs (after :func:`fill_viscosity`),
@@ -267,7 +232,9 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
     (f0, M1, M2, status). Rows whose friction failed are skipped. Columns
     come out only where their inputs are present: n_thr with B or T; n_per
     with T_bearing and T_amb; T_op and nu_op with T_amb; Q_S and Q_L with
-    T_amb. problems are (row position, 'warning' | 'error', message).
+    T_amb. ``f2_chart`` is the chart the friction pass read f2 off (M2 of its
+    rows follows the speed and viscosity of the roots). problems are (row
+    position, 'warning' | 'error', message).
     """
     if method not in SPEED_FACTOR_METHODS:
         raise HeatBalanceError(f"method: {method!r} is not one of {', '.join(SPEED_FACTOR_METHODS)}")
@@ -335,15 +302,16 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
 
     # --- operating temperature at the operating speed (solved already where the viscosity was taken at it)
     # N_R of each row by its model, for T_op and n_per
-    power = FrictionPower(frame, results) if "_T_op" not in has or "T_bearing" in has else None
+    power = FrictionPower(frame, results, f2_chart) if "_T_op" not in has or "T_bearing" in has else None
     if "_T_op" in has:
-        T_op, status = number_column(frame, "_T_op"), frame["_T_op_status"].to_numpy()
+        T_op, why = number_column(frame, "_T_op"), frame["_T_op_why"].array
+        unsolved, why_text = nonblank(why, n_rows), why.__getitem__
     else:
-        T_op, status, _ = operating_point(frame, results, nu_at, ~np.isnan(A), Q_S, Q_L, Q_E, T_amb, t_limit,
-                                           power)
+        point = operating_point(frame, results, nu_at, ~np.isnan(A), Q_S, Q_L, Q_E, T_amb, t_limit, power)
+        T_op, unsolved, why_text = point.T, point.status != 0, point.why
     usable = ~failed & ~np.isnan(T_amb) & ~np.isnan(details["A_r"].to_numpy(dtype=float))
-    for i in np.flatnonzero(usable & (status != 0)):
-        problems.append((int(i), "warning", f"T_op: {no_equilibrium_text(status[i], T_amb[i], t_limit)}"))
+    for i in np.flatnonzero(usable & unsolved):
+        problems.append((int(i), "warning", f"T_op: {why_text(int(i))}"))
     for i in np.flatnonzero(~failed & ~np.isnan(T_amb) & np.isnan(details["A_r"].to_numpy(dtype=float))):
         reason_once(i)
     T_op = np.where(usable, T_op, np.nan)
@@ -422,11 +390,12 @@ def settle(frame: pd.DataFrame, results: pd.DataFrame, **compute):
     return settle_viscosity(frame, results, t_limit=OPERATING_TEMPERATURE_LIMIT, **compute)
 
 
-def extend(frame: pd.DataFrame, results: pd.DataFrame):
+def extend(frame: pd.DataFrame, results: pd.DataFrame, *, f2_chart=None, **compute):
     """The heat balance columns of every row whose friction succeeded, and where the viscosity of the friction
-    results comes from (``nu_used``, ``nu_at``) when it was filled from oil data; returns (columns, problems)."""
+    results comes from (``nu_used``, ``nu_at``) when it was filled from oil data (``f2_chart``: that of the
+    friction pass; the other ``compute`` options are not needed); returns (columns, problems)."""
     columns, problems = heat_balance_rows(frame, results, method=DEFAULT_SPEED_FACTOR_METHOD,
-                                          t_limit=OPERATING_TEMPERATURE_LIMIT)
+                                          t_limit=OPERATING_TEMPERATURE_LIMIT, f2_chart=f2_chart)
     columns.index = frame.index
     if "_nu_at" in frame.columns:  # first, in one new frame: no inserts into the heat balance's
         source = frame["_nu_at"].array.rename_categories({"": "-"})  # '-': a row without ν

@@ -174,12 +174,12 @@ def test_the_friction_power_computed_once_gives_the_bits_of_the_balance_at_every
     marked[0] = True
     once = operating_temperature.operating_point(frame, results, nu_at, constant, Q_S, Q_L, Q_E, T_amb, 200.0)
     every = operating_temperature.operating_point(frame, results, nu_at, marked, Q_S, Q_L, Q_E, T_amb, 200.0)
-    assert np.array_equal(once[0][1:], every[0][1:], equal_nan=True) and np.isfinite(once[0][1:]).sum() >= 4
-    assert np.array_equal(once[1], every[1])
+    assert np.array_equal(once.T[1:], every.T[1:], equal_nan=True) and np.isfinite(once.T[1:]).sum() >= 4
+    assert np.array_equal(once.status, every.status)
     theta = np.array([30.0, 60.0, 90.0])
     for T in theta:
         at_T = np.full(len(frame), T)
-        assert np.array_equal(once[2](at_T), every[2](at_T), equal_nan=True)
+        assert np.array_equal(once.balance(at_T), every.balance(at_T), equal_nan=True)
 
 
 def test_the_lowest_root_below_the_regime_step_of_m0_is_not_passed_over():
