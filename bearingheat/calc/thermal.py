@@ -185,6 +185,8 @@ def settle_viscosity(frame: pd.DataFrame, results: pd.DataFrame, *, t_limit: flo
     fallback = frame["_nu_fallback"].to_numpy(dtype=bool)
     A, B = number_column(frame, "_walther_A"), number_column(frame, "_walther_B")
     frame = frame.drop(columns=["_nu_pending", "_nu_fallback"])
+    if f2_chart is not None:
+        results = _stand_in_f2(frame, results, pending, labels, model)
     failed_at_provisional = failed_rows(results)
     details, _, T_amb, Q_E, Q_S, Q_L = heat_flow_setup(frame)
     point = operating_point(frame, results, viscosity_of_rows(frame, A, B), ~np.isnan(A), Q_S, Q_L, Q_E, T_amb,
@@ -221,6 +223,18 @@ def settle_viscosity(frame: pd.DataFrame, results: pd.DataFrame, *, t_limit: flo
     frame["_T_op_why"] = with_texts(pd.Categorical.from_codes(np.zeros(len(frame), dtype=np.int8), pd.Index([""])),
                                     said.tolist(), [point.why(int(i)) for i in said])
     return frame, results, problems
+
+
+def _stand_in_f2(frame, results, pending, labels, model):
+    """The results of the pending rows that the friction pass refused (f2 read off the chart at ν·n·dM of the
+    provisional viscosity is off it, and perhaps more) evaluated again with a stand-in f2: the heat balance reads
+    M2 off the chart at ν(T)·n·dM itself and needs only f0, M1 and Fa/A. A row refused for another reason stays
+    refused; every pending row is evaluated again at ν(T_op) with the chart (:func:`settle_viscosity`)."""
+    f2 = number_column(frame, "f2")
+    retry = pending & failed_rows(results) & np.isnan(f2) & (number_column(frame, "Fa") > 0)
+    if not retry.any():
+        return results
+    return results_at_viscosity(frame.assign(f2=np.where(retry, 1.0, f2)), results, retry, labels=labels, model=model)
 
 
 def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str = "exact",

@@ -271,3 +271,33 @@ def test_the_f2_chart_ends_that_bound_the_operating_temperature_are_named():
         "from -30 to 150 degC; the Schaeffler catalogue forbids extrapolating the chart, so T_op is not computed; "
         f"n_per: the friction heat stays below the heat carried away at T_bearing up to {1e6 / (nu(200) * 46):.5g} "
         "1/min")
+
+
+def test_a_row_whose_chart_is_off_at_the_provisional_viscosity_is_solved():
+    """calc evaluates the friction of a row whose nu is taken at T_op at a provisional nu (70 degC) first. At
+    2000 1/min this NJ206-E's nu*n*dM there, 1.84e6 mm^3/(s*min), is off the made-up chart, but with 100 W flowing
+    in it settles at 100.5 degC, where it is on it: the row is solved, not refused for a viscosity it never has."""
+    nu = _walther(68, 8.6)
+    assert nu(70) * 2000 * 46 > 1e6
+    out = bh.calc(_axially_loaded(**{"n [rpm]": 2000, "Q_E [W]": 100}).drop(columns=["T_bearing [degC]"]),
+                  f2_chart="docs/f2_chart_example.csv")
+    # by hand: dM = 46 mm, f0 = 2, M1 = 0.0003*5000*46, kB = 15 (the Schaeffler catalogue, pp. 66-70); the chart's
+    # curves at Fa/A = 0.5 and 2, log-log between their points at 1e5 and 1e6, then in log Fa/A
+    Fa_over_A = 50 / (15e-3 * 46 ** 2.1)
+
+    def f2(x):
+        t = math.log(x / 1e5) / math.log(10)
+        on_a = math.log(0.005) + t * math.log(0.003 / 0.005)
+        on_b = math.log(0.008) + t * math.log(0.005 / 0.008)
+        return math.exp(on_a + math.log(Fa_over_A / 0.5) / math.log(4) * (on_b - on_a))
+
+    def balance(T):
+        x = nu(T) * 2000 * 46
+        M = 2.0 * (nu(T) * 2000) ** (2 / 3) * 46 ** 3 * 1e-7 + 0.0003 * 5000 * 46 + f2(x) * 50 * 46
+        return math.pi * 2000 / 30e3 * M + 100 - 0.016 / 50 * math.pi * 16 * (62 + 30) * (T - 20)
+
+    T_op = brentq(balance, 95, 110, xtol=1e-12)
+    assert 1e5 < nu(T_op) * 2000 * 46 < 1e6 and round(T_op, 2) == 100.53
+    assert out["status"].tolist() == ["ok"] and out["nu_at"].tolist() == ["T_op"]
+    assert out["T_op [degC]"].iat[0] == pytest.approx(T_op, rel=1e-9)
+    assert out["M2 [N*mm]"].iat[0] == pytest.approx(f2(nu(T_op) * 2000 * 46) * 50 * 46, rel=1e-9)
