@@ -250,6 +250,34 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
     rows follows the speed and viscosity of the roots). problems are (row
     position, 'warning' | 'error', message).
     """
+    columns, problems = _heat_balance_columns(frame, results, method=method, t_limit=t_limit, f2_chart=f2_chart)
+    _viscosity_at_bearing(frame, results, columns, problems)
+    return columns, problems
+
+
+def _viscosity_at_bearing(frame: pd.DataFrame, results: pd.DataFrame, columns: pd.DataFrame, problems: list) -> None:
+    """Warn where ν(T_bearing) of the oil data is below 2 mm²/s, outside ASTM D341 (the check nu_op gets), on
+    the rows that use it: friction results taken at T_bearing (``nu_used``), and n_per."""
+    if "T_bearing" not in frame.columns:
+        return
+    A, B = walther_columns(frame)[:2]
+    T_bearing = number_column(frame, "T_bearing")
+    no_rows = np.zeros(len(frame), dtype=bool)
+    friction_at = (frame["_nu_at"].array.codes == NU_SOURCES.index("T_bearing")) if "_nu_at" in frame.columns \
+        else no_rows
+    n_per_at = ~np.isnan(columns["n_per"].to_numpy(dtype=float)) if "n_per" in columns.columns else no_rows
+    rows = np.flatnonzero(~failed_rows(results) & ~np.isnan(A) & ~np.isnan(T_bearing) & (friction_at | n_per_at))
+    with np.errstate(invalid="ignore", over="ignore"):
+        nu = walther_viscosity(A[rows], B[rows], T_bearing[rows])
+    for i, message in zip(rows.tolist(), viscosity_range_messages(nu, T_bearing[rows]).tolist()):
+        if message:
+            users = {(True, True): "the friction results (nu_used) and n_per are", (True, False): "the friction "
+                     "results (nu_used) are", (False, True): "n_per is"}[bool(friction_at[i]), bool(n_per_at[i])]
+            problems.append((i, "warning", f"T_bearing [degC]: {message}; {users} taken at it"))
+
+
+def _heat_balance_columns(frame: pd.DataFrame, results: pd.DataFrame, *, method: str, t_limit: float, f2_chart):
+    """:func:`heat_balance_rows` but the warnings on ν(T_bearing)."""
     if method not in SPEED_FACTOR_METHODS:
         raise HeatBalanceError(f"method: {method!r} is not one of {', '.join(SPEED_FACTOR_METHODS)}")
     n_rows = len(frame)

@@ -243,9 +243,11 @@ def test_an_ambient_at_or_above_the_search_limit_is_said_so_not_called_a_runaway
     out = bh.calc(rows)
     assert out["T_op [degC]"].iat[0] > 20.0 and np.isnan(out["T_op [degC]"].iat[1])
     assert out["status"].iat[1] == "warning"
+    nu_199 = _walther(68, 8.6)(199)  # (thinner than ASTM D341 reaches: said too)
     assert out["message"].iat[1].split("T_op: ")[-1] == (
         "the ambient temperature T_amb = 170 degC is not below 150 degC, the upper end of the search for the operating "
-        "temperature; T_op is not computed")
+        f"temperature; T_op is not computed; T_bearing [degC]: nu = {nu_199:.4g} mm^2/s at 199 degC is below 2 mm^2/s, "
+        "outside ASTM D341 (an extrapolation); the friction results (nu_used) and n_per are taken at it")
 
 
 def test_the_f2_chart_ends_that_bound_the_operating_temperature_are_named():
@@ -301,3 +303,25 @@ def test_a_row_whose_chart_is_off_at_the_provisional_viscosity_is_solved():
     assert out["status"].tolist() == ["ok"] and out["nu_at"].tolist() == ["T_op"]
     assert out["T_op [degC]"].iat[0] == pytest.approx(T_op, rel=1e-9)
     assert out["M2 [N*mm]"].iat[0] == pytest.approx(f2(nu(T_op) * 2000 * 46) * 50 * 46, rel=1e-9)
+
+
+def test_a_viscosity_below_astm_d341_at_T_bearing_is_told():
+    """nu(T_bearing) is the viscosity of n_per, and of the friction results with viscosity_at 'bearing': below
+    2 mm^2/s it is an extrapolation of ASTM D341 and is said so, as nu_op is (it was used silently)."""
+    nu = _walther(10, 2.6)
+    assert nu(150) < 2 < nu(100)
+    oil = {"nu40 [mm^2/s]": 10, "nu100 [mm^2/s]": 2.6, "T_bearing [degC]": 150}
+    out = bh.calc(pd.concat([table(**oil, viscosity_at=mode) for mode in ("bearing", "auto")], ignore_index=True))
+    assert out["nu_at"].tolist() == ["T_bearing", "T_op"]
+    assert out["nu_used [mm^2/s]"].iat[0] == pytest.approx(nu(150), rel=1e-12)
+    said = (f"T_bearing [degC]: nu = {nu(150):.4g} mm^2/s at 150 degC is below 2 mm^2/s, outside ASTM D341 (an "
+            "extrapolation); ")
+    assert said + "the friction results (nu_used) and n_per are taken at it" in out["message"].iat[0]
+    assert said + "n_per is taken at it" in out["message"].iat[1]
+    # without T_amb there is no heat balance, but the friction results are at T_bearing all the same
+    alone = bh.calc(table(**oil, viscosity_at="bearing").drop(columns=["T_amb [degC]"]))
+    assert alone["message"].iat[0] == said + "the friction results (nu_used) are taken at it"
+    # at 100 degC the oil is inside the standard's range: nothing to say
+    assert bh.calc(table(**{"nu40 [mm^2/s]": 10, "nu100 [mm^2/s]": 2.6, "T_bearing [degC]": 100}))[
+        "message"].tolist() == ["n_per: the thermal value 17809 1/min is above the limiting speed n_G = 17000 1/min; "
+                                "n_per = n_G"]
