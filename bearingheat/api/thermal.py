@@ -201,14 +201,17 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
         Bearing (outer ring) temperature, for n_per and the heat carried
         away. Valid -60 to 300 °C (above 200 °C a warning).
     k_q : pint.Quantity [W/(mm²·K)], optional
-        Heat transfer coefficient of the seat; default q_r/50 K; must be > 0.
+        Heat transfer coefficient of the seat; default q_r/50 K; must be > 0
+        (outside 2e-5 to 1e-2 W/(mm²·K), a tenth to ten times the HR 1
+        catalogue's 0.2e-3 to 1.0e-3, a warning).
     V_oil : pint.Quantity [l/min], optional
         Circulating oil flow; valid 0 to 1e4 l/min.
     dT_oil : pint.Quantity [temperature difference], optional
         Oil temperature rise; default T_bearing − T_amb (oil fed at
         ambient). Valid 0 to 200 K.
     Q_E : pint.Quantity [power], optional
-        External heat flowing into the bearing (negative: cooling); default 0.
+        External heat flowing into the bearing (negative: cooling); default 0
+        (beyond ±1e5 W a warning).
     n_G : pint.Quantity [1/min], optional
         Limiting speed: n_per is capped at it (with a warning). Valid up to
         1e7 1/min.

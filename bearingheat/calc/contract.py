@@ -53,6 +53,7 @@ __all__ = [
     "register_choices",
     "range_problems",
     "RANGES",
+    "RANGE_SOURCES",
     "choices",
     "template_columns",
     "help_text",
@@ -292,6 +293,15 @@ RANGES: dict[str, tuple[tuple[float, float] | None, tuple[float, float] | None]]
     "f0_rel_unc": ((0.0, 1.0), (0.0, 0.5)),      # a half-width above 50 % is usually a percent typed as 1
     "f1_rel_unc": ((0.0, 1.0), (0.0, 0.5)),
     "f_plain": ((0.0, 1.0), None),
+    "k_q": (None, (2e-5, 1e-2)),                  # W/(mm²·K): see RANGE_SOURCES
+    "Q_E": (None, (-1e5, 1e5)),                   # W: see RANGE_SOURCES
+}
+#: input -> where its plausible range comes from, said in the warning (ranges that are no plain unit check)
+RANGE_SOURCES = {
+    "k_q": ("a tenth to ten times the 0.2e-3 to 1.0e-3 W/(mm^2*K) of the Schaeffler HR 1 catalogue for seats up to "
+            "25 000 mm^2; its default q_r/50 K is 3.2e-4"),
+    "Q_E": ("the heat q_r*A_r the seat of a bearing of plausible size (D up to 6000 mm, B up to 2000 mm) carries away "
+            "at the ISO 15312 reference conditions is below 1e5 W"),
 }
 CONTRACT = tuple(dataclasses.replace(c, valid=RANGES[c.name][0], plausible=RANGES[c.name][1])
                  if c.kind == "input" and c.name in RANGES else c for c in CONTRACT)
@@ -459,6 +469,8 @@ def range_problems(name: str, values: np.ndarray, describe: Callable[[int], str]
         reported |= outside
         span = f"{low:g} to {high:g}" if low > -_INF else f"up to {high:g}"
         hint = "; check the number and its unit" if level == "plausible" else ""
+        if level == "plausible" and name in RANGE_SOURCES:
+            hint = f" ({RANGE_SOURCES[name]})" + hint
         for i in np.flatnonzero(outside):
             found.append((int(i), f"{describe(int(i))} is outside the {level} range {span} {unit}".rstrip() + hint))
     return errors, warnings
