@@ -23,7 +23,7 @@ from bearingheat.kernels.viscosity import KELVIN_OFFSET
 __all__ = ["OPERATING_TEMPERATURE_LIMIT", "BELOW_AMBIENT_SEARCH", "OPERATING_TEMPERATURE_CELLS", "ROOT_BLOCK",
            "OFF_CHART", "OperatingPoint", "operating_point", "lowest_operating_temperature", "no_equilibrium_text"]
 
-#: upper end of the search for the operating temperature [°C]; above it the heat is said to run away
+#: upper end of the search for the operating temperature [°C]
 OPERATING_TEMPERATURE_LIMIT = 150.0
 #: the search for the operating temperature starts this far below the ambient temperature [K]
 BELOW_AMBIENT_SEARCH = 50.0
@@ -41,7 +41,9 @@ class OperatingPoint:
     ``T`` [°C] is NaN where ``status`` is not 0 (as :func:`lowest_operating_temperature`, and
     :data:`OFF_CHART` where ν·n·dM lies off the f2 chart at every temperature of the search); ``balance(T)``
     is N_R + Q_E − Q_S − Q_L [W]; ``T_low`` and ``T_high`` are the ends searched, narrowed on rows whose f2 is
-    read off the chart to the temperatures the chart reaches (``chart_low``, ``chart_high``: where it did).
+    read off the chart to the temperatures the chart reaches (``chart_low``, ``chart_high``: where it did);
+    ``falling`` marks the rows whose balance is known to fall with T (an equilibrium lies above the search if not
+    in it), ``cooling_grows`` those of them whose ν follows T (one lies below it too, as N_R grows as the oil cools).
     """
 
     T: np.ndarray
@@ -54,6 +56,8 @@ class OperatingPoint:
     power: FrictionPower
     chart_low: np.ndarray
     chart_high: np.ndarray
+    falling: np.ndarray
+    cooling_grows: np.ndarray
 
     def why(self, i: int) -> str:
         """Why row ``i`` has no T_op."""
@@ -76,7 +80,7 @@ class OperatingPoint:
             return (f"nu*n*dM lies {'above' if self.chart_low[i] else 'below'} {chart} ({x_lo:.4g} to {x_hi:.4g} "
                     f"mm^3/(s*min)) at every temperature from {T_amb - BELOW_AMBIENT_SEARCH:g} to {t_limit:g} "
                     f"degC; {tail}")
-        return no_equilibrium_text(status, T_amb, t_limit)
+        return no_equilibrium_text(status, T_amb, t_limit, bool(self.falling[i]), bool(self.cooling_grows[i]))
 
 
 #: the status of a row whose ν·n·dM lies off its f2 chart at every temperature searched
@@ -119,7 +123,8 @@ def operating_point(frame, results, nu_at, nu_varies, Q_S, Q_L, Q_E, T_amb, t_li
     T_op, status = lowest_operating_temperature(balance, T_low, T_high, single_root=falling, affine=affine,
                                                 blocks=True)
     status = np.where(off_chart, OFF_CHART, status)
-    return OperatingPoint(T_op, status, balance, T_low, T_high, T_amb, float(t_limit), power, chart_low, chart_high)
+    return OperatingPoint(T_op, status, balance, T_low, T_high, T_amb, float(t_limit), power, chart_low, chart_high,
+                          np.broadcast_to(falling, T_op.shape), np.broadcast_to(walther_falling, T_op.shape))
 
 
 def _chart_window(power, nu_at, n, nu_varies, T_low, T_high):
@@ -235,14 +240,22 @@ def lowest_operating_temperature(balance, T_low, T_high, *, cells: int = OPERATI
     return np.where(status == 0, T, np.nan), status
 
 
-def no_equilibrium_text(status, T_amb, t_limit):
+def no_equilibrium_text(status, T_amb, t_limit, above=False, below=False):
+    """Why a row has no T_op, by its status (:func:`lowest_operating_temperature`). ``above``: an equilibrium is
+    known to lie above the search (the catalogue model: its friction heat stays bounded as T rises, while Q_S grows
+    in proportion to T − T_amb); ``below``: one is known to lie below it (the catalogue model with ν(T) from
+    Walther's law: ν, and so N_R, grows without bound as the oil cools, while Q_S falls)."""
     if status == 1 and T_amb >= t_limit:  # the search lies below the ambient: nothing is known about running away
         return (f"the ambient temperature T_amb = {T_amb:g} degC is not below {t_limit:g} degC, the upper end of the "
                 "search for the operating temperature; T_op is not computed")
-    if status == 1:
-        return (f"no equilibrium below {t_limit:g} degC: the friction heat exceeds the heat carried away "
-                "(the temperature runs away)")
+    if status == 1:  # (nothing is said beyond the search where the model's friction heat may grow with T)
+        beyond = ("; with the catalogue model the friction heat stays bounded as the temperature rises while the heat "
+                  "carried away grows with it, so an equilibrium lies above" if above else "")
+        return (f"no equilibrium up to {t_limit:g} degC, the upper end of the search: the friction heat still "
+                f"exceeds the heat carried away there{beyond}; T_op is not computed")
     if status == -1:
-        return (f"no equilibrium above {T_amb - BELOW_AMBIENT_SEARCH:g} degC: the heat carried away exceeds "
-                "the friction heat")
+        beyond = ("; as the oil cools its viscosity, and with it the friction heat of the catalogue model, grows "
+                  "without bound while the heat carried away falls, so an equilibrium lies below" if below else "")
+        return (f"no equilibrium down to {T_amb - BELOW_AMBIENT_SEARCH:g} degC, the lower end of the search: the heat "
+                f"carried away already exceeds the friction heat there{beyond}; T_op is not computed")
     return "the heat balance is undefined (missing inputs)"

@@ -427,8 +427,9 @@ def operating_temperature(heat_balance, T_low, T_high, *, iterations: int = 64):
     ``heat_balance(T)`` returns N_R(T) + Q_E − Q_S(T) − Q_L(T) [W] for an
     array of temperatures (one per row): positive while the bearing still
     heats up. Returns (T, status) where status is 0 for an equilibrium,
-    1 where the balance is still positive at T_high (no equilibrium below
-    T_high: the heat runs away), −1 where it is already negative at T_low.
+    1 where the balance is still positive at T_high (no equilibrium up to
+    T_high; whether one lies above depends on how the balance goes on), −1
+    where it is already negative at T_low.
 
     >>> import numpy as np
     >>> T, status = operating_temperature(lambda T: 100.0 - 2.0 * (T - 20.0), np.array([0.0]), np.array([150.0]))

@@ -185,8 +185,10 @@ def test_a_row_computed_again_names_its_own_cell():
     assert out["status"].tolist() == ["ok", "error"]
     assert out["message"].iat[1] == (
         "Supports!nu8 nu [mm^2/s]: missing; the operating viscosity (base oil viscosity for grease) is needed; "
-        "Supports!nu8 nu [mm^2/s]: cannot be taken at T_op; no equilibrium below 150 degC: the friction heat exceeds "
-        "the heat carried away (the temperature runs away); give T_bearing; Supports!n8 n [rpm]: 60000 is above the "
+        "Supports!nu8 nu [mm^2/s]: cannot be taken at T_op; no equilibrium up to 150 degC, the upper end of the search: "
+        "the friction heat still exceeds the heat carried away there; with the catalogue model the friction heat stays "
+        "bounded as the temperature rises while the heat carried away grows with it, so an equilibrium lies above; "
+        "T_op is not computed; give T_bearing; Supports!n8 n [rpm]: 60000 is above the "
         "limiting speed n_G = 17000 1/min of 6205 (Schaeffler HR 1, 2006); check the speed and its unit")
 
 
@@ -325,3 +327,25 @@ def test_a_viscosity_below_astm_d341_at_T_bearing_is_told():
     assert bh.calc(table(**{"nu40 [mm^2/s]": 10, "nu100 [mm^2/s]": 2.6, "T_bearing [degC]": 100}))[
         "message"].tolist() == ["n_per: the thermal value 17809 1/min is above the limiting speed n_G = 17000 1/min; "
                                 "n_per = n_G"]
+
+
+def test_no_equilibrium_in_the_search_says_what_is_known_beyond_it():
+    """Below the search (-30 degC here) the catalogue model with oil data has an equilibrium: as the oil cools,
+    nu and the friction heat grow without bound while the heat carried away falls. With 1500 W of cooling the
+    6205 settles at -34.08 degC by hand. With a given nu nothing is claimed beyond the search."""
+    nu = _walther(68, 8.6)
+    M1 = 0.0009 * (2 / 7.8) ** 0.5 * 2000 * 38.5  # f1 of the 62 series (the Schaeffler catalogue, p. 67)
+
+    def balance(T, viscosity):
+        M0 = 2.0 * (viscosity * 3000) ** (2 / 3) * 38.5 ** 3 * 1e-7
+        return math.pi * 3000 / 30e3 * (M0 + M1) - 1500 - 0.016 / 50 * math.pi * 15 * (52 + 25) * (T - 20)
+
+    assert balance(-30, nu(-30)) < 0 and round(brentq(lambda T: balance(T, nu(T)), -80, -30), 2) == -34.08
+    given = table(**{"Q_E [W]": -1500, "nu [mm^2/s]": 30}).drop(columns=["nu40 [mm^2/s]", "nu100 [mm^2/s]"])
+    out = bh.calc(pd.concat([table(**{"Q_E [W]": -1500, "viscosity_at": "bearing"}), given], ignore_index=True))
+    search = ("T_op: no equilibrium down to -30 degC, the lower end of the search: the heat carried away already "
+              "exceeds the friction heat there")
+    assert out["message"].iat[0].startswith(
+        search + "; as the oil cools its viscosity, and with it the friction heat of the catalogue model, grows "
+        "without bound while the heat carried away falls, so an equilibrium lies below; T_op is not computed")
+    assert out["message"].iat[1].startswith(search + "; T_op is not computed")
