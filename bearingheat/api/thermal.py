@@ -15,9 +15,10 @@ import numpy as np
 import numpy.typing as npt
 import pandas as pd
 
-from bearingheat.api._checks import check_ranges, shared_index
+from bearingheat.api._checks import check_ranges, shared_index, where
 from bearingheat.api.results import Result
 from bearingheat.calc.fill import fill_from_catalogue
+from bearingheat.calc.heat_flows import walther_columns
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.models import compute_supports
 from bearingheat.calc.thermal import (OPERATING_TEMPERATURE_LIMIT, SPEED_FACTOR_METHODS, VISCOSITY_AT,
@@ -295,7 +296,10 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
     if t_limit is not None:
         limit = float(celsius(t_limit, "t_limit"))
     frame, problems = fill_viscosity(frame, viscosity_at=viscosity_at)
-    if "nu" not in frame.columns:
+    if "nu" not in frame.columns:  # no point has a viscosity: the oil data's own fault where it has one, as calc says
+        errors = [(i, message) for i, level, message in problems + walther_columns(frame)[2] if level == "error"]
+        if errors:
+            raise HeatBalanceError(errors[0][1] + where(errors[0][0], shape))
         raise HeatBalanceError("nu: missing; give nu, or nu40 and nu100, or iso_vg")
     frame, results, settled = settle_viscosity(frame, compute_supports(frame), t_limit=limit)
     problems += settled

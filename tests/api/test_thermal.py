@@ -191,3 +191,32 @@ def test_heat_balance_and_reference_speed_refuse_series_of_different_indexes():
     assert isinstance(speeds, pd.Series) and list(speeds.index) == [0, 1]
     single = thermal_reference_speed("6208", d=40 * u.mm, D=90 * u.mm, B=18 * u.mm, C0=18 * u.kN)
     assert speeds.pint.to("1/min").pint.magnitude[0] == pytest.approx(single.to("1/min").magnitude, rel=1e-15)
+
+
+@pytest.mark.parametrize("oil, message", [
+    (dict(iso_vg=47), "iso_vg: 47 is not an ISO VG grade; expected one of 2, 3, 5, 7, 10, 15, 22, 32, 46, 68, 100, "
+                      "150, 220, 320, 460, 680, 1000, 1500, 2200, 3200"),
+    (dict(iso_vg=5), "VI: 95 cannot be reached by ISO VG 5 with nu100 >= 2 mm^2/s (ASTM D2270)"),
+    (dict(nu40=5 * u("mm^2/s"), nu100=8 * u("mm^2/s")), "nu40 [mm^2/s]: 5 must be larger than nu100 = 8"),
+    (dict(nu40=68 * u("mm^2/s")), "nu100 [mm^2/s]: missing; nu40 alone does not fix the viscosity-temperature line "
+                                  "(ASTM D341)"),
+    (dict(VI=120), "VI: given without iso_vg; the viscosity index only serves an ISO VG grade"),
+    (dict(iso_vg=np.array([47.0, 47.0])), "iso_vg: 47 is not an ISO VG grade; expected one of 2, 3, 5, 7, 10, 15, "
+                                          "22, 32, 46, 68, 100, 150, 220, 320, 460, 680, 1000, 1500, 2200, 3200 "
+                                          "(at index 0)"),
+])
+def test_unusable_oil_data_is_named_not_called_missing(oil, message):
+    """The reason calc gives for the row (beside a row whose oil is usable), not 'nu: missing; give nu, or nu40 and
+    nu100, or iso_vg'."""
+    with pytest.raises(HeatBalanceError) as exc:
+        base_case(**{"nu40": None, "nu100": None, **oil})
+    assert str(exc.value) == message
+    if np.ndim(oil.get("iso_vg", 0)) == 0:
+        from bearingheat.calc.table import calc
+        cells = {"iso_vg": oil.get("iso_vg"), "VI": oil.get("VI"), "nu40 [mm^2/s]": oil.get("nu40"),
+                 "nu100 [mm^2/s]": oil.get("nu100")}
+        bad = {"designation": "6205", "C0 [kN]": 7.8, "n [rpm]": 3000, "Fr [kN]": 2, "T_amb [degC]": 20,
+               "lubrication": "oil_bath", **{k: getattr(v, "magnitude", v) for k, v in cells.items() if v is not None}}
+        good = {**{k: v for k, v in bad.items() if k not in cells}, "iso_vg": 68}
+        out = calc(pd.DataFrame([bad, good]))
+        assert out["status"].tolist() == ["error", "ok"] and out["message"].iat[0].endswith(message)
