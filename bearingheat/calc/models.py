@@ -268,7 +268,8 @@ def evaluate_models(supports: SupportArrays, model_codes: np.ndarray, model_name
         for problem in part_problems:
             mask = np.zeros(size, dtype=bool)
             mask[rows] = problem.mask
-            problems.append(Problem(mask, problem.level, functools.partial(_message_at, problem, position)))
+            problems.append(Problem(mask, problem.level, functools.partial(_message_at, problem, position),
+                                    problem.column))
     for name in RESULTS:
         results.setdefault(name, np.full(size, np.nan))
     return results, problems
@@ -308,17 +309,25 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
     warnings_by_row: defaultdict[int, list[str]] = defaultdict(list)
     if plain.any():
         plain_rows(frame, plain, results, row_errors, warnings_by_row)
+    # a row whose nu could not be found from its oil data says why itself (the heat balance's message): the model's
+    # 'nu: missing' would only follow from it
+    explained = (frame["_nu_explained"].to_numpy(dtype=bool) if "_nu_explained" in frame.columns
+                 else np.zeros(n_rows, dtype=bool))
+    silent = []
     for problem in problems:
+        quiet = problem.level == "error" and problem.column == "nu"
         for i in np.flatnonzero(problem.mask & ~plain).tolist():
             if problem.level == "error":
-                if resolved[i]:  # a row that failed to resolve has its error already
+                if quiet and explained[i]:
+                    silent.append(i)
+                elif resolved[i]:  # a row that failed to resolve has its error already
                     row_errors[i].append(problem.message(i))
             else:
                 warnings_by_row[i].append(problem.message(i))
     notes_of = np.broadcast_to(supports.notes, (n_rows,))
     for i in np.flatnonzero(np.broadcast_to(supports.noted, (n_rows,)) & ~plain).tolist():  # after the warnings
         warnings_by_row[i].append("; ".join(notes_of[i]))  # a designation's notes
-    status, message = row_status(n_rows, warnings_by_row, row_errors)
+    status, message = row_status(n_rows, warnings_by_row, row_errors, silent)
     failed = status.codes == ERROR
     reported = list(RESULT_UNITS)
     if "nu_n_dM" in results and np.any(~np.isnan(results["nu_n_dM"]) & ~failed):

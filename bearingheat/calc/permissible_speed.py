@@ -64,11 +64,12 @@ DEFAULT_SPEED_FACTOR_METHOD = "exact"
 register_choices("n_per_method", lambda: tuple(SPEED_FACTOR_METHODS))
 
 
-def permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue, T_bearing, T_amb, Q, Q_E, power,
+def permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue, T_bearing, T_amb, carried, Q_E, power,
                            usable, methods, problems):
-    """n_per of the rows ``usable`` with a T_bearing above T_amb; ``Q`` is the heat carried away at T_bearing
-    less Q_E [W], ``power`` the rows' :class:`~bearingheat.calc.models.FrictionPower`."""
+    """n_per of the rows ``usable`` with a T_bearing above T_amb; ``carried`` is the heat carried away at
+    T_bearing, Q_S + Q_L [W], ``power`` the rows' :class:`~bearingheat.calc.models.FrictionPower`."""
     n_rows = len(frame)
+    Q = carried - Q_E  # the heat the bearing may make itself
     rows = usable & ~np.isnan(T_bearing)
     for i in np.flatnonzero(usable & np.isnan(T_bearing)):
         problems.append((int(i), "warning", "T_bearing [degC]: missing; n_per is the speed at which the bearing "
@@ -81,7 +82,7 @@ def permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue, T_be
     rows &= n_used > 0
     for i in np.flatnonzero(rows & ~(Q > 0)):
         problems.append((int(i), "warning", f"n_per: the external heat Q_E = {Q_E[i]:g} W is not less than the heat "
-                                            f"carried away {Q[i] + Q_E[i]:.4g} W at T_bearing; no speed is "
+                                            f"carried away {carried[i]:.4g} W at T_bearing; no speed is "
                                             "permissible"))
     rows &= Q > 0
     out = np.full(n_rows, np.nan)

@@ -125,7 +125,7 @@ def fill_viscosity(frame: pd.DataFrame, *, viscosity_at: str = "auto"):
     # the new and replaced columns go into a new frame at the end (calc's frame itself is not changed)
     frame = with_columns(frame, {"_walther_A": A, "_walther_B": B})
     if np.isnan(A).all():
-        return frame, problems
+        return with_columns(frame, {"_nu_explained": _rows_in_error(problems, len(frame))}), problems
     modes = _row_choices(frame, "viscosity_at", viscosity_at, VISCOSITY_AT, problems)
     nu = number_column(frame, "nu")
     given = ~np.isnan(nu)
@@ -155,7 +155,17 @@ def fill_viscosity(frame: pd.DataFrame, *, viscosity_at: str = "auto"):
         filled["_nu_pending"] = pending
         # auto rows with T_bearing fall back to it where T_op has no solution: their refusals become warnings
         filled["_nu_fallback"] = pending & (modes == "auto") & ~np.isnan(T_bearing)
+    filled["_nu_explained"] = _rows_in_error(problems, len(frame))
     return with_columns(frame, filled), problems
+
+
+def _rows_in_error(problems, size: int) -> np.ndarray:
+    """The rows with an error among ``problems``: after :func:`fill_viscosity`, those whose errors say why they
+    have no viscosity (:func:`~bearingheat.calc.models.compute_supports` leaves out the model's 'nu: missing',
+    which would only follow from them)."""
+    rows = np.zeros(size, dtype=bool)
+    rows[[i for i, level, _ in problems if level == "error"]] = True
+    return rows
 
 
 def _nu_sources(codes: np.ndarray) -> pd.Categorical:
@@ -203,6 +213,11 @@ def settle_viscosity(frame: pd.DataFrame, results: pd.DataFrame, *, t_limit: flo
         nu[pending] = np.where(fallback & np.isnan(T_op), walther_viscosity(A, B, number_column(frame, "T_bearing")),
                                walther_viscosity(A, B, T_op))[pending]
     frame["nu"] = nu
+    refused_nu = [i for i in why_unsolved if not fallback[i]]
+    if refused_nu:  # their message says why nu is missing (the model's 'nu: missing' would only follow from it)
+        explained = frame["_nu_explained"].to_numpy(dtype=bool).copy()
+        explained[refused_nu] = True
+        frame["_nu_explained"] = explained
     results = results_at_viscosity(frame, results, pending, f2_chart=f2_chart, labels=labels, model=model)
     problems = [(i, "error", f"nu [mm^2/s]: cannot be taken at T_op; {why}; give T_bearing")
                 for i, why in sorted(why_unsolved.items()) if not fallback[i]]
@@ -341,6 +356,8 @@ def _heat_balance_columns(frame: pd.DataFrame, results: pd.DataFrame, *, method:
         values = number_column(frame, name)
         for i in np.flatnonzero(~failed & (values < 0)):
             problems.append((int(i), "error", f"V_oil [l/min]: {values[i]:g} must be >= 0"))
+    # a row in error so far (an input the heat balance cannot use) gets no balance: its messages would only follow
+    failed = failed | _rows_in_error(problems, n_rows)
 
     # --- operating temperature at the operating speed (solved already where the viscosity was taken at it)
     # N_R of each row by its model, for T_op and n_per
@@ -376,7 +393,7 @@ def _heat_balance_columns(frame: pd.DataFrame, results: pd.DataFrame, *, method:
 
     # --- permissible speed at the bearing temperature T_bearing (where it is given, theta is T_bearing)
     if "T_bearing" in has:
-        carried = np.where(np.isnan(T_bearing), np.nan, seat + oil - Q_E)
+        carried = np.where(np.isnan(T_bearing), np.nan, seat + oil)
         columns["n_per"] = permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue, T_bearing,
                                                    T_amb, carried, Q_E, power, usable, methods, problems)
         titles = [SPEED_FACTOR_METHODS[m].title for m in methods.categories] + [""]  # the last: no n_per

@@ -219,4 +219,25 @@ def test_unusable_oil_data_is_named_not_called_missing(oil, message):
                "lubrication": "oil_bath", **{k: getattr(v, "magnitude", v) for k, v in cells.items() if v is not None}}
         good = {**{k: v for k, v in bad.items() if k not in cells}, "iso_vg": 68}
         out = calc(pd.DataFrame([bad, good]))
-        assert out["status"].tolist() == ["error", "ok"] and out["message"].iat[0].endswith(message)
+        assert out["status"].tolist() == ["error", "ok"] and out["message"].iat[0] == message
+
+
+def test_a_row_in_error_gets_no_heat_balance_messages():
+    """k_q <= 0 is an error; the balance's messages would only follow from it (they said 'the temperature runs
+    away' and 'Q_E = 0 W is not less than the heat carried away -181.4 W')."""
+    r = base_case(k_q=-1e-3 * u("W/(mm^2*K)"))
+    assert r.status == ["error"]
+    assert r.messages[0] == ("k_q: -0.001 is outside the plausible range 2e-05 to 0.01 W/(mm^2*K) (a tenth to ten "
+                             "times the 0.2e-3 to 1.0e-3 W/(mm^2*K) of the Schaeffler HR 1 catalogue for seats up "
+                             "to 25 000 mm^2; its default q_r/50 K is 3.2e-4); check the number and its unit; "
+                             "k_q [W/(mm^2*K)]: -0.001 must be > 0")
+    assert np.isnan([r.T_op.magnitude, r.n_per.magnitude, r.Q_S.magnitude]).all()
+
+
+def test_the_heat_carried_away_is_printed_as_it_is_not_as_a_difference():
+    """Q_S + Q_L at T_bearing is 3.2e-4 * pi * 15 * 77 * 50 K = 58.06 W whatever Q_E is (with Q_E = 1e300 it
+    came out of (Q_S + Q_L - Q_E) + Q_E as 0 W)."""
+    assert round(3.2e-4 * math.pi * 15 * (52 + 25) * 50, 2) == 58.06
+    r = base_case(Q_E=1e300 * u.W)
+    assert ("n_per: the external heat Q_E = 1e+300 W is not less than the heat carried away 58.06 W at T_bearing; "
+            "no speed is permissible") in r.messages[0]
