@@ -15,7 +15,7 @@ import numpy as np
 import numpy.typing as npt
 import pandas as pd
 
-from bearingheat.api._checks import check_ranges, shared_index, where
+from bearingheat.api._checks import point_status, point_warnings, shared_index, where
 from bearingheat.api.results import Result
 from bearingheat.calc.fill import fill_from_catalogue
 from bearingheat.calc.heat_flows import walther_columns
@@ -280,7 +280,7 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
             continue
         columns[_API_COLUMNS[name][0]] = mag.to_numpy(dtype=float) if isinstance(mag, pd.Series) else mag
     shape = np.broadcast_shapes(*(np.shape(v) for v in columns.values()))
-    range_warnings = check_ranges(columns, shape, HeatBalanceError)
+    every, some = point_warnings(columns, shape, HeatBalanceError)  # a scalar's warnings: every point's
     if "n" not in columns:
         columns["n"] = np.nan
     size = int(np.prod(shape)) if shape else 1
@@ -305,11 +305,13 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
     problems += settled
     extra, more = heat_balance_rows(frame, results, method=method, t_limit=limit)
     problems = fill_problems + problems + more
-    status = results["status"].tolist()
-    messages = [[m] if m else [] for m in results["message"]]
-    for position in range(size) if range_warnings else ():
-        messages[position] = range_warnings + messages[position]
-        status[position] = "warning" if status[position] == "ok" else status[position]
+    status, ranges = point_status(size, every, some)
+    messages = [[m] if m else [] for m in ranges]
+    for position, (level, message) in enumerate(zip(results["status"].tolist(), results["message"])):
+        if message:
+            messages[position].append(message)
+        if level == "error" or (level == "warning" and status[position] == "ok"):
+            status[position] = level
     for position, level, message in problems:
         messages[position].append(message)
         if level == "error":

@@ -241,3 +241,18 @@ def test_the_heat_carried_away_is_printed_as_it_is_not_as_a_difference():
     r = base_case(Q_E=1e300 * u.W)
     assert ("n_per: the external heat Q_E = 1e+300 W is not less than the heat carried away 58.06 W at T_bearing; "
             "no speed is permissible") in r.messages[0]
+
+
+def test_a_warning_of_one_operating_point_is_that_point_s():
+    """T_bearing = 250 degC is implausible at index 2 only: the other points stay 'ok' (all three were
+    'warning', each with the message of index 2)."""
+    r = base_case(n=np.array([3000.0, 3000.0, 3000.0]) * u.rpm, T_bearing=u.Quantity(np.array([70.0, 70.0, 250.0]),
+                                                                                        "degC"))
+    assert r.status == ["ok", "ok", "warning"]
+    assert r.messages[:2] == ["", ""]
+    assert r.messages[2].startswith("T_bearing: 250 is outside the plausible range -60 to 200 degC; check the number "
+                                    "and its unit; n_per: ")
+    # a single implausible value concerns every point
+    every = base_case(n=np.array([1000.0, 3000.0]) * u.rpm, k_q=1 * u("W/(mm^2*K)"))
+    assert every.status == ["warning", "warning"]
+    assert all(m.startswith("k_q: 1 is outside the plausible range 2e-05 to 0.01 W/(mm^2*K)") for m in every.messages)
