@@ -15,7 +15,7 @@ import pandas as pd
 from bearingheat.calc.contract import range_problems
 from bearingheat.errors import BearingheatError
 
-__all__ = ["check_ranges", "point_warnings", "point_status", "where", "shared_index"]
+__all__ = ["check_ranges", "point_warnings", "point_status", "where", "shared_index", "broadcast_shape"]
 
 
 def where(i: int, shape: tuple[int, ...]) -> str:
@@ -80,6 +80,38 @@ def point_status(size: int, every: list[str], some: dict[int, list[str]]) -> tup
         status[i] = "warning"
         messages[i] = "; ".join(([common] if common else []) + own)
     return status, messages
+
+
+def broadcast_shape(values: Mapping[str, float | np.ndarray], error: type[BearingheatError]) -> tuple[int, ...]:
+    """The shape the arguments ``values`` (by name) broadcast to; ``error`` naming two that do not, with their
+    shapes, rather than numpy's 'shape mismatch'.
+
+    >>> from bearingheat.errors import HeatBalanceError
+    >>> broadcast_shape({"n": np.ones(3), "Fr": 2.0}, HeatBalanceError)
+    (3,)
+    >>> broadcast_shape({"n": np.ones(2), "Fr": 2.0, "T_bearing": np.ones(3)}, HeatBalanceError)
+    Traceback (most recent call last):
+    ...
+    bearingheat.errors.HeatBalanceError: n has shape (2,) and T_bearing has shape (3,): arrays are paired value by value, so they need one shape (or give single values)
+    """
+    shapes = {name: np.shape(value) for name, value in values.items()}
+    shape: tuple[int, ...] = ()
+    for name, own in shapes.items():
+        try:
+            shape = np.broadcast_shapes(shape, own)
+        except ValueError:
+            other = next(n for n, s in shapes.items() if not _broadcast(s, own))
+            raise error(f"{other} has shape {shapes[other]} and {name} has shape {own}: arrays are paired value by "
+                        "value, so they need one shape (or give single values)") from None
+    return shape
+
+
+def _broadcast(a: tuple[int, ...], b: tuple[int, ...]) -> bool:
+    try:
+        np.broadcast_shapes(a, b)
+    except ValueError:
+        return False
+    return True
 
 
 def _labels(index: pd.Index) -> str:

@@ -15,7 +15,7 @@ import numpy as np
 import numpy.typing as npt
 import pandas as pd
 
-from bearingheat.api._checks import point_status, point_warnings, shared_index, where
+from bearingheat.api._checks import broadcast_shape, point_status, point_warnings, shared_index, where
 from bearingheat.api.results import Result
 from bearingheat.calc.fill import fill_from_catalogue
 from bearingheat.calc.heat_flows import walther_columns
@@ -244,9 +244,10 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
     ------
     bearingheat.errors.HeatBalanceError
         For an unknown ``method`` or ``viscosity_at``, no viscosity at all
-        (none of nu, nu40 with nu100, an ISO VG grade), and a number that is NaN,
-        infinite or outside its valid range (naming the argument and, for
-        arrays, the index).
+        (none of nu, nu40 with nu100, an ISO VG grade; or the reason the oil
+        data give none), arrays of shapes that do not pair point by point
+        (naming two of them), and a number that is NaN, infinite or outside
+        its valid range (naming the argument and, for arrays, the index).
     bearingheat.errors.UnitError
         For a plain number where a Quantity is needed, a unit of the wrong
         dimension, or a temperature difference where an absolute
@@ -279,7 +280,7 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
         if mag is None:
             continue
         columns[_API_COLUMNS[name][0]] = mag.to_numpy(dtype=float) if isinstance(mag, pd.Series) else mag
-    shape = np.broadcast_shapes(*(np.shape(v) for v in columns.values()))
+    shape = broadcast_shape(columns, HeatBalanceError)
     every, some = point_warnings(columns, shape, HeatBalanceError)  # a scalar's warnings: every point's
     if "n" not in columns:
         columns["n"] = np.nan
@@ -386,7 +387,8 @@ def thermal_reference_speed(designation: str | None = None, *, d: Quantity, D: Q
         for arrays): the method does not apply to the bearing, B and T are
         missing, C0 is not > 0, the designation is missing or unknown.
         :func:`bearingheat.calc.thermal.thermal_reference_speed_rows`
-        returns NaN and the reasons instead.
+        returns NaN and the reasons instead. Also for arrays of shapes that
+        do not pair value by value (naming two of them).
     bearingheat.errors.UnitError
         For a plain number where a Quantity is needed, or a unit of the
         wrong dimension.
@@ -409,7 +411,7 @@ def thermal_reference_speed(designation: str | None = None, *, d: Quantity, D: Q
         columns["T"] = magnitude(T, "mm", "T")
     index = shared_index(columns, HeatBalanceError)
     columns = {k: v.to_numpy(dtype=float) if isinstance(v, pd.Series) else v for k, v in columns.items()}
-    shape = np.broadcast_shapes(*(np.shape(v) for v in columns.values()))
+    shape = broadcast_shape(columns, HeatBalanceError)
     size = int(np.prod(shape)) if shape else 1
     frame = pd.DataFrame({k: np.broadcast_to(np.asarray(v, dtype=float), shape).ravel() for k, v in columns.items()})
     frame["designation"] = designation

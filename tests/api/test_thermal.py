@@ -256,3 +256,16 @@ def test_a_warning_of_one_operating_point_is_that_point_s():
     every = base_case(n=np.array([1000.0, 3000.0]) * u.rpm, k_q=1 * u("W/(mm^2*K)"))
     assert every.status == ["warning", "warning"]
     assert all(m.startswith("k_q: 1 is outside the plausible range 2e-05 to 0.01 W/(mm^2*K)") for m in every.messages)
+
+
+def test_arrays_that_do_not_pair_point_by_point_are_named():
+    """numpy's bare 'shape mismatch: objects cannot be broadcast to a single shape' named no argument."""
+    with pytest.raises(HeatBalanceError) as exc:
+        base_case(n=np.array([1000.0, 2000.0]) * u.rpm, Fr=np.array([1.0, 2.0, 3.0]) * u.kN)
+    assert str(exc.value) == ("n has shape (2,) and Fr has shape (3,): arrays are paired value by value, so they "
+                              "need one shape (or give single values)")
+    with pytest.raises(HeatBalanceError) as exc:
+        thermal_reference_speed("6205", d=25 * u.mm, D=np.array([52.0, 62.0]) * u.mm, C0=np.ones(3) * u.kN,
+                                B=15 * u.mm)
+    assert str(exc.value) == ("D has shape (2,) and C0 has shape (3,): arrays are paired value by value, so they "
+                              "need one shape (or give single values)")
