@@ -221,8 +221,9 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
         Valid > 0 and up to 1e7 1/min.
     viscosity_at : str, optional
         Where ν is taken when it comes from nu40/nu100 or iso_vg: 'auto'
-        (default; T_bearing where given, else T_op), 'bearing' or
-        'operating'. A given ``nu`` is always used as it is.
+        (default; at T_op where T_amb and n are given, at T_bearing where
+        they are not or where T_op has no solution), 'bearing' (T_bearing)
+        or 'operating' (T_op). A given ``nu`` is always used as it is.
     method : str, optional
         How the speed factor f_n of n_per is found: 'exact' (default; the
         root of the f_n equation) or 'approximation' (the catalogue's

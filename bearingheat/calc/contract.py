@@ -176,8 +176,8 @@ CONTRACT: tuple[Column, ...] = (
     _in("n_thr_catalogue", "1/min", "catalogue n_thr; n_per then uses it instead of the computed one", "thermal",
         template=("1/min", 9)),
     _in("viscosity_at", "", "where the viscosity of nu40/nu100 or iso_vg is taken: auto (T_op where T_amb and n "
-        "are given, else T_bearing), operating (T_op) or bearing (T_bearing); blank: the table's --viscosity-at, "
-        "default auto", "thermal"),
+        "are given; T_bearing where they are not, or where T_op has no solution), operating (T_op) or bearing "
+        "(T_bearing); blank: the table's --viscosity-at, default auto", "thermal"),
     _in("n_per_method", "", "how n_per is found: exact (root of the heat balance) or approximation (the "
         "catalogue's formula for f_n); blank: the table's --n-per-method, default exact", "thermal",
         template=("-", 14)),

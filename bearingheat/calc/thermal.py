@@ -22,10 +22,11 @@ T, C0), ``n_per [1/min]`` (T_bearing, T_amb), ``T_op [degC]`` and
 where T_bearing is not given).
 
 When ``nu`` is left out and ``nu40``/``nu100`` or ``iso_vg`` are given,
-:func:`prepare` fills it before the friction pass: at ``T_bearing`` where
-the row gives it, otherwise at the operating temperature T_op solved at the
-operating speed (this needs ``n`` and ``T_amb``). A ``nu`` the user gives
-is kept as it is.
+:func:`prepare` fills it before the friction pass, at the row's
+``viscosity_at``: by default (auto) at the operating temperature T_op
+solved at the operating speed where the row gives ``n`` and ``T_amb``, and
+at ``T_bearing`` where it does not or where T_op has no solution. A ``nu``
+the user gives is kept as it is.
 
 >>> n_thr = thermal_reference_speed_rows(pd.DataFrame(
 ...     {"designation": ["6205", "NU206-E", "51105"], "d": [25, 30, 25], "D": [52, 62, 42],
@@ -82,7 +83,7 @@ NU_SOURCES = ("given", "T_bearing", "T_op", "")
 #: where the operating viscosity is taken when it comes from nu40/nu100 or iso_vg
 VISCOSITY_AT = {
     "auto": ("the solved operating temperature T_op where T_amb and n are given (one operating state: the "
-             "friction results, T_op and nu_op agree), otherwise T_bearing"),
+             "friction results, T_op and nu_op agree), otherwise, or where T_op has no solution, T_bearing"),
     "bearing": "the bearing temperature T_bearing (the friction results at the temperature n_per is found for)",
     "operating": "the solved operating temperature T_op at the operating speed n",
 }
