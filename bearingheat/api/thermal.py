@@ -44,7 +44,8 @@ class HeatBalanceResult(Result):
     n_thr : pint.Quantity or pandas.Series [1/min]
         Thermal reference speed n_θr (ISO 15312; Schaeffler catalogue HR 1
         "Rolling bearings", edition June 2006); NaN where the method does not
-        apply or neither B nor T is given.
+        apply or the heat flow area lacks a width (B, or T of tapered roller
+        bearings; thrust bearings need d and D only).
     n_per : pint.Quantity or pandas.Series [1/min]
         Thermally permissible speed n_θr·f_n at ``T_bearing`` (needs
         T_bearing and T_amb), capped at n_G where that is given.
@@ -305,7 +306,7 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
         raise HeatBalanceError("nu: missing; give nu, or nu40 and nu100, or iso_vg")
     frame, results, settled = settle_viscosity(frame, compute_supports(frame), t_limit=limit)
     problems += settled
-    extra, more = heat_balance_rows(frame, results, method=method, t_limit=limit)
+    extra, more = heat_balance_rows(frame, results, method=method, t_limit=limit, reference_speed=True)
     problems = fill_problems + problems + more
     status, ranges = point_status(size, every, some)
     messages = [[m] if m else [] for m in ranges]

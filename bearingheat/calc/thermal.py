@@ -16,7 +16,7 @@ dT_oil, Q_E, nu40, nu100, iso_vg, VI, n_G, n_thr_catalogue) and B, C0 of
 the friction model.
 
 Output columns, each where its inputs are present: ``n_thr [1/min]`` (B or
-T, C0), ``n_per [1/min]`` (T_bearing, T_amb), ``T_op [degC]`` and
+T, or T_amb; C0), ``n_per [1/min]`` (T_bearing, T_amb), ``T_op [degC]`` and
 ``nu_op [mm^2/s]`` (T_amb; the operating temperature at the speed n),
 ``Q_S [W]`` and ``Q_L [W]`` (heat carried away at T_bearing, or at T_op
 where T_bearing is not given).
@@ -254,19 +254,22 @@ def _stand_in_f2(frame, results, pending, labels, model):
 
 
 def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str = "exact",
-                      t_limit: float = OPERATING_TEMPERATURE_LIMIT, f2_chart=None):
+                      t_limit: float = OPERATING_TEMPERATURE_LIMIT, f2_chart=None, reference_speed: bool = False):
     """n_thr, n_per, T_op, nu_op, Q_S, Q_L of every row (catalogue units); returns (columns, problems).
 
     ``frame`` holds the calc inputs (after :func:`fill_viscosity`),
     ``results`` the friction results of :func:`bearingheat.calc.models.compute_supports`
     (f0, M1, M2, status). Rows whose friction failed are skipped. Columns
-    come out only where their inputs are present: n_thr with B or T; n_per
+    come out only where their inputs are present: n_thr with B, T, d1, D1,
+    n_thr_catalogue or T_amb (thrust bearings need none of the widths), or
+    wherever ``reference_speed`` is true (the API's result always has it); n_per
     with T_bearing and T_amb; T_op and nu_op with T_amb; Q_S and Q_L with
     T_amb. ``f2_chart`` is the chart the friction pass read f2 off (M2 of its
     rows follows the speed and viscosity of the roots). problems are (row
     position, 'warning' | 'error', message).
     """
-    columns, problems = _heat_balance_columns(frame, results, method=method, t_limit=t_limit, f2_chart=f2_chart)
+    columns, problems = _heat_balance_columns(frame, results, method=method, t_limit=t_limit, f2_chart=f2_chart,
+                                              reference_speed=reference_speed)
     _viscosity_at_bearing(frame, results, columns, problems)
     return columns, problems
 
@@ -292,7 +295,8 @@ def _viscosity_at_bearing(frame: pd.DataFrame, results: pd.DataFrame, columns: p
             problems.append((i, "warning", f"T_bearing [degC]: {message}; {users} taken at it"))
 
 
-def _heat_balance_columns(frame: pd.DataFrame, results: pd.DataFrame, *, method: str, t_limit: float, f2_chart):
+def _heat_balance_columns(frame: pd.DataFrame, results: pd.DataFrame, *, method: str, t_limit: float, f2_chart,
+                          reference_speed: bool):
     """:func:`heat_balance_rows` but the warnings on ν(T_bearing)."""
     if method not in SPEED_FACTOR_METHODS:
         raise HeatBalanceError(f"method: {method!r} is not one of {', '.join(SPEED_FACTOR_METHODS)}")
@@ -303,8 +307,10 @@ def _heat_balance_columns(frame: pd.DataFrame, results: pd.DataFrame, *, method:
     # rows whose friction failed, and plain bushings (no rolling bearing heat balance), are skipped
     failed = failed_rows(results) | plain_bushing_rows(results)
     columns: dict[str, np.ndarray | pd.Categorical] = {}
-    wants_thr = bool({"B", "T", "d1", "D1"} & has) or "n_thr_catalogue" in has
     wants_balance = "T_amb" in has
+    # n_thr where its area columns are given, and wherever the heat balance computes it (the A_r of thrust bearings
+    # needs d and D only)
+    wants_thr = bool({"B", "T", "d1", "D1"} & has) or "n_thr_catalogue" in has or wants_balance or reference_speed
     for name, unit in (("T", "mm"), ("n_G", "1/min")):  # a width and a limiting speed are > 0 (B: the friction model)
         if name not in has:
             continue

@@ -269,3 +269,13 @@ def test_arrays_that_do_not_pair_point_by_point_are_named():
                                 B=15 * u.mm)
     assert str(exc.value) == ("D has shape (2,) and C0 has shape (3,): arrays are paired value by value, so they "
                               "need one shape (or give single values)")
+
+
+def test_a_thrust_bearing_gets_its_n_thr_without_an_ambient_temperature():
+    """n_thr is a field of every result: a thrust bearing's needs d and D only (by hand in tests/calc)."""
+    r = heat_balance("81212", d=60 * u.mm, D=95 * u.mm, C0=200 * u.kN, n=1000 * u.rpm, Fa=5 * u.kN,
+                     nu=24 * u("mm^2/s"))
+    assert r.status == ["ok"]
+    assert r.n_thr.magnitude == pytest.approx(
+        thermal_reference_speed("81212", d=60 * u.mm, D=95 * u.mm, C0=200 * u.kN).magnitude, rel=1e-12)
+    assert round(r.n_thr.magnitude) == 2414
