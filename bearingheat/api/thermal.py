@@ -149,9 +149,12 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
     absolute (degC, K); ``dT_oil`` is a difference (K, delta_degC);
     ``iso_vg`` and ``VI`` are plain numbers. A number outside
     its valid range raises; one outside its plausible range is a warning in
-    ``messages``. A row the friction model or the balance cannot compute
-    (a missing n, a negative load, an unknown designation, no equilibrium)
-    gets status 'error' and NaN, and does not raise.
+    ``messages``. A point the friction model or the balance cannot compute
+    (a missing n, a negative load, an unknown designation) gets status
+    'error' and NaN, and does not raise. A point whose balance has no
+    equilibrium in the search gets T_op NaN and status 'warning' (with a
+    given ``nu``, or with ``T_bearing`` to take ν at instead); it is an
+    'error' only where ν was to be taken at T_op and nothing else gives it.
 
     Parameters
     ----------
@@ -209,8 +212,9 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
     V_oil : pint.Quantity [l/min], optional
         Circulating oil flow; valid 0 to 1e4 l/min.
     dT_oil : pint.Quantity [temperature difference], optional
-        Oil temperature rise; default T_bearing − T_amb (oil fed at
-        ambient). Valid 0 to 200 K.
+        Oil temperature rise; default T − T_amb (oil fed at ambient,
+        leaving at the bearing temperature T: T_bearing for n_per, Q_S and
+        Q_L, each trial temperature for T_op). Valid 0 to 200 K.
     Q_E : pint.Quantity [power], optional
         External heat flowing into the bearing (negative: cooling); default 0
         (beyond ±1e5 W a warning).

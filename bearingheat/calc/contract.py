@@ -165,7 +165,8 @@ CONTRACT: tuple[Column, ...] = (
     _in("T_amb", "degC", "ambient temperature", "thermal", template=("degC", 8)),
     _in("T_bearing", "degC", "bearing (outer ring) temperature for n_per", "thermal", template=("degC", 10)),
     _in("V_oil", "l/min", "circulating oil flow", "thermal", template=("l/min", 8)),
-    _in("dT_oil", "delta_degC", "oil temperature rise; default T_bearing - T_amb (oil fed at ambient)", "thermal",
+    _in("dT_oil", "delta_degC", "oil temperature rise; default T - T_amb (oil fed at ambient, leaving at the bearing "
+        "temperature T: T_bearing for n_per, Q_S and Q_L, each trial temperature for T_op)", "thermal",
         template=("K", 8)),
     _in("Q_E", "W", "external heat flowing INTO the bearing (negative: cooling)", "thermal", template=("W", 8)),
     _in("nu40", "mm^2/s", "oil viscosity at 40 degC (ASTM D341 with nu100)", "thermal", template=("mm^2/s", 9)),

@@ -279,3 +279,15 @@ def test_a_thrust_bearing_gets_its_n_thr_without_an_ambient_temperature():
     assert r.n_thr.magnitude == pytest.approx(
         thermal_reference_speed("81212", d=60 * u.mm, D=95 * u.mm, C0=200 * u.kN).magnitude, rel=1e-12)
     assert round(r.n_thr.magnitude) == 2414
+
+
+def test_no_equilibrium_is_a_warning_unless_nu_was_to_come_from_it():
+    """As the docstring says: T_op NaN and 'warning' with a given nu or a T_bearing to take nu at; 'error' only
+    where nu was to be taken at T_op (the 6205 at 15000 1/min in 140 degC air settles above the search)."""
+    hot = dict(n=15000 * u.rpm, T_amb=u.Quantity(140, "degC"))
+    given = base_case(**hot, nu=12 * u("mm^2/s"), nu40=None, nu100=None, T_bearing=None)
+    fallback = base_case(**hot, T_bearing=u.Quantity(160, "degC"))
+    nothing = base_case(**hot, T_bearing=None)
+    assert (given.status, fallback.status, nothing.status) == (["warning"], ["warning"], ["error"])
+    assert np.isnan([given.T_op.magnitude, fallback.T_op.magnitude, nothing.T_op.magnitude]).all()
+    assert nothing.messages[0].startswith("nu [mm^2/s]: cannot be taken at T_op; no equilibrium up to 150 degC")
