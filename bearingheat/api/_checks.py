@@ -15,7 +15,7 @@ import pandas as pd
 from bearingheat.calc.contract import range_problems
 from bearingheat.errors import BearingheatError
 
-__all__ = ["check_ranges", "point_warnings", "point_status", "where", "shared_index", "broadcast_shape"]
+__all__ = ["point_warnings", "point_status", "where", "shared_index", "broadcast_shape"]
 
 
 def where(i: int, shape: tuple[int, ...]) -> str:
@@ -45,18 +45,9 @@ def _range_warnings(name: str, values: float | np.ndarray, shape: tuple[int, ...
     return found
 
 
-def check_ranges(arrays: Mapping[str, float | np.ndarray], shape: tuple[int, ...], error: type[BearingheatError]
-                 ) -> list[str]:
-    """Raise for a given number that is NaN, infinite or outside its valid range; return the plausibility warnings."""
-    warnings = []
-    for name, values in arrays.items():
-        warnings += [message + where(i, shape) for i, message in _range_warnings(name, values, shape, error)[:1]]
-    return warnings
-
-
 def point_warnings(arrays: Mapping[str, float | np.ndarray], shape: tuple[int, ...], error: type[BearingheatError]
                    ) -> tuple[list[str], dict[int, list[str]]]:
-    """:func:`check_ranges` per operating point: raise for unusable numbers; return the plausibility warnings of
+    """Raise for a given number that is NaN, infinite or outside its valid range; return the plausibility warnings of
     scalar arguments (every point's) and, for array arguments, those of the points that have them."""
     every: list[str] = []
     some: dict[int, list[str]] = {}
@@ -80,6 +71,38 @@ def point_status(size: int, every: list[str], some: dict[int, list[str]]) -> tup
         status[i] = "warning"
         messages[i] = "; ".join(([common] if common else []) + own)
     return status, messages
+
+
+def broadcast_shape(values: Mapping[str, float | np.ndarray], error: type[BearingheatError]) -> tuple[int, ...]:
+    """The shape the arguments ``values`` (by name) broadcast to; ``error`` naming two that do not, with their
+    shapes, rather than numpy's 'shape mismatch'.
+
+    >>> from bearingheat.errors import HeatBalanceError
+    >>> broadcast_shape({"n": np.ones(3), "Fr": 2.0}, HeatBalanceError)
+    (3,)
+    >>> broadcast_shape({"n": np.ones(2), "Fr": 2.0, "T_bearing": np.ones(3)}, HeatBalanceError)
+    Traceback (most recent call last):
+    ...
+    bearingheat.errors.HeatBalanceError: n has shape (2,) and T_bearing has shape (3,): arrays are paired value by value, so they need one shape (or give single values)
+    """
+    shapes = {name: np.shape(value) for name, value in values.items()}
+    shape: tuple[int, ...] = ()
+    for name, own in shapes.items():
+        try:
+            shape = np.broadcast_shapes(shape, own)
+        except ValueError:
+            other = next(n for n, s in shapes.items() if not _broadcast(s, own))
+            raise error(f"{other} has shape {shapes[other]} and {name} has shape {own}: arrays are paired value by "
+                        "value, so they need one shape (or give single values)") from None
+    return shape
+
+
+def _broadcast(a: tuple[int, ...], b: tuple[int, ...]) -> bool:
+    try:
+        np.broadcast_shapes(a, b)
+    except ValueError:
+        return False
+    return True
 
 
 def _labels(index: pd.Index) -> str:
@@ -114,27 +137,3 @@ def shared_index(values: Mapping[str, object], error: type[BearingheatError]) ->
                         "pass arrays")
     return None if first is None else first[1]
 
-
-def broadcast_shape(shapes: Mapping[str, tuple[int, ...]], error: type[BearingheatError]) -> tuple[int, ...]:
-    """The shape the arrays of ``shapes`` (by argument name) broadcast to; arrays that do not broadcast raise
-    ``error`` naming two arguments and their shapes.
-
-    >>> from bearingheat.errors import FrictionInputError
-    >>> broadcast_shape({"n": (3,), "Fr": (), "oil_level": (3,)}, FrictionInputError)
-    (3,)
-    >>> broadcast_shape({"n": (3,), "Fr": (), "oil_level": (2,)}, FrictionInputError)
-    Traceback (most recent call last):
-    ...
-    bearingheat.errors.FrictionInputError: oil_level: an array of shape (2,) does not broadcast with n of shape (3,); give the arrays one shape, or one value
-    """
-    shape: tuple[int, ...] = ()
-    owner = ""  # the argument whose shape the others are broadcast to so far
-    for name, own in shapes.items():
-        try:
-            wider = np.broadcast_shapes(shape, own)
-        except ValueError:
-            raise error(f"{name}: an array of shape {own} does not broadcast with {owner} of shape {shape}; give the "
-                        "arrays one shape, or one value") from None
-        if wider != shape:
-            shape, owner = wider, name
-    return shape

@@ -335,7 +335,7 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
     arrays, fill_notes, unknown = fill_arrays(designation, arrays, typed)
     if unknown is not None and D is None:
         raise FrictionInputError(f"{unknown}; or give d, D (and C0)")
-    shape = broadcast_shape({k: v.shape for k, v in (*arrays.items(), *extra_arrays.items())}, FrictionInputError)
+    shape = broadcast_shape({**arrays, **extra_arrays}, FrictionInputError)
     given = {"n": n, "nu": nu, "Fr": Fr, "Fa": Fa, "C0": C0, "alpha": alpha, "d": d, "D": D, "B": B, "Y": Y,
              "e": e, "X0": X0, "Y0": Y0, "f0": f0, "f1": f1, "f2": f2}
     numbers = {**{k: arrays[k] for k, v in given.items() if v is not None},

@@ -15,9 +15,10 @@ import numpy as np
 import numpy.typing as npt
 import pandas as pd
 
-from bearingheat.api._checks import check_ranges, shared_index
+from bearingheat.api._checks import broadcast_shape, point_status, point_warnings, shared_index, where
 from bearingheat.api.results import Result
 from bearingheat.calc.fill import fill_from_catalogue
+from bearingheat.calc.heat_flows import walther_columns
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.models import compute_supports
 from bearingheat.calc.thermal import (OPERATING_TEMPERATURE_LIMIT, SPEED_FACTOR_METHODS, VISCOSITY_AT,
@@ -43,7 +44,8 @@ class HeatBalanceResult(Result):
     n_thr : pint.Quantity or pandas.Series [1/min]
         Thermal reference speed n_θr (ISO 15312; Schaeffler catalogue HR 1
         "Rolling bearings", edition June 2006); NaN where the method does not
-        apply or neither B nor T is given.
+        apply or the heat flow area lacks a width (B, or T of tapered roller
+        bearings; thrust bearings need d and D only).
     n_per : pint.Quantity or pandas.Series [1/min]
         Thermally permissible speed n_θr·f_n at ``T_bearing`` (needs
         T_bearing and T_amb), capped at n_G where that is given.
@@ -147,9 +149,12 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
     absolute (degC, K); ``dT_oil`` is a difference (K, delta_degC);
     ``iso_vg`` and ``VI`` are plain numbers. A number outside
     its valid range raises; one outside its plausible range is a warning in
-    ``messages``. A row the friction model or the balance cannot compute
-    (a missing n, a negative load, an unknown designation, no equilibrium)
-    gets status 'error' and NaN, and does not raise.
+    ``messages``. A point the friction model or the balance cannot compute
+    (a missing n, a negative load, an unknown designation) gets status
+    'error' and NaN, and does not raise. A point whose balance has no
+    equilibrium in the search gets T_op NaN and status 'warning' (with a
+    given ``nu``, or with ``T_bearing`` to take ν at instead); it is an
+    'error' only where ν was to be taken at T_op and nothing else gives it.
 
     Parameters
     ----------
@@ -201,14 +206,18 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
         Bearing (outer ring) temperature, for n_per and the heat carried
         away. Valid -60 to 300 °C (above 200 °C a warning).
     k_q : pint.Quantity [W/(mm²·K)], optional
-        Heat transfer coefficient of the seat; default q_r/50 K; must be > 0.
+        Heat transfer coefficient of the seat; default q_r/50 K; must be > 0
+        (outside 2e-5 to 1e-2 W/(mm²·K), a tenth to ten times the HR 1
+        catalogue's 0.2e-3 to 1.0e-3, a warning).
     V_oil : pint.Quantity [l/min], optional
         Circulating oil flow; valid 0 to 1e4 l/min.
     dT_oil : pint.Quantity [temperature difference], optional
-        Oil temperature rise; default T_bearing − T_amb (oil fed at
-        ambient). Valid 0 to 200 K.
+        Oil temperature rise; default T − T_amb (oil fed at ambient,
+        leaving at the bearing temperature T: T_bearing for n_per, Q_S and
+        Q_L, each trial temperature for T_op). Valid 0 to 200 K.
     Q_E : pint.Quantity [power], optional
-        External heat flowing into the bearing (negative: cooling); default 0.
+        External heat flowing into the bearing (negative: cooling); default 0
+        (beyond ±1e5 W a warning).
     n_G : pint.Quantity [1/min], optional
         Limiting speed: n_per is capped at it (with a warning). Valid up to
         1e7 1/min.
@@ -217,8 +226,9 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
         Valid > 0 and up to 1e7 1/min.
     viscosity_at : str, optional
         Where ν is taken when it comes from nu40/nu100 or iso_vg: 'auto'
-        (default; T_bearing where given, else T_op), 'bearing' or
-        'operating'. A given ``nu`` is always used as it is.
+        (default; at T_op where T_amb and n are given, at T_bearing where
+        they are not or where T_op has no solution), 'bearing' (T_bearing)
+        or 'operating' (T_op). A given ``nu`` is always used as it is.
     method : str, optional
         How the speed factor f_n of n_per is found: 'exact' (default; the
         root of the f_n equation) or 'approximation' (the catalogue's
@@ -240,9 +250,10 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
     ------
     bearingheat.errors.HeatBalanceError
         For an unknown ``method`` or ``viscosity_at``, no viscosity at all
-        (none of nu, nu40 with nu100, an ISO VG grade), and a number that is NaN,
-        infinite or outside its valid range (naming the argument and, for
-        arrays, the index).
+        (none of nu, nu40 with nu100, an ISO VG grade; or the reason the oil
+        data give none), arrays of shapes that do not pair point by point
+        (naming two of them), and a number that is NaN, infinite or outside
+        its valid range (naming the argument and, for arrays, the index).
     bearingheat.errors.UnitError
         For a plain number where a Quantity is needed, a unit of the wrong
         dimension, or a temperature difference where an absolute
@@ -275,8 +286,8 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
         if mag is None:
             continue
         columns[_API_COLUMNS[name][0]] = mag.to_numpy(dtype=float) if isinstance(mag, pd.Series) else mag
-    shape = np.broadcast_shapes(*(np.shape(v) for v in columns.values()))
-    range_warnings = check_ranges(columns, shape, HeatBalanceError)
+    shape = broadcast_shape(columns, HeatBalanceError)
+    every, some = point_warnings(columns, shape, HeatBalanceError)  # a scalar's warnings: every point's
     if "n" not in columns:
         columns["n"] = np.nan
     size = int(np.prod(shape)) if shape else 1
@@ -292,17 +303,22 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
     if t_limit is not None:
         limit = float(celsius(t_limit, "t_limit"))
     frame, problems = fill_viscosity(frame, viscosity_at=viscosity_at)
-    if "nu" not in frame.columns:
+    if "nu" not in frame.columns:  # no point has a viscosity: the oil data's own fault where it has one, as calc says
+        errors = [(i, message) for i, level, message in problems + walther_columns(frame)[2] if level == "error"]
+        if errors:
+            raise HeatBalanceError(errors[0][1] + where(errors[0][0], shape))
         raise HeatBalanceError("nu: missing; give nu, or nu40 and nu100, or iso_vg")
     frame, results, settled = settle_viscosity(frame, compute_supports(frame), t_limit=limit)
     problems += settled
-    extra, more = heat_balance_rows(frame, results, method=method, t_limit=limit)
+    extra, more = heat_balance_rows(frame, results, method=method, t_limit=limit, reference_speed=True)
     problems = fill_problems + problems + more
-    status = results["status"].tolist()
-    messages = [[m] if m else [] for m in results["message"]]
-    for position in range(size) if range_warnings else ():
-        messages[position] = range_warnings + messages[position]
-        status[position] = "warning" if status[position] == "ok" else status[position]
+    status, ranges = point_status(size, every, some)
+    messages = [[m] if m else [] for m in ranges]
+    for position, (level, message) in enumerate(zip(results["status"].tolist(), results["message"])):
+        if message:
+            messages[position].append(message)
+        if level == "error" or (level == "warning" and status[position] == "ok"):
+            status[position] = level
     for position, level, message in problems:
         messages[position].append(message)
         if level == "error":
@@ -377,7 +393,8 @@ def thermal_reference_speed(designation: str | None = None, *, d: Quantity, D: Q
         for arrays): the method does not apply to the bearing, B and T are
         missing, C0 is not > 0, the designation is missing or unknown.
         :func:`bearingheat.calc.thermal.thermal_reference_speed_rows`
-        returns NaN and the reasons instead.
+        returns NaN and the reasons instead. Also for arrays of shapes that
+        do not pair value by value (naming two of them).
     bearingheat.errors.UnitError
         For a plain number where a Quantity is needed, or a unit of the
         wrong dimension.
@@ -400,7 +417,7 @@ def thermal_reference_speed(designation: str | None = None, *, d: Quantity, D: Q
         columns["T"] = magnitude(T, "mm", "T")
     index = shared_index(columns, HeatBalanceError)
     columns = {k: v.to_numpy(dtype=float) if isinstance(v, pd.Series) else v for k, v in columns.items()}
-    shape = np.broadcast_shapes(*(np.shape(v) for v in columns.values()))
+    shape = broadcast_shape(columns, HeatBalanceError)
     size = int(np.prod(shape)) if shape else 1
     frame = pd.DataFrame({k: np.broadcast_to(np.asarray(v, dtype=float), shape).ravel() for k, v in columns.items()})
     frame["designation"] = designation

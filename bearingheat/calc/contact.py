@@ -39,10 +39,11 @@ def _nominal_angle(designation) -> float:
     return np.nan if angle is None else angle
 
 
-def extend(frame: pd.DataFrame, results: pd.DataFrame):
+def extend(frame: pd.DataFrame, results: pd.DataFrame, **compute):
     """The column ``Fa_min`` [N] of the ball bearing rows with geometry, and (row position, level, message) problems.
 
-    No column at all when the table has no ``z``, ``Dw`` and ``dm_pitch``.
+    No column at all when the table has no ``z``, ``Dw`` and ``dm_pitch``. The friction pass's options
+    (``compute``) are not needed.
     """
     if not all(col in frame.columns for col in _GEOMETRY):
         return pd.DataFrame(index=frame.index), []

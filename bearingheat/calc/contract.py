@@ -166,7 +166,8 @@ CONTRACT: tuple[Column, ...] = (
     _in("T_amb", "degC", "ambient temperature", "thermal", template=("degC", 8)),
     _in("T_bearing", "degC", "bearing (outer ring) temperature for n_per", "thermal", template=("degC", 10)),
     _in("V_oil", "l/min", "circulating oil flow", "thermal", template=("l/min", 8)),
-    _in("dT_oil", "delta_degC", "oil temperature rise; default T_bearing - T_amb (oil fed at ambient)", "thermal",
+    _in("dT_oil", "delta_degC", "oil temperature rise; default T - T_amb (oil fed at ambient, leaving at the bearing "
+        "temperature T: T_bearing for n_per, Q_S and Q_L, each trial temperature for T_op)", "thermal",
         template=("K", 8)),
     _in("Q_E", "W", "external heat flowing INTO the bearing (negative: cooling)", "thermal", template=("W", 8)),
     _in("nu40", "mm^2/s", "oil viscosity at 40 degC (ASTM D341 with nu100)", "thermal", template=("mm^2/s", 9)),
@@ -177,8 +178,8 @@ CONTRACT: tuple[Column, ...] = (
     _in("n_thr_catalogue", "1/min", "catalogue n_thr; n_per then uses it instead of the computed one", "thermal",
         template=("1/min", 9)),
     _in("viscosity_at", "", "where the viscosity of nu40/nu100 or iso_vg is taken: auto (T_op where T_amb and n "
-        "are given, else T_bearing), operating (T_op) or bearing (T_bearing); blank: the table's --viscosity-at, "
-        "default auto", "thermal"),
+        "are given; T_bearing where they are not, or where T_op has no solution), operating (T_op) or bearing "
+        "(T_bearing); blank: the table's --viscosity-at, default auto", "thermal"),
     _in("n_per_method", "", "how n_per is found: exact (root of the heat balance) or approximation (the "
         "catalogue's formula for f_n); blank: the table's --n-per-method, default exact", "thermal",
         template=("-", 14)),
@@ -302,13 +303,19 @@ RANGES: dict[str, tuple[tuple[float, float] | None, tuple[float, float] | None]]
     "VM": (None, (-_INF, 1e-2)),
     "mu_sl": (None, (-_INF, 0.3)),
     "mu_bl": (None, (-_INF, 0.3)),
+    "k_q": (None, (2e-5, 1e-2)),                  # W/(mm²·K): see RANGE_SOURCES
+    "Q_E": (None, (-1e5, 1e5)),                   # W: see RANGE_SOURCES
 }
-#: input -> where its plausible range comes from, said in the warning (the others are unit mix-ups of any bearing)
+#: input -> where its plausible range comes from, said in the warning (ranges that are no plain unit check)
 RANGE_SOURCES = {
     "VM": "over 300 times the 0.3·10⁻⁴ the worked example of SKF 6000 pp. 104-105 reads off diagram 2; the diagram's "
           "data are not in bearingheat, so the bound is wide",
     "mu_sl": "twice μbl ≈ 0.15 of SKF 6000 p. 101 and 10000/3 p. 103, the largest sliding coefficient of the model",
     "mu_bl": "twice μbl ≈ 0.15 of SKF 6000 p. 101 and 10000/3 p. 103, the largest sliding coefficient of the model",
+    "k_q": ("a tenth to ten times the 0.2e-3 to 1.0e-3 W/(mm^2*K) of the Schaeffler HR 1 catalogue for seats up to "
+            "25 000 mm^2; its default q_r/50 K is 3.2e-4"),
+    "Q_E": ("the heat q_r*A_r the seat of a bearing of plausible size (D up to 6000 mm, B up to 2000 mm) carries away "
+            "at the ISO 15312 reference conditions is below 1e5 W"),
 }
 CONTRACT = tuple(dataclasses.replace(c, valid=RANGES[c.name][0], plausible=RANGES[c.name][1])
                  if c.kind == "input" and c.name in RANGES else c for c in CONTRACT)

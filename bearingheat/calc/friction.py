@@ -67,10 +67,10 @@ def evaluate_catalogue_model(s: SupportArrays, labels: Labels, f2_chart: F2Chart
     shape = (n_rows,)
     problems: list[Problem] = []
 
-    def add(mask, level, message):
+    def add(mask, level, message, column=""):
         mask = np.broadcast_to(np.asarray(mask, dtype=bool), shape)
         if mask.any():
-            problems.append(Problem(mask, level, message))
+            problems.append(Problem(mask, level, message, column))
 
     def value_of(col, i):
         return labels.value(col, at(getattr(s, col), i))
@@ -79,7 +79,7 @@ def evaluate_catalogue_model(s: SupportArrays, labels: Labels, f2_chart: F2Chart
         add(mask, "error", lambda i, c=col: f"{labels.name(c, i)}: {value_of(c, i)} {condition_text}")
 
     def missing(col, why, mask):
-        add(mask, "error", lambda i, c=col: f"{labels.name(c, i)}: missing; {why(i)}")
+        add(mask, "error", lambda i, c=col: f"{labels.name(c, i)}: missing; {why(i)}", col)
 
     def label(i):
         return at(s.label, i)
@@ -191,7 +191,7 @@ def evaluate_catalogue_model(s: SupportArrays, labels: Labels, f2_chart: F2Chart
             no_kb = need_f2 & np.isnan(s.kB)
             missing("kB", lambda i: f"{label(i)} has no kB in the Schaeffler catalogue p. 70, so Fa/A for the f2 chart is "
                                     "unknown; give f2", no_kb)
-            rows = np.flatnonzero(need_f2 & ~no_kb)
+            rows = np.flatnonzero(need_f2 & ~no_kb & ~np.isnan(nu_n_dM))  # (no nu or n: their own error)
             chart_f2, reasons = f2_chart.lookup(Fa_over_A[rows], nu_n_dM[rows])
             f2[rows] = chart_f2
             refused = np.zeros(shape, dtype=bool)

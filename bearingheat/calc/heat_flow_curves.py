@@ -52,7 +52,8 @@ def heat_flow_curves(frame: pd.DataFrame, results: pd.DataFrame, columns: pd.Dat
     if carried_theta > 0 and power.is_closed(0):
         n_cross = float(balance_speed(power.f0[0], nu_theta, power.dM[0], power.load_torque[0], carried_theta))
     elif carried_theta > 0:
-        n_cross = float(generic_speed(power, np.full(power.size, nu_theta), np.full(power.size, carried_theta))[0])
+        speed, _ = generic_speed(power, np.full(power.size, nu_theta), np.full(power.size, carried_theta))
+        n_cross = float(speed[0])
     n_top = 1.5 * np.nanmax([n, n_cross, n_per, 1.0])
     speeds = np.linspace(0.0, n_top, points)
     temperatures = np.linspace(T_amb[0], OPERATING_TEMPERATURE_LIMIT, points)

@@ -104,18 +104,25 @@ def heat_flow_setup(frame: pd.DataFrame, details: pd.DataFrame | None = None):
     return details, k_q, T_amb, Q_E, Q_S, Q_L
 
 
-def generic_speed(power: FrictionPower, nu: np.ndarray, Q: np.ndarray) -> np.ndarray:
-    """The speed [1/min] at which each row's friction power equals Q [W], by bracketing.
+def generic_speed(power: FrictionPower, nu: np.ndarray, Q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The speed [1/min] at which each row's friction power equals Q [W], by bracketing, and a status per row.
 
     N_R grows with the speed from 0 at standstill, so the bracket [0, n_high]
     is widened fourfold until N_R(n_high) > Q (from 1000 1/min, at most 20
-    times); a row still short of Q there has no root (NaN).
+    times). A row whose N_R is known only between two speeds
+    (:meth:`~bearingheat.calc.models.FrictionPower.speed_range`: f2 read off
+    a chart) is bracketed by them. Status as
+    :func:`~bearingheat.kernels.roots.bracketed_root`: 0 for a root, +1
+    where N_R exceeds Q already at the lower end (the root lies below it),
+    -1 where N_R stays below Q at the upper end, 2 where N_R is unknown at
+    an end; the speed is NaN where the status is not 0.
     """
-    n_high = np.full(power.size, 1000.0)
+    low, limit = power.speed_range(nu)
+    bounded = np.isfinite(limit)
+    n_high = np.where(bounded, limit, np.fmax(1000.0, low))
     for _ in range(20):
-        short = power(n_high, nu) < Q
+        short = ~bounded & (power(n_high, nu) < Q)
         if not short.any():
             break
         n_high = np.where(short, n_high * 4.0, n_high)
-    speed, status = bracketed_root(lambda n: power(n, nu) - Q, np.zeros(power.size), n_high)
-    return np.where(status == 0, speed, np.nan)
+    return bracketed_root(lambda n: power(n, nu) - Q, low, n_high)

@@ -22,11 +22,12 @@ OK, WARNING, ERROR = range(3)
 
 @dataclass
 class Problem:
-    """Rows that fail one check, and how to word it for row i."""
+    """Rows that fail one check, and how to word it for row i (``column``: the input a 'missing' check names)."""
 
     mask: np.ndarray
     level: str  # 'error' or 'warning'
     message: Callable[[int], str]
+    column: str = ""
 
 
 @dataclass
@@ -115,15 +116,18 @@ def with_texts(column: pd.Series | pd.Categorical, rows: Iterable[int], texts: I
     return pd.Categorical.from_codes(codes, categories=categories)
 
 
-def row_status(size: int, warnings_by_row: dict[int, list[str]], errors_by_row: dict[int, list[str]]
-               ) -> tuple[pd.Categorical, pd.Categorical]:
+def row_status(size: int, warnings_by_row: dict[int, list[str]], errors_by_row: dict[int, list[str]],
+               silent: Iterable[int] = ()) -> tuple[pd.Categorical, pd.Categorical]:
     """(status, message) of ``size`` rows from the messages of the rows that have some: a row with errors is
-    'error' and shows only them, a row with warnings 'warning'; the messages of a row are joined by '; '."""
+    'error' and shows only them, a row with warnings 'warning'; the messages of a row are joined by '; '. The
+    ``silent`` rows are errors whose message is told elsewhere: 'error', with their other errors only."""
     codes = np.zeros(size, dtype=np.int8)
     texts: dict[int, str] = {}
+    for i in silent:
+        codes[i], texts[i] = ERROR, ""
     for level, by_row in ((WARNING, warnings_by_row), (ERROR, errors_by_row)):  # an error replaces the warnings
         for i, found in by_row.items():
-            if found:
+            if found and codes[i] <= level:
                 codes[i], texts[i] = level, "; ".join(found)
     empty = pd.Categorical.from_codes(np.zeros(size, dtype=np.int8), categories=pd.Index([""], dtype=object))
     return status_column(codes), with_texts(empty, texts.keys(), texts.values())

@@ -37,7 +37,7 @@ from bearingheat.calc.supports import BEARING_GROUP, KEY_INPUTS, NUMBER_INPUTS, 
     build_support_arrays, coded_categorical, column_codes, nonblank, number_column, text_codes
 from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.errors import ModelError
-from bearingheat.kernels.friction import mean_diameter
+from bearingheat.kernels.friction import axial_load_torque, mean_diameter
 from bearingheat.kernels.thermal import friction_heat, friction_power
 
 __all__ = ["FrictionModel", "FrictionPower", "MODELS", "DEFAULT_MODEL", "get_model", "compute_supports",
@@ -272,7 +272,8 @@ def evaluate_models(supports: SupportArrays, model_codes: np.ndarray, model_name
         for problem in part_problems:
             mask = np.zeros(size, dtype=bool)
             mask[rows] = problem.mask
-            problems.append(Problem(mask, problem.level, functools.partial(_message_at, problem, position)))
+            problems.append(Problem(mask, problem.level, functools.partial(_message_at, problem, position),
+                                    problem.column))
     for name in RESULTS:
         results.setdefault(name, np.full(size, np.nan))
     return results, problems
@@ -312,10 +313,18 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
     warnings_by_row: defaultdict[int, list[str]] = defaultdict(list)
     if plain.any():
         plain_rows(frame, plain, results, row_errors, warnings_by_row)
+    # a row whose nu could not be found from its oil data says why itself (the heat balance's message): the model's
+    # 'nu: missing' would only follow from it
+    explained = (frame["_nu_explained"].to_numpy(dtype=bool) if "_nu_explained" in frame.columns
+                 else np.zeros(n_rows, dtype=bool))
+    silent = []
     for problem in problems:
+        quiet = problem.level == "error" and problem.column == "nu"
         for i in np.flatnonzero(problem.mask & ~plain).tolist():
             if problem.level == "error":
-                if resolved[i]:  # a row that failed to resolve has its error already
+                if quiet and explained[i]:
+                    silent.append(i)
+                elif resolved[i]:  # a row that failed to resolve has its error already
                     row_errors[i].append(problem.message(i))
             else:
                 warnings_by_row[i].append(problem.message(i))
@@ -324,7 +333,7 @@ def compute_supports(frame: pd.DataFrame, *, f2_chart: F2Chart | None = None, la
     noted = np.broadcast_to(supports.noted, (n_rows,)) & ~plain & catalogue_rows
     for i in np.flatnonzero(noted).tolist():  # after the warnings
         warnings_by_row[i].append("; ".join(notes_of[i]))  # a designation's notes
-    status, message = row_status(n_rows, warnings_by_row, row_errors)
+    status, message = row_status(n_rows, warnings_by_row, row_errors, silent)
     failed = status.codes == ERROR
     reported = list(RESULT_UNITS)
     if "nu_n_dM" in results and np.any(~np.isnan(results["nu_n_dM"]) & ~failed):
@@ -402,10 +411,15 @@ class FrictionPower:
     M1 and M2 independent of the speed: ``speed_exponent`` 2/3) use the
     closed forms of :mod:`bearingheat.kernels.thermal` and keep the exact
     5/3 root; rows of any other model are evaluated by the model itself, so
-    the heat balance finds their roots by bracketing.
+    the heat balance finds their roots by bracketing. Rows of the catalogue
+    model whose f2 is read off ``f2_chart`` at ν·n·dM (the Schaeffler
+    catalogue, p. 70; ``chart_rows``) take M2 at each trial speed and
+    viscosity, so they have no closed law either: their N_R is NaN where
+    ν·n·dM is off the chart, and :meth:`speed_range` gives the speeds the
+    chart reaches.
     """
 
-    def __init__(self, frame: pd.DataFrame, results: pd.DataFrame):
+    def __init__(self, frame: pd.DataFrame, results: pd.DataFrame, f2_chart: F2Chart | None = None):
         self.size = len(frame)
         if "model" in results.columns:  # a categorical (compute_supports): its codes, no hashing of names
             codes, distinct = column_codes(results["model"])
@@ -422,6 +436,18 @@ class FrictionPower:
             for name in sorted({str(m) for m, closed in zip(distinct, closed_of_name) if not closed}):
                 rows = np.flatnonzero(np.array([m == name for m in distinct] + [False], dtype=bool)[codes])
                 self.generic[name] = (rows, supports.take(rows))
+        # M2 = f2·Fa·dM with f2 read off the chart (no f2 given): M2 follows ν·n·dM; M1 stays (pp. 64, 69-70)
+        self.chart_rows = np.zeros(self.size, dtype=bool)
+        if f2_chart is not None and "Fa_over_A" in results.columns:
+            self.Fa_over_A = results["Fa_over_A"].to_numpy(dtype=float)
+            self.chart_rows = (self.closed & ~np.isnan(self.Fa_over_A) & np.isnan(number_column(frame, "f2"))
+                               & ~failed_rows(results))
+            if self.chart_rows.any():
+                self.chart, self.Fa = f2_chart, number_column(frame, "Fa")
+                self.M1 = results["M1"].to_numpy(dtype=float)
+                self.closed = self.closed & ~self.chart_rows
+                lowest, highest = f2_chart.x_range(np.where(self.chart_rows, self.Fa_over_A, np.nan))
+                self.chart_x = (lowest, highest)  # the ν·n·dM the chart reaches at each row's Fa/A [mm³/(s·min)]
 
     @staticmethod
     def closed_of(names) -> list[bool]:
@@ -444,11 +470,35 @@ class FrictionPower:
                 local = model_rows[inside] - start
                 block = supports if len(inside) == len(model_rows) else supports.take(inside)
                 out[local] = self._evaluate(name, block, n[local], nu[local])
+        local = np.flatnonzero(self.chart_rows[rows])
+        if len(local):
+            out[local] = self._chart_power(local + start, n[local], nu[local])
         return out
+
+    def _chart_power(self, i: np.ndarray, n: np.ndarray, nu: np.ndarray) -> np.ndarray:
+        """N_R [W] of the chart rows ``i`` at speeds ``n`` and viscosities ``nu``, with f2 read at their ν·n·dM."""
+        dM = self.dM[i]
+        with np.errstate(invalid="ignore", over="ignore"):
+            f2 = self.chart.values(self.Fa_over_A[i], nu * n * dM)
+            return friction_heat(self.f0[i], nu, n, dM, self.M1[i] + axial_load_torque(f2, self.Fa[i], dM))
+
+    def speed_range(self, nu) -> tuple[np.ndarray, np.ndarray]:
+        """The speeds [1/min] between which each row's N_R is known at the viscosity ``nu`` (one per row): 0 and
+        inf, except on the chart rows, whose ν·n·dM must lie on the f2 chart (a hair inside its ends, so that
+        rounding does not carry an end off the chart)."""
+        low, high = np.zeros(self.size), np.full(self.size, np.inf)
+        if self.chart_rows.any():
+            with np.errstate(invalid="ignore", divide="ignore"):
+                per_speed = np.asarray(nu, dtype=float) * self.dM
+                low = np.where(self.chart_rows, self.chart_x[0] / per_speed * (1.0 + 1e-12), low)
+                high = np.where(self.chart_rows, self.chart_x[1] / per_speed * (1.0 - 1e-12), high)
+        return low, high
 
     def at_row(self, i: int, n, nu) -> np.ndarray:
         """N_R [W] of row ``i`` at many speeds and viscosities (the curves of a heat-balance figure)."""
         n, nu = np.broadcast_arrays(np.asarray(n, dtype=float), np.asarray(nu, dtype=float))
+        if self.chart_rows[i]:
+            return self._chart_power(np.full(n.size, i), n.ravel(), nu.ravel()).reshape(n.shape)
         if self.closed[i]:
             return friction_heat(self.f0[i], nu, n, self.dM[i], self.load_torque[i])
         for name, (rows, supports) in self.generic.items():
@@ -458,7 +508,7 @@ class FrictionPower:
         raise KeyError(i)
 
     def is_closed(self, i: int) -> bool:
-        """Whether row ``i`` has the catalogue speed law (exact 5/3 root)."""
+        """Whether row ``i`` has the catalogue speed law with a constant M1 + M2 (exact 5/3 root)."""
         return bool(self.closed[i])
 
     @staticmethod

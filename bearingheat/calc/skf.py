@@ -189,10 +189,10 @@ def evaluate_skf_model(supports: SupportArrays, labels: Labels, f2_chart: F2Char
     x = _Extra(extra, size)
     problems: list[Problem] = []
 
-    def add(mask, level, message):
+    def add(mask, level, message, column=""):
         mask = np.broadcast_to(np.asarray(mask, dtype=bool), shape)
         if mask.any():
-            problems.append(Problem(mask, level, message))
+            problems.append(Problem(mask, level, message, column))
 
     def row(values):
         return np.broadcast_to(np.asarray(values, dtype=float), shape)
@@ -210,7 +210,7 @@ def evaluate_skf_model(supports: SupportArrays, labels: Labels, f2_chart: F2Char
         return labels.value(col, at(values, i))
 
     def missing(col, why, mask):
-        add(mask & ok, "error", lambda i, col=col: f"{labels.name(col, i)}: missing; {why(i)}")
+        add(mask & ok, "error", lambda i, col=col: f"{labels.name(col, i)}: missing; {why(i)}", col)
 
     def bad(col, values, condition, mask):
         add(mask & ok, "error",

@@ -62,8 +62,10 @@ class Extension:
     ``settle(frame, results, f2_chart=, labels=, model=) -> (frame, results,
     problems)`` right after it (an input that needs the friction results,
     such as a viscosity at the operating temperature; None: nothing to
-    settle), ``extend(frame, results) -> (columns, problems)`` after the
-    messages; problems are (row position, 'error' | 'warning', message).
+    settle), ``extend(frame, results, f2_chart=, labels=, model=) -> (columns,
+    problems)`` after the messages (the options of the friction pass, for a
+    result that evaluates the model again); problems are (row position,
+    'error' | 'warning', message).
     """
 
     owner: str
@@ -488,7 +490,7 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
     extension_columns = []
     for ext in EXTENSIONS.values():
         with np.errstate(all="ignore"):  # rows in error are computed too, and masked afterwards
-            columns, problems = ext.extend(frame, results)
+            columns, problems = ext.extend(frame, results, f2_chart=f2_chart, labels=converted.labels, model=model)
         _add_messages(results, [(i, level, cite(m, i), False) for i, level, m in problems])
         extension_columns.append((columns, output_units(owner=ext.owner)))
     if vm_read is not None and not np.isnan(vm_read).all():

@@ -16,16 +16,17 @@ dT_oil, Q_E, nu40, nu100, iso_vg, VI, n_G, n_thr_catalogue) and B, C0 of
 the friction model.
 
 Output columns, each where its inputs are present: ``n_thr [1/min]`` (B or
-T, C0), ``n_per [1/min]`` (T_bearing, T_amb), ``T_op [degC]`` and
+T, or T_amb; C0), ``n_per [1/min]`` (T_bearing, T_amb), ``T_op [degC]`` and
 ``nu_op [mm^2/s]`` (T_amb; the operating temperature at the speed n),
 ``Q_S [W]`` and ``Q_L [W]`` (heat carried away at T_bearing, or at T_op
 where T_bearing is not given).
 
 When ``nu`` is left out and ``nu40``/``nu100`` or ``iso_vg`` are given,
-:func:`prepare` fills it before the friction pass: at ``T_bearing`` where
-the row gives it, otherwise at the operating temperature T_op solved at the
-operating speed (this needs ``n`` and ``T_amb``). A ``nu`` the user gives
-is kept as it is.
+:func:`prepare` fills it before the friction pass, at the row's
+``viscosity_at``: by default (auto) at the operating temperature T_op
+solved at the operating speed where the row gives ``n`` and ``T_amb``, and
+at ``T_bearing`` where it does not or where T_op has no solution. A ``nu``
+the user gives is kept as it is.
 
 >>> n_thr = thermal_reference_speed_rows(pd.DataFrame(
 ...     {"designation": ["6205", "NU206-E", "51105"], "d": [25, 30, 25], "D": [52, 62, 42],
@@ -37,26 +38,23 @@ is kept as it is.
 """
 from __future__ import annotations
 
-import functools
-from dataclasses import dataclass
-from typing import Callable
-
 import numpy as np
 import pandas as pd
 
 from bearingheat.calc.contract import columns, register_choices
 from bearingheat.calc.models import DEFAULT_MODEL, FrictionPower, failed_rows, plain_bushing_rows, results_at_viscosity
+from bearingheat.calc.operating_temperature import (BELOW_AMBIENT_SEARCH, OPERATING_TEMPERATURE_LIMIT,
+                                                    lowest_operating_temperature, operating_point)
+from bearingheat.calc.permissible_speed import (DEFAULT_SPEED_FACTOR_METHOD, SPEED_FACTOR_METHODS, SpeedFactorMethod,
+                                                permissible_speed_rows)
 from bearingheat.calc.reference_speed import thermal_reference_speed_details, thermal_reference_speed_rows
+from bearingheat.calc.messages import with_texts
 from bearingheat.calc.supports import coded_categorical, nonblank, number_column, text_codes, with_columns
-from bearingheat.calc.heat_flows import (HEAT_BALANCE_DETAILS, OIL_DATA, generic_speed, heat_flow_setup,
-                                         viscosity_of_rows, walther_columns)
+from bearingheat.calc.heat_flows import (HEAT_BALANCE_DETAILS, OIL_DATA, heat_flow_setup, viscosity_of_rows,
+                                         walther_columns)
 from bearingheat.errors import HeatBalanceError
-from bearingheat.kernels import friction
-from bearingheat.kernels.thermal import (APPROXIMATION_RANGE, OIL_HEAT_CAPACITY_FLOW, permissible_speed_factor,
-                                         speed_factor_catalogue_approximation, speed_factor_coefficients)
-from bearingheat.kernels.roots import bracketed_root
-from bearingheat.kernels.viscosity import (KELVIN_OFFSET, MIN_VISCOSITY, viscosity_range_messages,
-                                           walther_viscosity)
+from bearingheat.kernels.thermal import OIL_HEAT_CAPACITY_FLOW
+from bearingheat.kernels.viscosity import MIN_VISCOSITY, viscosity_range_messages, walther_viscosity
 
 __all__ = [
     "OPERATING_TEMPERATURE_LIMIT",
@@ -67,6 +65,7 @@ __all__ = [
     "VISCOSITY_AT",
     "DEFAULT_VISCOSITY_AT",
     "THERMAL_INPUTS",
+    "lowest_operating_temperature",
     "thermal_reference_speed_details",
     "thermal_reference_speed_rows",
     "fill_viscosity",
@@ -76,28 +75,15 @@ __all__ = [
     "extend",
 ]
 
-#: upper end of the search for the operating temperature [°C]; above it the heat is said to run away
-OPERATING_TEMPERATURE_LIMIT = 150.0
-#: the search for the operating temperature starts this far below the ambient temperature [K]
-BELOW_AMBIENT_SEARCH = 50.0
-#: the search range is scanned in this many steps (about 8 K each) for the lowest equilibrium
-OPERATING_TEMPERATURE_CELLS = 24
 #: the temperature [°C] of the provisional viscosity of the friction pass for rows whose ν is taken at T_op (only
 #: M0 depends on it, and M0 is computed again at ν(T_op))
 PROVISIONAL_TEMPERATURE = 70.0
-#: T_op of rows whose f2 is read off the chart at ν·n·dM is solved again until it moves less than this [K] ...
-SETTLED_TEMPERATURE = 1e-9
-#: ... in at most this many passes
-SETTLE_PASSES = 20
-#: rows refined together by the root search when the balance can be evaluated block by block (the arrays of a
-#: block stay in a core's cache for all its steps; every row's steps are its own, so the roots are the same)
-ROOT_BLOCK = 1 << 14
 #: where a row's ν comes from (the hidden column ``_nu_at``; '' for a row without oil data and without ν)
 NU_SOURCES = ("given", "T_bearing", "T_op", "")
 #: where the operating viscosity is taken when it comes from nu40/nu100 or iso_vg
 VISCOSITY_AT = {
     "auto": ("the solved operating temperature T_op where T_amb and n are given (one operating state: the "
-             "friction results, T_op and nu_op agree), otherwise T_bearing"),
+             "friction results, T_op and nu_op agree), otherwise, or where T_op has no solution, T_bearing"),
     "bearing": "the bearing temperature T_bearing (the friction results at the temperature n_per is found for)",
     "operating": "the solved operating temperature T_op at the operating speed n",
 }
@@ -110,131 +96,6 @@ THERMAL_INPUTS = frozenset(columns(owner="thermal", kind="input"))
 
 
 # ---- rows: heat balance of supports (calc and the Python API) --------------------------------
-
-def _operating_point(frame, results, nu_at, nu_varies, Q_S, Q_L, Q_E, T_amb, t_limit, power=None):
-    """(T_op, status) at the operating speed: N_R(ν(T)) + Q_E = Q_S(T) + Q_L(T), N_R by each row's model
-    (``power``: the :class:`~bearingheat.calc.models.FrictionPower` of ``results`` where the caller has it);
-    ``nu_varies`` marks the rows whose ν follows T (Walther), ``nu_at`` gives ν(T) of every row."""
-    n = number_column(frame, "n")
-    power = power if power is not None else FrictionPower(frame, results)
-    T_low = T_amb - BELOW_AMBIENT_SEARCH
-    T_high = np.full(len(frame), float(t_limit))
-    if nu_varies.any():
-        def balance(theta, rows=slice(None)):
-            """N_R + Q_E − Q_S − Q_L [W] at θ of every row, or of the block ``rows`` (a slice)."""
-            with np.errstate(invalid="ignore", over="ignore"):
-                return power(n[rows], nu_at(theta, rows), rows) + Q_E[rows] - Q_S(theta, rows) - Q_L(theta, rows)
-    else:  # ν, and so N_R, the same at every T: N_R + Q_E once (the same sum, the same bits)
-        with np.errstate(invalid="ignore", over="ignore"):
-            generated = power(n, nu_at(T_low)) + Q_E
-
-        def balance(theta, rows=slice(None)):
-            with np.errstate(invalid="ignore", over="ignore"):
-                return generated[rows] - Q_S(theta, rows) - Q_L(theta, rows)
-    # With the catalogue speed law N_R grows with ν, ν(T) is monotone (Walther or constant), Q_S = k_q·A_r·(T − T_amb)
-    # and Q_L grow with T: where ν does not rise with T and k_q·A_r > 0 the balance falls strictly and has one root
-    # (rows with a missing input compare as NaN: their balance is NaN at the ends, status 2 whatever the scan)
-    with np.errstate(invalid="ignore", over="ignore"):
-        rising_nu = (nu_at(T_high) > nu_at(T_low)) if nu_varies.any() else np.False_  # (~False is -1, not True)
-        falling = power.closed & ~(Q_S(T_amb + 1.0) <= Q_S(T_amb)) & ~rising_nu
-    walther_falling = falling & nu_varies
-    if np.any(walther_falling):
-        T_low, T_high = _side_of_the_regime_step(balance, nu_at, n, walther_falling, T_low, T_high)
-    # where ν does not depend on T (no oil data) N_R does not either: the balance is a straight line in T
-    affine = power.closed & ~nu_varies
-    T_op, status = lowest_operating_temperature(balance, T_low, T_high, single_root=falling, affine=affine,
-                                                blocks=True)
-    return T_op, status, balance
-
-
-def _side_of_the_regime_step(balance, nu_at, n, rows, T_low, T_high):
-    """The range [T_low, T_high] of each of ``rows`` (a falling balance with ν(T) from Walther's law) narrowed to
-    the side of M0's regime step that holds the lowest root.
-
-    M0 = f0·(ν·n)^(2/3)·dM³·10⁻⁷ for ν·n >= 2000 and f0·160·dM³·10⁻⁷ below (the Schaeffler catalogue, p. 64):
-    where ν·n falls through 2000 as T rises, M0 steps up by 0.79 % (2000^(2/3) = 158.74 to 160). The balance
-    falls on both sides of that temperature but jumps up there, so it can cross zero just below it and again
-    above it, and a root search over the whole range may find the upper crossing. Just below the step (in
-    the high regime) the balance tells the side: not heating any more there, the lowest root is below;
-    still heating, there is none below and one above.
-    """
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        T_step = nu_at.temperature_at(friction.REGIME_LIMIT / n)
-        inside = rows & (T_step > T_low) & (T_step < T_high)
-        if not inside.any():
-            return T_low, T_high
-        # a hair below the step (10⁻⁹ of T in K): ν·n above 2000 by far more than ν(T)'s rounding
-        below_step = np.where(inside, T_step - 1e-9 * (T_step + KELVIN_OFFSET), T_low)
-        f_below = balance(below_step)
-    return (np.where(inside & (f_below > 0), below_step, T_low),
-            np.where(inside & (f_below <= 0), below_step, T_high))
-
-
-def lowest_operating_temperature(balance, T_low, T_high, *, cells: int = OPERATING_TEMPERATURE_CELLS,
-                                 single_root=False, affine=False, blocks: bool = False):
-    """The lowest temperature in [T_low, T_high] where the bearing stops heating up, for all rows at once.
-
-    ``balance(T)`` is N_R + Q_E − Q_S − Q_L [W] per row (positive while the
-    bearing heats up). The range is scanned at ``cells + 1`` evenly spaced
-    temperatures (one array call each, every row together) for the first
-    step from heating (> 0) to not heating (<= 0); that step is refined by
-    :func:`~bearingheat.kernels.roots.bracketed_root`. Returns (T, status)
-    as :func:`~bearingheat.kernels.thermal.operating_temperature`: 0 for an
-    equilibrium, 1 where the bearing still heats up at T_high (runaway), -1
-    where it no longer heats up at T_low, 2 where the balance is NaN at an
-    end. Two roots closer together than one cell may both be missed; one
-    root is never missed. Rows marked ``single_root`` (a balance known to
-    fall strictly) are refined between the ends of the range whatever the
-    other rows are, so a row's T does not depend on the rows computed with
-    it; where every row is, the scan is skipped. Rows marked ``affine`` (a
-    balance that is a straight line in T, and falls) take the secant of the
-    range's ends, which is their root; where every row is, nothing is
-    refined. With ``blocks`` the balance is ``balance(T, rows)`` for a slice
-    of the rows too, and rows are refined :data:`ROOT_BLOCK` at a time.
-
-    >>> T, status = lowest_operating_temperature(
-    ...     lambda T: -(T - 40.0) * (T - 90.0) * (T - 120.0), np.array([0.0, 0.0]), np.array([150.0, 30.0]))
-    >>> np.round(T, 9).tolist(), status.tolist()
-    ([40.0, nan], [0, 1])
-    """
-    T_low = np.asarray(T_low, dtype=float)
-    T_high = np.asarray(T_high, dtype=float)
-    shape = np.broadcast_shapes(T_low.shape, T_high.shape)
-    affine = np.broadcast_to(np.asarray(affine, dtype=bool), shape)
-    single = np.broadcast_to(np.asarray(single_root, dtype=bool), shape) | affine
-    if single.all():
-        cells = 1
-    grid = T_low + np.linspace(0.0, 1.0, cells + 1)[:, None] * (T_high - T_low)
-    with np.errstate(invalid="ignore", over="ignore"):
-        values = np.array([np.asarray(balance(T), dtype=float) for T in grid])  # a loop over the grid, not rows
-    heating = values > 0
-    crossing = heating[:-1] & ~heating[1:] & ~np.isnan(values[1:])
-    found = crossing.any(axis=0)
-    f_low, f_high = values[0], values[-1]
-    at_low = ~found & (f_low == 0) & ~(f_high > 0)  # in balance already at T_low
-    status = np.where(found | at_low, 0, np.where(f_high > 0, 1, np.where(f_low < 0, -1, 2)))  # 2: NaN inside
-    status = np.where(np.isnan(f_low) | np.isnan(f_high), 2, status)
-    with np.errstate(invalid="ignore", over="ignore", divide="ignore"):
-        if affine.all():  # every row takes the secant below: nothing to refine
-            T = np.full(shape, np.nan)
-        else:
-            first, rows = np.argmax(crossing, axis=0), np.arange(grid.shape[1])  # each row's first crossing cell
-            low = np.where(found, np.where(single, T_low, grid[first, rows]), T_low)
-            high = np.where(found, np.where(single, T_high, grid[first + 1, rows]), T_low)
-            f_at_low = np.where(found, np.where(single, f_low, values[first, rows]), f_low)
-            f_at_high = np.where(found, np.where(single, f_high, values[first + 1, rows]), f_low)
-            if blocks and len(shape) == 1:
-                T = np.full(shape, np.nan)
-                refined = found & ~affine
-                for part in (slice(start, start + ROOT_BLOCK) for start in range(0, shape[0], ROOT_BLOCK)):
-                    if refined[part].any():
-                        T[part], _ = bracketed_root(functools.partial(balance, rows=part), low[part], high[part],
-                                                    rtol=1e-14, f_low=f_at_low[part], f_high=f_at_high[part])
-            else:
-                T, _ = bracketed_root(balance, low, high, rtol=1e-14, f_low=f_at_low, f_high=f_at_high)
-        secant = np.where(f_high == 0, T_high, T_low + f_low * ((T_high - T_low) / (f_low - f_high)))
-    T = np.where(at_low, T_low, np.where(affine & found, secant, T))
-    return np.where(status == 0, T, np.nan), status
 
 
 def fill_viscosity(frame: pd.DataFrame, *, viscosity_at: str = "auto"):
@@ -265,7 +126,7 @@ def fill_viscosity(frame: pd.DataFrame, *, viscosity_at: str = "auto"):
     # the new and replaced columns go into a new frame at the end (calc's frame itself is not changed)
     frame = with_columns(frame, {"_walther_A": A, "_walther_B": B})
     if np.isnan(A).all():
-        return frame, problems
+        return with_columns(frame, {"_nu_explained": _rows_in_error(problems, len(frame))}), problems
     modes = _row_choices(frame, "viscosity_at", viscosity_at, VISCOSITY_AT, problems)
     nu = number_column(frame, "nu")
     given = ~np.isnan(nu)
@@ -295,7 +156,17 @@ def fill_viscosity(frame: pd.DataFrame, *, viscosity_at: str = "auto"):
         filled["_nu_pending"] = pending
         # auto rows with T_bearing fall back to it where T_op has no solution: their refusals become warnings
         filled["_nu_fallback"] = pending & (modes == "auto") & ~np.isnan(T_bearing)
+    filled["_nu_explained"] = _rows_in_error(problems, len(frame))
     return with_columns(frame, filled), problems
+
+
+def _rows_in_error(problems, size: int) -> np.ndarray:
+    """The rows with an error among ``problems``: after :func:`fill_viscosity`, those whose errors say why they
+    have no viscosity (:func:`~bearingheat.calc.models.compute_supports` leaves out the model's 'nu: missing',
+    which would only follow from them)."""
+    rows = np.zeros(size, dtype=bool)
+    rows[[i for i, level, _ in problems if level == "error"]] = True
+    return rows
 
 
 def _nu_sources(codes: np.ndarray) -> pd.Categorical:
@@ -314,8 +185,8 @@ def settle_viscosity(frame: pd.DataFrame, results: pd.DataFrame, *, t_limit: flo
     solved from its results, ``nu`` becomes ν(T_op) and the results follow
     it (:func:`~bearingheat.calc.models.results_at_viscosity`: M0, MR, NR
     of the catalogue model without a second evaluation). Where f2 is read
-    off the chart at ν·n·dM, M2 depends on ν too: T_op and ν are solved
-    again until T_op moves less than :data:`SETTLED_TEMPERATURE`. Returns
+    off the chart at ν·n·dM, the heat balance takes M2 at each trial
+    temperature's ν, so one solve gives the operating state. Returns
     (frame, results, problems); a row whose T_op has no solution is an
     error, or falls back to T_bearing in 'auto' mode.
     """
@@ -325,42 +196,33 @@ def settle_viscosity(frame: pd.DataFrame, results: pd.DataFrame, *, t_limit: flo
     fallback = frame["_nu_fallback"].to_numpy(dtype=bool)
     A, B = number_column(frame, "_walther_A"), number_column(frame, "_walther_B")
     frame = frame.drop(columns=["_nu_pending", "_nu_fallback"])
-    why_unsolved: dict[int, str] = {}
+    if f2_chart is not None:
+        results = _stand_in_f2(frame, results, pending, labels, model)
     failed_at_provisional = failed_rows(results)
-    T_op = np.full(len(frame), np.nan)
-    balance_T = balance_status = None  # the heat balance's T_op of every row, kept for heat_balance_rows
-    # the heat flows and ν(T) do not change from pass to pass (the pending rows' ν follows their Walther line)
-    flows, nu_at = heat_flow_setup(frame), viscosity_of_rows(frame, A, B)
-    solving = pending
-    for _ in range(SETTLE_PASSES):
-        T_new, unsolved, T_all, status_all = _solve_operating_temperature(frame, results, solving, t_limit,
-                                                                          flows, nu_at, ~np.isnan(A))
-        if balance_T is None:
-            balance_T, balance_status = T_all, status_all
-        else:
-            balance_T = np.where(solving, T_all, balance_T)
-            balance_status = np.where(solving, status_all, balance_status)
-        why_unsolved = {i: why for i, why in why_unsolved.items() if not solving[i]} | unsolved
-        moved = solving & ~(np.abs(T_new - T_op) <= SETTLED_TEMPERATURE)
-        T_op = np.where(solving, T_new, T_op)
-        nu = number_column(frame, "nu").copy()
-        back = fallback & np.isnan(T_op)
-        with np.errstate(invalid="ignore", over="ignore"):
-            nu[moved] = np.where(back, walther_viscosity(A, B, number_column(frame, "T_bearing")),
-                                 walther_viscosity(A, B, T_op))[moved]
-        frame["nu"] = nu
-        results = results_at_viscosity(frame, results, moved, f2_chart=f2_chart, labels=labels, model=model)
-        # M2 read off the f2 chart at nu*n*dM makes N_R depend on ν beyond the closed form: those rows again
-        solving = moved & ~np.isnan(T_op) & (results["M2"].to_numpy(dtype=float) > 0) & ~failed_rows(results)
-        if not solving.any():
-            break
+    details, _, T_amb, Q_E, Q_S, Q_L = heat_flow_setup(frame)
+    point = operating_point(frame, results, viscosity_of_rows(frame, A, B), ~np.isnan(A), Q_S, Q_L, Q_E, T_amb,
+                            t_limit, FrictionPower(frame, results, f2_chart))
+    # a row in error is left to its own message; a bearing without a heat balance says why
+    reasons = details["reason"].array  # (a categorical where spread from the distinct bearings: no text per row)
+    asked = pending & ~(failed_at_provisional | plain_bushing_rows(results))
+    refused = asked & nonblank(reasons, len(asked))
+    T_op = np.where(asked & ~refused & (point.status == 0), point.T, np.nan)
+    why_unsolved = {int(i): reasons[i] for i in np.flatnonzero(refused)}
+    why_unsolved.update({int(i): point.why(int(i)) for i in np.flatnonzero(asked & ~refused & (point.status != 0))})
+    nu = number_column(frame, "nu").copy()
+    with np.errstate(invalid="ignore", over="ignore"):
+        nu[pending] = np.where(fallback & np.isnan(T_op), walther_viscosity(A, B, number_column(frame, "T_bearing")),
+                               walther_viscosity(A, B, T_op))[pending]
+    frame["nu"] = nu
+    refused_nu = [i for i in why_unsolved if not fallback[i]]
+    if refused_nu:  # their message says why nu is missing (the model's 'nu: missing' would only follow from it)
+        explained = frame["_nu_explained"].to_numpy(dtype=bool).copy()
+        explained[refused_nu] = True
+        frame["_nu_explained"] = explained
+    results = results_at_viscosity(frame, results, pending, f2_chart=f2_chart, labels=labels, model=model)
     problems = [(i, "error", f"nu [mm^2/s]: cannot be taken at T_op; {why}; give T_bearing")
                 for i, why in sorted(why_unsolved.items()) if not fallback[i]]
-    problems += [(int(i), "warning", f"T_op: did not settle within {SETTLED_TEMPERATURE:g} K in {SETTLE_PASSES} "
-                                     "passes (f2 read off the chart at nu*n*dM depends on the viscosity)")
-                 for i in np.flatnonzero(solving)]
-    # a row the model refuses only at ν(T_op) (f2 off its chart at that nu*n*dM) is told where ν came from
-    nu = number_column(frame, "nu")
+    # a row the model refuses only at ν(T_op) is told where ν came from
     problems += [(int(i), "error", f"nu [mm^2/s]: {nu[i]:.4g}, taken at the operating temperature T_op = "
                                    f"{T_op[i]:.4g} degC; give T_bearing and viscosity_at 'bearing', or nu, for "
                                    "another viscosity")
@@ -369,53 +231,73 @@ def settle_viscosity(frame: pd.DataFrame, results: pd.DataFrame, *, t_limit: flo
     source[pending & ~np.isnan(T_op)] = NU_SOURCES.index("T_op")
     source[pending & fallback & np.isnan(T_op)] = NU_SOURCES.index("T_bearing")
     frame["_nu_at"] = _nu_sources(source)
-    # the friction results the heat balance will solve T_op from are these (f0, M1, M2 as solved with): its T_op
-    # is this one, not solved again
-    frame["_T_op"], frame["_T_op_status"] = balance_T, balance_status
+    # the heat balance takes this T_op of every row (solved from f0, M1 and M2 as they are now), and why a row
+    # that the heat balance reports on has none, rather than solving again
+    said = np.flatnonzero(~failed_rows(results) & ~plain_bushing_rows(results) & ~np.isnan(T_amb)
+                          & ~np.isnan(details["A_r"].to_numpy(dtype=float)) & (point.status != 0))
+    frame["_T_op"] = point.T
+    frame["_T_op_why"] = with_texts(pd.Categorical.from_codes(np.zeros(len(frame), dtype=np.int8), pd.Index([""])),
+                                    said.tolist(), [point.why(int(i)) for i in said])
     return frame, results, problems
 
 
-def _solve_operating_temperature(frame, results, rows, t_limit, flows, nu_at, nu_varies):
-    """T_op of the selected rows from their friction results (the other rows NaN), {row: why} of the selected
-    rows whose T_op has no solution (a row in error is left to its own message), and the heat balance's T_op
-    and status of every row (:func:`_operating_point`; ``flows`` of
-    :func:`~bearingheat.calc.heat_flows.heat_flow_setup`)."""
-    details, k_q, T_amb, Q_E, Q_S, Q_L = flows
-    T, status, _ = _operating_point(frame, results, nu_at, nu_varies, Q_S, Q_L, Q_E, T_amb, t_limit)
-    reasons = details["reason"].array  # (a categorical where spread from the distinct bearings: no text per row)
-    asked = rows & ~(failed_rows(results) | plain_bushing_rows(results))
-    refused = asked & nonblank(reasons, len(asked))
-    no_equilibrium = asked & ~refused & (status != 0)
-    unsolved = {int(i): reasons[i] for i in np.flatnonzero(refused)}
-    unsolved.update({int(i): _no_equilibrium_text(status[i], T_amb[i], t_limit)
-                     for i in np.flatnonzero(no_equilibrium)})
-    return np.where(asked & ~refused & (status == 0), T, np.nan), unsolved, T, status
-
-
-def _no_equilibrium_text(status, T_amb, t_limit):
-    if status == 1 and T_amb >= t_limit:  # the search lies below the ambient: nothing is known about running away
-        return (f"the ambient temperature T_amb = {T_amb:g} degC is not below {t_limit:g} degC, the upper end of the "
-                "search for the operating temperature; T_op is not computed")
-    if status == 1:
-        return (f"no equilibrium below {t_limit:g} degC: the friction heat exceeds the heat carried away "
-                "(the temperature runs away)")
-    if status == -1:
-        return (f"no equilibrium above {T_amb - BELOW_AMBIENT_SEARCH:g} degC: the heat carried away exceeds "
-                "the friction heat")
-    return "the heat balance is undefined (missing inputs)"
+def _stand_in_f2(frame, results, pending, labels, model):
+    """The results of the pending rows that the friction pass refused (f2 read off the chart at ν·n·dM of the
+    provisional viscosity is off it, and perhaps more) evaluated again with a stand-in f2: the heat balance reads
+    M2 off the chart at ν(T)·n·dM itself and needs only f0, M1 and Fa/A. A row refused for another reason stays
+    refused; every pending row is evaluated again at ν(T_op) with the chart (:func:`settle_viscosity`)."""
+    f2 = number_column(frame, "f2")
+    retry = pending & failed_rows(results) & np.isnan(f2) & (number_column(frame, "Fa") > 0)
+    if not retry.any():
+        return results
+    return results_at_viscosity(frame.assign(f2=np.where(retry, 1.0, f2)), results, retry, labels=labels, model=model)
 
 
 def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str = "exact",
-                      t_limit: float = OPERATING_TEMPERATURE_LIMIT):
+                      t_limit: float = OPERATING_TEMPERATURE_LIMIT, f2_chart=None, reference_speed: bool = False):
     """n_thr, n_per, T_op, nu_op, Q_S, Q_L of every row (catalogue units); returns (columns, problems).
 
     ``frame`` holds the calc inputs (after :func:`fill_viscosity`),
     ``results`` the friction results of :func:`bearingheat.calc.models.compute_supports`
     (f0, M1, M2, status). Rows whose friction failed are skipped. Columns
-    come out only where their inputs are present: n_thr with B or T; n_per
+    come out only where their inputs are present: n_thr with B, T, d1, D1,
+    n_thr_catalogue or T_amb (thrust bearings need none of the widths), or
+    wherever ``reference_speed`` is true (the API's result always has it); n_per
     with T_bearing and T_amb; T_op and nu_op with T_amb; Q_S and Q_L with
-    T_amb. problems are (row position, 'warning' | 'error', message).
+    T_amb. ``f2_chart`` is the chart the friction pass read f2 off (M2 of its
+    rows follows the speed and viscosity of the roots). problems are (row
+    position, 'warning' | 'error', message).
     """
+    columns, problems = _heat_balance_columns(frame, results, method=method, t_limit=t_limit, f2_chart=f2_chart,
+                                              reference_speed=reference_speed)
+    _viscosity_at_bearing(frame, results, columns, problems)
+    return columns, problems
+
+
+def _viscosity_at_bearing(frame: pd.DataFrame, results: pd.DataFrame, columns: pd.DataFrame, problems: list) -> None:
+    """Warn where ν(T_bearing) of the oil data is below 2 mm²/s, outside ASTM D341 (the check nu_op gets), on
+    the rows that use it: friction results taken at T_bearing (``nu_used``), and n_per."""
+    if "T_bearing" not in frame.columns:
+        return
+    A, B = walther_columns(frame)[:2]
+    T_bearing = number_column(frame, "T_bearing")
+    no_rows = np.zeros(len(frame), dtype=bool)
+    friction_at = (frame["_nu_at"].array.codes == NU_SOURCES.index("T_bearing")) if "_nu_at" in frame.columns \
+        else no_rows
+    n_per_at = ~np.isnan(columns["n_per"].to_numpy(dtype=float)) if "n_per" in columns.columns else no_rows
+    rows = np.flatnonzero(~failed_rows(results) & ~np.isnan(A) & ~np.isnan(T_bearing) & (friction_at | n_per_at))
+    with np.errstate(invalid="ignore", over="ignore"):
+        nu = walther_viscosity(A[rows], B[rows], T_bearing[rows])
+    for i, message in zip(rows.tolist(), viscosity_range_messages(nu, T_bearing[rows]).tolist()):
+        if message:
+            users = {(True, True): "the friction results (nu_used) and n_per are", (True, False): "the friction "
+                     "results (nu_used) are", (False, True): "n_per is"}[bool(friction_at[i]), bool(n_per_at[i])]
+            problems.append((i, "warning", f"T_bearing [degC]: {message}; {users} taken at it"))
+
+
+def _heat_balance_columns(frame: pd.DataFrame, results: pd.DataFrame, *, method: str, t_limit: float, f2_chart,
+                          reference_speed: bool):
+    """:func:`heat_balance_rows` but the warnings on ν(T_bearing)."""
     if method not in SPEED_FACTOR_METHODS:
         raise HeatBalanceError(f"method: {method!r} is not one of {', '.join(SPEED_FACTOR_METHODS)}")
     n_rows = len(frame)
@@ -425,8 +307,10 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
     # rows whose friction failed, and plain bushings (no rolling bearing heat balance), are skipped
     failed = failed_rows(results) | plain_bushing_rows(results)
     columns: dict[str, np.ndarray | pd.Categorical] = {}
-    wants_thr = bool({"B", "T", "d1", "D1"} & has) or "n_thr_catalogue" in has
     wants_balance = "T_amb" in has
+    # n_thr where its area columns are given, and wherever the heat balance computes it (the A_r of thrust bearings
+    # needs d and D only)
+    wants_thr = bool({"B", "T", "d1", "D1"} & has) or "n_thr_catalogue" in has or wants_balance or reference_speed
     for name, unit in (("T", "mm"), ("n_G", "1/min")):  # a width and a limiting speed are > 0 (B: the friction model)
         if name not in has:
             continue
@@ -479,18 +363,21 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
         values = number_column(frame, name)
         for i in np.flatnonzero(~failed & (values < 0)):
             problems.append((int(i), "error", f"V_oil [l/min]: {values[i]:g} must be >= 0"))
+    # a row in error so far (an input the heat balance cannot use) gets no balance: its messages would only follow
+    failed = failed | _rows_in_error(problems, n_rows)
 
     # --- operating temperature at the operating speed (solved already where the viscosity was taken at it)
     # N_R of each row by its model, for T_op and n_per
-    power = FrictionPower(frame, results) if "_T_op" not in has or "T_bearing" in has else None
+    power = FrictionPower(frame, results, f2_chart) if "_T_op" not in has or "T_bearing" in has else None
     if "_T_op" in has:
-        T_op, status = number_column(frame, "_T_op"), frame["_T_op_status"].to_numpy()
+        T_op, why = number_column(frame, "_T_op"), frame["_T_op_why"].array
+        unsolved, why_text = nonblank(why, n_rows), why.__getitem__
     else:
-        T_op, status, _ = _operating_point(frame, results, nu_at, ~np.isnan(A), Q_S, Q_L, Q_E, T_amb, t_limit,
-                                           power)
+        point = operating_point(frame, results, nu_at, ~np.isnan(A), Q_S, Q_L, Q_E, T_amb, t_limit, power)
+        T_op, unsolved, why_text = point.T, point.status != 0, point.why
     usable = ~failed & ~np.isnan(T_amb) & ~np.isnan(details["A_r"].to_numpy(dtype=float))
-    for i in np.flatnonzero(usable & (status != 0)):
-        problems.append((int(i), "warning", f"T_op: {_no_equilibrium_text(status[i], T_amb[i], t_limit)}"))
+    for i in np.flatnonzero(usable & unsolved):
+        problems.append((int(i), "warning", f"T_op: {why_text(int(i))}"))
     for i in np.flatnonzero(~failed & ~np.isnan(T_amb) & np.isnan(details["A_r"].to_numpy(dtype=float))):
         reason_once(i)
     T_op = np.where(usable, T_op, np.nan)
@@ -513,8 +400,8 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
 
     # --- permissible speed at the bearing temperature T_bearing (where it is given, theta is T_bearing)
     if "T_bearing" in has:
-        carried = np.where(np.isnan(T_bearing), np.nan, seat + oil - Q_E)
-        columns["n_per"] = _permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue, T_bearing,
+        carried = np.where(np.isnan(T_bearing), np.nan, seat + oil)
+        columns["n_per"] = permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue, T_bearing,
                                                    T_amb, carried, Q_E, power, usable, methods, problems)
         titles = [SPEED_FACTOR_METHODS[m].title for m in methods.categories] + [""]  # the last: no n_per
         used = np.where(np.isnan(columns["n_per"]), len(titles) - 1, methods.codes)
@@ -551,101 +438,7 @@ def _assumed_oil_outlet(frame: pd.DataFrame, usable: np.ndarray, problems: list)
                                             "dT_oil for a cautious value"))
 
 
-def _exact_speed_factor(sel, n_thr, f0, nu, dM, load_torque, Q, problems):
-    return permissible_speed_factor(n_thr, f0, nu, dM, load_torque, Q)
-
-
-def _approximate_speed_factor(sel, n_thr, f0, nu, dM, load_torque, Q, problems):
-    k_L, k_P = speed_factor_coefficients(n_thr, f0, nu, dM, load_torque, Q)
-    f_n = np.full(len(sel), np.nan)
-    inside = ((k_L >= APPROXIMATION_RANGE[0]) & (k_L <= APPROXIMATION_RANGE[1])
-              & (k_P >= APPROXIMATION_RANGE[0]) & (k_P <= APPROXIMATION_RANGE[1]))
-    if inside.any():
-        f_n[inside] = speed_factor_catalogue_approximation(k_L[inside], k_P[inside])
-    for j in np.flatnonzero(~inside):
-        problems.append((int(sel[j]), "warning", f"n_per: k_L = {k_L[j]:.4g}, k_P = {k_P[j]:.4g} outside "
-                                                 "0.01..10, the range of the catalogue approximation"))
-    return f_n
-
-
-@dataclass(frozen=True)
-class SpeedFactorMethod:
-    """How n_per = n_θr·f_n finds f_n for the selected rows.
-
-    ``solve(positions, n_thr, f0, nu, dM, load_torque, Q, problems)`` returns
-    f_n for the rows at ``positions`` and appends (row position, level,
-    message) problems.
-    """
-
-    name: str
-    title: str
-    solve: Callable
-
-
-#: how the permissible speed factor is found: exact root, or the catalogue approximation
-SPEED_FACTOR_METHODS: dict[str, SpeedFactorMethod] = {m.name: m for m in (
-    SpeedFactorMethod("exact", "exact root", _exact_speed_factor),
-    SpeedFactorMethod("approximation", "catalogue approximation", _approximate_speed_factor),
-)}
-#: the method of rows whose n_per_method cell is blank
-DEFAULT_SPEED_FACTOR_METHOD = "exact"
-register_choices("n_per_method", lambda: tuple(SPEED_FACTOR_METHODS))
 register_choices("viscosity_at", lambda: tuple(VISCOSITY_AT))
-
-
-def _permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue, T_bearing, T_amb, Q, Q_E, power,
-                            usable, methods, problems):
-    """n_per of the rows ``usable`` with a T_bearing above T_amb; ``Q`` is the heat carried away at T_bearing
-    less Q_E [W], ``power`` the rows' :class:`~bearingheat.calc.models.FrictionPower`."""
-    n_rows = len(frame)
-    rows = usable & ~np.isnan(T_bearing)
-    for i in np.flatnonzero(usable & np.isnan(T_bearing)):
-        problems.append((int(i), "warning", "T_bearing [degC]: missing; n_per is the speed at which the bearing "
-                                            "reaches T_bearing"))
-    for i in np.flatnonzero(rows & (T_bearing <= T_amb)):
-        problems.append((int(i), "error", f"T_bearing [degC]: {T_bearing[i]:g} must be above T_amb = {T_amb[i]:g} "
-                                          "degC for heat to leave through the seat"))
-    rows &= T_bearing > T_amb
-    n_used = np.where(np.isnan(n_thr_catalogue), n_thr, n_thr_catalogue)
-    rows &= n_used > 0
-    for i in np.flatnonzero(rows & ~(Q > 0)):
-        problems.append((int(i), "warning", f"n_per: the external heat Q_E = {Q_E[i]:g} W is not less than the heat "
-                                            f"carried away {Q[i] + Q_E[i]:.4g} W at T_bearing; no speed is "
-                                            "permissible"))
-    rows &= Q > 0
-    out = np.full(n_rows, np.nan)
-    if not rows.any():
-        return out
-    dM = friction.mean_diameter(number_column(frame, "d"), number_column(frame, "D"))
-    # n_per is the speed at which the bearing reaches T_bearing: its oil has the viscosity of T_bearing there,
-    # whatever temperature the friction results are reported at (a viscosity the user gives is used as it is)
-    A, B = walther_columns(frame)[:2]
-    at_bearing = ~np.isnan(A) & ~np.isnan(T_bearing)
-    nu = number_column(frame, "nu")
-    if at_bearing.any():  # (no oil data: no Walther line to evaluate)
-        with np.errstate(invalid="ignore", over="ignore"):
-            nu = np.where(at_bearing, walther_viscosity(A, B, T_bearing), nu)
-    f0 = results["f0"].to_numpy(dtype=float)
-    load_torque = results["M1"].to_numpy(dtype=float) + np.nan_to_num(results["M2"].to_numpy(dtype=float))
-    for name, method in SPEED_FACTOR_METHODS.items():
-        sel = np.flatnonzero(rows & power.closed & (methods == name))
-        if len(sel) == n_rows:  # every row: the columns themselves, no copies of their rows
-            out = method.solve(sel, n_used, f0, nu, dM, load_torque, Q, problems) * n_used
-        elif len(sel):
-            f_n = method.solve(sel, n_used[sel], f0[sel], nu[sel], dM[sel], load_torque[sel], Q[sel], problems)
-            out[sel] = f_n * n_used[sel]
-    generic = rows & ~power.closed
-    if generic.any():
-        out[generic] = generic_speed(power, nu, Q)[generic]
-        for i in np.flatnonzero(generic & (methods != "exact")):
-            problems.append((int(i), "warning", f"n_per: the {SPEED_FACTOR_METHODS[methods[i]].title} holds for "
-                                                "the catalogue model only; the exact root is used"))
-    n_G = number_column(frame, "n_G")
-    capped = rows & (out > n_G)
-    for i in np.flatnonzero(capped):
-        problems.append((int(i), "warning", f"n_per: the thermal value {out[i]:.5g} 1/min is above the limiting "
-                                            f"speed n_G = {n_G[i]:g} 1/min; n_per = n_G"))
-    return np.where(capped, n_G, out)
 
 
 # ---- the calc extension ``thermal`` ----------------------------------------------------------------
@@ -663,11 +456,12 @@ def settle(frame: pd.DataFrame, results: pd.DataFrame, **compute):
     return settle_viscosity(frame, results, t_limit=OPERATING_TEMPERATURE_LIMIT, **compute)
 
 
-def extend(frame: pd.DataFrame, results: pd.DataFrame):
+def extend(frame: pd.DataFrame, results: pd.DataFrame, *, f2_chart=None, **compute):
     """The heat balance columns of every row whose friction succeeded, and where the viscosity of the friction
-    results comes from (``nu_used``, ``nu_at``) when it was filled from oil data; returns (columns, problems)."""
+    results comes from (``nu_used``, ``nu_at``) when it was filled from oil data (``f2_chart``: that of the
+    friction pass; the other ``compute`` options are not needed); returns (columns, problems)."""
     columns, problems = heat_balance_rows(frame, results, method=DEFAULT_SPEED_FACTOR_METHOD,
-                                          t_limit=OPERATING_TEMPERATURE_LIMIT)
+                                          t_limit=OPERATING_TEMPERATURE_LIMIT, f2_chart=f2_chart)
     columns.index = frame.index
     if "_nu_at" in frame.columns:  # first, in one new frame: no inserts into the heat balance's
         source = frame["_nu_at"].array.rename_categories({"": "-"})  # '-': a row without ν

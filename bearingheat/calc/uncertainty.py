@@ -18,6 +18,10 @@ n_thr, n_per and T_op:
   deviation u/1.96 (``samples`` draws, all rows in one vectorised calc), and
   the band is the 2.5 and 97.5 percentiles.
 
+n_thr, of the ISO 15312 reference conditions, takes the catalogue's f0 and
+f1, not the operating ones: they are scaled alike (to the interval's edge,
+or by the same draws).
+
 Both are monotone where the physics is: a higher f0 or f1 never lowers MR
 and never raises n_per.
 """
@@ -101,8 +105,8 @@ def uncertainty_bands(table: pd.DataFrame, result: pd.DataFrame, frame: pd.DataF
     f1 = result["f1"].to_numpy(dtype=float)
     usable = (result["status"].to_numpy() != "error") & ((u0 > 0) | (u1 > 0)) & np.isfinite(f0) & np.isfinite(f1)
     base = _results(result)
-    n_thr = _reference_speed_band(frame, u0, u1, base["n_thr"])
     if method == "linearised":
+        n_thr = _reference_speed_band(frame, u0, u1, base["n_thr"])
         moved = [_results(run(_with_coefficients(table, f0 * (1 + u0), f1))),
                  _results(run(_with_coefficients(table, f0, f1 * (1 + u1))))]
         low, high = {}, {}
@@ -119,11 +123,10 @@ def uncertainty_bands(table: pd.DataFrame, result: pd.DataFrame, frame: pd.DataF
         tiled = pd.concat([table] * samples, ignore_index=True)
         drawn = _results(run(_with_coefficients(tiled, np.tile(f0, samples) * s0.ravel(),
                                                 np.tile(f1, samples) * s1.ravel())))
+        # n_thr is of the catalogue's f0 and f1 (the reference conditions): the same draws scale them
+        drawn["n_thr"] = _reference_speed_samples(frame, s0, s1, base["n_thr"])
         low, high = {}, {}
         for name in BANDED:
-            if name == "n_thr":
-                low[name], high[name] = n_thr
-                continue
             values = drawn[name].reshape(samples, len(table))
             finite = np.isfinite(values).any(axis=0)  # rows without the result stay NaN (no all-NaN percentile)
             low[name], high[name] = np.full(len(table), np.nan), np.full(len(table), np.nan)
@@ -137,6 +140,16 @@ def uncertainty_bands(table: pd.DataFrame, result: pd.DataFrame, frame: pd.DataF
         for edge, values in (("low", low[name]), ("high", high[name])):
             out[output_header(f"{name}_{edge}", unit)] = np.where(usable & np.isfinite(base[name]), values, np.nan)
     return pd.DataFrame(out, index=result.index)
+
+
+def _reference_speed_samples(frame: pd.DataFrame, s0: np.ndarray, s1: np.ndarray, n_thr: np.ndarray) -> np.ndarray:
+    """n_thr of every row with the table f0 and f1 scaled by each draw (``s0``, ``s1``: samples x rows), flat
+    in the order of the draws (NaN throughout where no row has n_thr)."""
+    if np.isnan(n_thr).all():
+        return np.full(s0.size, np.nan)
+    tiled = pd.concat([frame] * len(s0), ignore_index=True)
+    return thermal_reference_speed_details(tiled, f0_scale=s0.ravel(), f1_scale=s1.ravel(),
+                                           names=("n_thr",))["n_thr"].to_numpy(dtype=float)
 
 
 def _reference_speed_band(frame: pd.DataFrame, u0: np.ndarray, u1: np.ndarray,

@@ -146,6 +146,45 @@ class F2Chart:
     def Fa_over_A_range(self) -> tuple[float, float]:
         return float(self._levels[0]), float(self._levels[-1])
 
+    def _brackets(self, Fa_over_A: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Per query the indexes of the curves below and above its Fa/A (the same curve where it lies on one), and
+        whether it lies within the curves' Fa/A at all (the indexes of one outside are not to be read)."""
+        inside = (Fa_over_A >= self._levels[0]) & (Fa_over_A <= self._levels[-1])
+        upper = np.searchsorted(self._levels, np.where(inside, Fa_over_A, self._levels[0]), side="left")
+        lower = np.where(self._levels[upper] == Fa_over_A, upper, np.maximum(upper - 1, 0))
+        return lower, upper, inside
+
+    def x_range(self, Fa_over_A) -> tuple[np.ndarray, np.ndarray]:
+        """The ν·n·dM [mm³/(s·min)] range on which f2 is read at each Fa/A: the overlap of the two bracketing
+        curves (NaN for an Fa/A outside the curves)."""
+        level = np.atleast_1d(np.asarray(Fa_over_A, dtype=float))
+        lower, upper, inside = self._brackets(level)
+        lows = np.array([c.x_range[0] for c in self._curves])
+        highs = np.array([c.x_range[1] for c in self._curves])
+        return (np.where(inside, np.fmax(lows[lower], lows[upper]), np.nan),
+                np.where(inside, np.fmin(highs[lower], highs[upper]), np.nan))
+
+    def values(self, Fa_over_A, nu_n_dM) -> np.ndarray:
+        """f2 at each query point, NaN where the chart does not reach (:meth:`lookup` says why); vectorised over
+        the points, for the roots of the heat balance that read f2 at every trial speed or temperature."""
+        level, x = np.broadcast_arrays(np.atleast_1d(np.asarray(Fa_over_A, dtype=float)),
+                                       np.atleast_1d(np.asarray(nu_n_dM, dtype=float)))
+        level, x = level.ravel(), x.ravel()
+        lower, upper, inside = self._brackets(level)
+        x_lo, x_hi = self.x_range(level)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            usable = inside & (x >= x_lo) & (x <= x_hi)
+            log_x = np.log(np.where(usable, x, 1.0))
+            log_f2 = np.full((2, len(x)), np.nan)
+            for side, index in enumerate((lower, upper)):  # log f2 along each bracketing curve, curve by curve
+                for k in np.unique(index[usable]).tolist():
+                    at = usable & (index == k)
+                    log_f2[side, at] = np.interp(log_x[at], self._curves[k].log_x, self._curves[k].log_f2)
+            low_level, high_level = np.log(self._levels[lower]), np.log(self._levels[upper])
+            w = (np.log(np.where(usable, level, 1.0)) - low_level) / (high_level - low_level)
+            f2 = np.where(lower == upper, np.exp(log_f2[0]), np.exp(log_f2[0] + w * (log_f2[1] - log_f2[0])))
+        return np.where(usable, f2, np.nan).reshape(np.shape(level))
+
     def lookup(self, Fa_over_A, nu_n_dM):
         """f2 at each query point, and a refusal message per point ('' where f2 is valid).
 
@@ -154,33 +193,21 @@ class F2Chart:
         q_level = np.atleast_1d(np.asarray(Fa_over_A, dtype=float))
         q_x = np.atleast_1d(np.asarray(nu_n_dM, dtype=float))
         q_level, q_x = np.broadcast_arrays(q_level, q_x)
-        f2 = np.full(q_level.shape, np.nan)
+        f2 = self.values(q_level, q_x).reshape(q_level.shape)
         reasons = np.full(q_level.shape, "", dtype=object)
         lo, hi = self.Fa_over_A_range
-        for i, (level, x) in enumerate(zip(q_level.ravel(), q_x.ravel())):
-            if not (lo <= level <= hi):
+        lower, upper, inside = self._brackets(q_level.ravel())
+        for i in np.flatnonzero(np.isnan(f2.ravel())).tolist():  # the refused points only: why each one is
+            level, x = float(q_level.flat[i]), float(q_x.flat[i])
+            if not inside[i]:
                 reasons.flat[i] = (f"Fa/A = {level:.4g} is outside the f2 chart's curves ({lo:g} to {hi:g}); "
                                    "the Schaeffler catalogue forbids extrapolating the chart")
                 continue
-            upper = int(np.searchsorted(self._levels, level, side="left"))
-            if self._levels[upper] == level:
-                bracket = [self._curves[upper]]
-            else:
-                bracket = [self._curves[upper - 1], self._curves[upper]]
-            values = []
-            for curve in bracket:
+            for curve in [self._curves[k] for k in dict.fromkeys((int(lower[i]), int(upper[i])))]:
                 x_lo, x_hi = curve.x_range
                 if not (x_lo <= x <= x_hi):
                     reasons.flat[i] = (f"nu*n*dM = {x:.4g} mm^3/(s*min) is outside curve {curve.label!r} "
                                        f"(Fa/A = {curve.Fa_over_A:g}: {x_lo:.4g} to {x_hi:.4g}); "
                                        "the Schaeffler catalogue forbids extrapolating the chart")
                     break
-                values.append(np.interp(np.log(x), curve.log_x, curve.log_f2))
-            else:
-                if len(values) == 1:
-                    f2.flat[i] = np.exp(values[0])
-                else:
-                    w = (np.log(level) - np.log(bracket[0].Fa_over_A)) / (
-                        np.log(bracket[1].Fa_over_A) - np.log(bracket[0].Fa_over_A))
-                    f2.flat[i] = np.exp(values[0] + w * (values[1] - values[0]))
         return f2, reasons

@@ -93,8 +93,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                              "says which was used")
     parser.add_argument("--viscosity-at", choices=list(VISCOSITY_AT), default=DEFAULT_VISCOSITY_AT,
                         help="where a viscosity from nu40/nu100 or iso_vg is taken for the friction results of rows "
-                             "whose viscosity_at is blank: auto (T_op where T_amb and n are given, else T_bearing; "
-                             "default), operating (T_op) or bearing (T_bearing); nu_used and nu_at say which")
+                             "whose viscosity_at is blank: auto (T_op where T_amb and n are given; T_bearing where "
+                             "they are not, or where T_op has no solution; default), operating (T_op) or bearing "
+                             "(T_bearing); nu_used and nu_at say which")
     parser.add_argument("--coefficients", metavar="CSV",
                         help="the coefficients.csv of 'bearingheat audit': its 95-percent intervals of f0 and f1 give "
                              "the rows of those designations the bands MR_low, MR_high, n_per_low, ...")

@@ -346,8 +346,8 @@ def speed_factor_coefficients(n_thr, f0, nu, dM, load_torque, Q):
     M_load = f1·P1·dM (+ M2) [N·mm], so the 1e-6 becomes 1e-3.
 
     >>> kL, kP = speed_factor_coefficients(14416.4, 2.0, 12.0, 38.5, 3.0218, 58.056)
-    >>> round(kL, 4), round(kP, 4), round(kL + kP, 6)
-    (0.9214, 0.0786, 1.0)
+    >>> round(kL, 4), round(kP, 4), round(kL + kP, 6)      # n_thr of the 6205 rounded: the sum is not quite 1
+    (0.9215, 0.0786, 1.000037)
     """
     c_high, _ = torque_coefficients(f0, dM)
     K = POWER_PER_TORQUE_SPEED
@@ -411,8 +411,8 @@ def permissible_speed_factor(n_thr, f0, nu, dM, load_torque, Q):
     point n_θr·f_n falls in the ν·n < 2000 regime the balance is solved with
     that regime's constant M0 instead.
 
-    >>> round(permissible_speed_factor(14416.4, 2.0, 12.0, 38.5, 3.0218, 58.056), 6)
-    1.0
+    >>> round(permissible_speed_factor(14416.4, 2.0, 12.0, 38.5, 3.0218, 58.056), 6)   # (n_thr rounded up)
+    0.999977
     """
     c_high, c_low = torque_coefficients(f0, dM)
     x, _, _, _ = balance_root(c_high, c_low, load_torque, nu, np.asarray(Q, dtype=float), n_thr)
@@ -427,8 +427,9 @@ def operating_temperature(heat_balance, T_low, T_high, *, iterations: int = 64):
     ``heat_balance(T)`` returns N_R(T) + Q_E − Q_S(T) − Q_L(T) [W] for an
     array of temperatures (one per row): positive while the bearing still
     heats up. Returns (T, status) where status is 0 for an equilibrium,
-    1 where the balance is still positive at T_high (no equilibrium below
-    T_high: the heat runs away), −1 where it is already negative at T_low.
+    1 where the balance is still positive at T_high (no equilibrium up to
+    T_high; whether one lies above depends on how the balance goes on), −1
+    where it is already negative at T_low.
 
     >>> import numpy as np
     >>> T, status = operating_temperature(lambda T: 100.0 - 2.0 * (T - 20.0), np.array([0.0]), np.array([150.0]))

@@ -70,8 +70,8 @@ def test_model_inputs_broadcast_with_the_other_arguments():
 
 @pytest.mark.parametrize("n, model_inputs, message", [
     ([3500.0] * 3 * u.rpm, dict(BATH, oil_level=[2.5, 50.0] * u.mm),
-     "oil_level: an array of shape (2,) does not broadcast with n of shape (3,); give the arrays one shape, or one "
-     "value"),
+     "n has shape (3,) and oil_level has shape (2,): arrays are paired value by value, so they need one shape (or "
+     "give single values)"),
     (3500 * u.rpm, dict(BATH, oil_level=2.5 * u.mm, mu_sl="abc"), "mu_sl: 'abc' is not a number"),
     (3500 * u.rpm, dict(BATH, oil_level=2.5 * u.mm, VM=[0.3e-4, "x"]), "VM: 'x' is not a number (at index 1)"),
     (3500 * u.rpm, dict(BATH, oil_level=2.5 * u.mm, seal="CS", seals="two", d_s=60 * u.mm),
@@ -87,8 +87,8 @@ def test_arguments_of_different_lengths_are_refused_naming_both():
     with pytest.raises(FrictionInputError) as info:
         friction_torque(**{**EXAMPLE, "Fr": [1.0, 2.0, 3.0] * u.kN}, n=[3000.0, 3500.0] * u.rpm,
                         model_inputs=dict(BATH, oil_level=2.5 * u.mm))
-    assert str(info.value) == ("Fr: an array of shape (3,) does not broadcast with n of shape (2,); give the arrays "
-                               "one shape, or one value")
+    assert str(info.value) == ("n has shape (2,) and Fr has shape (3,): arrays are paired value by value, so they "
+                               "need one shape (or give single values)")
 
 
 def test_model_inputs_name_no_argument_of_friction_torque():

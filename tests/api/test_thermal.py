@@ -9,6 +9,7 @@ import pandas as pd
 import pint
 import pint_pandas  # noqa: F401  (registers the pint[...] dtype)
 import pytest
+from scipy.optimize import brentq
 
 from bearingheat.api.thermal import heat_balance, thermal_reference_speed
 from bearingheat.calc.models import compute_supports
@@ -87,11 +88,28 @@ def test_external_heat_above_what_is_carried_away():
             "no speed is permissible") in r.messages[0]
 
 
-def test_runaway_is_reported():
-    r = base_case(n=20000 * u.rpm, k_q=2e-5 * u("W/(mm^2*K)"))
+ABOVE = ("T_op: no equilibrium up to 150 degC, the upper end of the search: the friction heat still exceeds the "
+         "heat carried away there; with the catalogue model the friction heat stays bounded as the temperature rises "
+         "while the heat carried away grows with it, so an equilibrium lies above; T_op is not computed")
+
+
+def test_no_equilibrium_below_the_search_limit_is_not_called_a_runaway():
+    """The catalogue model's friction heat falls as the oil thins while the heat carried away grows: a 6205 at
+    15000 1/min in 140 degC air settles at 201.5 degC, above the search (it was reported as 'the temperature runs
+    away')."""
+    r = base_case(n=15000 * u.rpm, T_amb=u.Quantity(140, "degC"), T_bearing=u.Quantity(160, "degC"))
     assert math.isnan(r.T_op.magnitude)
-    assert r.messages[0].endswith("T_op: no equilibrium below 150 degC: the friction heat exceeds the heat carried "
-                                  "away (the temperature runs away)")
+    assert r.messages[0] == ABOVE
+    # by hand: M0 = f0 (nu n)^(2/3) dM^3 1e-7 with f0 = 2, M1 = 0.0009 (Fr/C0)^0.5 Fr dM (the Schaeffler catalogue),
+    # Q_S = q_r/50 K A_r (T - T_amb)
+    dM, M1 = 38.5, 0.0009 * (2 / 7.8) ** 0.5 * 2000 * 38.5
+
+    def balance(T):
+        nu = viscosity_from_two_points(68, 40, 8.6, 100, T)
+        return math.pi * 15000 / 30e3 * (2 * (nu * 15000) ** (2 / 3) * dM ** 3 * 1e-7 + M1) \
+            - 0.016 / 50 * math.pi * 15 * (52 + 25) * (T - 140)
+
+    assert balance(150) > 0 and round(brentq(balance, 150, 400), 1) == 201.5
 
 
 def test_temperature_units_are_invariant():
@@ -173,3 +191,103 @@ def test_heat_balance_and_reference_speed_refuse_series_of_different_indexes():
     assert isinstance(speeds, pd.Series) and list(speeds.index) == [0, 1]
     single = thermal_reference_speed("6208", d=40 * u.mm, D=90 * u.mm, B=18 * u.mm, C0=18 * u.kN)
     assert speeds.pint.to("1/min").pint.magnitude[0] == pytest.approx(single.to("1/min").magnitude, rel=1e-15)
+
+
+@pytest.mark.parametrize("oil, message", [
+    (dict(iso_vg=47), "iso_vg: 47 is not an ISO VG grade; expected one of 2, 3, 5, 7, 10, 15, 22, 32, 46, 68, 100, "
+                      "150, 220, 320, 460, 680, 1000, 1500, 2200, 3200"),
+    (dict(iso_vg=5), "VI: 95 cannot be reached by ISO VG 5 with nu100 >= 2 mm^2/s (ASTM D2270)"),
+    (dict(nu40=5 * u("mm^2/s"), nu100=8 * u("mm^2/s")), "nu40 [mm^2/s]: 5 must be larger than nu100 = 8"),
+    (dict(nu40=68 * u("mm^2/s")), "nu100 [mm^2/s]: missing; nu40 alone does not fix the viscosity-temperature line "
+                                  "(ASTM D341)"),
+    (dict(VI=120), "VI: given without iso_vg; the viscosity index only serves an ISO VG grade"),
+    (dict(iso_vg=np.array([47.0, 47.0])), "iso_vg: 47 is not an ISO VG grade; expected one of 2, 3, 5, 7, 10, 15, "
+                                          "22, 32, 46, 68, 100, 150, 220, 320, 460, 680, 1000, 1500, 2200, 3200 "
+                                          "(at index 0)"),
+])
+def test_unusable_oil_data_is_named_not_called_missing(oil, message):
+    """The reason calc gives for the row (beside a row whose oil is usable), not 'nu: missing; give nu, or nu40 and
+    nu100, or iso_vg'."""
+    with pytest.raises(HeatBalanceError) as exc:
+        base_case(**{"nu40": None, "nu100": None, **oil})
+    assert str(exc.value) == message
+    if np.ndim(oil.get("iso_vg", 0)) == 0:
+        from bearingheat.calc.table import calc
+        cells = {"iso_vg": oil.get("iso_vg"), "VI": oil.get("VI"), "nu40 [mm^2/s]": oil.get("nu40"),
+                 "nu100 [mm^2/s]": oil.get("nu100")}
+        bad = {"designation": "6205", "C0 [kN]": 7.8, "n [rpm]": 3000, "Fr [kN]": 2, "T_amb [degC]": 20,
+               "lubrication": "oil_bath", **{k: getattr(v, "magnitude", v) for k, v in cells.items() if v is not None}}
+        good = {**{k: v for k, v in bad.items() if k not in cells}, "iso_vg": 68}
+        out = calc(pd.DataFrame([bad, good]))
+        assert out["status"].tolist() == ["error", "ok"] and out["message"].iat[0] == message
+
+
+def test_a_row_in_error_gets_no_heat_balance_messages():
+    """k_q <= 0 is an error; the balance's messages would only follow from it (they said 'the temperature runs
+    away' and 'Q_E = 0 W is not less than the heat carried away -181.4 W')."""
+    r = base_case(k_q=-1e-3 * u("W/(mm^2*K)"))
+    assert r.status == ["error"]
+    assert r.messages[0] == ("k_q: -0.001 is outside the plausible range 2e-05 to 0.01 W/(mm^2*K) (a tenth to ten "
+                             "times the 0.2e-3 to 1.0e-3 W/(mm^2*K) of the Schaeffler HR 1 catalogue for seats up "
+                             "to 25 000 mm^2; its default q_r/50 K is 3.2e-4); check the number and its unit; "
+                             "k_q [W/(mm^2*K)]: -0.001 must be > 0")
+    assert np.isnan([r.T_op.magnitude, r.n_per.magnitude, r.Q_S.magnitude]).all()
+
+
+def test_the_heat_carried_away_is_printed_as_it_is_not_as_a_difference():
+    """Q_S + Q_L at T_bearing is 3.2e-4 * pi * 15 * 77 * 50 K = 58.06 W whatever Q_E is (with Q_E = 1e300 it
+    came out of (Q_S + Q_L - Q_E) + Q_E as 0 W)."""
+    assert round(3.2e-4 * math.pi * 15 * (52 + 25) * 50, 2) == 58.06
+    r = base_case(Q_E=1e300 * u.W)
+    assert ("n_per: the external heat Q_E = 1e+300 W is not less than the heat carried away 58.06 W at T_bearing; "
+            "no speed is permissible") in r.messages[0]
+
+
+def test_a_warning_of_one_operating_point_is_that_point_s():
+    """T_bearing = 250 degC is implausible at index 2 only: the other points stay 'ok' (all three were
+    'warning', each with the message of index 2)."""
+    r = base_case(n=np.array([3000.0, 3000.0, 3000.0]) * u.rpm, T_bearing=u.Quantity(np.array([70.0, 70.0, 250.0]),
+                                                                                        "degC"))
+    assert r.status == ["ok", "ok", "warning"]
+    assert r.messages[:2] == ["", ""]
+    assert r.messages[2].startswith("T_bearing: 250 is outside the plausible range -60 to 200 degC; check the number "
+                                    "and its unit; n_per: ")
+    # a single implausible value concerns every point
+    every = base_case(n=np.array([1000.0, 3000.0]) * u.rpm, k_q=1 * u("W/(mm^2*K)"))
+    assert every.status == ["warning", "warning"]
+    assert all(m.startswith("k_q: 1 is outside the plausible range 2e-05 to 0.01 W/(mm^2*K)") for m in every.messages)
+
+
+def test_arrays_that_do_not_pair_point_by_point_are_named():
+    """numpy's bare 'shape mismatch: objects cannot be broadcast to a single shape' named no argument."""
+    with pytest.raises(HeatBalanceError) as exc:
+        base_case(n=np.array([1000.0, 2000.0]) * u.rpm, Fr=np.array([1.0, 2.0, 3.0]) * u.kN)
+    assert str(exc.value) == ("n has shape (2,) and Fr has shape (3,): arrays are paired value by value, so they "
+                              "need one shape (or give single values)")
+    with pytest.raises(HeatBalanceError) as exc:
+        thermal_reference_speed("6205", d=25 * u.mm, D=np.array([52.0, 62.0]) * u.mm, C0=np.ones(3) * u.kN,
+                                B=15 * u.mm)
+    assert str(exc.value) == ("D has shape (2,) and C0 has shape (3,): arrays are paired value by value, so they "
+                              "need one shape (or give single values)")
+
+
+def test_a_thrust_bearing_gets_its_n_thr_without_an_ambient_temperature():
+    """n_thr is a field of every result: a thrust bearing's needs d and D only (by hand in tests/calc)."""
+    r = heat_balance("81212", d=60 * u.mm, D=95 * u.mm, C0=200 * u.kN, n=1000 * u.rpm, Fa=5 * u.kN,
+                     nu=24 * u("mm^2/s"))
+    assert r.status == ["ok"]
+    assert r.n_thr.magnitude == pytest.approx(
+        thermal_reference_speed("81212", d=60 * u.mm, D=95 * u.mm, C0=200 * u.kN).magnitude, rel=1e-12)
+    assert round(r.n_thr.magnitude) == 2414
+
+
+def test_no_equilibrium_is_a_warning_unless_nu_was_to_come_from_it():
+    """As the docstring says: T_op NaN and 'warning' with a given nu or a T_bearing to take nu at; 'error' only
+    where nu was to be taken at T_op (the 6205 at 15000 1/min in 140 degC air settles above the search)."""
+    hot = dict(n=15000 * u.rpm, T_amb=u.Quantity(140, "degC"))
+    given = base_case(**hot, nu=12 * u("mm^2/s"), nu40=None, nu100=None, T_bearing=None)
+    fallback = base_case(**hot, T_bearing=u.Quantity(160, "degC"))
+    nothing = base_case(**hot, T_bearing=None)
+    assert (given.status, fallback.status, nothing.status) == (["warning"], ["warning"], ["error"])
+    assert np.isnan([given.T_op.magnitude, fallback.T_op.magnitude, nothing.T_op.magnitude]).all()
+    assert nothing.messages[0].startswith("nu [mm^2/s]: cannot be taken at T_op; no equilibrium up to 150 degC")

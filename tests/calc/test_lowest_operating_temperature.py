@@ -56,7 +56,7 @@ def test_rows_with_one_root_skip_the_scan_and_give_the_same_temperature(monkeypa
     ends. T_op is the same as with the full 24-cell scan and refinement, to 1e-12; the balance is evaluated
     twice (the ends) instead of 27 times (25 grid points, 2 refining steps)."""
     import bearingheat as bh
-    from bearingheat.calc import models, thermal
+    from bearingheat.calc import models, operating_temperature
 
     table = pd.read_csv(EXAMPLES / "gearbox_shaft.csv")
     power_calls, balance_calls = [], []
@@ -73,7 +73,7 @@ def test_rows_with_one_root_skip_the_scan_and_give_the_same_temperature(monkeypa
         return wrapped
 
     monkeypatch.setattr(models.FrictionPower, "__call__", counted_power)
-    original_search = thermal.lowest_operating_temperature
+    original_search = operating_temperature.lowest_operating_temperature
 
     def fast_search(balance, T_low, T_high, **options):
         return original_search(counted(balance), T_low, T_high, **options)
@@ -81,10 +81,10 @@ def test_rows_with_one_root_skip_the_scan_and_give_the_same_temperature(monkeypa
     def scan_every_row(balance, T_low, T_high, **options):
         return original_search(counted(balance), T_low, T_high, cells=options.get("cells", 24), single_root=False)
 
-    monkeypatch.setattr(thermal, "lowest_operating_temperature", fast_search)
+    monkeypatch.setattr(operating_temperature, "lowest_operating_temperature", fast_search)
     fast = bh.calc(table)
     fast_counts = len(power_calls), len(balance_calls)
-    monkeypatch.setattr(thermal, "lowest_operating_temperature", scan_every_row)
+    monkeypatch.setattr(operating_temperature, "lowest_operating_temperature", scan_every_row)
     power_calls.clear(), balance_calls.clear()
     scanned = bh.calc(table)
     assert fast_counts == (1, 2) and (len(power_calls), len(balance_calls)) == (1, 27)
@@ -111,17 +111,17 @@ def test_a_single_root_row_does_not_depend_on_the_rows_beside_it():
 def test_rows_of_a_model_without_the_speed_law_keep_the_scan(monkeypatch):
     """SKF rows (N_R not ∝ (ν·n)^(2/3)) may have several equilibria: the whole range is scanned."""
     import bearingheat as bh
-    from bearingheat.calc import thermal
+    from bearingheat.calc import operating_temperature
 
     table = pd.read_csv(EXAMPLES / "gearbox_shaft_skf.csv")
     marked = []
-    original = thermal.lowest_operating_temperature
+    original = operating_temperature.lowest_operating_temperature
 
     def recorded(balance, T_low, T_high, **options):
         marked.append(np.asarray(options["single_root"]))
         return original(balance, T_low, T_high, **options)
 
-    monkeypatch.setattr(thermal, "lowest_operating_temperature", recorded)
+    monkeypatch.setattr(operating_temperature, "lowest_operating_temperature", recorded)
     bh.calc(table, model="skf")
     assert marked and not any(m.any() for m in marked)
 
@@ -131,7 +131,7 @@ def test_rows_with_oil_data_beside_rows_without_give_the_scanned_temperatures(mo
     of a straight line; in one table together each row's T_op is the full scan's to 1e-12, and the same as when
     the row is computed alone."""
     import bearingheat as bh
-    from bearingheat.calc import thermal
+    from bearingheat.calc import operating_temperature
 
     table = pd.read_csv(EXAMPLES / "gearbox_shaft.csv")
     table = table[table["arrangement"] == "single"].reset_index(drop=True)
@@ -139,12 +139,12 @@ def test_rows_with_oil_data_beside_rows_without_give_the_scanned_temperatures(mo
     table.loc[table["iso_vg"].notna(), "nu [mm^2/s]"] = np.nan
     fast = bh.calc(table)
     alone = pd.concat([bh.calc(table.iloc[[i]]) for i in range(len(table))])
-    original_search = thermal.lowest_operating_temperature
+    original_search = operating_temperature.lowest_operating_temperature
 
     def scan_every_row(balance, T_low, T_high, **options):
         return original_search(balance, T_low, T_high, cells=options.get("cells", 24), single_root=False)
 
-    monkeypatch.setattr(thermal, "lowest_operating_temperature", scan_every_row)
+    monkeypatch.setattr(operating_temperature, "lowest_operating_temperature", scan_every_row)
     scanned = bh.calc(table)
     assert fast["T_op [degC]"].notna().all()
     assert (fast["nu_at"] == np.where(table["iso_vg"].notna(), "T_op", "given")).all()
@@ -157,7 +157,7 @@ def test_the_friction_power_computed_once_gives_the_bits_of_the_balance_at_every
     same operations in the same order as the balance that evaluates N_R at every temperature. T_op and status
     of the demo's rows are bit for bit those of the general balance (forced by marking one row's ν as varying;
     that row itself then takes the scan instead of the secant)."""
-    from bearingheat.calc import heat_flows, thermal
+    from bearingheat.calc import heat_flows, operating_temperature
     from bearingheat.calc.fill import fill_from_catalogue
     from bearingheat.calc.models import compute_supports
     from bearingheat.calc.table import to_catalogue_units
@@ -172,14 +172,14 @@ def test_the_friction_power_computed_once_gives_the_bits_of_the_balance_at_every
     constant = np.zeros(len(frame), dtype=bool)
     marked = constant.copy()
     marked[0] = True
-    once = thermal._operating_point(frame, results, nu_at, constant, Q_S, Q_L, Q_E, T_amb, 200.0)
-    every = thermal._operating_point(frame, results, nu_at, marked, Q_S, Q_L, Q_E, T_amb, 200.0)
-    assert np.array_equal(once[0][1:], every[0][1:], equal_nan=True) and np.isfinite(once[0][1:]).sum() >= 4
-    assert np.array_equal(once[1], every[1])
+    once = operating_temperature.operating_point(frame, results, nu_at, constant, Q_S, Q_L, Q_E, T_amb, 200.0)
+    every = operating_temperature.operating_point(frame, results, nu_at, marked, Q_S, Q_L, Q_E, T_amb, 200.0)
+    assert np.array_equal(once.T[1:], every.T[1:], equal_nan=True) and np.isfinite(once.T[1:]).sum() >= 4
+    assert np.array_equal(once.status, every.status)
     theta = np.array([30.0, 60.0, 90.0])
     for T in theta:
         at_T = np.full(len(frame), T)
-        assert np.array_equal(once[2](at_T), every[2](at_T), equal_nan=True)
+        assert np.array_equal(once.balance(at_T), every.balance(at_T), equal_nan=True)
 
 
 def test_the_lowest_root_below_the_regime_step_of_m0_is_not_passed_over():

@@ -1,9 +1,12 @@
 """One operating state: calc reports MR and NR at T_op, and agrees with heat_balance + friction_torque."""
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pandas as pd
 import pytest
+from scipy.optimize import brentq
 
 import bearingheat as bh
 from bearingheat.units import ureg
@@ -116,15 +119,60 @@ def _axially_loaded(**cells):
 
 def test_f2_read_off_the_chart_settles_with_the_operating_temperature():
     # M2 = f2*Fa*dM with f2 read at nu*n*dM (the Schaeffler catalogue, p. 70): nu, T_op and M2 are solved together
+    # (no T_bearing: this made-up chart does not reach the speed n_per would be at)
     chart = "docs/f2_chart_example.csv"
-    out = bh.calc(_axially_loaded(), f2_chart=chart)
+    out = bh.calc(_axially_loaded().drop(columns=["T_bearing [degC]"]), f2_chart=chart)
     assert out["status"].tolist() == ["ok"] and out["nu_at"].tolist() == ["T_op"]
     assert out["M2 [N*mm]"].iat[0] > 0
     assert out["nu_used [mm^2/s]"].iat[0] == pytest.approx(out["nu_op [mm^2/s]"].iat[0], rel=1e-10)
     given = bh.calc(_axially_loaded(**{"nu [mm^2/s]": out["nu_used [mm^2/s]"].iat[0]})
-                    .drop(columns=["nu40 [mm^2/s]", "nu100 [mm^2/s]"]), f2_chart=chart)
+                    .drop(columns=["nu40 [mm^2/s]", "nu100 [mm^2/s]", "T_bearing [degC]"]), f2_chart=chart)
     for column in ("M2 [N*mm]", "MR [N*mm]", "T_op [degC]"):
         assert given[column].iat[0] == pytest.approx(out[column].iat[0], rel=1e-9), column
+
+
+def _walther(nu40, nu100):
+    """nu(theta) through nu40 and nu100 (ASTM D341: log log (nu + 0.7) linear in log T), by hand."""
+    y40, y100 = (math.log10(math.log10(v + 0.7)) for v in (nu40, nu100))
+    slope = (y40 - y100) / (math.log10(373.15) - math.log10(313.15))
+    return lambda theta: 10 ** 10 ** (y40 - slope * (math.log10(theta + 273.15) - math.log10(313.15))) - 0.7
+
+
+def test_m2_read_off_the_chart_follows_the_speed_and_temperature_of_each_root(tmp_path):
+    """n_per and T_op of an axially loaded NJ208-E whose f2 comes from a chart are the same whatever viscosity the
+    friction results are reported at: M2 = f2(nu*n*dM)*Fa*dM is taken at the speed and viscosity of each root
+    (before, M2 of the operating point was held fixed: n_per 1361 or 1549 1/min, T_op 56.95 or 52.59 degC)."""
+    chart = tmp_path / "f2.csv"
+    chart.write_text("curve,Fa_over_A,nu_n_dM,f2,source\n-,1,mm^3/(s*min),1,-\nA,1,1000,0.02,test\n"
+                     "A,1,100000000,0.001,test\nB,100,1000,0.04,test\nB,100,100000000,0.002,test\n")
+    row = {"designation": "NJ208-E", "d [mm]": 40, "D [mm]": 80, "B [mm]": 18, "C0 [N]": 53000, "n [1/min]": 1000,
+           "Fr [N]": 6000, "Fa [N]": 2000, "lubrication": "oil_bath", "nu40 [mm^2/s]": 68, "nu100 [mm^2/s]": 8.6,
+           "T_amb [degC]": 20, "T_bearing [degC]": 70}
+    both = bh.calc(pd.DataFrame([{**row, "viscosity_at": "bearing"}, {**row, "viscosity_at": ""}]),
+                   f2_chart=str(chart))
+    # by hand: dM = 60 mm; NJ2..-E in an oil bath f0 = 2, f1 = 0.0003 (M1 = f1*Fr*dM), kB = 15 (the Schaeffler
+    # catalogue, pp. 66-70); A = kB*1e-3*dM^2.1; f2 by log-log interpolation of the two curves
+    nu, dM, Fa = _walther(68, 8.6), 60.0, 2000.0
+    A = 15e-3 * dM ** 2.1
+    w = math.log(Fa / A) / math.log(100.0)
+
+    def f2(x):
+        return 0.02 * (x / 1e3) ** (math.log(0.05) / math.log(1e5)) * 2 ** w
+
+    def friction_power(n, v):
+        M0 = 2.0 * (v * n) ** (2 / 3) * dM ** 3 * 1e-7
+        return math.pi * n / 30e3 * (M0 + 0.0003 * 6000 * dM + f2(v * n * dM) * Fa * dM)
+
+    k_q_A_r = 0.016 / 50 * math.pi * 18 * (80 + 40)
+    n_per = brentq(lambda n: friction_power(n, nu(70)) - k_q_A_r * 50, 1, 1e5, xtol=1e-12)
+    T_op = brentq(lambda T: friction_power(1000, nu(T)) - k_q_A_r * (T - 20), 20, 150, xtol=1e-12)
+    assert (round(n_per), round(T_op, 2)) == (1471, 52.59)
+    assert both["status"].tolist() == ["ok", "ok"] and both["nu_at"].tolist() == ["T_bearing", "T_op"]
+    np.testing.assert_allclose(both["n_per [1/min]"], [n_per, n_per], rtol=1e-9)
+    np.testing.assert_allclose(both["T_op [degC]"], [T_op, T_op], rtol=1e-9)
+    # the friction results themselves are those of each row's viscosity
+    np.testing.assert_allclose(both["M2 [N*mm]"], [f2(nu(70) * 1000 * dM) * Fa * dM, f2(nu(T_op) * 1000 * dM) * Fa * dM],
+                               rtol=1e-9)
 
 
 def test_a_row_computed_again_names_its_own_cell():
@@ -135,10 +183,11 @@ def test_a_row_computed_again_names_its_own_cell():
 
     out = bh.calc(rows, viscosity_at="operating", cell=cell)
     assert out["status"].tolist() == ["ok", "error"]
-    assert out["message"].iat[1] == (
-        "Supports!nu8 nu [mm^2/s]: missing; the operating viscosity (base oil viscosity for grease) is needed; "
-        "Supports!nu8 nu [mm^2/s]: cannot be taken at T_op; no equilibrium below 150 degC: the friction heat exceeds "
-        "the heat carried away (the temperature runs away); give T_bearing; Supports!n8 n [rpm]: 60000 is above the "
+    assert out["message"].iat[1] == (  # (not 'nu: missing ... is needed' before it: that only follows from it)
+        "Supports!nu8 nu [mm^2/s]: cannot be taken at T_op; no equilibrium up to 150 degC, the upper end of the search: "
+        "the friction heat still exceeds the heat carried away there; with the catalogue model the friction heat stays "
+        "bounded as the temperature rises while the heat carried away grows with it, so an equilibrium lies above; "
+        "T_op is not computed; give T_bearing; Supports!n8 n [rpm]: 60000 is above the "
         "limiting speed n_G = 17000 1/min of 6205 (Schaeffler HR 1, 2006); check the speed and its unit")
 
 
@@ -147,7 +196,7 @@ def test_blocks_of_rows_give_the_same_numbers(monkeypatch):
     # on their own, so blocks of 2 rows give what one block of all rows gives, to the last bit
     import importlib
 
-    thermal = importlib.import_module("bearingheat.calc.thermal")
+    thermal = importlib.import_module("bearingheat.calc.operating_temperature")
     kernels = importlib.import_module("bearingheat.kernels.thermal")
     skf = pd.read_csv("examples/gearbox_shaft_skf.csv")
     rows = skf.drop(columns=["nu [mm^2/s]"]).assign(**{"nu40 [mm^2/s]": 68, "nu100 [mm^2/s]": 8.6})
@@ -160,16 +209,31 @@ def test_blocks_of_rows_give_the_same_numbers(monkeypatch):
     assert whole["nu_at"].eq("T_op").sum() >= 4 and whole["n_per [1/min]"].notna().sum() >= 4
 
 
-def test_a_row_off_the_f2_chart_at_T_op_is_told_where_nu_came_from():
-    out = bh.calc(_axially_loaded(**{"n [rpm]": 300}), f2_chart="docs/f2_chart_example.csv")
-    assert out["status"].tolist() == ["error"] and out["nu_at"].tolist() == ["T_op"]
-    assert out["message"].iat[0] == (
-        "f2: nu*n*dM = 2.567e+06 mm^3/(s*min) is outside curve 'A' (Fa/A = 0.5: 1000 to 1e+06); the Schaeffler "
-        "catalogue forbids extrapolating the chart; nu [mm^2/s]: 186, taken at the operating temperature T_op = "
-        "22.32 degC; give T_bearing and viscosity_at 'bearing', or nu, for another viscosity")
-    # at T_bearing (70 degC) the oil is thin enough for the chart
-    assert bh.calc(_axially_loaded(**{"n [rpm]": 300}), f2_chart="docs/f2_chart_example.csv",
-                   viscosity_at="bearing")["status"].tolist() == ["ok"]
+def test_an_equilibrium_off_the_f2_chart_is_not_computed():
+    """At 300 1/min the heat balance of this NJ206-E would settle below 38.74 degC, where nu*n*dM is above the
+    made-up chart's 1e6 mm^3/(s*min): T_op is not computed there (the Schaeffler catalogue, p. 70: the charts are
+    not extrapolated); before, M2 of another temperature stood in and gave 22.32 degC. n_per, at 70 degC, would
+    lie above 1088.8 1/min, where the chart ends too."""
+    chart = "docs/f2_chart_example.csv"
+    nu = _walther(68, 8.6)
+    T_chart = brentq(lambda T: nu(T) * 300 * 46 - 1e6, 20, 150)  # dM = 46 mm
+    assert round(T_chart, 2) == 38.74 and round(1e6 / (nu(70) * 46), 1) == 1088.8
+    Fa_over_A = 50 / (15e-3 * 46 ** 2.1)  # kB = 15 (the Schaeffler catalogue, p. 70)
+    assert round(Fa_over_A, 3) == 1.074
+    t_op = ("no equilibrium down to 38.74 degC, where nu*n*dM rises to 1e+06 mm^3/(s*min), the upper end of the f2 "
+            "chart at Fa/A = 1.074: the heat carried away already exceeds the friction heat there; the Schaeffler "
+            "catalogue forbids extrapolating the chart, so T_op is not computed")
+    n_per = ("n_per: the friction heat stays below the heat carried away at T_bearing up to 1088.8 1/min, where "
+             "nu*n*dM = 1e+06 mm^3/(s*min) is the upper end of the f2 chart at Fa/A = 1.074; the Schaeffler catalogue "
+             "forbids extrapolating it; n_per lies above")
+    rows = pd.concat([_axially_loaded(**{"n [rpm]": 300, "viscosity_at": mode})
+                      for mode in ("operating", "auto", "bearing")], ignore_index=True)
+    out = bh.calc(rows, f2_chart=chart)
+    assert out["status"].tolist() == ["error", "warning", "warning"]
+    assert out["nu_at"].tolist() == ["-", "T_bearing", "T_bearing"]
+    assert out["message"].iat[0] == f"nu [mm^2/s]: cannot be taken at T_op; {t_op}; give T_bearing"
+    assert out["message"].iat[1] == out["message"].iat[2] == f"T_op: {t_op}; {n_per}"
+    assert out[["T_op [degC]", "n_per [1/min]"]].iloc[1:].isna().all().all()
 
 
 def test_an_ambient_at_or_above_the_search_limit_is_said_so_not_called_a_runaway():
@@ -180,6 +244,107 @@ def test_an_ambient_at_or_above_the_search_limit_is_said_so_not_called_a_runaway
     out = bh.calc(rows)
     assert out["T_op [degC]"].iat[0] > 20.0 and np.isnan(out["T_op [degC]"].iat[1])
     assert out["status"].iat[1] == "warning"
+    nu_199 = _walther(68, 8.6)(199)  # (thinner than ASTM D341 reaches: said too)
     assert out["message"].iat[1].split("T_op: ")[-1] == (
         "the ambient temperature T_amb = 170 degC is not below 150 degC, the upper end of the search for the operating "
-        "temperature; T_op is not computed")
+        f"temperature; T_op is not computed; T_bearing [degC]: nu = {nu_199:.4g} mm^2/s at 199 degC is below 2 mm^2/s, "
+        "outside ASTM D341 (an extrapolation); the friction results (nu_used) and n_per are taken at it")
+
+
+def test_the_f2_chart_ends_that_bound_the_operating_temperature_are_named():
+    """The search for T_op of a row whose f2 comes from the chart covers only the temperatures at which
+    nu(T)*n*dM lies on it; where it ends there, the message says at which temperature and nu*n*dM."""
+    nu = _walther(68, 8.6)
+    rows = pd.concat([_axially_loaded(**{"n [rpm]": 4, "Q_E [W]": 200, "viscosity_at": "operating"}),
+                      _axially_loaded(**{"n [rpm]": 8000, "viscosity_at": "bearing", "T_bearing [degC]": 200})],
+                     ignore_index=True)
+    out = bh.calc(rows, f2_chart="docs/f2_chart_example.csv")
+    # 4 1/min: the chart's lowest nu*n*dM, 1000, is met where nu = 1000/(4*46); still heating there with 200 W in
+    assert round(brentq(lambda T: nu(T) * 4 * 46 - 1000, 20, 150), 1) == 121.7
+    assert out["status"].iat[0] == "error"
+    assert out["message"].iat[0].endswith(
+        "nu [mm^2/s]: cannot be taken at T_op; no equilibrium up to 121.7 degC, where nu*n*dM falls to 1000 "
+        "mm^3/(s*min), the lower end of the f2 chart at Fa/A = 1.074: the friction heat still exceeds the heat "
+        "carried away there; the Schaeffler catalogue forbids extrapolating the chart, so T_op is not computed; "
+        "give T_bearing")
+    # 8000 1/min: even at 150 degC nu*n*dM is above the chart's 1e6 (the friction results at 200 degC are on it)
+    assert nu(150) * 8000 * 46 > 1e6 > nu(200) * 8000 * 46
+    assert out["message"].iat[1].startswith(
+        "T_op: nu*n*dM lies above the f2 chart at Fa/A = 1.074 (1000 to 1e+06 mm^3/(s*min)) at every temperature "
+        "from -30 to 150 degC; the Schaeffler catalogue forbids extrapolating the chart, so T_op is not computed; "
+        f"n_per: the friction heat stays below the heat carried away at T_bearing up to {1e6 / (nu(200) * 46):.5g} "
+        "1/min")
+
+
+def test_a_row_whose_chart_is_off_at_the_provisional_viscosity_is_solved():
+    """calc evaluates the friction of a row whose nu is taken at T_op at a provisional nu (70 degC) first. At
+    2000 1/min this NJ206-E's nu*n*dM there, 1.84e6 mm^3/(s*min), is off the made-up chart, but with 100 W flowing
+    in it settles at 100.5 degC, where it is on it: the row is solved, not refused for a viscosity it never has."""
+    nu = _walther(68, 8.6)
+    assert nu(70) * 2000 * 46 > 1e6
+    out = bh.calc(_axially_loaded(**{"n [rpm]": 2000, "Q_E [W]": 100}).drop(columns=["T_bearing [degC]"]),
+                  f2_chart="docs/f2_chart_example.csv")
+    # by hand: dM = 46 mm, f0 = 2, M1 = 0.0003*5000*46, kB = 15 (the Schaeffler catalogue, pp. 66-70); the chart's
+    # curves at Fa/A = 0.5 and 2, log-log between their points at 1e5 and 1e6, then in log Fa/A
+    Fa_over_A = 50 / (15e-3 * 46 ** 2.1)
+
+    def f2(x):
+        t = math.log(x / 1e5) / math.log(10)
+        on_a = math.log(0.005) + t * math.log(0.003 / 0.005)
+        on_b = math.log(0.008) + t * math.log(0.005 / 0.008)
+        return math.exp(on_a + math.log(Fa_over_A / 0.5) / math.log(4) * (on_b - on_a))
+
+    def balance(T):
+        x = nu(T) * 2000 * 46
+        M = 2.0 * (nu(T) * 2000) ** (2 / 3) * 46 ** 3 * 1e-7 + 0.0003 * 5000 * 46 + f2(x) * 50 * 46
+        return math.pi * 2000 / 30e3 * M + 100 - 0.016 / 50 * math.pi * 16 * (62 + 30) * (T - 20)
+
+    T_op = brentq(balance, 95, 110, xtol=1e-12)
+    assert 1e5 < nu(T_op) * 2000 * 46 < 1e6 and round(T_op, 2) == 100.53
+    assert out["status"].tolist() == ["ok"] and out["nu_at"].tolist() == ["T_op"]
+    assert out["T_op [degC]"].iat[0] == pytest.approx(T_op, rel=1e-9)
+    assert out["M2 [N*mm]"].iat[0] == pytest.approx(f2(nu(T_op) * 2000 * 46) * 50 * 46, rel=1e-9)
+
+
+def test_a_viscosity_below_astm_d341_at_T_bearing_is_told():
+    """nu(T_bearing) is the viscosity of n_per, and of the friction results with viscosity_at 'bearing': below
+    2 mm^2/s it is an extrapolation of ASTM D341 and is said so, as nu_op is (it was used silently)."""
+    nu = _walther(10, 2.6)
+    assert nu(150) < 2 < nu(100)
+    oil = {"nu40 [mm^2/s]": 10, "nu100 [mm^2/s]": 2.6, "T_bearing [degC]": 150}
+    out = bh.calc(pd.concat([table(**oil, viscosity_at=mode) for mode in ("bearing", "auto")], ignore_index=True))
+    assert out["nu_at"].tolist() == ["T_bearing", "T_op"]
+    assert out["nu_used [mm^2/s]"].iat[0] == pytest.approx(nu(150), rel=1e-12)
+    said = (f"T_bearing [degC]: nu = {nu(150):.4g} mm^2/s at 150 degC is below 2 mm^2/s, outside ASTM D341 (an "
+            "extrapolation); ")
+    assert said + "the friction results (nu_used) and n_per are taken at it" in out["message"].iat[0]
+    assert said + "n_per is taken at it" in out["message"].iat[1]
+    # without T_amb there is no heat balance, but the friction results are at T_bearing all the same
+    alone = bh.calc(table(**oil, viscosity_at="bearing").drop(columns=["T_amb [degC]"]))
+    assert alone["message"].iat[0] == said + "the friction results (nu_used) are taken at it"
+    # at 100 degC the oil is inside the standard's range: nothing to say
+    assert bh.calc(table(**{"nu40 [mm^2/s]": 10, "nu100 [mm^2/s]": 2.6, "T_bearing [degC]": 100}))[
+        "message"].tolist() == ["n_per: the thermal value 17809 1/min is above the limiting speed n_G = 17000 1/min; "
+                                "n_per = n_G"]
+
+
+def test_no_equilibrium_in_the_search_says_what_is_known_beyond_it():
+    """Below the search (-30 degC here) the catalogue model with oil data has an equilibrium: as the oil cools,
+    nu and the friction heat grow without bound while the heat carried away falls. With 1500 W of cooling the
+    6205 settles at -34.08 degC by hand. With a given nu nothing is claimed beyond the search."""
+    nu = _walther(68, 8.6)
+    M1 = 0.0009 * (2 / 7.8) ** 0.5 * 2000 * 38.5  # f1 of the 62 series (the Schaeffler catalogue, p. 67)
+
+    def balance(T, viscosity):
+        M0 = 2.0 * (viscosity * 3000) ** (2 / 3) * 38.5 ** 3 * 1e-7
+        return math.pi * 3000 / 30e3 * (M0 + M1) - 1500 - 0.016 / 50 * math.pi * 15 * (52 + 25) * (T - 20)
+
+    assert balance(-30, nu(-30)) < 0 and round(brentq(lambda T: balance(T, nu(T)), -80, -30), 2) == -34.08
+    given = table(**{"Q_E [W]": -1500, "nu [mm^2/s]": 30}).drop(columns=["nu40 [mm^2/s]", "nu100 [mm^2/s]"])
+    out = bh.calc(pd.concat([table(**{"Q_E [W]": -1500, "viscosity_at": "bearing"}), given], ignore_index=True))
+    search = ("T_op: no equilibrium down to -30 degC, the lower end of the search: the heat carried away already "
+              "exceeds the friction heat there")
+    assert out["message"].iat[0].startswith(
+        search + "; as the oil cools its viscosity, and with it the friction heat of the catalogue model, grows "
+        "without bound while the heat carried away falls, so an equilibrium lies below; T_op is not computed")
+    assert out["message"].iat[1].startswith(search + "; T_op is not computed")

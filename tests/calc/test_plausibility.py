@@ -194,3 +194,41 @@ def test_a_date_in_a_number_cell_is_shown_as_the_sheet_shows_it():
     out = run(row(**{"Fr [kN]": datetime.datetime(2024, 3, 2)}), row(**{"Fr [kN]": datetime.datetime(2024, 3, 2, 8, 30)}))
     assert out["message"].tolist() == ["'2024-03-02' is not a number for Fr [kN]",
                                        "'2024-03-02T08:30:00' is not a number for Fr [kN]"]
+
+
+K_Q_SOURCE = ("(a tenth to ten times the 0.2e-3 to 1.0e-3 W/(mm^2*K) of the Schaeffler HR 1 catalogue for seats up to "
+              "25 000 mm^2; its default q_r/50 K is 3.2e-4); check the number and its unit")
+Q_E_SOURCE = ("(the heat q_r*A_r the seat of a bearing of plausible size (D up to 6000 mm, B up to 2000 mm) carries "
+              "away at the ISO 15312 reference conditions is below 1e5 W); check the number and its unit")
+
+
+@pytest.mark.parametrize("header, value, message", [
+    ("k_q [W/(mm^2*K)]", 1.0, "k_q [W/(mm^2*K)]: 1 is outside the plausible range 2e-05 to 0.01 W/(mm^2*K) "),
+    ("k_q [W/(mm^2*K)]", 1e-300, "k_q [W/(mm^2*K)]: 1e-300 is outside the plausible range 2e-05 to 0.01 W/(mm^2*K) "),
+    ("Q_E [W]", 1e300, "Q_E [W]: 1e+300 is outside the plausible range -100000 to 100000 W "),
+    ("Q_E [kW]", -200.0, "Q_E [kW]: -200 (-200000 W) is outside the plausible range -100000 to 100000 W "),
+])
+def test_an_implausible_heat_transfer_or_external_heat_warns_with_its_source(header, value, message):
+    """k_q = 1 W/(mm^2*K), 3000 times the default, held the bearing at 20.004 degC without a word."""
+    out = run(row(**{header: value, "T_amb [degC]": 20.0, "B [mm]": 18.0}))
+    assert out["status"].tolist() == ["warning"]
+    assert out["message"].iat[0].startswith(message + (K_Q_SOURCE if header.startswith("k_q") else Q_E_SOURCE))
+
+
+def test_the_default_heat_transfer_of_every_catalogue_bearing_is_plausible():
+    from bearingheat.calc.contract import column
+    from bearingheat.calc.reference_speed import thermal_reference_speed_details
+    table = pd.read_csv("tables/bearings_hr1_2006.csv", skiprows=[1])
+    k_q = thermal_reference_speed_details(table[["designation", "d", "D", "B", "T", "C0"]])["k_q_ref"].dropna()
+    low, high = column("k_q").plausible
+    assert len(k_q) > 900 and low <= k_q.min() and k_q.max() <= high
+    # q_r*A_r at the reference (50 K) is below 1e5 W up to D = 6000 mm, B = 2000 mm: 0.016 (A_r/5e4)^-0.34 A_r
+    A_r = math.pi * 2000 * (6000 + 5000)
+    assert 0.016 * (A_r / 5e4) ** -0.34 * A_r < column("Q_E").plausible[1]
+
+
+def test_the_heat_balance_api_warns_for_an_implausible_heat_transfer():
+    r = bh.heat_balance("6205", d=25 * u.mm, D=52 * u.mm, B=15 * u.mm, C0=7.8 * u.kN, n=3000 * u.rpm,
+                        nu=12 * u("mm^2/s"), T_amb=u.Quantity(20, "degC"), k_q=1 * u("W/(mm^2*K)"))
+    assert r.status == ["warning"]
+    assert r.messages[0] == ("k_q: 1 is outside the plausible range 2e-05 to 0.01 W/(mm^2*K) " + K_Q_SOURCE)

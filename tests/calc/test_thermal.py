@@ -293,3 +293,23 @@ def test_reference_speed_details_of_a_table_are_those_of_each_row_alone():
     np.testing.assert_array_equal(chosen["n_thr"].to_numpy(), together["n_thr"].to_numpy())
     assert chosen["reason"].tolist() == together["reason"].tolist()
     assert list(thermal_reference_speed_details(frame.iloc[:1], names=("A_r",)).columns) == ["A_r"]
+
+
+def test_a_thrust_bearing_gets_n_thr_without_width_columns():
+    """A_r = (pi/2)(D^2 - d^2) of a thrust bearing needs d and D only: a table without B, T, d1 and D1 got n_per
+    but no n_thr column, although the heat balance computed it."""
+    table = pd.DataFrame([{"designation": "81212", "d [mm]": 60, "D [mm]": 95, "C0 [N]": 200000, "n [1/min]": 1000,
+                           "Fa [N]": 5000, "lubrication": "oil_bath", "nu [mm^2/s]": 24, "T_amb [degC]": 20,
+                           "T_bearing [degC]": 70}])
+    out = calc(table)
+    # by hand, the ISO 15312 reference of a thrust bearing: 24 mm^2/s, Fa = 0.02 C0, q_r = 0.020 W/mm^2; the
+    # 812 series in an oil bath f0 = 3, f1 = 0.0015, M1 = f1 Fa dM (the Schaeffler catalogue, pp. 66-67)
+    dM, A_r = 77.5, math.pi / 2 * (95 ** 2 - 60 ** 2)
+
+    def reference(n):
+        return math.pi * n / 30e3 * (3 * (24 * n) ** (2 / 3) * dM ** 3 * 1e-7 + 0.0015 * 0.02 * 200000 * dM) \
+            - 0.020 * A_r
+
+    assert out["status"].tolist() == ["ok"]
+    assert out["n_thr [1/min]"].iat[0] == pytest.approx(brentq(reference, 1, 1e6, xtol=1e-10), rel=1e-9)
+    assert round(out["n_thr [1/min]"].iat[0]) == 2414 and round(out["n_per [1/min]"].iat[0]) == 2108

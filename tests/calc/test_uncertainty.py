@@ -100,3 +100,30 @@ def test_an_empty_or_missing_coefficients_file_is_named(tmp_path, capsys):
     for path, why in ((empty, "not a readable CSV (the file is empty)"), (tmp_path / "none.csv", "no such file")):
         assert main(["calc", str(DEMO), "--coefficients", str(path), "-q"]) == 2
         assert capsys.readouterr().err == f"bearingheat calc: error: {path}: {why}\n"
+
+
+def test_the_sampled_reference_speed_band_is_the_percentiles_of_its_draws():
+    """In 'sampled' mode every band is the 2.5 and 97.5 percentiles of the draws, n_thr's too (it was the
+    linearised band). By hand: the 6205 at the ISO 15312 reference with f0 = 2 s0, f1 = 0.0009 sqrt(0.05) s1, for
+    the draws of numpy's default_rng(0) that calc makes (s0 first, then s1)."""
+    import math
+
+    from scipy.optimize import brentq
+
+    row = pd.DataFrame([{"designation": "6205", "d [mm]": 25, "D [mm]": 52, "B [mm]": 15, "C0 [N]": 7800,
+                         "lubrication": "oil_bath", "n [rpm]": 3000, "Fr [kN]": 2, "nu [mm^2/s]": 12,
+                         "f0_rel_unc": 0.2, "f1_rel_unc": 0.1}])
+    out = bh.calc(row, uncertainty="sampled")
+    rng = np.random.default_rng(0)
+    s0 = 1 + 0.2 / 1.959963984540054 * rng.standard_normal((400, 1)).ravel()
+    s1 = 1 + 0.1 / 1.959963984540054 * rng.standard_normal((400, 1)).ravel()
+    dM, A_r = 38.5, math.pi * 15 * (52 + 25)
+
+    def n_thr(a, b):
+        M1 = 0.0009 * math.sqrt(0.05) * b * 0.05 * 7800 * dM
+        return brentq(lambda n: math.pi * n / 30e3 * (2 * a * (12 * n) ** (2 / 3) * dM ** 3 * 1e-7 + M1)
+                      - 0.016 * A_r, 1, 1e6, xtol=1e-9)
+
+    drawn = [n_thr(a, b) for a, b in zip(s0, s1)]
+    assert out["n_thr_low [1/min]"].iat[0] == pytest.approx(np.percentile(drawn, 2.5), rel=1e-9)
+    assert out["n_thr_high [1/min]"].iat[0] == pytest.approx(np.percentile(drawn, 97.5), rel=1e-9)

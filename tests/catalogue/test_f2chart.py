@@ -47,6 +47,25 @@ def test_extrapolation_is_refused():
                           "the Schaeffler catalogue forbids extrapolating the chart")
 
 
+def test_values_are_those_of_lookup_for_many_points_at_once():
+    """The heat balance reads f2 at every trial speed and temperature of its roots: values() gives lookup's f2,
+    NaN where lookup refuses, and x_range() the nu*n*dM the two bracketing curves share."""
+    chart = F2Chart({"a": (0.5, [1e3, 1e5], [0.02, 0.005]), "b": (2.0, [2e3, 1e6], [0.03, 0.005])}, name="test")
+    levels = np.array([0.5, 1.0, 2.0, 1.0, 1.0, 3.0, 1.0])
+    xs = np.array([1e3, 5e4, 5e5, 1.5e3, 2e5, 5e4, np.nan])
+    f2, reasons = chart.lookup(levels, xs)
+    np.testing.assert_array_equal(chart.values(levels, xs), f2)
+    assert [bool(r) for r in reasons] == [False, False, False, True, True, True, True]
+    # between the curves: log f2 of each curve at x, then linear in log Fa/A (by hand)
+    on_a = math.log(0.02) + math.log(5e4 / 1e3) / math.log(1e5 / 1e3) * math.log(0.005 / 0.02)
+    on_b = math.log(0.03) + math.log(5e4 / 2e3) / math.log(1e6 / 2e3) * math.log(0.005 / 0.03)
+    assert f2[1] == pytest.approx(math.exp(on_a + math.log(1.0 / 0.5) / math.log(2.0 / 0.5) * (on_b - on_a)),
+                                  rel=1e-12)
+    low, high = chart.x_range([0.5, 1.0, 2.0, 3.0])
+    np.testing.assert_array_equal(low, [1e3, 2e3, 2e3, np.nan])
+    np.testing.assert_array_equal(high, [1e5, 1e5, 1e6, np.nan])
+
+
 def test_example_file_reads(tmp_path):
     chart = F2Chart.from_csv(EXAMPLE)
     assert chart.Fa_over_A_range[0] > 0
