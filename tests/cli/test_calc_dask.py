@@ -406,9 +406,11 @@ def test_the_charts_are_read_once_on_the_client_and_sent_to_the_workers(tmp_path
     got = calc_fleet(fleet, tmp_path / "out", f2_chart=str(chart))
     assert reads == [str(chart)]
     expected = bh.calc(table, f2_chart=str(chart))
-    assert (expected["M2 [N*mm]"] > 0).all() and expected["status"].tolist() == ["ok"] * 4
+    assert (expected["M2 [N*mm]"] > 0).all()
     np.testing.assert_allclose(got.column("M2 [N*mm]").to_numpy(), expected["M2 [N*mm]"].to_numpy(), rtol=1e-12)
-    assert got.column("status").to_pylist() == ["ok"] * 4
+    # (n_per of these rows lies beyond the chart's speeds: a warning that says so, the same on both paths)
+    assert got.column("status").to_pylist() == expected["status"].tolist()
+    assert got.column("message").to_pylist() == expected["message"].tolist()
 
 
 def test_a_fleet_is_checked_before_the_cluster_starts(tmp_path, capsys, monkeypatch):
