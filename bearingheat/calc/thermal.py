@@ -288,6 +288,8 @@ def _viscosity_at_bearing(frame: pd.DataFrame, results: pd.DataFrame, columns: p
     rows = np.flatnonzero(~failed_rows(results) & ~np.isnan(A) & ~np.isnan(T_bearing) & (friction_at | n_per_at))
     with np.errstate(invalid="ignore", over="ignore"):
         nu = walther_viscosity(A[rows], B[rows], T_bearing[rows])
+    low = nu < MIN_VISCOSITY  # (no pour point here: the one range check; messages only for the rows it finds)
+    rows, nu = rows[low], nu[low]
     for i, message in zip(rows.tolist(), viscosity_range_messages(nu, T_bearing[rows]).tolist()):
         if message:
             users = {(True, True): "the friction results (nu_used) and n_per are", (True, False): "the friction "
