@@ -303,7 +303,8 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
     if t_limit is not None:
         limit = float(celsius(t_limit, "t_limit"))
     frame, problems = fill_viscosity(frame, viscosity_at=viscosity_at)
-    if "nu" not in frame.columns:  # no point has a viscosity: the oil data's own fault where it has one, as calc says
+    # no point has a viscosity: the oil data's own fault where it has one (calc's row message), else none was given
+    if "nu" not in frame.columns or frame["nu"].isna().all():
         errors = [(i, message) for i, level, message in problems + walther_columns(frame)[2] if level == "error"]
         if errors:
             raise HeatBalanceError(errors[0][1] + where(errors[0][0], shape))

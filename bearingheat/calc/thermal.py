@@ -126,7 +126,11 @@ def fill_viscosity(frame: pd.DataFrame, *, viscosity_at: str = "auto"):
     # the new and replaced columns go into a new frame at the end (calc's frame itself is not changed)
     frame = with_columns(frame, {"_walther_A": A, "_walther_B": B})
     if np.isnan(A).all():
-        return with_columns(frame, {"_nu_explained": _rows_in_error(problems, len(frame))}), problems
+        # no row's oil data gives a line: each row's own error says why (the table is not refused for lack of nu)
+        filled = {"_nu_explained": _rows_in_error(problems, len(frame))}
+        if "nu" not in frame.columns:
+            filled["nu"] = np.full(len(frame), np.nan)
+        return with_columns(frame, filled), problems
     modes = _row_choices(frame, "viscosity_at", viscosity_at, VISCOSITY_AT, problems)
     nu = number_column(frame, "nu")
     given = ~np.isnan(nu)

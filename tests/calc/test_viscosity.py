@@ -41,6 +41,24 @@ def test_a_viscosity_index_without_oil_data_is_a_row_error_of_calc():
     assert out["message"].iloc[0] == "VI: given without iso_vg; the viscosity index only serves an ISO VG grade"
 
 
+def test_a_table_whose_every_row_has_unusable_oil_data_gets_each_row_s_reason():
+    """Where no row's oil data fixes a line (one support with ISO VG 47, say), calc refused the whole table with
+    "missing column: 'nu [mm^2/s]'", although the oil data were given; each row now says what is wrong with its
+    own, as it does beside a row whose oil data are good."""
+    import bearingheat as bh
+
+    rows = pd.DataFrame({"designation": ["6208", "6208"], "d [mm]": [40.0] * 2, "D [mm]": [80.0] * 2,
+                         "lubrication": ["oil_bath"] * 2, "n [rpm]": [1480.0] * 2, "Fr [kN]": [3.2] * 2,
+                         "iso_vg": [47.0, np.nan], "nu40 [mm^2/s]": [np.nan, 68.0], "T_amb [degC]": [20.0] * 2,
+                         "T_bearing [degC]": [70.0] * 2})
+    out = bh.calc(rows)
+    assert out["status"].tolist() == ["error", "error"]
+    assert out["message"].tolist() == [
+        "iso_vg: 47 is not an ISO VG grade; expected one of 2, 3, 5, 7, 10, 15, 22, 32, 46, 68, 100, 150, 220, 320, "
+        "460, 680, 1000, 1500, 2200, 3200",
+        "nu100 [mm^2/s]: missing; nu40 alone does not fix the viscosity-temperature line (ASTM D341)"]
+
+
 def test_rows_with_the_same_oil_data_are_worked_out_once_and_alike():
     """A table of many rows naming few oils (here the eight above in a shuffled order, 40 times each): every row
     gets the constants and the problems it gets alone; the work is done once per distinct oil."""
