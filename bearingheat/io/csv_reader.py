@@ -403,7 +403,7 @@ def read_source(path, *, sep: str | None = None, decimal: str | None = None, wha
     """Read a CSV file (:class:`CsvSource`); :class:`InputError` when it is not a readable CSV (the message names
     the file and the cause), names a column twice or has no rows."""
     path = Path(path)
-    sep = separator(sep)
+    sep = given_sep = separator(sep)
     if decimal not in (None, ".", ","):
         raise InputError(f"--decimal {decimal!r}: give '.' or ','")
     as_read = path.read_bytes()
@@ -415,6 +415,8 @@ def read_source(path, *, sep: str | None = None, decimal: str | None = None, wha
     if sep == decimal:
         raise InputError(f"--decimal {decimal!r} is also the separator; give --sep ';' or --sep tab with it")
     header, lines = _records(raw, sep)
+    if given_sep is not None and len(header) == 1:
+        _refuse_a_separator_the_header_lacks(path, given_sep, header[0])
     refuse_duplicate_columns(path, header)
     text_columns = _text_columns(header)
     table = _read_with_pyarrow(raw, sep, decimal, header, text_columns, path if unchanged else None)
@@ -436,6 +438,18 @@ def read_source(path, *, sep: str | None = None, decimal: str | None = None, wha
         raise InputError(f"{path}: no {what} (only a header row)")
     source.lines = RowLines(lines) if len(lines) == len(source) else None
     return source
+
+
+def _refuse_a_separator_the_header_lacks(path: Path, sep: str, header: str) -> None:
+    """:class:`InputError` where ``--sep`` leaves the header one column that another separator would split: the
+    table would otherwise be refused for its first missing column, which names no cause."""
+    found = sniff_format(header)[0]
+    if found != sep and found in _QUOTED.sub("", header):
+        shown = header if len(header) <= 40 else header[:40] + "..."
+        option = {"\t": "tab"}.get(found, found)  # as --sep takes it
+        raise InputError(f"{path}: --sep {'tab' if sep == chr(9) else sep!r} leaves the header one column "
+                         f"({shown!r}); its cells are separated by {SEPARATORS[found]}: give --sep {option!r} or "
+                         "leave --sep out")
 
 
 def _empty_rows(table: pa.Table | pd.DataFrame) -> np.ndarray:

@@ -438,3 +438,17 @@ def test_a_header_calc_cannot_read_passes_through_every_output(tmp_path, source_
     assert list(written.columns).index("remark [see note]]") == 3
     assert written["remark [see note]]"].tolist() == ["r0", "r1", "r2", "r3", "r4", "r5"]
     assert written["status"].tolist() == calc_csv(EXAMPLE_CSV)["status"].tolist()
+
+
+@pytest.mark.parametrize("sep, file_sep, option, described", [(";", ",", ",", "comma ','"),
+                                                               ("tab", ";", ";", "semicolon ';'")])
+def test_a_separator_the_header_lacks_is_named(tmp_path, capsys, sep, file_sep, option, described):
+    """--sep that leaves the header one column was refused for the table's first missing column ('missing column:
+    n [1/min]'), which named no cause; it now says which separator the file uses."""
+    path = _write(tmp_path / "in.csv", file_sep)
+    assert main(["calc", str(path), "--sep", sep]) == 2
+    header = file_sep.join(HEAD)
+    shown = header[:40] + "..."
+    assert capsys.readouterr().err == (
+        f"bearingheat calc: error: {path}: --sep '{'tab' if sep == 'tab' else sep}' leaves the header one column "
+        f"({shown!r}); its cells are separated by {described}: give --sep '{option}' or leave --sep out\n")
