@@ -328,7 +328,7 @@ def ball_bearing_contact(*, z: float, d_w: Quantity, d_m: Quantity, r_i: Quantit
     angle = working_contact_angle(load, c_star, angle0)
     xi_a = axial_displacement_ratio(angle, angle0)
     speed = fa_min = fa_min_working = None
-    points = int(np.size(np.broadcast_arrays(angle, c_star, load)[0]))
+    points = int(np.prod(shape))  # every argument's points, the speeds' too
     status, messages = point_status(points, every, some)
     if rpm is not None:
         speed = quantity(rpm, "1/min")

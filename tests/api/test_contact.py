@@ -91,6 +91,11 @@ def test_plausibility_warnings_of_fa_and_n_are_per_point():
         "n: 300000 is outside the plausible range up to 200000 1/min; check the number and its unit; Fa = 19.61 N is "
         "below the minimum axial load Fa_min = 101.9 N at n = 300000 1/min (gyroscopic sliding of the balls, "
         "Zaitsev & Voronkin)"]
+    # speeds as an array with one load (or none): a status per speed
+    speeds = ct.ball_bearing_contact(**geometry, Fa=2 * u.kgf, n=np.array([3000.0, 4000.0, 3e5]) * u.rpm)
+    assert speeds.status == ["ok", "ok", "warning"]
+    assert ct.ball_bearing_contact(**geometry, n=np.array([3000.0, 3e5]) * u.rpm).messages == [
+        "", "n: 300000 is outside the plausible range up to 200000 1/min; check the number and its unit"]
 
 
 @pytest.mark.parametrize("changes, message", [
