@@ -303,8 +303,10 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
     if t_limit is not None:
         limit = float(celsius(t_limit, "t_limit"))
     frame, problems = fill_viscosity(frame, viscosity_at=viscosity_at)
-    # no point has a viscosity: the oil data's own fault where it has one (calc's row message), else none was given
-    if "nu" not in frame.columns or frame["nu"].isna().all():
+    # no point's oil data fix a viscosity line (or none were given): the oil data's own fault where they have one
+    # (calc's row message). A point with a line but no temperature to take it at is a point in error, not a raise.
+    no_line = "_walther_A" not in frame.columns or np.isnan(frame["_walther_A"].to_numpy(dtype=float)).all()
+    if "nu" not in frame.columns or (no_line and frame["nu"].isna().all()):
         errors = [(i, message) for i, level, message in problems + walther_columns(frame)[2] if level == "error"]
         if errors:
             raise HeatBalanceError(errors[0][1] + where(errors[0][0], shape))

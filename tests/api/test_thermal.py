@@ -193,6 +193,14 @@ def test_heat_balance_and_reference_speed_refuse_series_of_different_indexes():
     assert speeds.pint.to("1/min").pint.magnitude[0] == pytest.approx(single.to("1/min").magnitude, rel=1e-15)
 
 
+def test_a_point_with_oil_data_but_no_temperature_to_take_it_at_is_an_error_not_a_raise():
+    """Good oil data and viscosity_at 'bearing' without T_bearing: the point is in error with the reason, as calc's
+    row is; only oil data that fix no line at all raise (they leave the call nothing to compute)."""
+    r = base_case(T_bearing=None, viscosity_at="bearing")
+    assert r.status == ["error"]
+    assert r.messages == ["T_bearing [degC]: missing; the viscosity is to be taken at the bearing temperature"]
+
+
 @pytest.mark.parametrize("oil, message", [
     (dict(iso_vg=47), "iso_vg: 47 is not an ISO VG grade; expected one of 2, 3, 5, 7, 10, 15, 22, 32, 46, 68, 100, "
                       "150, 220, 320, 460, 680, 1000, 1500, 2200, 3200"),
