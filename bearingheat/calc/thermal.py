@@ -201,7 +201,7 @@ def settle_viscosity(frame: pd.DataFrame, results: pd.DataFrame, *, t_limit: flo
     A, B = number_column(frame, "_walther_A"), number_column(frame, "_walther_B")
     frame = frame.drop(columns=["_nu_pending", "_nu_fallback"])
     if f2_chart is not None:
-        results = _stand_in_f2(frame, results, pending, labels, model)
+        results = _stand_in_f2(frame, results, pending, labels, model, f2_chart)
     failed_at_provisional = failed_rows(results)
     details, _, T_amb, Q_E, Q_S, Q_L = heat_flow_setup(frame)
     point = operating_point(frame, results, viscosity_of_rows(frame, A, B), ~np.isnan(A), Q_S, Q_L, Q_E, T_amb,
@@ -223,7 +223,10 @@ def settle_viscosity(frame: pd.DataFrame, results: pd.DataFrame, *, t_limit: flo
         explained = frame["_nu_explained"].to_numpy(dtype=bool).copy()
         explained[refused_nu] = True
         frame["_nu_explained"] = explained
-    results = results_at_viscosity(frame, results, pending, f2_chart=f2_chart, labels=labels, model=model)
+    # a row refused at the provisional viscosity keeps that refusal and its messages (evaluated again without a
+    # viscosity it would only say 'nu: missing', and the chart would not be read to say why f2 has none)
+    results = results_at_viscosity(frame, results, pending & ~failed_at_provisional, f2_chart=f2_chart,
+                                   labels=labels, model=model)
     problems = [(i, "error", f"nu [mm^2/s]: cannot be taken at T_op; {why}; give T_bearing")
                 for i, why in sorted(why_unsolved.items()) if not fallback[i]]
     # a row the model refuses only at ν(T_op) is told where ν came from
@@ -245,13 +248,24 @@ def settle_viscosity(frame: pd.DataFrame, results: pd.DataFrame, *, t_limit: flo
     return frame, results, problems
 
 
-def _stand_in_f2(frame, results, pending, labels, model):
+def _stand_in_f2(frame, results, pending, labels, model, f2_chart):
     """The results of the pending rows that the friction pass refused (f2 read off the chart at ν·n·dM of the
     provisional viscosity is off it, and perhaps more) evaluated again with a stand-in f2: the heat balance reads
     M2 off the chart at ν(T)·n·dM itself and needs only f0, M1 and Fa/A. A row refused for another reason stays
-    refused; every pending row is evaluated again at ν(T_op) with the chart (:func:`settle_viscosity`)."""
+    refused: one that the stand-in lets through but whose Fa/A is not on the chart's curves (no kB, or an Fa/A
+    beyond them) keeps its refusal. Every pending row is evaluated again at ν(T_op) with the chart
+    (:func:`settle_viscosity`)."""
     f2 = number_column(frame, "f2")
     retry = pending & failed_rows(results) & np.isnan(f2) & (number_column(frame, "Fa") > 0)
+    if not retry.any():
+        return results
+    # (results_at_viscosity replaces rows in the frame it is given: the trial works on a copy)
+    trial = results_at_viscosity(frame.assign(f2=np.where(retry, 1.0, f2)), results.copy(), retry, labels=labels,
+                                 model=model)
+    on_curves = ~np.isnan(f2_chart.x_range(trial["Fa_over_A"].to_numpy(dtype=float))[0])
+    if not (retry & ~on_curves).any():
+        return trial
+    retry &= on_curves
     if not retry.any():
         return results
     return results_at_viscosity(frame.assign(f2=np.where(retry, 1.0, f2)), results, retry, labels=labels, model=model)

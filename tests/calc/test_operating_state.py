@@ -306,6 +306,24 @@ def test_a_row_whose_chart_is_off_at_the_provisional_viscosity_is_solved():
     assert out["M2 [N*mm]"].iat[0] == pytest.approx(f2(nu(T_op) * 2000 * 46) * 50 * 46, rel=1e-9)
 
 
+def test_a_row_refused_for_its_own_chart_reading_keeps_that_refusal():
+    """A row whose nu is taken at T_op and whose f2 cannot be read at any viscosity (no kB, or an Fa/A beyond the
+    chart's curves) is not solved with the stand-in f2 and keeps the model's own reason, alone: not a heat
+    balance built on the stand-in, nor 'nu: missing'."""
+    row = {"d [mm]": 50, "D [mm]": 80, "B [mm]": 16, "C0 [kN]": 50, "lubrication": "oil_bath", "n [rpm]": 1000,
+           "Fr [kN]": 5.0, "Fa [kN]": 0.2, "nu40 [mm^2/s]": 68, "nu100 [mm^2/s]": 8.6, "T_amb [degC]": 20}
+    rows = pd.DataFrame([{**row, "designation": "NJ1010"},
+                         {**row, "designation": "NJ206-E-XL", "d [mm]": 30, "D [mm]": 62, "C0 [kN]": 36,
+                          "n [rpm]": 100}])
+    out = bh.calc(rows, f2_chart="docs/f2_chart_example.csv")
+    assert out["status"].tolist() == ["error", "error"]
+    assert out["message"].tolist() == [
+        "kB: missing; cylindrical roller bearing with cage series 10 has no kB in the Schaeffler catalogue p. 70, "
+        "so Fa/A for the f2 chart is unknown; give f2",
+        "f2: Fa/A = 4.297 is outside the f2 chart's curves (0.5 to 2); the Schaeffler catalogue forbids "
+        "extrapolating the chart"]
+
+
 def test_a_viscosity_below_astm_d341_at_T_bearing_is_told():
     """nu(T_bearing) is the viscosity of n_per, and of the friction results with viscosity_at 'bearing': below
     2 mm^2/s it is an extrapolation of ASTM D341 and is said so, as nu_op is (it was used silently)."""
