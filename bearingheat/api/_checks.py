@@ -136,4 +136,3 @@ def shared_index(values: Mapping[str, object], error: type[BearingheatError]) ->
                         f"{_labels(value.index)}); give them one index, e.g. {name}.reindex({first[0]}.index), or "
                         "pass arrays")
     return None if first is None else first[1]
-

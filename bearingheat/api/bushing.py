@@ -214,8 +214,9 @@ def size_bushing(F: Quantity, n: Quantity, d: Quantity, *, application: str = "b
         Radial load; must be > 0.
     n : pint.Quantity [1/min]
         Shaft speed (for an oscillating shaft: cycles per minute times the
-        amplitude in revolutions); must be > 0 and at most 15 000 1/min, and
-        give a sliding speed V = π·d·n/60 000 of at least 0.05 m/s.
+        amplitude in revolutions); must be > 0. Above 15 000 1/min or below
+        a sliding speed V = π·d·n/60 000 of 0.05 m/s the size is conservative
+        (a warning: the handbook allows a smaller one there).
     d : pint.Quantity [length]
         Bore (shaft diameter); must be > 0.
     application : str, optional
@@ -313,8 +314,9 @@ def size_thrust_washer(F: Quantity, n: Quantity, d: Quantity, *, shaft: str | No
     F : pint.Quantity [force]
         Axial load; must be > 0.
     n : pint.Quantity [1/min]
-        Shaft speed; must be > 0 and at most 15 000 1/min, and give a
-        sliding speed of at least 0.05 m/s at the mean diameter.
+        Shaft speed; must be > 0. Above 15 000 1/min or below a sliding
+        speed of 0.05 m/s at the mean diameter the size is conservative (a
+        warning: the handbook allows a smaller one there).
     d : pint.Quantity [length]
         Inner diameter of the washer; must be > 0.
     shaft : str, optional

@@ -310,8 +310,8 @@ RANGES: dict[str, tuple[tuple[float, float] | None, tuple[float, float] | None]]
 RANGE_SOURCES = {
     "VM": "over 300 times the 0.3·10⁻⁴ the worked example of SKF 6000 pp. 104-105 reads off diagram 2; the diagram's "
           "data are not in bearingheat, so the bound is wide",
-    "mu_sl": "twice μbl ≈ 0.15 of SKF 6000 p. 101 and 10000/3 p. 103, the largest sliding coefficient of the model",
-    "mu_bl": "twice μbl ≈ 0.15 of SKF 6000 p. 101 and 10000/3 p. 103, the largest sliding coefficient of the model",
+    **dict.fromkeys(("mu_sl", "mu_bl"), "twice μbl ≈ 0.15 of SKF 6000 p. 101 and 10000/3 p. 103, the largest sliding "
+                                        "coefficient of the model"),
     "k_q": ("a tenth to ten times the 0.2e-3 to 1.0e-3 W/(mm^2*K) of the Schaeffler HR 1 catalogue for seats up to "
             "25 000 mm^2; its default q_r/50 K is 3.2e-4"),
     "Q_E": ("the heat q_r*A_r the seat of a bearing of plausible size (D up to 6000 mm, B up to 2000 mm) carries away "

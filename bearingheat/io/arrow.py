@@ -24,6 +24,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import numpy as np
 import pandas as pd
 import pyarrow as pa
 import pyarrow.feather as feather
@@ -98,7 +99,8 @@ def without_index(table: pa.Table, offset: int = 0) -> pa.Table:
     names = list(named)
     for index in ranges:  # a named range of row numbers: its values, from the table's place in the file
         first = index["start"] + offset * index["step"]
-        columns.append(pa.array(range(first, first + table.num_rows * index["step"], index["step"]), pa.int64()))
+        columns.append(pa.array(np.arange(first, first + table.num_rows * index["step"], index["step"],
+                                          dtype=np.int64)))  # (numpy's arange: no Python int per row)
         names.append(str(index["name"]))
     others = [c for c in table.column_names if c not in stored]
     described = {**described, "index_columns": [],

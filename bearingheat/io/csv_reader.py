@@ -297,6 +297,15 @@ def _text_columns(header: list[str]) -> list[str]:
     return [h for h, name in names.items() if name not in known or name in text]
 
 
+def _holds_a_hexadecimal_cell(raw: bytes, sep: str) -> bool:
+    """Whether a cell of the CSV bytes ``raw`` begins with 0x (after spaces, a quote or a sign): a hexadecimal
+    number pyarrow would read; '0x' inside a text cell ('pump 0x1F') is none."""
+    if b"0x" not in raw and b"0X" not in raw:  # (no pattern search in the common case)
+        return False
+    cell_start = rb"(?:^|" + re.escape(sep.encode()) + rb')[ \t]*"?[ \t]*[+-]?0[xX]'
+    return re.search(cell_start, raw, flags=re.MULTILINE) is not None
+
+
 def _arrow_source(raw: bytes, file: Path | None) -> str | pa.BufferReader:
     """What pyarrow's threaded CSV reader reads ``raw`` from: the file that holds it (opened by Arrow, read in
     blocks), else a copy in Arrow's own memory; never a Python object. The reader may drop its last reference to
@@ -357,7 +366,7 @@ def _read_with_pyarrow(raw: bytes, sep: str, decimal: str, header: list[str], te
         if not any(kind(field.type) for kind in _ARROW_KINDS):
             return None
         if pa.types.is_integer(field.type):  # pyarrow reads 0x10 as 16; pandas (and calc) as no number
-            hexadecimal = (b"0x" in raw or b"0X" in raw) if hexadecimal is None else hexadecimal
+            hexadecimal = _holds_a_hexadecimal_cell(raw, sep) if hexadecimal is None else hexadecimal
             if hexadecimal:
                 return None
         if pa.types.is_string(field.type) or pa.types.is_large_string(field.type):  # an empty text cell: missing

@@ -452,3 +452,13 @@ def test_a_separator_the_header_lacks_is_named(tmp_path, capsys, sep, file_sep, 
     assert capsys.readouterr().err == (
         f"bearingheat calc: error: {path}: --sep '{'tab' if sep == 'tab' else sep}' leaves the header one column "
         f"({shown!r}); its cells are separated by {described}: give --sep '{option}' or leave --sep out\n")
+
+
+@pytest.mark.parametrize("raw, sep, found", [
+    (b"id,n\npump 0x1F,3\n", ",", False),     # inside a text cell: no number, the file stays on pyarrow's reader
+    (b"id,n\na,0x10\n", ",", True), (b'id;n\na; "0X1"\n', ";", True), (b"n\n0x1\n", ",", True),
+    (b"id,n\na,-0x1\n", ",", True), (b"id\tn\na\t0x1\n", "\t", True)])
+def test_only_a_cell_that_begins_with_0x_is_a_hexadecimal_number(raw, sep, found):
+    from bearingheat.io.csv_reader import _holds_a_hexadecimal_cell
+
+    assert _holds_a_hexadecimal_cell(raw, sep) is found
