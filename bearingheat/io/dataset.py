@@ -309,9 +309,10 @@ def _duty_summary(plan: DatasetPlan, parts: Path) -> pd.DataFrame | None:
 def compute_dataset(plan: DatasetPlan) -> DatasetRun:
     """The computation :func:`plan_dataset` planned, on the current Dask scheduler: each piece becomes one part
     file, written into a hidden folder beside the target first; the duty-cycle summary (where the plan has one)
-    is computed from those parts and written (a fleet without rows has none); an earlier dataset in the target
-    is replaced once every part is written and the summary is. A summary that cannot be made (shares that do not
-    sum to 1 ...) leaves the earlier dataset as it was."""
+    is computed from those parts; an earlier dataset in the target is replaced once every part is written and
+    the summary is made, and the summary is written after it (a fleet without rows has none: an earlier one is
+    removed). A summary that cannot be made (shares that do not sum to 1 ...) or a swap that fails leaves the
+    earlier dataset and its summary as they were."""
     import dask
 
     target = plan.target
@@ -325,11 +326,17 @@ def compute_dataset(plan: DatasetPlan) -> DatasetRun:
                  for i, (path, groups) in enumerate(plan.pieces)]
         _run(tasks)
         duty = _duty_summary(plan, staging) if plan.duty is not None else None
-        if duty is not None and plan.duty is not None:
-            write_arrow(duty, plan.duty)
         _publish(staging, real)
     finally:
         shutil.rmtree(staging, ignore_errors=True)
+    # the summary follows the dataset it sums up, once that is in place (a failed swap leaves both as they were);
+    # a fleet without rows has none, and an earlier one beside the new dataset would sum up rows it no longer has
+    if plan.duty is not None:
+        if duty is not None:
+            write_arrow(duty, plan.duty)
+        else:
+            with contextlib.suppress(FileNotFoundError):
+                os.unlink(plan.duty)
     return DatasetRun(target, duty)
 
 

@@ -634,3 +634,36 @@ def test_a_big_file_is_computed_in_pieces_of_its_row_groups(tmp_path, monkeypatc
     assert got.column("id").to_pylist() == table["id"].tolist()
     np.testing.assert_allclose(got.column("MR [N*mm]").to_numpy(), bh.calc(table.reset_index())["MR [N*mm]"],
                                rtol=1e-12)
+
+
+def test_the_duty_summary_follows_its_dataset(tmp_path, monkeypatch):
+    """The summary beside the folder was written before the dataset was swapped in: a swap that failed left the
+    earlier dataset beside the new summary, and a rerun of a fleet without rows left the earlier summary beside an
+    empty dataset. It is now written once the dataset is in place, and removed where the new fleet has none."""
+    from bearingheat.io import dataset
+
+    duty = pd.read_csv(Path(__file__).resolve().parents[2] / "examples" / "gearbox_duty_cycle.csv")
+    (tmp_path / "fleet").mkdir()
+    duty.to_parquet(tmp_path / "fleet" / "a.parquet", index=False)
+    out, summary = tmp_path / "out", tmp_path / "out.duty.parquet"
+    calc_fleet(tmp_path / "fleet", out)
+    earlier = summary.read_bytes()
+    heavier = duty.assign(**{"Fr [kN]": duty["Fr [kN]"] * 3})
+    heavier.to_parquet(tmp_path / "fleet" / "a.parquet", index=False)
+    real_rename = os.rename
+
+    def failing(source, destination):
+        if Path(source).suffix == ".tmp":
+            raise OSError(13, "Permission denied")
+        return real_rename(source, destination)
+
+    monkeypatch.setattr(dataset.os, "rename", failing)
+    with pytest.raises(bh.errors.OutputFileError):
+        calc_fleet(tmp_path / "fleet", out, overwrite=True)
+    assert summary.read_bytes() == earlier
+    monkeypatch.setattr(dataset.os, "rename", real_rename)
+    calc_fleet(tmp_path / "fleet", out, overwrite=True)
+    assert summary.read_bytes() != earlier
+    heavier.iloc[0:0].to_parquet(tmp_path / "fleet" / "a.parquet", index=False)
+    assert calc_fleet(tmp_path / "fleet", out, overwrite=True).num_rows == 0
+    assert not summary.exists()
