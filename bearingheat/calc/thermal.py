@@ -127,10 +127,10 @@ def fill_viscosity(frame: pd.DataFrame, *, viscosity_at: str = "auto"):
     frame = with_columns(frame, {"_walther_A": A, "_walther_B": B})
     if np.isnan(A).all():
         # no row's oil data gives a line: each row's own error says why (the table is not refused for lack of nu)
-        filled = {"_nu_explained": _rows_in_error(problems, len(frame))}
+        no_line = {"_nu_explained": _rows_in_error(problems, len(frame))}
         if "nu" not in frame.columns:
-            filled["nu"] = np.full(len(frame), np.nan)
-        return with_columns(frame, filled), problems
+            no_line["nu"] = np.full(len(frame), np.nan)
+        return with_columns(frame, no_line), problems
     modes = _row_choices(frame, "viscosity_at", viscosity_at, VISCOSITY_AT, problems)
     nu = number_column(frame, "nu")
     given = ~np.isnan(nu)
