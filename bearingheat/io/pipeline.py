@@ -31,7 +31,7 @@ from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.catalogue.vm_chart import VMChart
 from bearingheat.io.arrow import ARROW_SUFFIXES, arrow_column, read_arrow_table, user_metadata, with_unit
 from bearingheat.io.csv_reader import RowLines, read_source
-from bearingheat.io.tables import cite_rows, set_aside
+from bearingheat.io.tables import calc_passing_through
 
 __all__ = ["ROWS_PER_BLOCK", "calc_file", "calc_block", "load_options", "ordered_union"]
 
@@ -142,19 +142,16 @@ def calc_block(block: pd.DataFrame, source: pa.Table | None, options: dict, *, m
                lines: RowLines | None = None, layout: dict | None = None) -> pa.Table:
     """calc of one block of rows (``block``, read from the Arrow table ``source`` or None) as Arrow.
 
-    Columns calc cannot read the header of are set aside and put back in their places
-    (:func:`bearingheat.io.tables.set_aside`), row messages cite ``lines``; with a ``layout``
+    Columns calc cannot read the header of are set aside and put back in their places, row messages cite
+    ``lines`` (:func:`bearingheat.io.tables.calc_passing_through`); with a ``layout``
     (:func:`bearingheat.calc.distributed.result_layout`) the block gets every column of it, as a partition of the
     Dask path does (an empty block: the input's columns and the layout's, nothing computed).
     """
-    usable, extras = set_aside(block)
     if layout is None:
-        result = calc(usable, decimal=mark, **options)
+        result = calc_passing_through(block, lines, lambda usable: calc(usable, decimal=mark, **options))
     else:
-        result = calc_partition(usable, calc, layout, {**options, "decimal": mark})
-    for position, header, values in extras:
-        result.insert(position, header, values.array)
-    cite_rows(result, lines)
+        result = calc_passing_through(block, lines, lambda usable: calc_partition(usable, calc, layout,
+                                                                                  {**options, "decimal": mark}))
     return _block_table(result, block, source)
 
 

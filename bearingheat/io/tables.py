@@ -25,6 +25,7 @@ formats of :data:`TABLE_WRITERS`.
 from __future__ import annotations
 
 from pathlib import Path
+from typing import Callable
 
 import numpy as np
 import pandas as pd
@@ -39,8 +40,8 @@ from bearingheat.io.csv_writer import escape_cell, write_csv_text
 from bearingheat.io.files import atomic_write
 
 __all__ = ["read_csv", "read_table", "read_text", "write_csv", "sniff_format", "escape_formulas", "escape_cell",
-           "calc_csv", "cite_rows", "set_aside", "RowLines", "separator", "SEPARATORS", "TABLE_WRITERS",
-           "write_table", "check_table_suffix"]
+           "calc_csv", "calc_passing_through", "cite_rows", "set_aside", "RowLines", "separator", "SEPARATORS",
+           "TABLE_WRITERS", "write_table", "check_table_suffix"]
 
 
 def _read_frame(path, *, sep: str | None, decimal: str | None, what: str) -> pd.DataFrame:
@@ -138,8 +139,15 @@ def calc_csv(path, *, sep: str | None = None, decimal: str | None = None, **opti
     else:
         table = read_csv(path, sep=sep, decimal=decimal)
         lines, mark = table.attrs.get("lines"), table.attrs["decimal"]
+    return calc_passing_through(table, lines, lambda usable: calc(usable, decimal=mark, **options))
+
+
+def calc_passing_through(table: pd.DataFrame, lines: list[int] | RowLines | None,
+                         compute: Callable[[pd.DataFrame], pd.DataFrame]) -> pd.DataFrame:
+    """``compute`` (calc, or calc of a partition) of ``table`` with the columns whose header calc cannot read set
+    aside (:func:`set_aside`) and put back in their places, row messages citing ``lines`` (:func:`cite_rows`)."""
     usable, extras = set_aside(table)
-    result = calc(usable, decimal=mark, **options)
+    result = compute(usable)
     for position, header, values in extras:
         result.insert(position, header, values.array)
     return cite_rows(result, lines)
