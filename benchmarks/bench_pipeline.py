@@ -52,7 +52,7 @@ def model_arrays(table):
     """The support arrays of ``table`` as calc resolves them (its unit boundary, fill and bearing keys; not timed)."""
     from bearingheat.calc.fill import fill_from_catalogue
     from bearingheat.calc.models import support_arrays_of
-    from bearingheat.calc.table import to_catalogue_units
+    from bearingheat.calc.conversion import to_catalogue_units
 
     converted = to_catalogue_units(table)
     return support_arrays_of(fill_from_catalogue(converted.frame, converted.labels)[0].reset_index(drop=True))

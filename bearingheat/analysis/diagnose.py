@@ -43,7 +43,7 @@ from bearingheat.calc.messages import Labels
 from bearingheat.calc.fill import fill_from_catalogue
 from bearingheat.calc.models import compute_supports
 from bearingheat.calc.supports import SupportArrays
-from bearingheat.calc.table import to_catalogue_units
+from bearingheat.calc.conversion import to_catalogue_units
 from bearingheat.errors import DiagnoseError, InputError, UnitError
 from bearingheat.kernels import friction
 from bearingheat.units import convert_column, parse_unit

@@ -28,7 +28,7 @@ import pandas as pd
 
 from bearingheat.calc.contract import output_header
 from bearingheat.calc.supports import number_column, text_column
-from bearingheat.calc.table import to_catalogue_units
+from bearingheat.calc.conversion import to_catalogue_units
 from bearingheat.errors import DutyCycleError
 
 __all__ = ["SHARE_TOLERANCE", "DUTY_UNITS", "has_duty_cycle", "duty_cycle"]

@@ -20,11 +20,7 @@ value; the other rows are still computed. Input that cannot be used at all
 """
 from __future__ import annotations
 
-import datetime
-import math
-import re
-from collections import defaultdict
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
@@ -34,12 +30,11 @@ import pyarrow as pa
 from bearingheat.calc import contact, thermal
 from bearingheat.calc.thermal import (DEFAULT_SPEED_FACTOR_METHOD, DEFAULT_VISCOSITY_AT, SPEED_FACTOR_METHODS,
                                      VISCOSITY_AT)
-from bearingheat.calc.contract import (LABEL_COLUMNS, PLAIN_TYPES, TEXT_DTYPE, input_units, output_header,
-                                       output_units, parse_header, range_problems)
+from bearingheat.calc.contract import PLAIN_TYPES, TEXT_DTYPE, input_units, output_header, output_units
 from bearingheat.calc.messages import ERROR, WARNING, Labels, status_codes, status_column, with_texts
-from bearingheat.calc.supports import (blanks_filled, column_codes, number_column, per_distinct, text_categorical,
-                                       text_column, with_bearing_groups)
+from bearingheat.calc.supports import blanks_filled, number_column, per_distinct, text_column, with_bearing_groups
 from bearingheat.calc.distributed import calc_dask, is_dask_frame
+from bearingheat.calc.conversion import to_catalogue_units
 from bearingheat.calc.fill import fill_from_catalogue
 from bearingheat.calc.uncertainty import fill_from_coefficients, has_uncertainty, uncertainty_bands
 from bearingheat.catalogue.bearings import CATALOGUE
@@ -48,10 +43,9 @@ from bearingheat.calc.models import (DEFAULT_MODEL, M2_REPORT_UNITS, MODEL_REPOR
 from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.catalogue.vm_chart import VMChart
 from bearingheat.calc.skf import fill_vm_from_chart
-from bearingheat.errors import InputError, UnitError
-from bearingheat.units import convert_column
+from bearingheat.errors import InputError
 
-__all__ = ["calc", "to_catalogue_units", "ConvertedTable", "require_columns", "Extension", "EXTENSIONS"]
+__all__ = ["calc", "require_columns", "Extension", "EXTENSIONS"]
 
 
 @dataclass(frozen=True)
@@ -79,218 +73,6 @@ EXTENSIONS: dict[str, Extension] = {e.owner: e for e in (
     Extension("contact", contact.prepare, contact.extend),
     Extension("thermal", thermal.prepare, thermal.extend, thermal.settle),
 )}
-
-
-@dataclass
-class ConvertedTable:
-    """A table's contract columns in catalogue units, how messages name them, and the cells' own problems.
-
-    ``errors_by_row`` and ``warnings_by_row`` hold the messages of the rows that have them only (row
-    position -> messages in column order); ``row_errors`` and ``row_warnings`` are the same as one list
-    per row.
-    """
-
-    frame: pd.DataFrame            # contract names, catalogue units
-    labels: Labels
-    errors_by_row: dict[int, list[str]] = field(default_factory=dict)
-    warnings_by_row: dict[int, list[str]] = field(default_factory=dict)
-
-    @property
-    def row_errors(self) -> list[list[str]]:
-        return [self.errors_by_row.get(i, []) for i in range(len(self.frame))]
-
-    @property
-    def row_warnings(self) -> list[list[str]]:
-        return [self.warnings_by_row.get(i, []) for i in range(len(self.frame))]
-
-
-def _convert_column(values: pd.Series, header: str, unit_text: str | None, target: str,
-                    cell: Callable[[str, int], str] | None, name: str,
-                    errors: defaultdict[int, list[str]], warnings: defaultdict[int, list[str]],
-                    decimal: str = ".") -> tuple[np.ndarray, float]:
-    """Numbers of one column in the catalogue unit, and the catalogue units per user unit (NaN for an
-    absolute temperature, which has no single factor). Cells that are no numbers, logical values,
-    non-finite numbers and numbers outside the contract's valid range become row errors; numbers outside
-    its plausible range become row warnings."""
-    if pd.api.types.is_bool_dtype(values.dtype):
-        logical = np.ones(len(values), dtype=bool)
-    elif values.dtype == object:  # a mixed column: True/False cells among numbers
-        logical = _logical_cells(values)
-    else:
-        logical = np.zeros(len(values), dtype=bool)
-    if isinstance(values.dtype, np.dtype) and values.dtype.kind in "iuf":  # numpy numbers (to_numeric would copy)
-        numeric = values.to_numpy(dtype=float)
-    elif values.dtype.kind in "mM":  # dates or durations (pandas would give their nanoseconds): no numbers
-        values = pd.Series(values.to_numpy(dtype=object), index=values.index, dtype=object).where(values.notna())
-        numeric = np.full(len(values), np.nan)
-    else:
-        given = values.where(~logical, np.nan) if logical.any() else values
-        if decimal == ",":  # '3,2' is 3.2 and '1.480' no number (each distinct text looked at once)
-            given = pd.Series(per_distinct(given, _with_decimal_point), index=values.index, dtype=object)
-        numeric = pd.to_numeric(given, errors="coerce").to_numpy(dtype=float)
-
-    def where(i):
-        return f"{cell(name, i)}: " if cell else ""
-
-    not_given = np.isnan(numeric)
-    missing = np.flatnonzero(not_given) if not_given.any() else np.zeros(0, dtype=np.intp)
-    if values.dtype.kind == "f" or not len(missing):  # a missing number is a blank cell
-        blank = np.ones(len(missing), dtype=bool)
-    else:
-        blank = per_distinct(values.iloc[missing], _blank).astype(bool)
-    for i in missing[~blank | logical[missing]].tolist():  # cells that are no numbers; blank cells are not given
-        raw = values.iloc[i]
-        raw = raw.item() if isinstance(raw, np.generic) else raw  # as typed: True, not np.True_
-        if logical[i]:
-            errors[i].append(f"{where(i)}{raw!r} is a logical value, not a number for {header}")
-        elif not _blank(raw):
-            mark = f" (the decimal mark is {decimal!r})" if isinstance(raw, str) and _DECIMAL_MARKS[decimal] in raw \
-                else ""
-            errors[i].append(f"{where(i)}{_as_typed(raw)!r} is not a number for {header}{mark}")
-    try:
-        converted, factor = convert_column(numeric, unit_text, target, name=name, header=header, copy=False)
-    except UnitError as exc:
-        raise InputError(f"column {header!r}: {exc}") from exc
-    if np.shares_memory(converted, numeric) and not converted.flags.owndata:  # a view of the user's table
-        converted = converted.copy()
-    shown_unit = {"1": "", "delta_degC": "K"}.get(target, target)
-
-    def describe(i):
-        value = f"{numeric[i]:g}" if factor == 1.0 or np.isinf(numeric[i]) else \
-            f"{numeric[i]:g} ({converted[i]:g} {shown_unit})".replace(" )", ")")
-        return f"{where(i)}{header}: {value}"
-
-    found_errors, found_warnings = range_problems(name, converted, describe)
-    for i, message in found_errors:
-        errors[i].append(message)
-    for i, message in found_warnings:
-        warnings[i].append(message)
-    return converted, factor
-
-
-#: decimal mark -> the other mark, which in a number typed as text says the mark was taken wrongly
-_DECIMAL_MARKS = {".": ",", ",": "."}
-
-
-def _with_decimal_point(value):
-    """A text number with a decimal comma as pandas reads numbers ('3,2' -> '3.2'); text with a point is no
-    number then (None: '1.480' is no 1.48); numbers and blanks as they are."""
-    if not isinstance(value, str):
-        return value
-    return None if "." in value else value.replace(",", ".")
-
-
-def _as_typed(value):
-    """A cell as a message shows it: a date or time (a date typed into a number cell) as the sheet's text."""
-    if isinstance(value, datetime.datetime) and value.time() == datetime.time(0):
-        return value.date().isoformat()
-    return value.isoformat() if isinstance(value, (datetime.date, datetime.time)) else value
-
-
-def _is_logical(value) -> bool:
-    return isinstance(value, (bool, np.bool_))
-
-
-_LOGICAL = np.frompyfunc(_is_logical, 1, 1)
-
-
-def _logical_cells(values: pd.Series) -> np.ndarray:
-    """Which cells of an object column hold a logical value (True, False). Distinct values are hashed once, but
-    True == 1 and False == 0 hash alike, so the cells of a distinct value equal to 0 or 1 are looked at one by
-    one (an Excel TRUE among loads of 1 kN, a load of 0 among FALSE)."""
-    codes, uniques = column_codes(values)
-    logical = np.zeros(len(values), dtype=bool)
-    cells = values.to_numpy(dtype=object)
-    for code, unique in enumerate(uniques):
-        if isinstance(unique, (bool, np.bool_, int, float, np.number)) and unique in (0, 1):
-            rows = np.flatnonzero(codes == code)
-            logical[rows] = _LOGICAL(cells[rows]).astype(bool)
-    return logical
-
-
-def _text_cell(value) -> str:
-    """A text cell as typed: a whole number that a numeric column made a float (62.0 of a column of series
-    with a blank cell) reads as the integer it was ('62')."""
-    if isinstance(value, (float, np.floating)) and float(value).is_integer():
-        return str(int(value))
-    return str(value).strip()
-
-
-def _blank(value) -> bool:
-    return value is None or (isinstance(value, float) and math.isnan(value)) or str(value).strip() == ""
-
-
-def to_catalogue_units(table: pd.DataFrame, *, units: dict[str, str] | None = None,
-                       cell: Callable[[str, int], str] | None = None, decimal: str = ".") -> ConvertedTable:
-    """Contract columns of ``table`` in catalogue units (unknown columns are passed through untouched).
-
-    ``units`` maps a header to a unit typed in a separate units row (Excel);
-    a unit in the header itself wins. ``decimal`` is the decimal mark of
-    numbers typed as text ('.' or ',').
-    """
-    known = input_units()
-    _refuse_lookalikes(table.columns, known)
-    errors: defaultdict[int, list[str]] = defaultdict(list)  # only the rows that have messages
-    warnings: defaultdict[int, list[str]] = defaultdict(list)
-    columns: dict[str, np.ndarray | pd.Series] = {}
-    headers: dict[str, tuple[str, float]] = {}
-    seen: set[str] = set()
-    for header in table.columns:
-        name, unit_text = parse_header(header)
-        if unit_text is None and units is not None:
-            unit_text = units.get(header)
-        if name not in known:
-            continue
-        if name in seen:
-            raise InputError(f"column {header!r}: {name} appears twice")
-        seen.add(name)
-        if name in LABEL_COLUMNS:  # passed through as typed (the output keeps the input columns)
-            continue
-        target = known[name]
-        display = f"{name} [{unit_text}]" if unit_text not in (None, "", "-", "1") else name
-        if target == "":
-            columns[name] = pd.Series(text_categorical(table[header], lambda v: None if _blank(v) else _text_cell(v)),
-                                      index=table.index)
-            continue
-        columns[name], factor = _convert_column(table[header], display, unit_text, target, cell, name, errors,
-                                                warnings, decimal)
-        headers[name] = (display, factor)
-    # the arrays are calc's own (converted, or copied below): the frame takes them as they are, not stacked into
-    # one block (a copy of every column, 0.08 s for 14 columns of 10^6 rows)
-    frame = pd.DataFrame(columns, index=table.index, copy=False)
-    return ConvertedTable(frame, Labels(headers, cell), dict(errors), dict(warnings))
-
-
-#: a header that writes its unit another way than 'name [unit]': 'Fr (kN)', 'Fr, kN', 'Fr/kN', 'Fr in kN'
-_OTHER_UNIT_FORM = re.compile(r"^\s*(\w+)\s*(?:\((.+)\)|,\s*(.+)|/\s*(.+)|\s+in\s+(.+))\s*$")
-
-
-def _refuse_lookalikes(headers, known: dict[str, str]) -> None:
-    """:class:`InputError` for a header that is not read but looks like a number column the table lacks: the
-    unit written another way ('Fr (kN)') or the name in other letter case ('FR', 'fr [kN]'; names of two or
-    more letters). Such a column would be passed through and its loads taken as 0, or its values as absent."""
-    names = {}
-    for header in headers:
-        try:
-            names[header] = parse_header(header)
-        except InputError:
-            names[header] = (str(header), None)
-    present = {name for name, _ in names.values()}
-    numeric = {name: unit for name, unit in known.items() if unit != "" and name not in present}
-    by_case = {name.casefold(): name for name in numeric if len(name) > 1}
-    for header, (name, unit) in names.items():
-        if name in known:
-            continue
-        other_form = _OTHER_UNIT_FORM.match(name)
-        base, typed = (other_form.group(1), next(g for g in other_form.groups()[1:] if g)) if other_form \
-            else (name, unit)
-        meant = base if base in numeric else by_case.get(base.casefold()) if len(base) > 1 else None
-        if meant is None:
-            continue
-        written = f"{meant} [{(typed or numeric[meant]).strip()}]"
-        raise InputError(f"column {header!r} looks like {meant!r}, which calc would not read from it: name it "
-                         f"{written!r} (headers are 'name [unit]', the name in its own letters); as it is, the table "
-                         f"would be computed as if {meant} were not given")
 
 
 def require_columns(frame: pd.DataFrame) -> None:

@@ -160,7 +160,7 @@ def test_the_friction_power_computed_once_gives_the_bits_of_the_balance_at_every
     from bearingheat.calc import heat_flows, operating_temperature
     from bearingheat.calc.fill import fill_from_catalogue
     from bearingheat.calc.models import compute_supports
-    from bearingheat.calc.table import to_catalogue_units
+    from bearingheat.calc.conversion import to_catalogue_units
 
     table = pd.read_csv(EXAMPLES / "gearbox_shaft.csv")
     converted = to_catalogue_units(table)

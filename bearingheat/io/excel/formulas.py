@@ -61,7 +61,7 @@ from bearingheat.calc.friction import F0_EXCEL, F1_EXCEL, P1_EXCEL
 from bearingheat.calc.messages import at
 from bearingheat.calc.models import DEFAULT_MODEL, RESULT_UNITS, get_model, support_arrays_of
 from bearingheat.calc.supports import SupportArrays, text_column
-from bearingheat.calc.table import to_catalogue_units
+from bearingheat.calc.conversion import to_catalogue_units
 from bearingheat.catalogue.contact import y0_for_contact_angle
 from bearingheat.catalogue.friction import LUBRICATION_F0_COLUMN, ResolvedBearing, resolve
 from bearingheat.errors import DesignationError, ExcelError

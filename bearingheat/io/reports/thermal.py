@@ -17,7 +17,8 @@ from pathlib import Path
 import pandas as pd
 
 from bearingheat.calc.models import compute_supports
-from bearingheat.calc.table import require_columns, to_catalogue_units
+from bearingheat.calc.conversion import to_catalogue_units
+from bearingheat.calc.table import require_columns
 from bearingheat.calc.heat_flow_curves import heat_flow_curves
 from bearingheat.calc.thermal import fill_viscosity, heat_balance_rows, settle_viscosity
 from bearingheat.errors import InputError
