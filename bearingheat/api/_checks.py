@@ -14,13 +14,52 @@ import pandas as pd
 
 from bearingheat.calc.contract import range_problems
 from bearingheat.errors import BearingheatError
+from bearingheat.units import Magnitude, magnitude
 
-__all__ = ["point_warnings", "point_status", "where", "shared_index", "broadcast_shape"]
+__all__ = ["point_warnings", "point_status", "where", "shared_index", "broadcast_shape", "dimensionless_number"]
 
 
 def where(i: int, shape: tuple[int, ...]) -> str:
     """' (at index i)' for an array argument, '' for scalars."""
     return f" (at index {np.unravel_index(i, shape) if len(shape) > 1 else i})" if shape else ""
+
+
+def dimensionless_number(value: object, name: str, error: type[BearingheatError]) -> Magnitude:
+    """A dimensionless argument (a factor, a grade, an index) as a float or float array, a plain Series as it is
+    (its index pairs it with the others): a Quantity or a pint-pandas Series is converted to 1 (50 % is 0.5, a
+    unit of a dimension is refused), a number is taken as it is, and a cell that is no number raises ``error``
+    naming the argument, the cell and, for arrays, its index.
+
+    >>> from bearingheat.errors import HeatBalanceError
+    >>> dimensionless_number([0.01, 0.02], "f2", HeatBalanceError)
+    array([0.01, 0.02])
+    >>> dimensionless_number([0.01, "low"], "f2", HeatBalanceError)
+    Traceback (most recent call last):
+    ...
+    bearingheat.errors.HeatBalanceError: f2: 'low' is not a number (at index 1)
+    """
+    if hasattr(value, "units") or (isinstance(value, pd.Series) and str(value.dtype).startswith("pint[")):
+        return magnitude(value, "dimensionless", name)
+    cells = value.to_numpy(dtype=object) if isinstance(value, pd.Series) else np.asarray(value, dtype=object)
+    try:
+        numbers = cells.astype(float)
+    except (TypeError, ValueError):
+        i = next(k for k, cell in enumerate(cells.ravel()) if not _is_number(cell))
+        raise error(f"{name}: {cells.ravel()[i]!r} is not a number{where(i, cells.shape)}") from None
+    if isinstance(value, pd.Series):
+        return pd.Series(numbers, index=value.index)
+    return numbers if numbers.ndim else float(numbers)
+
+
+def _is_number(value: object) -> bool:
+    """Whether ``float(value)`` gives a number (a logical value does not count: True is no factor)."""
+    if isinstance(value, (bool, np.bool_)):
+        return False
+    try:
+        float(value)  # type: ignore[arg-type]
+    except (TypeError, ValueError):
+        return False
+    return True
 
 
 def _describe(name: str, values: np.ndarray) -> Callable[[int], str]:

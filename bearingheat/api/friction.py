@@ -22,7 +22,8 @@ import numpy as np
 import numpy.typing as npt
 import pandas as pd
 
-from bearingheat.api._checks import broadcast_shape, point_status, point_warnings, shared_index, where
+from bearingheat.api._checks import (broadcast_shape, dimensionless_number, point_status, point_warnings, shared_index,
+                                     where)
 from bearingheat.api.results import Result
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.contract import column
@@ -132,27 +133,7 @@ _FACTORS = ("Y", "e", "X0", "Y0", "f0", "f1", "f2")
 
 
 def _dimensionless(value: QuantityLike | npt.ArrayLike | None, name: str) -> Magnitude:
-    if value is None:
-        return math.nan
-    if hasattr(value, "units") or (isinstance(value, pd.Series) and str(value.dtype).startswith("pint[")):
-        return magnitude(value, "dimensionless", name)
-    if isinstance(value, pd.Series):
-        return value
-    try:
-        numbers = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        cells = np.asarray(value, dtype=object)
-        i = next(k for k, cell in enumerate(cells.ravel()) if not _is_number(cell))
-        raise FrictionInputError(f"{name}: {cells.ravel()[i]!r} is not a number{where(i, cells.shape)}") from None
-    return numbers if numbers.ndim else float(numbers)
-
-
-def _is_number(value: object) -> bool:
-    try:
-        float(value)  # type: ignore[arg-type]
-    except (TypeError, ValueError):
-        return False
-    return True
+    return math.nan if value is None else dimensionless_number(value, name, FrictionInputError)
 
 
 def _optional(value: QuantityLike | None, unit: str, name: str) -> Magnitude:

@@ -15,7 +15,8 @@ import numpy as np
 import numpy.typing as npt
 import pandas as pd
 
-from bearingheat.api._checks import broadcast_shape, point_status, point_warnings, shared_index, where
+from bearingheat.api._checks import (broadcast_shape, dimensionless_number, point_status, point_warnings,
+                                     shared_index, where)
 from bearingheat.api.results import Result
 from bearingheat.calc.fill import fill_from_catalogue
 from bearingheat.calc.heat_flows import walther_columns
@@ -23,6 +24,7 @@ from bearingheat.calc.messages import Labels
 from bearingheat.calc.models import compute_supports
 from bearingheat.calc.thermal import (OPERATING_TEMPERATURE_LIMIT, SPEED_FACTOR_METHODS, VISCOSITY_AT,
                                       fill_viscosity, heat_balance_rows, settle_viscosity, thermal_reference_speed_rows)
+from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.errors import HeatBalanceError
 from bearingheat.kernels.thermal import friction_power
 from bearingheat.units import Magnitude, Quantity, QuantityLike, celsius, magnitude, quantity
@@ -93,8 +95,8 @@ class HeatBalanceResult(Result):
     messages: list[str]
 
 
-def _plain_number(value: QuantityLike | npt.ArrayLike, name: str) -> np.ndarray:
-    return np.asarray(getattr(value, "magnitude", value), dtype=float)
+def _plain_number(value: QuantityLike | npt.ArrayLike, name: str) -> Magnitude:
+    return dimensionless_number(value, name, HeatBalanceError)
 
 
 #: catalogue unit -> converter of the arguments in it that are no multiplicative unit (absolute
@@ -119,7 +121,7 @@ _API_COLUMNS = {
     "T_amb": ("T_amb", "degC"), "T_bearing": ("T_bearing", "degC"), "k_q": ("k_q", "W/(mm^2*K)"),
     "V_oil": ("V_oil", "l/min"), "dT_oil": ("dT_oil", "delta_degC"), "Q_E": ("Q_E", "W"),
     "nu40": ("nu40", "mm^2/s"), "nu100": ("nu100", "mm^2/s"), "iso_vg": ("iso_vg", "1"),
-    "VI": ("VI", "1"), "n_G": ("n_G", "1/min"), "n_thr_catalogue": ("n_thr_catalogue", "1/min"),
+    "VI": ("VI", "1"), "n_G": ("n_G", "1/min"), "n_thr_catalogue": ("n_thr_catalogue", "1/min"), "f2": ("f2", "1"),
 }
 
 
@@ -133,7 +135,8 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
                  Q_E: QuantityLike | None = None, n_G: QuantityLike | None = None,
                  n_thr_catalogue: QuantityLike | None = None, viscosity_at: str = "auto", method: str = "exact",
                  t_limit: Quantity | None = None, bearing_type: str | None = None,
-                 series: str | None = None) -> HeatBalanceResult:
+                 series: str | None = None, f2: QuantityLike | npt.ArrayLike | None = None,
+                 f2_chart: F2Chart | str | None = None) -> HeatBalanceResult:
     """Thermal reference speed, permissible speed and operating temperature of a bearing (Quantities).
 
     The heat balance NR + Q_E = Q_S + Q_L of the Schaeffler catalogue HR 1
@@ -239,6 +242,17 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
         Bearing type of the coefficient tables instead of a designation.
     series : str, optional
         Dimension series with ``bearing_type``.
+    f2 : float or pint.Quantity [1], optional
+        Coefficient of M2 = f2·Fa·dM of an axially loaded cylindrical roller
+        bearing (the Schaeffler catalogue, p. 69), held at this value at
+        every speed and temperature of the balance.
+    f2_chart : F2Chart or str, optional
+        A digitised f2 chart (:class:`~bearingheat.catalogue.f2chart.F2Chart`,
+        or the path of its CSV) to read f2 off where ``f2`` is not given: M2
+        then follows ν·n·dM at each speed and temperature the balance tries,
+        as in :func:`~bearingheat.calc.table.calc`. The chart is never
+        extrapolated: a root it does not reach is not computed, and the
+        message names the chart's end.
 
     Returns
     -------
@@ -254,6 +268,8 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
         data give none), arrays of shapes that do not pair point by point
         (naming two of them), and a number that is NaN, infinite or outside
         its valid range (naming the argument and, for arrays, the index).
+    bearingheat.errors.F2ChartError
+        For an ``f2_chart`` file that cannot be read or used.
     bearingheat.errors.UnitError
         For a plain number where a Quantity is needed, a unit of the wrong
         dimension, or a temperature difference where an absolute
@@ -278,7 +294,9 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
     args = {"d": d, "D": D, "B": B, "T": T, "C0": C0, "n": n, "Fr": Fr, "Fa": Fa, "nu": nu,
             "T_amb": T_amb, "T_bearing": T_bearing, "k_q": k_q, "V_oil": V_oil, "dT_oil": dT_oil,
             "Q_E": Q_E, "nu40": nu40, "nu100": nu100, "iso_vg": iso_vg, "VI": VI,
-            "n_G": n_G, "n_thr_catalogue": n_thr_catalogue}
+            "n_G": n_G, "n_thr_catalogue": n_thr_catalogue, "f2": f2}
+    if isinstance(f2_chart, str):
+        f2_chart = F2Chart.from_csv(f2_chart)
     columns: dict[str, float | np.ndarray] = {}
     magnitudes = {name: _frame_column(value, _API_COLUMNS[name][1], name) for name, value in args.items()}
     index = shared_index(magnitudes, HeatBalanceError)
@@ -311,9 +329,11 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
         if errors:
             raise HeatBalanceError(errors[0][1] + where(errors[0][0], shape))
         raise HeatBalanceError("nu: missing; give nu, or nu40 and nu100, or iso_vg")
-    frame, results, settled = settle_viscosity(frame, compute_supports(frame), t_limit=limit)
+    frame, results, settled = settle_viscosity(frame, compute_supports(frame, f2_chart=f2_chart), t_limit=limit,
+                                               f2_chart=f2_chart)
     problems += settled
-    extra, more = heat_balance_rows(frame, results, method=method, t_limit=limit, reference_speed=True)
+    extra, more = heat_balance_rows(frame, results, method=method, t_limit=limit, reference_speed=True,
+                                    f2_chart=f2_chart)
     problems = fill_problems + problems + more
     status, ranges = point_status(size, every, some)
     messages = [[m] if m else [] for m in ranges]

@@ -201,8 +201,9 @@ def evaluate_catalogue_model(s: SupportArrays, labels: Labels, f2_chart: F2Chart
         elif need_f2.any():
             add(need_f2, "error",
                 lambda i: f"f2: missing; {label(i)} carries Fa, so M2 = f2*Fa*dM needs f2: give f2, or a "
-                          f"digitised chart (--f2-chart); read it at Fa/A = {Fa_over_A[i]:.4g}, "
-                          f"nu*n*dM = {nu_n_dM[i]:.4g} mm^3/(s*min) (the Schaeffler catalogue, p. 70, figs. 3 and 4)")
+                          "digitised f2 chart (f2_chart; --f2-chart on the command line); read it at "
+                          f"Fa/A = {Fa_over_A[i]:.4g}, nu*n*dM = {nu_n_dM[i]:.4g} mm^3/(s*min) "
+                          "(the Schaeffler catalogue, p. 70, figs. 3 and 4)")
     add(np.equal(s.seal, "contact"), "warning",
         lambda i: "contact seals: their friction comes on top of the catalogue model (the Schaeffler catalogue, p. 63, "
                   "lists seal friction among the components; its formulas have no term for it)")

@@ -14,22 +14,27 @@ import pandas as pd
 from bearingheat.calc.models import FrictionPower
 from bearingheat.calc.heat_flows import generic_speed, heat_flow_setup, viscosity_of_rows, walther_columns
 from bearingheat.calc.thermal import OPERATING_TEMPERATURE_LIMIT
+from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.kernels.thermal import balance_speed
 
 __all__ = ["heat_flow_curves"]
 
 
 def heat_flow_curves(frame: pd.DataFrame, results: pd.DataFrame, columns: pd.DataFrame, *,
-                     points: int = 200) -> dict | None:
+                     points: int = 200, f2_chart: F2Chart | None = None) -> dict | None:
     """Friction heat and heat carried away of the first row against speed and temperature (catalogue units).
 
     ``frame`` holds the calc inputs after :func:`~bearingheat.calc.thermal.settle_viscosity` (with
     ``T_amb``), ``results`` the friction results of
     :func:`bearingheat.calc.models.compute_supports` and ``columns`` those of
-    :func:`~bearingheat.calc.thermal.heat_balance_rows`. Returns None where the row has no heat flow
+    :func:`~bearingheat.calc.thermal.heat_balance_rows`; ``f2_chart`` the chart
+    their f2 was read off (M2 then follows ν·n·dM along the curves, NaN where
+    that lies off the chart). Returns None where the row has no heat flow
     area A_r or no ambient temperature, otherwise a dict: ``n``, ``n_per``,
     ``T_op``, ``T_amb``; ``theta`` (T_bearing, else T_op) and ``n_cross``,
     the speed at which the friction heat equals Q_S + Q_L − Q_E at theta;
+    ``chart_speeds`` (lowest, highest) [1/min], the speeds at theta between
+    which ν·n·dM lies on the f2 chart (0 and inf without one);
     ``speeds`` [1/min] with ``friction_vs_speed`` and ``carried_vs_speed``
     [W] at theta; ``temperatures`` [°C] with ``friction_vs_temperature``
     (N_R(ν(T)) + Q_E) and ``carried_vs_temperature`` (Q_S + Q_L) [W] at the
@@ -40,7 +45,7 @@ def heat_flow_curves(frame: pd.DataFrame, results: pd.DataFrame, columns: pd.Dat
         return None
     A, B, _ = walther_columns(frame)
     nu_at = viscosity_of_rows(frame, A, B)
-    power = FrictionPower(frame, results)
+    power = FrictionPower(frame, results, f2_chart)
     n = float(frame["n"].iloc[0])
     T_op = float(columns["T_op"].iloc[0])
     n_per = float(columns["n_per"].iloc[0]) if "n_per" in columns.columns else math.nan
@@ -54,12 +59,17 @@ def heat_flow_curves(frame: pd.DataFrame, results: pd.DataFrame, columns: pd.Dat
     elif carried_theta > 0:
         speed, _ = generic_speed(power, np.full(power.size, nu_theta), np.full(power.size, carried_theta))
         n_cross = float(speed[0])
-    n_top = 1.5 * np.nanmax([n, n_cross, n_per, 1.0])
+    # f2 read off a chart: N_R is known only between the speeds at which nu*n*dM lies on it (0 and inf otherwise)
+    chart_low, chart_high = (float(end[0]) for end in power.speed_range(np.full(power.size, nu_theta)))
+    # where the chart's end is why no crossing was found, the axis reaches it, so that the reader sees the end
+    chart_end = chart_high if np.isnan(n_cross) and np.isfinite(chart_high) else math.nan
+    n_top = 1.5 * np.nanmax([n, n_cross, n_per, chart_end, 1.0])
     speeds = np.linspace(0.0, n_top, points)
     temperatures = np.linspace(T_amb[0], OPERATING_TEMPERATURE_LIMIT, points)
     ones = np.ones(points)
     return dict(
         n=n, n_per=n_per, n_cross=n_cross, theta=theta, T_op=T_op, T_amb=float(T_amb[0]),
+        chart_speeds=(chart_low, chart_high),
         speeds=speeds,
         friction_vs_speed=power.at_row(0, speeds, nu_theta),
         carried_vs_speed=carried_theta * ones,

@@ -4,7 +4,8 @@
 - ``--out-dir DIR``: the folder of a command that writes several files (report, tables, figures);
 - ``--json``: print the results as JSON on stdout instead of text;
 - ``-q/--quiet``: print nothing but errors;
-- ``--force``: replace output files that exist (without it they are refused, exit 2).
+- ``--force``: replace output files that exist (without it they are refused, exit 2);
+- ``--f2-chart CSV``: the digitised f2 chart of the commands that compute M2 (calc, plot).
 
 A command adds these options with the functions below and never writes their help itself;
 ``tests/cli/test_conventions.py`` checks every command against the texts here.
@@ -13,14 +14,15 @@ from __future__ import annotations
 
 import argparse
 
-__all__ = ["add_output", "add_out_dir", "add_json", "add_quiet", "add_force", "output_help", "out_dir_help",
-           "JSON_HELP", "QUIET_HELP", "FORCE_FILE_HELP", "FORCE_DIR_HELP"]
+__all__ = ["add_output", "add_out_dir", "add_json", "add_quiet", "add_force", "add_f2_chart", "output_help",
+           "out_dir_help", "JSON_HELP", "QUIET_HELP", "FORCE_FILE_HELP", "FORCE_DIR_HELP", "F2_CHART_HELP"]
 
 JSON_HELP = "print the results as JSON instead of text"
 QUIET_HELP = "print nothing but errors"
 #: --force of a command with -o/--output FILE, and of one with --out-dir DIR
 FORCE_FILE_HELP = "replace FILE if it exists"
 FORCE_DIR_HELP = "replace the files in DIR that exist"
+F2_CHART_HELP = "digitised f2 chart (docs/friction.md gives the format)"
 
 
 def output_help(formats: str, *, required: bool = False, without: str = "the results are printed") -> str:
@@ -70,3 +72,8 @@ def add_force(parser: argparse.ArgumentParser, what: str | None = None) -> None:
     else:
         text = f"replace {what or 'the output file'} if it exists"
     parser.add_argument("--force", action="store_true", help=text)
+
+
+def add_f2_chart(parser: argparse.ArgumentParser) -> None:
+    """``--f2-chart CSV``: f2 of axially loaded cylindrical roller bearings read off the user's digitised chart."""
+    parser.add_argument("--f2-chart", metavar="CSV", help=F2_CHART_HELP)

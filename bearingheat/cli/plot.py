@@ -4,9 +4,10 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
+from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.cli import UsageError, add_csv_arguments
-from bearingheat.cli.options import add_force, add_output, add_quiet
-from bearingheat.errors import InputError
+from bearingheat.cli.options import add_f2_chart, add_force, add_output, add_quiet
+from bearingheat.errors import F2ChartError, InputError
 from bearingheat.io.files import atomic_write, safe_output
 from bearingheat.io.reports.thermal import FIGURE_FORMATS, draw_heat_balance, figure_format, heat_balance_curves
 from bearingheat.io.tables import read_csv
@@ -27,7 +28,9 @@ two panels of the heat balance N_R + Q_E = Q_S + Q_L (Schaeffler catalogue HR 1,
 The row needs: designation (or type and series), d [mm], D [mm], B [mm] (or T [mm]
 for tapered roller bearings), lubrication, n [1/min], Fr/Fa as needed, T_amb [degC],
 and nu [mm^2/s] or nu40/nu100 or iso_vg. Optional: T_bearing, k_q, V_oil, dT_oil,
-Q_E, C0 (for n_thr).
+Q_E, C0 (for n_thr). An axially loaded cylindrical roller bearing needs f2, or
+--f2-chart: the friction heat then takes f2 at each speed and temperature of
+the curves, and is not drawn where nu*n*dM lies off the chart.
 
   bearingheat plot supports.csv --row 0 -o heat_balance.png
   bearingheat plot supports.csv --id "spindle rear" -o heat_balance.png
@@ -49,6 +52,7 @@ def add_arguments(parser) -> None:
     suffixes = [f".{suffix}" for suffix in FIGURE_FORMATS]
     add_output(parser, f"{', '.join(suffixes[:-1])} or {suffixes[-1]}", required=True)
     add_force(parser)
+    add_f2_chart(parser)
     add_csv_arguments(parser)
     add_quiet(parser)
 
@@ -59,11 +63,13 @@ def run(args) -> int:
         raise UsageError(f"{path}: no such file")
     try:
         fmt = figure_format(args.output)
-        target = safe_output(args.output, force=args.force, inputs=(path,))
+        inputs = (path,) if args.f2_chart is None else (path, Path(args.f2_chart))
+        target = safe_output(args.output, force=args.force, inputs=inputs)
+        f2_chart = F2Chart.from_csv(args.f2_chart) if args.f2_chart is not None else None
         table = read_csv(path, sep=args.sep, decimal=args.decimal)
         table = _select_row(table, args.row, args.id, path)
-        curves = heat_balance_curves(table)
-    except InputError as exc:
+        curves = heat_balance_curves(table, f2_chart=f2_chart)
+    except (InputError, F2ChartError) as exc:
         raise UsageError(str(exc)) from exc
     if curves["status"] == "error":
         print(f"bearingheat plot: row in error: {curves['message']}", file=sys.stderr)

@@ -13,8 +13,10 @@ from scipy.optimize import brentq
 
 from bearingheat.api.thermal import heat_balance, thermal_reference_speed
 from bearingheat.calc.models import compute_supports
-from bearingheat.errors import HeatBalanceError
+from bearingheat.catalogue.f2chart import F2Chart
+from bearingheat.errors import F2ChartError, HeatBalanceError, UnitError
 from bearingheat.kernels.viscosity import viscosity_from_two_points
+from thermal_helpers import nj208_chart, nj208_roots
 
 u = pint.get_application_registry()
 
@@ -299,3 +301,65 @@ def test_no_equilibrium_is_a_warning_unless_nu_was_to_come_from_it():
     assert (given.status, fallback.status, nothing.status) == (["warning"], ["warning"], ["error"])
     assert np.isnan([given.T_op.magnitude, fallback.T_op.magnitude, nothing.T_op.magnitude]).all()
     assert nothing.messages[0].startswith("nu [mm^2/s]: cannot be taken at T_op; no equilibrium up to 150 degC")
+
+
+# --- axially loaded cylindrical roller bearings: M2 = f2*Fa*dM (the Schaeffler catalogue, pp. 69-70) ---------------
+
+def _nj208(**overrides):
+    """NJ208-E in an oil bath at 1000 1/min, Fr = 6 kN, Fa = 2 kN (dM = 60 mm, f0 = 2, f1 = 0.0003, kB = 15)."""
+    arguments = dict(d=40 * u.mm, D=80 * u.mm, B=18 * u.mm, C0=53 * u.kN, n=1000 * u.rpm, Fr=6 * u.kN, Fa=2 * u.kN,
+                     nu40=68 * u("mm^2/s"), nu100=8.6 * u("mm^2/s"), T_amb=u.Quantity(20, "degC"),
+                     T_bearing=u.Quantity(70, "degC"))
+    return heat_balance("NJ208-E", **{**arguments, **overrides})
+
+
+def test_a_given_f2_holds_m2_at_every_speed_and_temperature():
+    r = _nj208(f2=0.005)
+    n_per, T_op = nj208_roots(lambda nu_n: 0.005 * 2000 * 60.0)  # M2 = f2*Fa*dM = 600 N*mm
+    assert r.status == ["ok"]
+    assert r.n_per.to("1/min").magnitude == pytest.approx(n_per, rel=1e-9)
+    assert r.T_op.to("degC").magnitude == pytest.approx(T_op, rel=1e-9)
+    # a dimensionless Quantity is converted: 0.5 % is 0.005
+    assert _nj208(f2=0.5 * u.percent).n_per.magnitude == pytest.approx(n_per, rel=1e-9)
+
+
+def test_f2_off_a_chart_follows_each_root_as_calc_does(tmp_path):
+    chart = nj208_chart(tmp_path)
+    n_per, T_op = nj208_roots()  # M2 with f2 off the chart at each trial speed and temperature
+    assert (round(n_per), round(T_op, 2)) == (1471, 52.59)
+    for given in (str(chart), F2Chart.from_csv(chart)):
+        r = _nj208(f2_chart=given)
+        assert r.status == ["ok"]
+        assert r.n_per.to("1/min").magnitude == pytest.approx(n_per, rel=1e-9)
+        assert r.T_op.to("degC").magnitude == pytest.approx(T_op, rel=1e-9)
+
+
+def test_without_f2_the_axially_loaded_point_says_what_to_give():
+    r = _nj208()
+    assert r.status == ["error"] and math.isnan(r.n_per.magnitude) and math.isnan(r.T_op.magnitude)
+    assert r.messages == [
+        "f2: missing; cylindrical roller bearing with cage series 2 carries Fa, so M2 = f2*Fa*dM needs f2: give f2, "
+        "or a digitised f2 chart (f2_chart; --f2-chart on the command line); read it at Fa/A = 24.59, "
+        "nu*n*dM = 1.198e+06 mm^3/(s*min) (the Schaeffler catalogue, p. 70, figs. 3 and 4)"]
+
+
+@pytest.mark.parametrize("overrides, error, message", [
+    (dict(f2="low"), HeatBalanceError, "f2: 'low' is not a number"),
+    (dict(f2=[0.005, "x"]), HeatBalanceError, "f2: 'x' is not a number (at index 1)"),
+    (dict(f2=2 * u.mm), UnitError, "f2: 2 millimeter cannot be converted to dimensionless (dimension [length], "
+                                   "expected dimensionless)"),
+    (dict(f2_chart="/no/such/chart.csv"), F2ChartError,
+     "/no/such/chart.csv: cannot read the f2 chart (No such file or directory)"),
+    (dict(iso_vg="VG68", nu40=None, nu100=None), HeatBalanceError, "iso_vg: 'VG68' is not a number"),
+    (dict(iso_vg=50 * u.percent, nu40=None, nu100=None), HeatBalanceError,
+     "iso_vg: 0.5 is outside the valid range 1 to 10000"),
+])
+def test_bad_dimensionless_arguments_are_named(overrides, error, message):
+    with pytest.raises(error) as exc:
+        _nj208(**overrides)
+    assert str(exc.value) == message
+
+
+def test_a_negative_f2_is_the_point_s_error():
+    r = _nj208(f2=np.array([0.005, -0.1]))
+    assert r.status == ["ok", "error"] and r.messages[1] == "f2: -0.1 must be >= 0"

@@ -92,7 +92,8 @@ CASES = {
         "cylindrical roller bearings need Fr > 0 (the Schaeffler catalogue, p. 69)"),
     "NJ without f2": (dict(designation="NJ206-E", Fa=500), "error",
         "f2: missing; cylindrical roller bearing with cage series 2 carries Fa, so M2 = f2*Fa*dM needs f2: give f2, "
-        "or a digitised chart (--f2-chart); read it at Fa/A = 15.61, nu*n*dM = 1.386e+06 mm^3/(s*min) "
+        "or a digitised f2 chart (f2_chart; --f2-chart on the command line); read it at Fa/A = 15.61, "
+        "nu*n*dM = 1.386e+06 mm^3/(s*min) "
         "(the Schaeffler catalogue, p. 70, figs. 3 and 4)"),
     "Fa/Fr above 0.4": (dict(designation="NJ206-E", Fr=1000, Fa=500, f2=0.01), "warning",
         "Fa/Fr = 0.5 is above 0.4: M2 is uncertain there (bearingheat's caution for cylindrical roller bearings; "

@@ -10,6 +10,7 @@ from scipy.optimize import brentq
 
 import bearingheat as bh
 from bearingheat.units import ureg
+from thermal_helpers import NJ208_ROW, nj208_chart, nj208_chart_m2, nj208_roots, walther_by_hand
 
 u = ureg()
 
@@ -131,47 +132,20 @@ def test_f2_read_off_the_chart_settles_with_the_operating_temperature():
         assert given[column].iat[0] == pytest.approx(out[column].iat[0], rel=1e-9), column
 
 
-def _walther(nu40, nu100):
-    """nu(theta) through nu40 and nu100 (ASTM D341: log log (nu + 0.7) linear in log T), by hand."""
-    y40, y100 = (math.log10(math.log10(v + 0.7)) for v in (nu40, nu100))
-    slope = (y40 - y100) / (math.log10(373.15) - math.log10(313.15))
-    return lambda theta: 10 ** 10 ** (y40 - slope * (math.log10(theta + 273.15) - math.log10(313.15))) - 0.7
-
-
 def test_m2_read_off_the_chart_follows_the_speed_and_temperature_of_each_root(tmp_path):
     """n_per and T_op of an axially loaded NJ208-E whose f2 comes from a chart are the same whatever viscosity the
     friction results are reported at: M2 = f2(nu*n*dM)*Fa*dM is taken at the speed and viscosity of each root
     (before, M2 of the operating point was held fixed: n_per 1361 or 1549 1/min, T_op 56.95 or 52.59 degC)."""
-    chart = tmp_path / "f2.csv"
-    chart.write_text("curve,Fa_over_A,nu_n_dM,f2,source\n-,1,mm^3/(s*min),1,-\nA,1,1000,0.02,test\n"
-                     "A,1,100000000,0.001,test\nB,100,1000,0.04,test\nB,100,100000000,0.002,test\n")
-    row = {"designation": "NJ208-E", "d [mm]": 40, "D [mm]": 80, "B [mm]": 18, "C0 [N]": 53000, "n [1/min]": 1000,
-           "Fr [N]": 6000, "Fa [N]": 2000, "lubrication": "oil_bath", "nu40 [mm^2/s]": 68, "nu100 [mm^2/s]": 8.6,
-           "T_amb [degC]": 20, "T_bearing [degC]": 70}
-    both = bh.calc(pd.DataFrame([{**row, "viscosity_at": "bearing"}, {**row, "viscosity_at": ""}]),
-                   f2_chart=str(chart))
-    # by hand: dM = 60 mm; NJ2..-E in an oil bath f0 = 2, f1 = 0.0003 (M1 = f1*Fr*dM), kB = 15 (the Schaeffler
-    # catalogue, pp. 66-70); A = kB*1e-3*dM^2.1; f2 by log-log interpolation of the two curves
-    nu, dM, Fa = _walther(68, 8.6), 60.0, 2000.0
-    A = 15e-3 * dM ** 2.1
-    w = math.log(Fa / A) / math.log(100.0)
-
-    def f2(x):
-        return 0.02 * (x / 1e3) ** (math.log(0.05) / math.log(1e5)) * 2 ** w
-
-    def friction_power(n, v):
-        M0 = 2.0 * (v * n) ** (2 / 3) * dM ** 3 * 1e-7
-        return math.pi * n / 30e3 * (M0 + 0.0003 * 6000 * dM + f2(v * n * dM) * Fa * dM)
-
-    k_q_A_r = 0.016 / 50 * math.pi * 18 * (80 + 40)
-    n_per = brentq(lambda n: friction_power(n, nu(70)) - k_q_A_r * 50, 1, 1e5, xtol=1e-12)
-    T_op = brentq(lambda T: friction_power(1000, nu(T)) - k_q_A_r * (T - 20), 20, 150, xtol=1e-12)
+    both = bh.calc(pd.DataFrame([{**NJ208_ROW, "viscosity_at": "bearing"}, {**NJ208_ROW, "viscosity_at": ""}]),
+                   f2_chart=str(nj208_chart(tmp_path)))
+    n_per, T_op = nj208_roots()
     assert (round(n_per), round(T_op, 2)) == (1471, 52.59)
     assert both["status"].tolist() == ["ok", "ok"] and both["nu_at"].tolist() == ["T_bearing", "T_op"]
     np.testing.assert_allclose(both["n_per [1/min]"], [n_per, n_per], rtol=1e-9)
     np.testing.assert_allclose(both["T_op [degC]"], [T_op, T_op], rtol=1e-9)
     # the friction results themselves are those of each row's viscosity
-    np.testing.assert_allclose(both["M2 [N*mm]"], [f2(nu(70) * 1000 * dM) * Fa * dM, f2(nu(T_op) * 1000 * dM) * Fa * dM],
+    nu = walther_by_hand(68, 8.6)
+    np.testing.assert_allclose(both["M2 [N*mm]"], [nj208_chart_m2(nu(70) * 1000), nj208_chart_m2(nu(T_op) * 1000)],
                                rtol=1e-9)
 
 
@@ -215,7 +189,7 @@ def test_an_equilibrium_off_the_f2_chart_is_not_computed():
     not extrapolated); before, M2 of another temperature stood in and gave 22.32 degC. n_per, at 70 degC, would
     lie above 1088.8 1/min, where the chart ends too."""
     chart = "docs/f2_chart_example.csv"
-    nu = _walther(68, 8.6)
+    nu = walther_by_hand(68, 8.6)
     T_chart = brentq(lambda T: nu(T) * 300 * 46 - 1e6, 20, 150)  # dM = 46 mm
     assert round(T_chart, 2) == 38.74 and round(1e6 / (nu(70) * 46), 1) == 1088.8
     Fa_over_A = 50 / (15e-3 * 46 ** 2.1)  # kB = 15 (the Schaeffler catalogue, p. 70)
@@ -244,7 +218,7 @@ def test_an_ambient_at_or_above_the_search_limit_is_said_so_not_called_a_runaway
     out = bh.calc(rows)
     assert out["T_op [degC]"].iat[0] > 20.0 and np.isnan(out["T_op [degC]"].iat[1])
     assert out["status"].iat[1] == "warning"
-    nu_199 = _walther(68, 8.6)(199)  # (thinner than ASTM D341 reaches: said too)
+    nu_199 = walther_by_hand(68, 8.6)(199)  # (thinner than ASTM D341 reaches: said too)
     assert out["message"].iat[1].split("T_op: ")[-1] == (
         "the ambient temperature T_amb = 170 degC is not below 150 degC, the upper end of the search for the operating "
         f"temperature; T_op is not computed; T_bearing [degC]: nu = {nu_199:.4g} mm^2/s at 199 degC is below 2 mm^2/s, "
@@ -254,7 +228,7 @@ def test_an_ambient_at_or_above_the_search_limit_is_said_so_not_called_a_runaway
 def test_the_f2_chart_ends_that_bound_the_operating_temperature_are_named():
     """The search for T_op of a row whose f2 comes from the chart covers only the temperatures at which
     nu(T)*n*dM lies on it; where it ends there, the message says at which temperature and nu*n*dM."""
-    nu = _walther(68, 8.6)
+    nu = walther_by_hand(68, 8.6)
     rows = pd.concat([_axially_loaded(**{"n [rpm]": 4, "Q_E [W]": 200, "viscosity_at": "operating"}),
                       _axially_loaded(**{"n [rpm]": 8000, "viscosity_at": "bearing", "T_bearing [degC]": 200})],
                      ignore_index=True)
@@ -280,7 +254,7 @@ def test_a_row_whose_chart_is_off_at_the_provisional_viscosity_is_solved():
     """calc evaluates the friction of a row whose nu is taken at T_op at a provisional nu (70 degC) first. At
     2000 1/min this NJ206-E's nu*n*dM there, 1.84e6 mm^3/(s*min), is off the made-up chart, but with 100 W flowing
     in it settles at 100.5 degC, where it is on it: the row is solved, not refused for a viscosity it never has."""
-    nu = _walther(68, 8.6)
+    nu = walther_by_hand(68, 8.6)
     assert nu(70) * 2000 * 46 > 1e6
     out = bh.calc(_axially_loaded(**{"n [rpm]": 2000, "Q_E [W]": 100}).drop(columns=["T_bearing [degC]"]),
                   f2_chart="docs/f2_chart_example.csv")
@@ -327,7 +301,7 @@ def test_a_row_refused_for_its_own_chart_reading_keeps_that_refusal():
 def test_a_viscosity_below_astm_d341_at_T_bearing_is_told():
     """nu(T_bearing) is the viscosity of n_per, and of the friction results with viscosity_at 'bearing': below
     2 mm^2/s it is an extrapolation of ASTM D341 and is said so, as nu_op is (it was used silently)."""
-    nu = _walther(10, 2.6)
+    nu = walther_by_hand(10, 2.6)
     assert nu(150) < 2 < nu(100)
     oil = {"nu40 [mm^2/s]": 10, "nu100 [mm^2/s]": 2.6, "T_bearing [degC]": 150}
     out = bh.calc(pd.concat([table(**oil, viscosity_at=mode) for mode in ("bearing", "auto")], ignore_index=True))
@@ -350,7 +324,7 @@ def test_no_equilibrium_in_the_search_says_what_is_known_beyond_it():
     """Below the search (-30 degC here) the catalogue model with oil data has an equilibrium: as the oil cools,
     nu and the friction heat grow without bound while the heat carried away falls. With 1500 W of cooling the
     6205 settles at -34.08 degC by hand. With a given nu nothing is claimed beyond the search."""
-    nu = _walther(68, 8.6)
+    nu = walther_by_hand(68, 8.6)
     M1 = 0.0009 * (2 / 7.8) ** 0.5 * 2000 * 38.5  # f1 of the 62 series (the Schaeffler catalogue, p. 67)
 
     def balance(T, viscosity):

@@ -6,7 +6,7 @@ import re
 import pytest
 
 from bearingheat.cli import COMMANDS, build_parser
-from bearingheat.cli.options import FORCE_DIR_HELP, FORCE_FILE_HELP, JSON_HELP, QUIET_HELP
+from bearingheat.cli.options import F2_CHART_HELP, FORCE_DIR_HELP, FORCE_FILE_HELP, JSON_HELP, QUIET_HELP
 
 #: commands that print results (--json), and those that write files (-o/--output or --out-dir)
 PRINTS = {"calc", "coastdown", "bushing", "contact", "lab", "audit", "diagnose", "lookup"}
@@ -79,6 +79,13 @@ def test_the_help_of_the_options_that_were_spelt_apart(command, option, metavar,
 def test_plot_output_is_required_and_named_alike():
     _, options = _help("plot")
     assert options["-o"].option_strings == ["-o", "--output"] and options["-o"].required
+
+
+@pytest.mark.parametrize("command", ["calc", "plot"])
+def test_the_commands_that_compute_m2_take_one_f2_chart_option(command):
+    _, options = _help(command)
+    assert (options["--f2-chart"].metavar, options["--f2-chart"].help) == ("CSV", F2_CHART_HELP)
+    assert F2_CHART_HELP == "digitised f2 chart (docs/friction.md gives the format)"
 
 
 def test_the_shared_help_texts():

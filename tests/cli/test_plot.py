@@ -4,7 +4,8 @@ from __future__ import annotations
 import subprocess
 import sys
 
-from thermal_helpers import plot_table
+import pandas as pd
+from thermal_helpers import NJ208_ROW, nj208_chart, plot_table
 
 from bearingheat.cli import main
 
@@ -40,3 +41,30 @@ def test_plot_subprocess(tmp_path):
                           capture_output=True, text=True, timeout=120)
     assert done.returncode == 0, done.stderr
     assert png.is_file()
+
+
+def test_plot_reads_f2_off_a_chart(tmp_path, capsys):
+    """An axially loaded NJ208-E: refused without f2 (exit 1, saying what to give), drawn with --f2-chart; a chart
+    that cannot be read is unusable input (exit 2)."""
+    path = tmp_path / "nj.csv"
+    pd.DataFrame([NJ208_ROW]).to_csv(path, index=False)
+    png = tmp_path / "nj.png"
+    assert main(["plot", str(path), "-o", str(png)]) == 1
+    assert capsys.readouterr().err.startswith("bearingheat plot: row in error: f2: missing; ")
+    assert main(["plot", str(path), "-o", str(png), "--f2-chart", str(nj208_chart(tmp_path))]) == 0
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert capsys.readouterr().out.strip() == f"wrote {png}"
+    missing = tmp_path / "none.csv"
+    assert main(["plot", str(path), "-o", str(png), "--force", "--f2-chart", str(missing)]) == 2
+    assert capsys.readouterr().err.strip() == (f"bearingheat plot: error: {missing}: cannot read the f2 chart "
+                                               "(No such file or directory)")
+
+
+def test_plot_never_writes_over_its_f2_chart(tmp_path, capsys):
+    path = plot_table(tmp_path)
+    chart = nj208_chart(tmp_path)
+    assert main(["plot", str(path), "-o", str(chart.with_suffix(".png")), "--f2-chart", str(chart)]) == 0
+    capsys.readouterr()
+    before = chart.read_bytes()
+    assert main(["plot", str(path), "-o", str(chart), "--force", "--f2-chart", str(chart)]) == 2
+    assert chart.read_bytes() == before

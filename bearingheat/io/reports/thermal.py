@@ -21,6 +21,7 @@ from bearingheat.calc.conversion import to_catalogue_units
 from bearingheat.calc.table import require_columns
 from bearingheat.calc.heat_flow_curves import heat_flow_curves
 from bearingheat.calc.thermal import fill_viscosity, heat_balance_rows, settle_viscosity
+from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.errors import InputError
 from bearingheat.io.reports import FIGURE_DPI, matplotlib_figure
 
@@ -40,8 +41,11 @@ def figure_format(path) -> str:
     return suffix
 
 
-def heat_balance_curves(table: pd.DataFrame, points: int = 200) -> dict:
+def heat_balance_curves(table: pd.DataFrame, points: int = 200, f2_chart: F2Chart | None = None) -> dict:
     """Curves of the heat balance of the first row of ``table`` (calc columns with units) in catalogue units.
+
+    ``f2_chart``: a digitised f2 chart for M2 of an axially loaded cylindrical roller bearing without ``f2``
+    (read at each speed and temperature of the curves, as calc's heat balance reads it).
 
     Returns a dict with ``status`` ('ok' | 'warning' | 'error'), ``message``
     and ``label`` (the row's id or designation), and where the row can be
@@ -52,14 +56,17 @@ def heat_balance_curves(table: pd.DataFrame, points: int = 200) -> dict:
     converted = to_catalogue_units(table.iloc[:1].reset_index(drop=True))
     frame, problems = fill_viscosity(converted.frame)
     require_columns(frame)
-    frame, results, settled = settle_viscosity(frame, compute_supports(frame, labels=converted.labels),
-                                               labels=converted.labels)
+    frame, results, settled = settle_viscosity(frame, compute_supports(frame, labels=converted.labels,
+                                                                       f2_chart=f2_chart),
+                                               labels=converted.labels, f2_chart=f2_chart)
     problems += settled
-    columns, more = heat_balance_rows(frame, results)
+    columns, more = heat_balance_rows(frame, results, f2_chart=f2_chart)
     messages = [m for m in [results["message"].iloc[0]] if m] + [m for _, _, m in problems + more]
     status = results["status"].iloc[0]
     if any(level == "error" for _, level, _ in problems + more):
         status = "error"
+    elif status == "ok" and problems + more:  # the heat balance's warnings (no n_per beyond the chart, say)
+        status = "warning"
     out = {"status": status, "message": "; ".join(messages), "label": _label(table)}
     if status == "error":
         return out
@@ -67,7 +74,7 @@ def heat_balance_curves(table: pd.DataFrame, points: int = 200) -> dict:
         out.update(status="error", message="; ".join(messages + ["T_amb [degC]: missing; the plot needs the "
                                                                   "ambient temperature"]))
         return out
-    curves = heat_flow_curves(frame, results, columns, points=points)
+    curves = heat_flow_curves(frame, results, columns, points=points, f2_chart=f2_chart)
     if curves is None:
         out.update(status="error", message=out["message"] or "the heat flow area A_r cannot be computed")
         return out
@@ -100,6 +107,10 @@ def draw_heat_balance(curves: dict, path, format: str | None = None) -> None:  #
         left.plot([curves["n_cross"]], [curves["carried_vs_speed"][0]], "o", color="black")
         left.annotate(f"{curves['n_cross']:.0f} 1/min", (curves["n_cross"], curves["carried_vs_speed"][0]),
                       textcoords="offset points", xytext=(6, -14))
+    top = curves["speeds"][-1]
+    ends = [speed for speed in curves["chart_speeds"] if 0 < speed <= top]
+    for k, speed in enumerate(ends):  # N_R is not drawn beyond the digitised f2 chart (never extrapolated)
+        left.axvline(speed, color="grey", lw=1.0, ls="-.", label="end of the f2 chart" if k == 0 else None)
     if not math.isnan(curves["n"]):
         margin = (f"; n_per/n = {curves['n_cross'] / curves['n']:.2f}"
                   if not math.isnan(curves["n_cross"]) and curves["n"] > 0 else "")
@@ -107,7 +118,7 @@ def draw_heat_balance(curves: dict, path, format: str | None = None) -> None:  #
     left.set_xlabel("speed n [1/min]")
     left.set_ylabel("heat flow [W]")
     left.set_title(f"at {curves['theta']:.1f} °C", fontsize=10)
-    left.legend(fontsize=8, loc="upper left")
+    left.legend(fontsize=8, loc="best" if ends else "upper left")  # (more lines: where it hides the fewest points)
     right.plot(curves["temperatures"], curves["friction_vs_temperature"], label="N_R(ν(T)) + Q_E")
     right.plot(curves["temperatures"], curves["carried_vs_temperature"], "--", label="Q_S(T) + Q_L(T)")
     if not math.isnan(curves["T_op"]):
