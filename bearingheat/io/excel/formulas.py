@@ -67,6 +67,7 @@ from bearingheat.catalogue.friction import LUBRICATION_F0_COLUMN, ResolvedBearin
 from bearingheat.errors import DesignationError, ExcelError
 from bearingheat.kernels import friction
 from bearingheat.units import convert_column
+from bearingheat.io.tables import set_aside
 
 __all__ = ["live_formulas", "LiveSheet", "unit_factor", "excel_number", "HELPER_COLUMNS"]
 
@@ -135,7 +136,8 @@ def _prepared(table: pd.DataFrame, info) -> tuple[pd.DataFrame, SupportArrays, d
     dimensions and ratings filled from the bearing table; its support arrays (the catalogue constants of every
     row); and per row the bearing table's values, which a cell cleared later reads as. A viscosity calc took
     from the oil's curve is not filled here: calc's result says it (``nu_used``)."""
-    converted = to_catalogue_units(table, units=info.units, cell=info.cell)
+    usable, _ = set_aside(table)  # columns whose header is no 'name [unit]' are passed through by calc: not inputs
+    converted = to_catalogue_units(usable, units=info.units, cell=info.cell)
     frame, _, _ = fill_from_catalogue(converted.frame, converted.labels)
     frame = frame.reset_index(drop=True)
     catalogue, _ = catalogue_values(text_column(frame, "designation"))

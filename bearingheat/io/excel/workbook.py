@@ -48,7 +48,7 @@ from bearingheat.io.excel.template import is_placeholder
 from bearingheat.io.excel.sheets import ResultsSheets, results_sheets
 from bearingheat.io.excel.writer import atomic_save, fill_sheet, install_sheet
 from bearingheat.io.files import WorkbookLock, safe_output, workbook_lock
-from bearingheat.io.tables import write_csv
+from bearingheat.io.tables import calc_passing_through, write_csv
 
 if TYPE_CHECKING:
     from bearingheat.analysis.effects import FittedEffect
@@ -273,8 +273,10 @@ def _run(source: Path, target: Path | None, edit: tuple[Package, WorkbookLock] |
     if not len(table):
         raise ExcelError(f"sheet {info.sheet!r}: no supports under the header (row {info.header_row})")
     try:
-        result = calc(table, model=model, n_per_method=n_per_method, units=info.units, cell=info.cell,
-                      f2_chart=f2_chart, vm_chart=vm_chart, effects=effects, viscosity_at=viscosity_at)
+        # a column whose header is no 'name [unit]' ('remark [see note]]') is passed through, as from a CSV
+        result = calc_passing_through(table, None, lambda usable: calc(
+            usable, model=model, n_per_method=n_per_method, units=info.units, cell=info.cell, f2_chart=f2_chart,
+            vm_chart=vm_chart, effects=effects, viscosity_at=viscosity_at))
     except (F2ChartError, VMChartError) as exc:
         raise ExcelError(str(exc)) from exc
     except InputError as exc:

@@ -152,3 +152,30 @@ def test_a_column_named_twice_cites_its_header_cell(tmp_path):
     with pytest.raises(ExcelError) as exc:
         calc_workbook(make_workbook(tmp_path / "twice.xlsx", header=header, units=list(UNITS) + [None], rows=rows))
     assert str(exc.value) == "Supports!N1: column 'Fr [N]': Fr appears twice"
+
+
+@pytest.mark.parametrize("mode", ["values", "formulas", "in_place", "in_place_formulas"])
+def test_a_header_calc_cannot_read_passes_through_a_workbook(tmp_path, mode):
+    """A column whose brackets are no unit ('remark [see note]]') passed through a CSV, Parquet or Arrow table but
+    stopped a workbook ("Supports!...: column 'remark [see note]]': cannot read the header"); it is now left as
+    it is on the input sheet, and the results are those of the sheet without it."""
+    rows = [list(row) + [f"r{i}"] for i, row in enumerate(gearbox_rows())]
+    path = make_workbook(tmp_path / "in.xlsx", header=[*HEADER, "remark [see note]]"], units=[*UNITS, "-"], rows=rows)
+    plain = make_workbook(tmp_path / "plain.xlsx")
+    formulas = mode.endswith("formulas")
+    if mode.startswith("in_place"):
+        run = calc_workbook(path, in_place=True, formulas=formulas)
+        written = path
+    else:
+        written = tmp_path / "out.xlsx"
+        run = calc_workbook(path, written, formulas=formulas)
+    expected = calc_workbook(plain).result
+    for column in RESULTS:
+        np.testing.assert_allclose(run.result[column].to_numpy(dtype=float), expected[column].to_numpy(dtype=float),
+                                   rtol=1e-12, equal_nan=True)
+    assert run.result["status"].tolist() == expected["status"].tolist()
+    assert run.result["remark [see note]]"].tolist() == [f"r{i}" for i in range(len(rows))]
+    sheet = openpyxl.load_workbook(written)["Supports"]
+    column = len(HEADER) + 1
+    assert [sheet.cell(r, column).value for r in range(1, len(rows) + 3)] == \
+        ["remark [see note]]", "-", *[f"r{i}" for i in range(len(rows))]]
