@@ -10,13 +10,15 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 
 import numpy as np
+import numpy.typing as npt
 import pandas as pd
 
-from bearingheat.calc.contract import range_problems
+from bearingheat.calc.contract import column, range_problems
 from bearingheat.errors import BearingheatError
-from bearingheat.units import Magnitude, magnitude
+from bearingheat.units import Magnitude, QuantityLike, magnitude
 
-__all__ = ["point_warnings", "point_status", "where", "shared_index", "broadcast_shape", "dimensionless_number"]
+__all__ = ["point_warnings", "point_status", "where", "shared_index", "broadcast_shape", "dimensionless_number",
+           "converted_model_inputs"]
 
 
 def where(i: int, shape: tuple[int, ...]) -> str:
@@ -49,6 +51,43 @@ def dimensionless_number(value: object, name: str, error: type[BearingheatError]
     if isinstance(value, pd.Series):
         return pd.Series(numbers, index=value.index)
     return numbers if numbers.ndim else float(numbers)
+
+
+def converted_model_inputs(values: Mapping[str, QuantityLike | npt.ArrayLike | None], accepted: tuple[str, ...],
+                           arguments: Mapping[str, str], function: str, error: type[BearingheatError]
+                           ) -> dict[str, Magnitude | npt.ArrayLike | None]:
+    """The ``model_inputs`` of ``function`` in catalogue units: a Quantity converted to the unit of its contract
+    column, a dimensionless number checked (:func:`dimensionless_number`), text and None kept as they are.
+
+    ``accepted`` are the columns the model reads, ``arguments`` the columns that ``function`` takes as arguments
+    (column -> argument name). A name the model reads that is an argument is refused, naming the argument (in
+    ``model_inputs`` it would give one input two values); so is a name the model does not read, naming the ones
+    it reads. ``error`` is the error of ``function``.
+
+    >>> from bearingheat.errors import HeatBalanceError
+    >>> converted_model_inputs({"mu_sl": 0.05, "oil": "mineral"}, ("mu_sl", "oil", "T"), {"T": "T"}, "heat_balance",
+    ...                        HeatBalanceError)
+    {'mu_sl': 0.05, 'oil': 'mineral'}
+    >>> converted_model_inputs({"T": 16.25}, ("mu_sl", "oil", "T"), {"T": "T"}, "heat_balance", HeatBalanceError)
+    Traceback (most recent call last):
+    ...
+    bearingheat.errors.HeatBalanceError: model_inputs: 'T' is an argument of heat_balance; give it as T=
+    """
+    out: dict[str, Magnitude | npt.ArrayLike | None] = {}
+    for name, value in values.items():
+        if name in arguments and name in accepted:
+            raise error(f"model_inputs: {name!r} is an argument of {function}; give it as {arguments[name]}=")
+        if name not in accepted:
+            own = ", ".join(n for n in accepted if n not in arguments) or f"none besides the arguments of {function}"
+            raise error(f"model_inputs: {name!r} is not an input of this model; it reads {own}")
+        unit = column(name).unit
+        if unit == "" or value is None:
+            out[name] = value  # text: the model cleans it
+        elif unit == "1":
+            out[name] = dimensionless_number(value, name, error)
+        else:
+            out[name] = magnitude(value, unit, name)
+    return out
 
 
 def _is_number(value: object) -> bool:

@@ -22,13 +22,13 @@ import numpy as np
 import numpy.typing as npt
 import pandas as pd
 
-from bearingheat.api._checks import (broadcast_shape, dimensionless_number, point_status, point_warnings, shared_index,
-                                     where)
+from bearingheat.api._checks import (broadcast_shape, converted_model_inputs, dimensionless_number, point_status,
+                                     point_warnings, shared_index, where)
 from bearingheat.api.results import Result
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.contract import column
 from bearingheat.calc.fill import fill_arrays
-from bearingheat.calc.models import DEFAULT_MODEL, EXTRA_INPUTS, MODEL_REPORT_UNITS, get_model
+from bearingheat.calc.models import DEFAULT_MODEL, MODEL_REPORT_UNITS, get_model
 from bearingheat.calc.supports import build_support_arrays
 from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.errors import FrictionInputError
@@ -126,10 +126,11 @@ class FrictionResult(Result):
 
 
 _LENGTHS = ("d", "D", "B")
-#: the text columns a model reads that are arguments of friction_torque: column -> argument
-_KEY_ARGUMENTS = {"designation": "designation", "type": "bearing_type", "series": "series",
-                  "lubrication": "lubrication", "arrangement": "arrangement"}
 _FACTORS = ("Y", "e", "X0", "Y0", "f0", "f1", "f2")
+#: the columns a model reads that are arguments of friction_torque: column -> argument
+_ARGUMENTS = {"designation": "designation", "type": "bearing_type", "series": "series", "lubrication": "lubrication",
+              "arrangement": "arrangement",
+              **{name: name for name in ("n", "nu", "Fr", "Fa", "C0", "alpha", *_LENGTHS, *_FACTORS)}}
 
 
 def _dimensionless(value: QuantityLike | npt.ArrayLike | None, name: str) -> Magnitude:
@@ -251,7 +252,10 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
         The inputs a model reads beyond the catalogue model's, by contract
         column name: for the SKF model ``oil_level`` and ``d_s`` [length],
         ``VM``, ``mu_sl``, ``mu_bl``, ``seals`` (numbers), ``skf_edition``,
-        ``oil``, ``seal`` (text), ``Dw``, ``T`` [length].
+        ``oil``, ``seal`` (text), ``Dw``, ``T`` [length]. Scalars or arrays,
+        broadcast with the other arguments. A name the model does not read,
+        or one that is an argument of friction_torque (``Fr``, ``arrangement``
+        ...), is refused.
 
     Returns
     -------
@@ -269,7 +273,8 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
         range, a required one missing (D; C0 or f2 where the model needs
         them), an unknown designation, lubrication or arrangement, an axial
         load on a bearing that takes none, a Fa/A or ν·n·dM outside the
-        ``f2_chart``, or a result that is not a finite number.
+        ``f2_chart``, a ``model_inputs`` name the model does not read or that
+        is an argument, or a result that is not a finite number.
     bearingheat.errors.ModelError
         For an unknown model name.
     bearingheat.errors.UnitError
@@ -303,7 +308,8 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
     for name, factor in zip(_FACTORS, (Y, e, X0, Y0, f0, f1, f2)):
         inputs[name] = _dimensionless(factor, name)
 
-    extra = _model_inputs(model_inputs or {}, friction_model.inputs)
+    extra = converted_model_inputs(model_inputs or {}, friction_model.inputs, _ARGUMENTS, "friction_torque",
+                                   FrictionInputError)
     # the model's own inputs are paired with the others by their index and broadcast with them
     index = shared_index({**inputs, **extra}, FrictionInputError)
     arrays = {k: (v.to_numpy(dtype=float) if isinstance(v, pd.Series) else np.asarray(v, dtype=float))
@@ -383,24 +389,3 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
                        for name, unit in MODEL_REPORT_UNITS.items()
                        if name in results and name in friction_model.outputs},
     )
-
-
-def _model_inputs(values: Mapping[str, QuantityLike | npt.ArrayLike | None], accepted: tuple[str, ...]
-                  ) -> dict[str, Magnitude | npt.ArrayLike | None]:
-    """Model-specific arguments in catalogue units: Quantities converted by their contract unit, text kept."""
-    out: dict[str, Magnitude | npt.ArrayLike | None] = {}
-    for name, value in values.items():
-        if name in _KEY_ARGUMENTS:  # in model_inputs it would win over the argument of that name
-            raise FrictionInputError(f"model_inputs: {name!r} is an argument of friction_torque; give it as "
-                                     f"{_KEY_ARGUMENTS[name]}=")
-        if name not in accepted:
-            own = (n for n in accepted if n in EXTRA_INPUTS and n not in _KEY_ARGUMENTS)
-            raise FrictionInputError(f"model_inputs: {name!r} is not an input of this model; it reads {', '.join(own)}")
-        unit = column(name).unit
-        if unit == "" or value is None:
-            out[name] = value
-        elif unit == "1":
-            out[name] = _dimensionless(value, name)
-        else:
-            out[name] = magnitude(value, unit, name)
-    return out

@@ -8,20 +8,21 @@ are :mod:`bearingheat.calc.thermal`, the formulas
 """
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 import numpy as np
 import numpy.typing as npt
 import pandas as pd
 
-from bearingheat.api._checks import (broadcast_shape, dimensionless_number, point_status, point_warnings,
-                                     shared_index, where)
+from bearingheat.api._checks import (broadcast_shape, converted_model_inputs, dimensionless_number, point_status,
+                                     point_warnings, shared_index, where)
 from bearingheat.api.results import Result
+from bearingheat.calc.contract import ARRANGEMENTS, column
 from bearingheat.calc.fill import fill_from_catalogue
 from bearingheat.calc.heat_flows import walther_columns
 from bearingheat.calc.messages import Labels
-from bearingheat.calc.models import compute_supports
+from bearingheat.calc.models import DEFAULT_MODEL, compute_supports, get_model
 from bearingheat.calc.thermal import (OPERATING_TEMPERATURE_LIMIT, SPEED_FACTOR_METHODS, VISCOSITY_AT,
                                       fill_viscosity, heat_balance_rows, settle_viscosity, thermal_reference_speed_rows)
 from bearingheat.catalogue.f2chart import F2Chart
@@ -45,9 +46,11 @@ class HeatBalanceResult(Result):
     ----------
     n_thr : pint.Quantity or pandas.Series [1/min]
         Thermal reference speed n_θr (ISO 15312; Schaeffler catalogue HR 1
-        "Rolling bearings", edition June 2006); NaN where the method does not
-        apply or the heat flow area lacks a width (B, or T of tapered roller
-        bearings; thrust bearings need d and D only).
+        "Rolling bearings", edition June 2006), by the catalogue model's
+        tables whatever the friction model; NaN where the method does not
+        apply (a pair, a contact seal, a thrust ball bearing) or the heat
+        flow area lacks a width (B, or T of tapered roller bearings; thrust
+        bearings need d and D only).
     n_per : pint.Quantity or pandas.Series [1/min]
         Thermally permissible speed n_θr·f_n at ``T_bearing`` (needs
         T_bearing and T_amb), capped at n_G where that is given.
@@ -63,7 +66,9 @@ class HeatBalanceResult(Result):
         Heat carried away by circulating oil, at the same temperature
         (0 without V_oil).
     NR : pint.Quantity or pandas.Series [W]
-        Friction power at the operating point, (π·n/30)·1e-3·M_R.
+        Friction power at the operating point, (π·n/30)·1e-3·M_R, with M_R
+        of the friction model of the balance (``model``; a pair's for
+        ``arrangement`` 'paired').
     status : list of str
         Per operating point: 'ok', 'warning' or 'error'.
     messages : list of str
@@ -123,6 +128,9 @@ _API_COLUMNS = {
     "nu40": ("nu40", "mm^2/s"), "nu100": ("nu100", "mm^2/s"), "iso_vg": ("iso_vg", "1"),
     "VI": ("VI", "1"), "n_G": ("n_G", "1/min"), "n_thr_catalogue": ("n_thr_catalogue", "1/min"), "f2": ("f2", "1"),
 }
+#: the columns a model may read that are arguments of heat_balance: column -> argument
+_ARGUMENTS = {"designation": "designation", "type": "bearing_type", "series": "series", "lubrication": "lubrication",
+              "arrangement": "arrangement", **{name: name for name in _API_COLUMNS}}
 
 
 def heat_balance(designation: str | None = None, *, d: QuantityLike | None = None, D: QuantityLike | None = None,
@@ -136,16 +144,22 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
                  n_thr_catalogue: QuantityLike | None = None, viscosity_at: str = "auto", method: str = "exact",
                  t_limit: Quantity | None = None, bearing_type: str | None = None,
                  series: str | None = None, f2: QuantityLike | npt.ArrayLike | None = None,
-                 f2_chart: F2Chart | str | None = None) -> HeatBalanceResult:
+                 f2_chart: F2Chart | str | None = None, arrangement: str = "single", model: str = DEFAULT_MODEL,
+                 model_inputs: Mapping[str, QuantityLike | npt.ArrayLike | None] | None = None
+                 ) -> HeatBalanceResult:
     """Thermal reference speed, permissible speed and operating temperature of a bearing (Quantities).
 
     The heat balance NR + Q_E = Q_S + Q_L of the Schaeffler catalogue HR 1
     "Rolling bearings" (edition June 2006), after ISO 15312 (thermal
     reference speed) and the draft of DIN 732 (thermally permissible speed);
-    the friction NR is the model of :func:`friction_torque` (Schaeffler
-    rolling bearing catalogue, chapter «Трение и нагрев», Friction and
-    increases in temperature). Viscosity against temperature follows
-    ASTM D341 (Walther), ISO 3448 grades and ASTM D2270.
+    the friction NR is that of :func:`friction_torque` with the same
+    ``model``: by default the catalogue model (Schaeffler rolling bearing
+    catalogue, chapter «Трение и нагрев», Friction and increases in
+    temperature), or the SKF four-component model, which the balance
+    evaluates at each speed and temperature it tries. n_thr is defined by
+    the catalogue model's tables whatever the model (ISO 15312). Viscosity
+    against temperature follows ASTM D341 (Walther), ISO 3448 grades and
+    ASTM D2270.
 
     Every dimensional argument is a pint Quantity (arrays and pint-pandas
     Series broadcast: one bearing, many operating points). Temperatures are
@@ -253,6 +267,30 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
         as in :func:`~bearingheat.calc.table.calc`. The chart is never
         extrapolated: a root it does not reach is not computed, and the
         message names the chart's end.
+    arrangement : str, optional
+        'single' (default) or 'paired': a pair in X or O arrangement is one
+        support, and NR is the pair's (the SKF model: each bearing at Fr/2;
+        an axial load on a pair is the point's error). The sources define
+        the heat balance of single bearings only, so a pair gets n_thr,
+        n_per and T_op NaN with a warning saying so.
+    model : str, optional
+        The friction model, a name of :data:`bearingheat.calc.models.MODELS`:
+        'schaeffler' (default; the catalogue model above) or 'skf' (the SKF
+        four-component model of the SKF General Catalogue 6000, chapter
+        Friction, and SKF Rolling bearings 10000/3, 2017).
+    model_inputs : dict, optional
+        The inputs a model reads beyond the arguments of heat_balance, by
+        contract column name: for the SKF model ``oil_level`` and ``d_s``
+        [length], ``VM``, ``mu_sl``, ``mu_bl``, ``seals`` (numbers),
+        ``skf_edition``, ``oil``, ``seal`` (text), ``Dw`` [length] (the
+        total width of tapered roller bearings is the argument ``T``); for
+        either model ``Y``, the axial load factor of tapered roller
+        bearings, and for the catalogue model ``e``, ``X0``, ``Y0``,
+        ``f0``, ``f1`` (numbers) and ``alpha`` [angle], as
+        :func:`friction_torque` takes them. Scalars or arrays, broadcast
+        with the other arguments. A name the model does not read, or one
+        that is an argument of heat_balance (``T``, ``designation`` ...),
+        is refused.
 
     Returns
     -------
@@ -263,11 +301,15 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
     Raises
     ------
     bearingheat.errors.HeatBalanceError
-        For an unknown ``method`` or ``viscosity_at``, no viscosity at all
-        (none of nu, nu40 with nu100, an ISO VG grade; or the reason the oil
-        data give none), arrays of shapes that do not pair point by point
-        (naming two of them), and a number that is NaN, infinite or outside
-        its valid range (naming the argument and, for arrays, the index).
+        For an unknown ``method``, ``viscosity_at`` or ``arrangement``, a
+        ``model_inputs`` name the model does not read or that is an
+        argument, no viscosity at all (none of nu, nu40 with nu100, an ISO
+        VG grade; or the reason the oil data give none), arrays of shapes
+        that do not pair point by point (naming two of them), and a number
+        that is NaN, infinite, outside its valid range or no number at all
+        (naming the argument and, for arrays, the index).
+    bearingheat.errors.ModelError
+        For an unknown model name.
     bearingheat.errors.F2ChartError
         For an ``f2_chart`` file that cannot be read or used.
     bearingheat.errors.UnitError
@@ -287,10 +329,16 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
     >>> round(r.T_op.to("degC").magnitude, 1), round(r.nu_op.to("mm^2/s").magnitude, 1)
     (40.1, 67.5)
     """
-    if method not in SPEED_FACTOR_METHODS:
-        raise HeatBalanceError(f"method: {method!r} is not one of {', '.join(SPEED_FACTOR_METHODS)}")
-    if viscosity_at not in VISCOSITY_AT:
-        raise HeatBalanceError(f"viscosity_at: {viscosity_at!r} is not one of {', '.join(VISCOSITY_AT)}")
+    for name, choice, choices in (("method", method, SPEED_FACTOR_METHODS),
+                                  ("viscosity_at", viscosity_at, VISCOSITY_AT),
+                                  ("arrangement", arrangement, ARRANGEMENTS)):
+        if choice not in choices:
+            raise HeatBalanceError(f"{name}: {choice!r} is not one of {', '.join(choices)}")
+    friction_model = get_model(model)
+    extra = converted_model_inputs(model_inputs or {}, friction_model.inputs, _ARGUMENTS, "heat_balance",
+                                   HeatBalanceError)
+    # the model's own inputs are frame columns by their contract names: numbers beside the arguments, text apart
+    texts = {k: v for k, v in extra.items() if v is not None and column(k).unit == ""}
     args = {"d": d, "D": D, "B": B, "T": T, "C0": C0, "n": n, "Fr": Fr, "Fa": Fa, "nu": nu,
             "T_amb": T_amb, "T_bearing": T_bearing, "k_q": k_q, "V_oil": V_oil, "dT_oil": dT_oil,
             "Q_E": Q_E, "nu40": nu40, "nu100": nu100, "iso_vg": iso_vg, "VI": VI,
@@ -299,12 +347,17 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
         f2_chart = F2Chart.from_csv(f2_chart)
     columns: dict[str, float | np.ndarray] = {}
     magnitudes = {name: _frame_column(value, _API_COLUMNS[name][1], name) for name, value in args.items()}
-    index = shared_index(magnitudes, HeatBalanceError)
+    numbers = {k: v for k, v in extra.items() if v is not None and k not in texts}
+    index = shared_index({**magnitudes, **numbers, **texts}, HeatBalanceError)
     for name, mag in magnitudes.items():
         if mag is None:
             continue
         columns[_API_COLUMNS[name][0]] = mag.to_numpy(dtype=float) if isinstance(mag, pd.Series) else mag
-    shape = broadcast_shape(columns, HeatBalanceError)
+    for name, value in numbers.items():  # range-checked and broadcast as the arguments are
+        columns[name] = value.to_numpy(dtype=float) if isinstance(value, pd.Series) else np.asarray(value, dtype=float)
+    text_arrays = {k: v.to_numpy(dtype=object) if isinstance(v, pd.Series) else np.asarray(v, dtype=object)
+                   for k, v in texts.items()}
+    shape = broadcast_shape({**columns, **text_arrays}, HeatBalanceError)
     every, some = point_warnings(columns, shape, HeatBalanceError)  # a scalar's warnings: every point's
     if "n" not in columns:
         columns["n"] = np.nan
@@ -316,6 +369,9 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
         frame["type"] = bearing_type
         frame["series"] = series
     frame["lubrication"] = lubrication
+    frame["arrangement"] = arrangement
+    for name, values in text_arrays.items():
+        frame[name] = np.broadcast_to(values, shape).ravel()
     frame, fill_problems, _ = fill_from_catalogue(frame, Labels())  # blank d, D, B, T, C0 ... from the bearing table
     limit = OPERATING_TEMPERATURE_LIMIT
     if t_limit is not None:
@@ -329,8 +385,8 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
         if errors:
             raise HeatBalanceError(errors[0][1] + where(errors[0][0], shape))
         raise HeatBalanceError("nu: missing; give nu, or nu40 and nu100, or iso_vg")
-    frame, results, settled = settle_viscosity(frame, compute_supports(frame, f2_chart=f2_chart), t_limit=limit,
-                                               f2_chart=f2_chart)
+    frame, results, settled = settle_viscosity(frame, compute_supports(frame, f2_chart=f2_chart, model=model),
+                                               t_limit=limit, f2_chart=f2_chart, model=model)
     problems += settled
     extra, more = heat_balance_rows(frame, results, method=method, t_limit=limit, reference_speed=True,
                                     f2_chart=f2_chart)
