@@ -335,10 +335,10 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
         if choice not in choices:
             raise HeatBalanceError(f"{name}: {choice!r} is not one of {', '.join(choices)}")
     friction_model = get_model(model)
-    extra = converted_model_inputs(model_inputs or {}, friction_model.inputs, _ARGUMENTS, "heat_balance",
-                                   HeatBalanceError)
+    model_values = converted_model_inputs(model_inputs or {}, friction_model.inputs, _ARGUMENTS, "heat_balance",
+                                          HeatBalanceError)
     # the model's own inputs are frame columns by their contract names: numbers beside the arguments, text apart
-    texts = {k: v for k, v in extra.items() if v is not None and column(k).unit == ""}
+    texts = {k: v for k, v in model_values.items() if v is not None and column(k).unit == ""}
     args = {"d": d, "D": D, "B": B, "T": T, "C0": C0, "n": n, "Fr": Fr, "Fa": Fa, "nu": nu,
             "T_amb": T_amb, "T_bearing": T_bearing, "k_q": k_q, "V_oil": V_oil, "dT_oil": dT_oil,
             "Q_E": Q_E, "nu40": nu40, "nu100": nu100, "iso_vg": iso_vg, "VI": VI,
@@ -347,7 +347,7 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
         f2_chart = F2Chart.from_csv(f2_chart)
     columns: dict[str, float | np.ndarray] = {}
     magnitudes = {name: _frame_column(value, _API_COLUMNS[name][1], name) for name, value in args.items()}
-    numbers = {k: v for k, v in extra.items() if v is not None and k not in texts}
+    numbers = {k: v for k, v in model_values.items() if v is not None and k not in texts}
     index = shared_index({**magnitudes, **numbers, **texts}, HeatBalanceError)
     for name, mag in magnitudes.items():
         if mag is None:
