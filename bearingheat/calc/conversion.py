@@ -98,7 +98,8 @@ def _convert_column(values: pd.Series, header: str, unit_text: str | None, targe
     except UnitError as exc:
         raise InputError(f"column {header!r}: {exc}") from exc
     if np.shares_memory(converted, numeric) and not converted.flags.owndata:  # a view of the user's table
-        converted = converted.copy()
+        converted = converted.view()
+        converted.flags.writeable = False  # calc never writes into the user's numbers: read, not copied
     shown_unit = {"1": "", "delta_degC": "K"}.get(target, target)
 
     def describe(i):
