@@ -274,10 +274,8 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
         the heat balance of single bearings only, so a pair gets n_thr,
         n_per and T_op NaN with a warning saying so.
     model : str, optional
-        The friction model, a name of :data:`bearingheat.calc.models.MODELS`:
-        'schaeffler' (default; the catalogue model above) or 'skf' (the SKF
-        four-component model of the SKF General Catalogue 6000, chapter
-        Friction, and SKF Rolling bearings 10000/3, 2017).
+        The friction model of N_R, as in :func:`friction_torque`:
+        'schaeffler' (default) or 'skf' (the SKF four-component model).
     model_inputs : dict, optional
         The inputs a model reads beyond the arguments of heat_balance, by
         contract column name: for the SKF model ``oil_level`` and ``d_s``
