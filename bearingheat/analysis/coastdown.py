@@ -112,6 +112,7 @@ class ModelFit:
         return float(self.values[self.parameters.index(name)]) if name in self.parameters else 0.0
 
     def interval(self, name: str) -> tuple[float, float]:
+        """The 95 % interval of a parameter of the fit ((0, 0) for a component the model does not have)."""
         if name not in self.parameters:
             return (0.0, 0.0)
         k = self.parameters.index(name)
@@ -335,7 +336,8 @@ class CoastdownResult:
         for name in ("M_c", "c_v", "c_a"):
             unit = PARAMETER_UNITS[name]
             out[f"{name} [{unit}]"] = fit.value(name)
-            out[f"{name}_ci95 [{unit}]"] = list(fit.interval(name))
+            # a component the chosen model does not have is 0 there, but was not measured: no interval (null)
+            out[f"{name}_ci95 [{unit}]"] = list(fit.interval(name)) if name in fit.parameters else None
         out.update({
             "f_constant": self.f_constant,
             "rmse_before [1/min]": self.rmse_before,

@@ -38,8 +38,10 @@ Rolling-bearing spindle (the Schaeffler catalogue M0 + M1 form): --spindle --nu 
 so that f0 can be audited against the catalogue value given by --f0.
 
 --out-dir DIR writes DIR/report.md, DIR/coastdown.png and DIR/summary.json
-(keys include model, 'M_c [N*m]', 'c_v [N*m*s]', 'c_a [N*m*s^2]', f_constant,
-'rmse_before [1/min]', 'rmse_after [1/min]'). Existing files in DIR are
+(keys include model, 'M_c [N*m]', 'c_v [N*m*s]', 'c_a [N*m*s^2]' with their
+95 % intervals, e.g. 'M_c_ci95 [N*m]' (null for a component the chosen model
+does not have: it is 0 there, not measured), f_constant, 'rmse_before [1/min]',
+'rmse_after [1/min]'). Existing files in DIR are
 replaced only with --force; each file is written atomically. --json prints
 the summary instead of the report; -q prints nothing but errors.
 

@@ -94,6 +94,11 @@ def test_summary_keys():
                 "rmse_after [1/min]"):
         assert key in summary
     assert summary["c_v [N*m*s]"] == 0.0
+    # a component the chosen (Coulomb) model does not have is 0 there but was not measured: no interval, not [0, 0]
+    assert summary["model"] == "coulomb"
+    assert summary["c_v_ci95 [N*m*s]"] is None and summary["c_a_ci95 [N*m*s^2]"] is None
+    low, high = summary["M_c_ci95 [N*m]"]
+    assert low < summary["M_c [N*m]"] < high
 
 
 # ----------------------------------------------------------------- bad input
