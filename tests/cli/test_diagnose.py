@@ -71,7 +71,7 @@ def test_cli_excluded_rows_exit_1(tmp_path, capsys):
     table.to_csv(source, index=False)
     assert main(["diagnose", str(source), "--out-dir", str(tmp_path / "o")]) == 1
     summary = json.loads((tmp_path / "o" / "summary.json").read_text())
-    assert summary["excluded"] == ["row 1: 'broken' is not a number for M [N*mm]"]
+    assert summary["excluded"] == ["row 2: 'broken' is not a number for M [N*mm]"]
     assert summary["effect"] == "none"
 
 
