@@ -28,6 +28,7 @@ friction model (each candidate applies itself, :meth:`Candidate.apply`).
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, field
 from typing import Any, cast
 
@@ -182,6 +183,41 @@ def _measured_column(table: pd.DataFrame, name: str, row_errors: list[list[str]]
 T_OIL_RANGE = cast(tuple[float, float], column("T_bearing").valid)
 
 
+#: a header that writes its unit another way than 'name [unit]': 'T_oil (degC)', 't(h)', 'M, N*mm', 'M/N*mm',
+#: 'M in N*mm' (the forms calc refuses for its own columns, bearingheat.calc.conversion)
+_OTHER_UNIT_FORM = re.compile(r"^\s*(\w+)\s*(?:\((.+)\)|,\s*(.+)|/\s*(.+)|\s+in\s+(.+))\s*$")
+
+#: measured column -> what becomes of the table when its header is not read
+_UNREAD = {"M": "the table would have no measured torque",
+           "T_oil": "the oil temperature would be taken as not measured",
+           "t": "the running time would be taken as not measured (and run_in as not applicable)",
+           "group": "the rows would be grouped by operating point instead of by these labels"}
+
+
+def _refuse_lookalikes(headers: Any, names: list[str]) -> None:
+    """:class:`DiagnoseError` for a header that is not read but looks like a measured column the table lacks
+    (M, T_oil, t, group): the unit written another way ('T_oil (degC)', 't(h)') or the name in other letter
+    case ('Group', 't_OIL [degC]'; names of two or more letters, as calc's rule for its own columns)."""
+    present = set(names)
+    wanted = [name for name in (*MEASURED_UNITS, "group") if name not in present]
+    by_case = {name.casefold(): name for name in wanted if len(name) > 1}
+    for header, name in zip(headers, names):
+        if name in MEASURED_UNITS or name == "group":
+            continue
+        unit = parse_header(header)[1]
+        other_form = _OTHER_UNIT_FORM.match(name)
+        base, typed = (other_form.group(1), next(g for g in other_form.groups()[1:] if g)) if other_form \
+            else (name, unit)
+        meant = base if base in wanted else by_case.get(base.casefold()) if len(base) > 1 else None
+        if meant is None:
+            continue
+        target = MEASURED_UNITS.get(meant)
+        written = f"{meant} [{(typed or target).strip()}]" if target else meant
+        raise DiagnoseError(f"column {header!r} looks like {meant!r}, which is not read from it: name it "
+                            f"{written!r} (headers are 'name [unit]', the name in its own letters); as it is, "
+                            f"{_UNREAD[meant]}")
+
+
 def _blank(value: Any) -> bool:
     return value is None or (isinstance(value, float) and math.isnan(value)) or str(value).strip() == ""
 
@@ -197,6 +233,7 @@ def read_measurements(table: pd.DataFrame) -> MeasuredData:
     as calc does).
     """
     names = [parse_header(h)[0] for h in table.columns]
+    _refuse_lookalikes(table.columns, names)
     if "M" not in names:
         raise DiagnoseError("missing column: 'M [N*mm]' (the measured friction torque, any torque unit)")
     rows = row_numbers(table)

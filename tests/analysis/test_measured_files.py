@@ -1,4 +1,5 @@
-"""Measured files as diagnose and lab read them: the decimal mark and the rows messages cite."""
+"""Measured files as diagnose and lab read them: the decimal mark, the rows messages cite, headers that look like
+a measured column."""
 from __future__ import annotations
 
 import re
@@ -9,7 +10,7 @@ import pandas as pd
 import pytest
 from diagnose_cases import small_table
 
-from bearingheat.analysis.diagnose import diagnose_measurements, model_data, read_measurements
+from bearingheat.analysis.diagnose import DiagnoseError, diagnose_measurements, model_data, read_measurements
 from bearingheat.analysis.lab import process_lab
 from bearingheat.errors import LabError
 from bearingheat.io.tables import calc_csv, read_table
@@ -116,4 +117,41 @@ def test_lab_messages_cite_the_line_of_the_file(tmp_path):
     table.to_csv(path, index=False)
     with pytest.raises(LabError, match=_exactly("row 3: Q [kg] = -1 must be > 0")):
         process_lab(read_table(path))
+
+# ---- headers that look like a measured column ------------------------------------------------------------
+
+@pytest.mark.parametrize("header,message", [
+    ("T_oil (degC)", "column 'T_oil (degC)' looks like 'T_oil', which is not read from it: name it 'T_oil [degC]' "
+                     "(headers are 'name [unit]', the name in its own letters); as it is, the oil temperature would "
+                     "be taken as not measured"),
+    ("t(h)", "column 't(h)' looks like 't', which is not read from it: name it 't [h]' (headers are 'name [unit]', "
+             "the name in its own letters); as it is, the running time would be taken as not measured (and run_in "
+             "as not applicable)"),
+    ("Group", "column 'Group' looks like 'group', which is not read from it: name it 'group' (headers are "
+              "'name [unit]', the name in its own letters); as it is, the rows would be grouped by operating point "
+              "instead of by these labels"),
+    ("T_OIL [degC]", "column 'T_OIL [degC]' looks like 'T_oil', which is not read from it: name it 'T_oil [degC]' "
+                     "(headers are 'name [unit]', the name in its own letters); as it is, the oil temperature would "
+                     "be taken as not measured"),
+])
+def test_a_header_that_looks_like_a_measured_column_is_refused(header, message):
+    table = small_table(4)
+    table[header] = [1.0, 2.0, 3.0, 4.0]
+    with pytest.raises(DiagnoseError, match=_exactly(message)):
+        read_measurements(table)
+
+
+def test_a_torque_header_with_its_unit_in_parentheses_is_refused():
+    table = small_table(4).rename(columns={"M [N*mm]": "M (N*m)"})
+    with pytest.raises(DiagnoseError, match=_exactly(
+            "column 'M (N*m)' looks like 'M', which is not read from it: name it 'M [N*m]' (headers are "
+            "'name [unit]', the name in its own letters); as it is, the table would have no measured torque")):
+        read_measurements(table)
+
+
+def test_the_measured_column_itself_beside_a_lookalike_is_read():
+    table = small_table(4)
+    table["T_oil [degC]"] = 60.0
+    table["T_oil (max) [degC]"] = 80.0   # another column, not a unit written another way
+    assert np.all(read_measurements(table).T_oil == 60.0)
 
