@@ -282,8 +282,13 @@ def read_measurements(table: pd.DataFrame) -> MeasuredData:
     for i, errors in enumerate(converted.row_errors):
         row_errors[i].extend(f"{row(i)}: {e}" for e in errors)
     group = None
-    if "group" in names:
-        group = table[table.columns[names.index("group")]].astype(str).to_numpy()
+    if "group" in names:  # a blank label would pool the unlabelled rows of every run into one group
+        header = table.columns[names.index("group")]
+        labels = table[header]
+        for position in np.flatnonzero(per_distinct(labels, _blank).astype(bool)).tolist():
+            row_errors[position].append(f"{row(position)}: {header} is blank; with a group column every row needs its "
+                                 "label (the run it belongs to)")
+        group = labels.astype(str).to_numpy()
     return MeasuredData(frame, M, T_oil, t, group, row_errors, converted.labels, rows)
 
 

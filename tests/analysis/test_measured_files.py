@@ -1,5 +1,5 @@
 """Measured files as diagnose and lab read them: the decimal mark, the rows messages cite, headers that look like
-a measured column."""
+a measured column, blank group labels."""
 from __future__ import annotations
 
 import re
@@ -154,4 +154,16 @@ def test_the_measured_column_itself_beside_a_lookalike_is_read():
     table["T_oil [degC]"] = 60.0
     table["T_oil (max) [degC]"] = 80.0   # another column, not a unit written another way
     assert np.all(read_measurements(table).T_oil == 60.0)
+
+# ---- blank group labels --------------------------------------------------------------------------------
+
+def test_a_blank_group_label_is_a_row_error(tmp_path):
+    table = small_table(4)
+    table["group"] = ["run 1", None, "run 2", " "]
+    path = tmp_path / "g.csv"
+    table.to_csv(path, index=False)
+    measured = read_measurements(read_table(path))
+    assert measured.row_errors == [
+        [], ["row 3: group is blank; with a group column every row needs its label (the run it belongs to)"],
+        [], ["row 5: group is blank; with a group column every row needs its label (the run it belongs to)"]]
 
