@@ -513,7 +513,8 @@ def diagnose(data: ModelData, *, k: int = 5, seed: int = 0, groups: np.ndarray |
     """Fit, cross-validate and rank every candidate effect; choose one by :data:`SIGNIFICANCE_RULE`."""
     N = len(data)
     if N < MIN_ROWS:
-        raise DiagnoseError(f"diagnose needs at least {MIN_ROWS} usable rows of measured torque; got {N}")
+        first = f"; {len(excluded)} rows left out, the first: {excluded[0]}" if excluded else ""
+        raise DiagnoseError(f"diagnose needs at least {MIN_ROWS} usable rows of measured torque; got {N}{first}")
     groups = operating_point_groups([data.bearing, data.n, data.nu, data.Fr, data.Fa, data.T_oil], groups)
     n_groups = len(np.unique(groups))
     if n_groups < k:

@@ -1,5 +1,5 @@
 """Measured files as diagnose and lab read them: the decimal mark, the rows messages cite, headers that look like
-a measured column, blank group labels."""
+a measured column, blank group labels, why too few rows were left."""
 from __future__ import annotations
 
 import re
@@ -10,7 +10,8 @@ import pandas as pd
 import pytest
 from diagnose_cases import small_table
 
-from bearingheat.analysis.diagnose import DiagnoseError, diagnose_measurements, model_data, read_measurements
+from bearingheat.analysis.diagnose import (DiagnoseError, diagnose_measurements, diagnose_table, model_data,
+                                           read_measurements)
 from bearingheat.analysis.lab import process_lab
 from bearingheat.errors import LabError
 from bearingheat.io.tables import calc_csv, read_table
@@ -166,4 +167,14 @@ def test_a_blank_group_label_is_a_row_error(tmp_path):
     assert measured.row_errors == [
         [], ["row 3: group is blank; with a group column every row needs its label (the run it belongs to)"],
         [], ["row 5: group is blank; with a group column every row needs its label (the run it belongs to)"]]
+
+# ---- why too few rows are left --------------------------------------------
+
+def test_too_few_rows_says_why_rows_were_left_out():
+    table = small_table(25)
+    table["T_oil [degC]"] = 400.0
+    with pytest.raises(DiagnoseError, match=_exactly(
+            'diagnose needs at least 20 usable rows of measured torque; got 0; 25 rows left out, the first: '
+            'row 1: T_oil = 400 degC is outside -60 to 300 degC')):
+        diagnose_table(table)
 
