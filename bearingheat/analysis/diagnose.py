@@ -510,7 +510,16 @@ def _bic(M: np.ndarray, predicted: np.ndarray, n_params: int) -> float:
 
 def diagnose(data: ModelData, *, k: int = 5, seed: int = 0, groups: np.ndarray | None = None,
              candidates: list[str] | None = None, excluded: list[str] | None = None) -> Diagnosis:
-    """Fit, cross-validate and rank every candidate effect; choose one by :data:`SIGNIFICANCE_RULE`."""
+    """Fit, cross-validate and rank every candidate effect; choose one by :data:`SIGNIFICANCE_RULE`.
+
+    ``k`` (>= 2, at most the number of groups) is the number of folds, ``candidates`` names of
+    :data:`~bearingheat.analysis.effects.CANDIDATES` (all when None; 'none' is always scored).
+    """
+    if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or k < 2:
+        raise DiagnoseError(f"k = {k!r}: the grouped cross-validation needs an integer number of folds >= 2")
+    unknown = [name for name in candidates or [] if name not in CANDIDATES]
+    if unknown:
+        raise DiagnoseError(f"candidate {unknown[0]!r} is not one of {', '.join(EFFECT_NAMES)}")
     N = len(data)
     if N < MIN_ROWS:
         first = f"; {len(excluded)} rows left out, the first: {excluded[0]}" if excluded else ""

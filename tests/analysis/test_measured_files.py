@@ -1,5 +1,5 @@
 """Measured files as diagnose and lab read them: the decimal mark, the rows messages cite, headers that look like
-a measured column, blank group labels, why too few rows were left."""
+a measured column, blank group labels, why too few rows were left, the arguments of diagnose."""
 from __future__ import annotations
 
 import re
@@ -10,8 +10,8 @@ import pandas as pd
 import pytest
 from diagnose_cases import small_table
 
-from bearingheat.analysis.diagnose import (DiagnoseError, diagnose_measurements, diagnose_table, model_data,
-                                           read_measurements)
+from bearingheat.analysis.diagnose import (DiagnoseError, diagnose, diagnose_measurements, diagnose_table,
+                                           model_data, read_measurements)
 from bearingheat.analysis.lab import process_lab
 from bearingheat.errors import LabError
 from bearingheat.io.tables import calc_csv, read_table
@@ -119,6 +119,7 @@ def test_lab_messages_cite_the_line_of_the_file(tmp_path):
     with pytest.raises(LabError, match=_exactly("row 3: Q [kg] = -1 must be > 0")):
         process_lab(read_table(path))
 
+
 # ---- headers that look like a measured column ------------------------------------------------------------
 
 @pytest.mark.parametrize("header,message", [
@@ -156,6 +157,7 @@ def test_the_measured_column_itself_beside_a_lookalike_is_read():
     table["T_oil (max) [degC]"] = 80.0   # another column, not a unit written another way
     assert np.all(read_measurements(table).T_oil == 60.0)
 
+
 # ---- blank group labels --------------------------------------------------------------------------------
 
 def test_a_blank_group_label_is_a_row_error(tmp_path):
@@ -168,7 +170,8 @@ def test_a_blank_group_label_is_a_row_error(tmp_path):
         [], ["row 3: group is blank; with a group column every row needs its label (the run it belongs to)"],
         [], ["row 5: group is blank; with a group column every row needs its label (the run it belongs to)"]]
 
-# ---- why too few rows are left --------------------------------------------
+
+# ---- why too few rows are left; the arguments of diagnose --------------------------------------------
 
 def test_too_few_rows_says_why_rows_were_left_out():
     table = small_table(25)
@@ -178,3 +181,16 @@ def test_too_few_rows_says_why_rows_were_left_out():
             'row 1: T_oil = 400 degC is outside -60 to 300 degC')):
         diagnose_table(table)
 
+
+def test_folds_and_candidates_are_checked():
+    data, _, _ = model_data(read_measurements(small_table(25)))
+    with pytest.raises(DiagnoseError, match=_exactly(
+            'k = 1: the grouped cross-validation needs an integer number of folds >= 2')):
+        diagnose(data, k=1)
+    with pytest.raises(DiagnoseError, match=_exactly(
+            "candidate 'seal' is not one of none, seal_drag, f0_scale, viscosity_heating, drag_losses, run_in, "
+            "preload")):
+        diagnose(data, candidates=["seal"])
+    with pytest.raises(DiagnoseError, match=_exactly(
+            '5-fold cross-validation needs at least 5 operating points (groups); got 1')):
+        diagnose(data, k=5)
