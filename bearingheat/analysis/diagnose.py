@@ -37,8 +37,9 @@ import numpy.typing as npt
 import pandas as pd
 from scipy import stats
 
+from bearingheat.analysis.domain import domain_values, fitted_domain
 from bearingheat.analysis.effects import (CANDIDATES, EFFECT_NAMES, FittedEffect, ModelData, bearing_keys,
-                                          catalogue_arrays, format_value)
+                                          catalogue_arrays, format_value, m1_load)
 from bearingheat.calc.contract import column, parse_header
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.fill import fill_from_catalogue
@@ -326,8 +327,7 @@ def model_data(measured: MeasuredData) -> tuple[ModelData, np.ndarray, list[str]
 
 def _load_column(results: pd.DataFrame, a: SupportArrays, rows: np.ndarray) -> np.ndarray:
     """The load M1 works with: P1, or F (Fr of radial, Fa of thrust bearings)."""
-    P1 = results["P1"].to_numpy(dtype=float)[rows]
-    return np.where(~np.isnan(P1), P1, np.where(a.m1_load == "Fa", a.Fa, a.Fr))
+    return m1_load(results["P1"].to_numpy(dtype=float)[rows], a)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -458,6 +458,12 @@ class Diagnosis:
         return (f"Chosen: '{self.effect}' (ΔBIC {chosen.delta_bic:.1f}, held-out gain {chosen.cv_improvement:.1%}, "
                 f"p = {chosen.p_value:.2g}){tied}.")
 
+    def domain(self) -> dict[str, Any]:
+        """The ranges, over the fitted rows, of the quantities the chosen effect depends on, and the bearings."""
+        data = self.data
+        values = domain_values(data.n, data.nu, data.dM, data.load)
+        return fitted_domain(values, CANDIDATES[self.effect].domain, data.bearing_names)
+
     def summary(self) -> dict[str, Any]:
         none, chosen = self.scores["none"], self.chosen
         return {
@@ -469,6 +475,7 @@ class Diagnosis:
             "mape_before": none.fit["mape"], "mape_after": chosen.fit["mape"],
             "cv_mape_before": none.cv["mape"], "cv_mape_after": chosen.cv["mape"],
             "bias_before": none.fit["bias"], "bias_after": chosen.fit["bias"],
+            "domain": self.domain(),  # the fitted ranges calc --effects checks a row against
             "units": {"rmse": "N*mm", "bias": "N*mm", "mape": "%"},
             "n_rows": len(self.data), "n_excluded": len(self.excluded), "excluded": self.excluded[:50],
             "bearings": list(self.data.bearing_names),

@@ -24,7 +24,8 @@ from bearingheat.io.files import write_outputs as write_files
 from bearingheat.io.json import json_safe
 from bearingheat.io.reports import FIGURE_DPI, matplotlib_figure
 
-__all__ = ["plot_residuals", "residuals_figure", "plot_measured_vs_predicted", "report_markdown", "write_outputs", "summary_lines"]
+__all__ = ["plot_residuals", "residuals_figure", "plot_measured_vs_predicted", "report_markdown", "write_outputs",
+           "summary_lines"]
 
 #: at most this many points are drawn (a seeded random subset of larger data sets)
 _PLOT_POINTS = 4000
@@ -44,6 +45,15 @@ def _predicted(score: CandidateScore) -> np.ndarray:
 
 #: bearings named in the legend of the residual plot (the ones with the most rows); the others share one entry
 _LEGEND_BEARINGS = 10
+
+
+def _domain_lines(summary: dict[str, Any]) -> list[str]:
+    """What calc --effects checks, as the report states it: the fitted ranges."""
+    if summary["effect"] == "none":
+        return []
+    ranges = ", ".join(f"{key} {value[0]:g} to {value[1]:g}" for key, value in summary["domain"].items()
+                       if key != "bearings")
+    return [f"Fitted over {ranges}; `calc --effects` warns on rows outside these ranges.", ""]
 
 
 def residuals_figure(diagnosis: Diagnosis) -> tuple[Any, str]:
@@ -122,6 +132,7 @@ def report_markdown(diagnosis: Diagnosis, summary: dict[str, Any], key: str) -> 
         f"{summary['n_excluded']} row(s) excluded.", "",
         f"**Effect found: `{summary['effect']}`**: {summary['description']}.", "",
         f"Parameters: {format_value(summary['parameters']) or '(none)'}", "",
+        *_domain_lines(summary),
         "## Error before and after", "",
         "| | RMSE [N·mm] | MAPE [%] | bias, measured − model [N·mm] |", "|---|---|---|---|",
         f"| catalogue model, fitting data | {format_value(summary['rmse_before'])} | {format_value(summary['mape_before'])} "
