@@ -43,7 +43,7 @@ from bearingheat.analysis.effects import (CANDIDATES, EFFECT_NAMES, FittedEffect
 from bearingheat.calc.contract import column, parse_header
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.fill import fill_from_catalogue
-from bearingheat.calc.models import compute_supports
+from bearingheat.calc.models import DEFAULT_MODEL, compute_supports
 from bearingheat.calc.supports import SupportArrays, per_distinct
 from bearingheat.calc.conversion import to_catalogue_units
 from bearingheat.errors import DiagnoseError, InputError, UnitError
@@ -475,7 +475,8 @@ class Diagnosis:
             "mape_before": none.fit["mape"], "mape_after": chosen.fit["mape"],
             "cv_mape_before": none.cv["mape"], "cv_mape_after": chosen.cv["mape"],
             "bias_before": none.fit["bias"], "bias_after": chosen.fit["bias"],
-            "domain": self.domain(),  # the fitted ranges calc --effects checks a row against
+            # what calc --effects checks a row against: the model the effect extends, the fitted ranges
+            "base_model": DEFAULT_MODEL, "domain": self.domain(),
             "units": {"rmse": "N*mm", "bias": "N*mm", "mape": "%"},
             "n_rows": len(self.data), "n_excluded": len(self.excluded), "excluded": self.excluded[:50],
             "bearings": list(self.data.bearing_names),

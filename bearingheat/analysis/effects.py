@@ -46,9 +46,9 @@ from scipy import optimize
 from bearingheat.analysis.domain import domain_values, outside, read_domain
 from bearingheat.calc.friction import evaluate_catalogue_model
 from bearingheat.calc.messages import Labels, with_texts
-from bearingheat.calc.models import failed_rows, support_arrays_of
+from bearingheat.calc.models import DEFAULT_MODEL, failed_rows, get_model, row_model_names, support_arrays_of
 from bearingheat.calc.supports import SupportArrays
-from bearingheat.errors import DiagnoseError
+from bearingheat.errors import DiagnoseError, ModelError
 from bearingheat.kernels import friction
 from bearingheat.kernels.effects import (VISCOSITY_TEMPERATURE_COEFFICIENT, drag_loss_torque, heated_total_torque,
                                          seal_drag_torque)
@@ -264,18 +264,19 @@ class Candidate:
         return dict(params)
 
     def apply(self, frame: pd.DataFrame, results: pd.DataFrame, parameters: dict[str, Any], note: str, *,
-              domain: dict[str, Any] | None = None) -> list[tuple[int, str, str]]:
+              refused: np.ndarray | None = None, domain: dict[str, Any] | None = None
+              ) -> list[tuple[int, str, str]]:
         """Add the fitted effect to MR and recompute NR for every row of calc ``results`` that is not in error.
 
         ``frame`` holds calc's inputs (contract names, catalogue units),
         ``results`` its results (``MR``, ``M0``, ``f0``, ``NR``, ``status``,
         ``message``; changed in place), ``parameters`` the public parameters
-        of summary.json. Each changed row's message gets ``note``. A
-        ``domain`` (summary.json) gives a warning for each changed row and
-        quantity outside it, returned as (row position, 'warning', message)
-        for calc to add.
+        of summary.json. Each changed row's message gets ``note``. Rows of
+        ``refused`` are left as they are; a ``domain`` (summary.json) gives a
+        warning for each changed row and quantity outside it, returned as
+        (row position, 'warning', message) for calc to add.
         """
-        ok = ~failed_rows(results)
+        ok = ~failed_rows(results) if refused is None else ~failed_rows(results) & ~refused
         if not ok.any():
             return []
         frame = frame.reset_index(drop=True)
@@ -314,7 +315,8 @@ class NoEffect(Candidate):
         return data.MR[rows]
 
     def apply(self, frame: pd.DataFrame, results: pd.DataFrame, parameters: dict[str, Any], note: str, *,
-              domain: dict[str, Any] | None = None) -> list[tuple[int, str, str]]:
+              refused: np.ndarray | None = None, domain: dict[str, Any] | None = None
+              ) -> list[tuple[int, str, str]]:
         """The catalogue model as it stands: the results are left as they are."""
         return []
 
@@ -618,7 +620,8 @@ class FittedEffect:
 
     ``domain`` holds the ranges of the quantities the effect depends on over
     the fitted rows and the bearings (:func:`bearingheat.analysis.domain.fitted_domain`;
-    None: not known, as in a summary.json of an older diagnose).
+    None: not known, as in a summary.json of an older diagnose), ``base_model``
+    the friction model it extends.
 
     >>> effect = FittedEffect("f0_scale", {"k": 2.0})
     >>> frame = pd.DataFrame({"designation": ["6205"], "d": [25.0], "D": [52.0], "n": [3000.0], "nu": [12.0]})
@@ -633,6 +636,7 @@ class FittedEffect:
     effect: str
     parameters: dict[str, Any]
     domain: dict[str, Any] | None = None
+    base_model: str = DEFAULT_MODEL
 
     def __post_init__(self) -> None:
         if self.effect not in CANDIDATES:
@@ -642,11 +646,16 @@ class FittedEffect:
                 raise DiagnoseError(f"effect {self.effect!r} needs the parameter {name!r}")
         if self.domain is not None:
             self.domain = read_domain(self.domain)
+        try:
+            self.base_model = get_model(str(self.base_model)).name
+        except ModelError as exc:
+            raise DiagnoseError(f"base_model of the summary: {exc}") from exc
 
     @classmethod
     def from_summary(cls, path: str | Path) -> FittedEffect:
-        """Load the effect of a ``diagnose`` summary.json (one without 'domain', written before it was recorded,
-        loads with the domain unknown)."""
+        """Load the effect of a ``diagnose`` summary.json (one without 'domain' or 'base_model', written before
+        they were recorded, loads with the domain unknown and the catalogue model, the only one diagnose fitted
+        effects on)."""
         text = Path(path).read_text(encoding="utf-8")
         try:
             summary = json.loads(text)
@@ -654,7 +663,8 @@ class FittedEffect:
             raise DiagnoseError(f"not a JSON file ({exc})") from exc
         if not isinstance(summary, dict) or "effect" not in summary:
             raise DiagnoseError("no 'effect' in the summary; expected the summary.json of bearingheat diagnose")
-        return cls(str(summary["effect"]), dict(summary.get("parameters") or {}), summary.get("domain"))
+        return cls(str(summary["effect"]), dict(summary.get("parameters") or {}), summary.get("domain"),
+                   str(summary.get("base_model") or DEFAULT_MODEL))
 
     def describe(self) -> str:
         text = f"diagnose effect {self.effect} ({format_value(self.parameters)})" if self.parameters else \
@@ -663,10 +673,23 @@ class FittedEffect:
             text += " (its fitted domain is unknown: rows outside it are not flagged)"
         return text
 
-    def apply(self, frame: pd.DataFrame, results: pd.DataFrame) -> list[tuple[int, str, str]]:
+    def apply(self, frame: pd.DataFrame, results: pd.DataFrame, model: str = DEFAULT_MODEL
+              ) -> list[tuple[int, str, str]]:
         """Add the effect to MR and recompute NR for every row that is not in error (the candidate applies itself).
 
-        Returns (row position, 'warning', message) for calc to add: a warning for each row and quantity outside
-        the fitted domain.
+        Returns (row position, level, message) for calc to add: an error for each row whose friction model
+        (its ``model`` cell, else ``model``) is not the one the effect was fitted on, a warning for each row and
+        quantity outside the fitted domain.
         """
-        return CANDIDATES[self.effect].apply(frame, results, self.parameters, self.describe(), domain=self.domain)
+        refused = np.zeros(len(frame), dtype=bool)
+        problems: list[tuple[int, str, str]] = []
+        if self.effect != "none":
+            names = row_model_names(frame.reset_index(drop=True), model)
+            refused = (names != self.base_model) & ~failed_rows(results)
+            problems = [(int(i), "error",
+                         f"diagnose effect {self.effect} extends the {self.base_model} model it was fitted on, not "
+                         f"the {names[i]} model of this row (compute the row with the {self.base_model} model, or "
+                         "without the effect)") for i in np.flatnonzero(refused)]
+        problems += CANDIDATES[self.effect].apply(frame, results, self.parameters, self.describe(), refused=refused,
+                                                  domain=self.domain)
+        return problems

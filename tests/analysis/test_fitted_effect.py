@@ -1,4 +1,5 @@
-"""calc --effects: the fitted domain a diagnose effect records, and the warning calc gives on a row outside it."""
+"""calc --effects: the fitted domain and the base model a diagnose effect records, and what calc does with rows
+outside them (a warning per quantity outside the fitted range; an error on a row of another friction model)."""
 from __future__ import annotations
 
 import json
@@ -26,17 +27,18 @@ def _rows(*rows):
                          "nu [mm^2/s]": 20.0})
 
 
-def test_the_summary_records_the_fitted_domain():
+def test_the_summary_records_the_fitted_domain_and_the_base_model():
     table, _, diagnosis = run_case(*DRAG)
     summary = diagnosis.summary()
     data = diagnosis.data
+    assert summary["base_model"] == "schaeffler"
     assert summary["domain"] == {"n [1/min]": [float(data.n.min()), float(data.n.max())],
                                  "dM [mm]": [float(data.dM.min()), float(data.dM.max())],
                                  "bearings": ["30206-A", "6205", "6310", "NU208-E"]}
     assert summary["domain"]["n [1/min]"] == [300.0, 5000.0]
     from bearingheat.io.reports.diagnose import report_markdown
-    assert ("Fitted over n [1/min] 300 to 5000, dM [mm] 38.5 to 80; `calc --effects` warns on rows outside these "
-            "ranges.") in report_markdown(diagnosis, summary, "n")
+    assert ("Fitted on the schaeffler model over n [1/min] 300 to 5000, dM [mm] 38.5 to 80; `calc --effects` refuses "
+            "rows of another model and warns on rows outside these ranges.") in report_markdown(diagnosis, summary, "n")
 
 
 def test_calc_warns_on_rows_outside_the_fitted_domain(tmp_path):
@@ -81,7 +83,7 @@ def test_an_old_summary_without_domain_loads_with_the_domain_unknown(tmp_path):
     path = tmp_path / "old.json"
     path.write_text(json.dumps({"effect": "drag_losses", "parameters": {"c": 0.05, "p": 1.8}}))
     effect = FittedEffect.from_summary(path)
-    assert effect.domain is None
+    assert effect.domain is None and effect.base_model == "schaeffler"
     out = calc(_rows(("6205", 15000, 500)), effects=effect)
     assert out["status"].iat[0] == "ok"
     assert out["message"].iat[0] == ("diagnose effect drag_losses (c: 0.05, p: 1.8) (its fitted domain is unknown: "
@@ -101,3 +103,37 @@ def test_a_bad_domain_in_the_summary_is_refused(tmp_path, domain, message):
     with pytest.raises(DiagnoseError, match=_exactly(message)):
         FittedEffect.from_summary(path)
 
+
+@pytest.mark.parametrize("effect,parameters", [
+    ("seal_drag", {"M_seal [N*mm]": {"6205": 15.0}}), ("f0_scale", {"k": 2.0}),
+    ("viscosity_heating", {"R_th [K/W]": 0.5}), ("preload", {"F_pre [N]": {"6205": 200.0}}),
+    ("drag_losses", {"c": 0.05, "p": 1.8}), ("run_in", {"a": 1.0, "tau [h]": 10.0}),
+])
+def test_an_effect_of_the_catalogue_model_is_refused_on_rows_of_the_skf_model(effect, parameters):
+    """The seal torque was added on top of the SKF model's own seal term; f0_scale, viscosity_heating and preload
+    made MR NaN ('the result is not a finite number')."""
+    fitted = FittedEffect(effect, parameters, {"bearings": ["6205"]})
+    design = _rows(("6205", 3000, 500), ("6205", 3000, 500)).assign(model=["schaeffler", "skf"])
+    out = calc(design, effects=fitted)
+    assert out["status"].tolist() == ["ok", "error"]
+    assert np.isfinite(out["MR [N*mm]"].iat[0]) and np.isnan(out["MR [N*mm]"].iat[1])
+    assert out["message"].iat[1] == (
+        f"diagnose effect {effect} extends the schaeffler model it was fitted on, not the skf model of this row "
+        "(compute the row with the schaeffler model, or without the effect)")
+    whole = calc(_rows(("6205", 3000, 500)), effects=fitted, model="skf")
+    assert whole["status"].iat[0] == "error" and whole["message"].iat[0] == out["message"].iat[1]
+
+
+def test_the_none_effect_applies_to_any_model():
+    out = calc(_rows(("6205", 3000, 500)), effects=FittedEffect("none", {}, {"bearings": []}), model="skf")
+    plain = calc(_rows(("6205", 3000, 500)), model="skf")
+    assert out["status"].iat[0] == plain["status"].iat[0] == "ok"
+    assert out["MR [N*mm]"].iat[0] == plain["MR [N*mm]"].iat[0]
+
+
+def test_an_unknown_base_model_in_the_summary_is_refused(tmp_path):
+    path = tmp_path / "bad.json"
+    path.write_text(json.dumps({"effect": "f0_scale", "parameters": {"k": 2.0}, "base_model": "magic"}))
+    with pytest.raises(DiagnoseError, match=_exactly(
+            "base_model of the summary: model: 'magic' is not one of schaeffler, skf")):
+        FittedEffect.from_summary(path)

@@ -48,12 +48,13 @@ _LEGEND_BEARINGS = 10
 
 
 def _domain_lines(summary: dict[str, Any]) -> list[str]:
-    """What calc --effects checks, as the report states it: the fitted ranges."""
+    """What calc --effects checks, as the report states it: the base model and the fitted ranges."""
     if summary["effect"] == "none":
         return []
     ranges = ", ".join(f"{key} {value[0]:g} to {value[1]:g}" for key, value in summary["domain"].items()
                        if key != "bearings")
-    return [f"Fitted over {ranges}; `calc --effects` warns on rows outside these ranges.", ""]
+    return [f"Fitted on the {summary['base_model']} model over {ranges}; `calc --effects` refuses rows of another "
+            "model and warns on rows outside these ranges.", ""]
 
 
 def residuals_figure(diagnosis: Diagnosis) -> tuple[Any, str]:
