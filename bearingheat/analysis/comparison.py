@@ -126,7 +126,7 @@ def _evaluate(measured: MeasuredData, name: str) -> tuple[np.ndarray, dict[str, 
     """(MR, fit terms, usable mask, exclusion messages) of one model on every measured row."""
     results = compute_supports(measured.frame, labels=measured.labels, model=name)
     failed = failed_rows(results)
-    messages = [f"row {i + 1} ({name}): {results['message'].iat[i]}" for i in map(int, np.flatnonzero(failed))]
+    messages = [f"{measured.row(i)} ({name}): {results['message'].iat[i]}" for i in map(int, np.flatnonzero(failed))]
     MR = results["MR"].to_numpy(dtype=float)
     model = get_model(name)
     if model.fit_terms is None:

@@ -28,6 +28,7 @@ friction model (each candidate applies itself, :meth:`Candidate.apply`).
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, field
 from typing import Any, cast
 
@@ -36,13 +37,14 @@ import numpy.typing as npt
 import pandas as pd
 from scipy import stats
 
+from bearingheat.analysis.domain import domain_values, fitted_domain
 from bearingheat.analysis.effects import (CANDIDATES, EFFECT_NAMES, FittedEffect, ModelData, bearing_keys,
-                                          catalogue_arrays, format_value)
+                                          catalogue_arrays, format_value, m1_load)
 from bearingheat.calc.contract import column, parse_header
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.fill import fill_from_catalogue
-from bearingheat.calc.models import compute_supports
-from bearingheat.calc.supports import SupportArrays
+from bearingheat.calc.models import DEFAULT_MODEL, compute_supports
+from bearingheat.calc.supports import SupportArrays, per_distinct
 from bearingheat.calc.conversion import to_catalogue_units
 from bearingheat.errors import DiagnoseError, InputError, UnitError
 from bearingheat.kernels import friction
@@ -106,9 +108,51 @@ class MeasuredData:
     group: np.ndarray | None      # user's group labels, or None
     row_errors: list[list[str]]   # per row
     labels: Labels | None = None
+    rows: np.ndarray | None = None  # the row number each message cites (the file's line), None: position + 1
+
+    def row(self, position: int) -> str:
+        """How a message names the row at ``position``: 'row 5' for the file's line 5 (as calc cites it)."""
+        return f"row {row_number(self.rows, position)}"
 
 
-def _measured_column(table: pd.DataFrame, name: str, row_errors: list[list[str]]) -> np.ndarray:
+def row_numbers(table: pd.DataFrame) -> np.ndarray | None:
+    """The row numbers messages cite for a table: the file's line of each row of a CSV
+    (``attrs['lines']``, read by :func:`bearingheat.io.tables.read_table`, as calc cites them); None where the
+    source has no lines (a DataFrame, Parquet): then a row is its position + 1."""
+    lines = table.attrs.get("lines")
+    return None if lines is None or len(lines) != len(table) else np.fromiter(lines, dtype=np.int64, count=len(table))
+
+
+def row_number(rows: np.ndarray | None, position: int) -> int:
+    """The number of the row at ``position`` (:func:`row_numbers`)."""
+    return int(rows[position]) if rows is not None else position + 1
+
+
+def _with_decimal_point(value: Any) -> Any:
+    """A text number with a decimal comma as pandas reads numbers ('3,2' -> '3.2'); text with a point is no
+    number then ('1.480' is no 1.48), as at calc's unit boundary; numbers and blanks as they are."""
+    if not isinstance(value, str):
+        return value
+    return None if "." in value else value.replace(",", ".")
+
+
+def numbers_of(values: pd.Series, decimal: str = ".") -> np.ndarray:
+    """The cells of a measured column as numbers, text read with the file's decimal mark (``attrs['decimal']``,
+    '.' or ','); cells that are no numbers are NaN (each distinct text looked at once)."""
+    if decimal == "," and not pd.api.types.is_numeric_dtype(values.dtype):
+        values = pd.Series(per_distinct(values, _with_decimal_point), index=values.index, dtype=object)
+    return pd.to_numeric(values, errors="coerce").to_numpy(dtype=float)
+
+
+def not_a_number(value: Any, header: str, decimal: str = ".") -> str:
+    """The message of a cell that is no number, with the decimal mark when the text holds the other one."""
+    other = {".": ",", ",": "."}[decimal]
+    mark = f" (the decimal mark is {decimal!r})" if isinstance(value, str) and other in value else ""
+    return f"{value!r} is not a number for {header}{mark}"
+
+
+def _measured_column(table: pd.DataFrame, name: str, row_errors: list[list[str]], rows: np.ndarray | None,
+                     decimal: str) -> np.ndarray:
     target = MEASURED_UNITS[name]
     headers = [h for h in table.columns if parse_header(h)[0] == name]
     if not headers:
@@ -124,11 +168,10 @@ def _measured_column(table: pd.DataFrame, name: str, row_errors: list[list[str]]
     except UnitError as exc:
         raise DiagnoseError(f"column {header!r}: {exc}") from exc
     raw = table[header]
-    numbers = pd.to_numeric(raw, errors="coerce").to_numpy(dtype=float)
+    numbers = numbers_of(raw, decimal)
     for i, (num, value) in enumerate(zip(numbers, raw.to_numpy(dtype=object))):
-        blank = value is None or (isinstance(value, float) and math.isnan(value)) or str(value).strip() == ""
-        if np.isnan(num) and not blank:
-            row_errors[i].append(f"row {i + 1}: {value!r} is not a number for {header}")
+        if np.isnan(num) and not _blank(value):
+            row_errors[i].append(f"row {row_number(rows, i)}: {not_a_number(value, header, decimal)}")
     try:  # the unit reads (above): a refusal here is its dimension
         converted, _ = convert_column(numbers, unit_text, target, name=name, header=header)
     except UnitError as exc:
@@ -141,44 +184,94 @@ def _measured_column(table: pd.DataFrame, name: str, row_errors: list[list[str]]
 T_OIL_RANGE = cast(tuple[float, float], column("T_bearing").valid)
 
 
+#: a header that writes its unit another way than 'name [unit]': 'T_oil (degC)', 't(h)', 'M, N*mm', 'M/N*mm',
+#: 'M in N*mm' (the forms calc refuses for its own columns, bearingheat.calc.conversion)
+_OTHER_UNIT_FORM = re.compile(r"^\s*(\w+)\s*(?:\((.+)\)|,\s*(.+)|/\s*(.+)|\s+in\s+(.+))\s*$")
+
+#: measured column -> what becomes of the table when its header is not read
+_UNREAD = {"M": "the table would have no measured torque",
+           "T_oil": "the oil temperature would be taken as not measured",
+           "t": "the running time would be taken as not measured (and run_in as not applicable)",
+           "group": "the rows would be grouped by operating point instead of by these labels"}
+
+
+def _refuse_lookalikes(headers: Any, names: list[str]) -> None:
+    """:class:`DiagnoseError` for a header that is not read but looks like a measured column the table lacks
+    (M, T_oil, t, group): the unit written another way ('T_oil (degC)', 't(h)') or the name in other letter
+    case ('Group', 't_OIL [degC]'; names of two or more letters, as calc's rule for its own columns)."""
+    present = set(names)
+    wanted = [name for name in (*MEASURED_UNITS, "group") if name not in present]
+    by_case = {name.casefold(): name for name in wanted if len(name) > 1}
+    for header, name in zip(headers, names):
+        if name in MEASURED_UNITS or name == "group":
+            continue
+        unit = parse_header(header)[1]
+        other_form = _OTHER_UNIT_FORM.match(name)
+        base, typed = (other_form.group(1), next(g for g in other_form.groups()[1:] if g)) if other_form \
+            else (name, unit)
+        meant = base if base in wanted else by_case.get(base.casefold()) if len(base) > 1 else None
+        if meant is None:
+            continue
+        target = MEASURED_UNITS.get(meant)
+        written = f"{meant} [{(typed or target).strip()}]" if target else meant
+        raise DiagnoseError(f"column {header!r} looks like {meant!r}, which is not read from it: name it "
+                            f"{written!r} (headers are 'name [unit]', the name in its own letters); as it is, "
+                            f"{_UNREAD[meant]}")
+
+
+def _blank(value: Any) -> bool:
+    return value is None or (isinstance(value, float) and math.isnan(value)) or str(value).strip() == ""
+
+
 def read_measurements(table: pd.DataFrame) -> MeasuredData:
     """Split a measured table (unit headers) into the calc frame and M, T_oil, t.
 
     Raises :class:`DiagnoseError` for unusable input (no torque column,
-    wrong units, missing calc columns); bad cells become row errors.
+    wrong units, missing calc columns); bad cells become row errors. A table
+    read from a CSV by :func:`bearingheat.io.tables.read_table` keeps its
+    decimal mark (``attrs['decimal']``: every number column is read with it)
+    and its line numbers (``attrs['lines']``: messages cite the file's rows,
+    as calc does).
     """
     names = [parse_header(h)[0] for h in table.columns]
+    _refuse_lookalikes(table.columns, names)
     if "M" not in names:
         raise DiagnoseError("missing column: 'M [N*mm]' (the measured friction torque, any torque unit)")
+    rows = row_numbers(table)
+    decimal = str(table.attrs.get("decimal", "."))
     table = table.reset_index(drop=True)
     row_errors: list[list[str]] = [[] for _ in range(len(table))]
-    M = _measured_column(table, "M", row_errors)
-    T_oil = _measured_column(table, "T_oil", row_errors)
-    t = _measured_column(table, "t", row_errors)
+
+    def row(i: int) -> str:
+        return f"row {row_number(rows, i)}"
+
+    M = _measured_column(table, "M", row_errors, rows, decimal)
+    T_oil = _measured_column(table, "T_oil", row_errors, rows, decimal)
+    t = _measured_column(table, "t", row_errors, rows, decimal)
     for i, value in enumerate(M):
         if np.isnan(value) and not row_errors[i]:
-            row_errors[i].append(f"row {i + 1}: M is blank; every row needs a measured torque")
+            row_errors[i].append(f"{row(i)}: M is blank; every row needs a measured torque")
         elif value <= 0:
-            row_errors[i].append(f"row {i + 1}: M = {value:g} N*mm must be > 0")
+            row_errors[i].append(f"{row(i)}: M = {value:g} N*mm must be > 0")
         elif np.isinf(value):  # (one such row would make every error measure infinite)
-            row_errors[i].append(f"row {i + 1}: M = {value:g} N*mm is not a finite number")
+            row_errors[i].append(f"{row(i)}: M = {value:g} N*mm is not a finite number")
     low, high = T_OIL_RANGE
     for i, value in enumerate(T_oil):
         if not np.isnan(value) and not low <= value <= high:
-            row_errors[i].append(f"row {i + 1}: T_oil = {value:g} degC is outside {low:g} to {high:g} degC")
+            row_errors[i].append(f"{row(i)}: T_oil = {value:g} degC is outside {low:g} to {high:g} degC")
     for i, value in enumerate(t):
         if value < 0 or np.isinf(value):
-            row_errors[i].append(f"row {i + 1}: t = {value:g} h must be >= 0 and finite")
+            row_errors[i].append(f"{row(i)}: t = {value:g} h must be >= 0 and finite")
     measured_headers = [h for h, n in zip(table.columns, names) if n in MEASURED_UNITS or n == "group"]
     try:
-        converted = to_catalogue_units(table.drop(columns=measured_headers))
+        converted = to_catalogue_units(table.drop(columns=measured_headers), decimal=decimal)
     except InputError as exc:
         raise DiagnoseError(str(exc)) from exc
     # blank dimensions and ratings from the bearing table, as calc fills them
     frame, fill_problems, _ = fill_from_catalogue(converted.frame, converted.labels)
     for position, level, message in fill_problems:
         if level == "error":
-            row_errors[position].append(f"row {position + 1}: {message}")
+            row_errors[position].append(f"{row(position)}: {message}")
     have = set(frame.columns)
     if "designation" not in have and not {"type", "series"} <= have:
         raise DiagnoseError("missing column: 'designation' (or 'type' and 'series')")
@@ -188,11 +281,16 @@ def read_measurements(table: pd.DataFrame) -> MeasuredData:
     if "lubrication" not in have and "f0" not in have:
         raise DiagnoseError("missing column: 'lubrication' (grease, oil_mist, oil_bath or circulating_oil)")
     for i, errors in enumerate(converted.row_errors):
-        row_errors[i].extend(f"row {i + 1}: {e}" for e in errors)
+        row_errors[i].extend(f"{row(i)}: {e}" for e in errors)
     group = None
-    if "group" in names:
-        group = table[table.columns[names.index("group")]].astype(str).to_numpy()
-    return MeasuredData(frame, M, T_oil, t, group, row_errors, converted.labels)
+    if "group" in names:  # a blank label would pool the unlabelled rows of every run into one group
+        header = table.columns[names.index("group")]
+        labels = table[header]
+        for position in np.flatnonzero(per_distinct(labels, _blank).astype(bool)).tolist():
+            row_errors[position].append(f"{row(position)}: {header} is blank; with a group column every row needs its "
+                                 "label (the run it belongs to)")
+        group = labels.astype(str).to_numpy()
+    return MeasuredData(frame, M, T_oil, t, group, row_errors, converted.labels, rows)
 
 
 def model_data(measured: MeasuredData) -> tuple[ModelData, np.ndarray, list[str]]:
@@ -208,7 +306,7 @@ def model_data(measured: MeasuredData) -> tuple[ModelData, np.ndarray, list[str]
             excluded.append("; ".join(measured.row_errors[i]))
         elif status[i] == "error":
             usable[i] = False
-            excluded.append(f"row {i + 1}: {results['message'].iat[i]}")
+            excluded.append(f"{measured.row(i)}: {results['message'].iat[i]}")
     arrays, unresolved = catalogue_arrays(frame)
     usable &= ~unresolved
     rows = np.flatnonzero(usable)
@@ -229,8 +327,7 @@ def model_data(measured: MeasuredData) -> tuple[ModelData, np.ndarray, list[str]
 
 def _load_column(results: pd.DataFrame, a: SupportArrays, rows: np.ndarray) -> np.ndarray:
     """The load M1 works with: P1, or F (Fr of radial, Fa of thrust bearings)."""
-    P1 = results["P1"].to_numpy(dtype=float)[rows]
-    return np.where(~np.isnan(P1), P1, np.where(a.m1_load == "Fa", a.Fa, a.Fr))
+    return m1_load(results["P1"].to_numpy(dtype=float)[rows], a)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -361,6 +458,12 @@ class Diagnosis:
         return (f"Chosen: '{self.effect}' (ΔBIC {chosen.delta_bic:.1f}, held-out gain {chosen.cv_improvement:.1%}, "
                 f"p = {chosen.p_value:.2g}){tied}.")
 
+    def domain(self) -> dict[str, Any]:
+        """The ranges, over the fitted rows, of the quantities the chosen effect depends on, and the bearings."""
+        data = self.data
+        values = domain_values(data.n, data.nu, data.dM, data.load)
+        return fitted_domain(values, CANDIDATES[self.effect].domain, data.bearing_names)
+
     def summary(self) -> dict[str, Any]:
         none, chosen = self.scores["none"], self.chosen
         return {
@@ -372,6 +475,8 @@ class Diagnosis:
             "mape_before": none.fit["mape"], "mape_after": chosen.fit["mape"],
             "cv_mape_before": none.cv["mape"], "cv_mape_after": chosen.cv["mape"],
             "bias_before": none.fit["bias"], "bias_after": chosen.fit["bias"],
+            # what calc --effects checks a row against: the model the effect extends, the fitted ranges
+            "base_model": DEFAULT_MODEL, "domain": self.domain(),
             "units": {"rmse": "N*mm", "bias": "N*mm", "mape": "%"},
             "n_rows": len(self.data), "n_excluded": len(self.excluded), "excluded": self.excluded[:50],
             "bearings": list(self.data.bearing_names),
@@ -413,10 +518,20 @@ def _bic(M: np.ndarray, predicted: np.ndarray, n_params: int) -> float:
 
 def diagnose(data: ModelData, *, k: int = 5, seed: int = 0, groups: np.ndarray | None = None,
              candidates: list[str] | None = None, excluded: list[str] | None = None) -> Diagnosis:
-    """Fit, cross-validate and rank every candidate effect; choose one by :data:`SIGNIFICANCE_RULE`."""
+    """Fit, cross-validate and rank every candidate effect; choose one by :data:`SIGNIFICANCE_RULE`.
+
+    ``k`` (>= 2, at most the number of groups) is the number of folds, ``candidates`` names of
+    :data:`~bearingheat.analysis.effects.CANDIDATES` (all when None; 'none' is always scored).
+    """
+    if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or k < 2:
+        raise DiagnoseError(f"k = {k!r}: the grouped cross-validation needs an integer number of folds >= 2")
+    unknown = [name for name in candidates or [] if name not in CANDIDATES]
+    if unknown:
+        raise DiagnoseError(f"candidate {unknown[0]!r} is not one of {', '.join(EFFECT_NAMES)}")
     N = len(data)
     if N < MIN_ROWS:
-        raise DiagnoseError(f"diagnose needs at least {MIN_ROWS} usable rows of measured torque; got {N}")
+        first = f"; {len(excluded)} rows left out, the first: {excluded[0]}" if excluded else ""
+        raise DiagnoseError(f"diagnose needs at least {MIN_ROWS} usable rows of measured torque; got {N}{first}")
     groups = operating_point_groups([data.bearing, data.n, data.nu, data.Fr, data.Fa, data.T_oil], groups)
     n_groups = len(np.unique(groups))
     if n_groups < k:

@@ -43,11 +43,12 @@ import numpy as np
 import pandas as pd
 from scipy import optimize
 
+from bearingheat.analysis.domain import domain_values, outside, read_domain
 from bearingheat.calc.friction import evaluate_catalogue_model
 from bearingheat.calc.messages import Labels, with_texts
-from bearingheat.calc.models import failed_rows, support_arrays_of
+from bearingheat.calc.models import DEFAULT_MODEL, failed_rows, get_model, row_model_names, support_arrays_of
 from bearingheat.calc.supports import SupportArrays
-from bearingheat.errors import DiagnoseError
+from bearingheat.errors import DiagnoseError, ModelError
 from bearingheat.kernels import friction
 from bearingheat.kernels.effects import (VISCOSITY_TEMPERATURE_COEFFICIENT, drag_loss_torque, heated_total_torque,
                                          seal_drag_torque)
@@ -63,6 +64,7 @@ __all__ = [
     "catalogue_arrays",
     "evaluate_with_axial_load",
     "bearing_keys",
+    "m1_load",
 ]
 
 
@@ -89,6 +91,11 @@ def evaluate_with_axial_load(supports: SupportArrays, rows: np.ndarray, Fa: np.n
     with np.errstate(all="ignore"):
         results, _ = evaluate_catalogue_model(sub, Labels())
     return results["M1"] + results["M2"]
+
+
+def m1_load(P1: np.ndarray, arrays: SupportArrays) -> np.ndarray:
+    """The load M1 works with [N]: P1, or F (Fr of radial, Fa of thrust bearings) where P1 is not given."""
+    return np.where(~np.isnan(P1), P1, np.where(arrays.m1_load == "Fa", arrays.Fa, arrays.Fr))
 
 
 def bearing_keys(frame: pd.DataFrame) -> np.ndarray:
@@ -237,6 +244,8 @@ class Candidate:
     description = ""
     key_regressor = "n"
     required: tuple[str, ...] = ()
+    #: the quantities the effect's term depends on: their fitted ranges are its domain (summary.json)
+    domain: tuple[str, ...] = ()
 
     def applicable(self, data: ModelData) -> str:
         return ""
@@ -254,23 +263,31 @@ class Candidate:
         """Parameters as written to summary.json (names with units)."""
         return dict(params)
 
-    def apply(self, frame: pd.DataFrame, results: pd.DataFrame, parameters: dict[str, Any], note: str) -> None:
+    def apply(self, frame: pd.DataFrame, results: pd.DataFrame, parameters: dict[str, Any], note: str, *,
+              refused: np.ndarray | None = None, domain: dict[str, Any] | None = None
+              ) -> list[tuple[int, str, str]]:
         """Add the fitted effect to MR and recompute NR for every row of calc ``results`` that is not in error.
 
         ``frame`` holds calc's inputs (contract names, catalogue units),
         ``results`` its results (``MR``, ``M0``, ``f0``, ``NR``, ``status``,
         ``message``; changed in place), ``parameters`` the public parameters
-        of summary.json. Each changed row's message gets ``note``.
+        of summary.json. Each changed row's message gets ``note``. Rows of
+        ``refused`` are left as they are; a ``domain`` (summary.json) gives a
+        warning for each changed row and quantity outside it, returned as
+        (row position, 'warning', message) for calc to add.
         """
-        ok = ~failed_rows(results)
+        ok = ~failed_rows(results) if refused is None else ~failed_rows(results) & ~refused
         if not ok.any():
-            return
+            return []
         frame = frame.reset_index(drop=True)
         arrays, _ = catalogue_arrays(frame)
         rows = CalcRows(frame, results, ok, results["MR"].to_numpy(dtype=float).copy(),
                         results["M0"].to_numpy(dtype=float), arrays.n, arrays.nu,
                         friction.mean_diameter(arrays.d, arrays.D), bearing_keys(frame), arrays,
                         {int(i): note for i in np.flatnonzero(ok)})
+        # the domain's values before the effect changes anything (P1 as the catalogue model has it)
+        P1 = results["P1"].to_numpy(dtype=float) if "P1" in results.columns else np.full(len(frame), np.nan)
+        values = domain_values(rows.n, rows.nu, rows.dM, m1_load(P1, arrays))
         self.change(rows, parameters)
         index = results.index
         results["MR"] = np.where(ok, rows.MR, results["MR"].to_numpy(dtype=float))
@@ -279,6 +296,7 @@ class Candidate:
         noted = [f"{now}; {text}" if now else text for now, text in zip(current, rows.notes.values())]
         results["message"] = pd.Series(with_texts(results["message"], rows.notes.keys(), noted), index=index,
                                        copy=False)
+        return outside(domain, values, rows.positions, self.name) if domain else []
 
     def change(self, rows: CalcRows, parameters: dict[str, Any]) -> None:
         """Change ``rows.MR`` of the rows ``rows.ok`` by the fitted ``parameters`` (and ``rows.notes``)."""
@@ -296,8 +314,11 @@ class NoEffect(Candidate):
     def predict(self, data: ModelData, params: Params, rows: np.ndarray) -> np.ndarray:
         return data.MR[rows]
 
-    def apply(self, frame: pd.DataFrame, results: pd.DataFrame, parameters: dict[str, Any], note: str) -> None:
+    def apply(self, frame: pd.DataFrame, results: pd.DataFrame, parameters: dict[str, Any], note: str, *,
+              refused: np.ndarray | None = None, domain: dict[str, Any] | None = None
+              ) -> list[tuple[int, str, str]]:
         """The catalogue model as it stands: the results are left as they are."""
+        return []
 
 
 class SealDrag(Candidate):
@@ -305,6 +326,7 @@ class SealDrag(Candidate):
     description = "a contact-seal torque per bearing, constant in n (the Schaeffler catalogue p. 63: seal friction is a component without a term in the formulas)"
     key_regressor = "n"
     required = ("M_seal [N*mm]",)
+    domain = ("n",)  # constant in n: shown so within the speeds measured only
 
     def fit(self, data: ModelData, rows: np.ndarray) -> Params:
         M, base, code = data.M[rows], data.MR[rows], data.bearing[rows]
@@ -340,6 +362,7 @@ class F0Scale(Candidate):
     description = "speed-dependent friction k times the table f0 (oil level, fresh grease; the Schaeffler catalogue p. 65, fig. 2)"
     key_regressor = "nu*n"
     required = ("k",)
+    domain = ("nu*n",)  # M0 grows as (nu*n)^(2/3) (the Schaeffler catalogue p. 64)
 
     def fit(self, data: ModelData, rows: np.ndarray) -> Params:
         theta = _nonneg_scale(data.M[rows], data.MR[rows], data.M0[rows])
@@ -361,6 +384,7 @@ class ViscosityHeating(Candidate):
                    f"(nu*exp(-{VISCOSITY_TEMPERATURE_COEFFICIENT}*dT))")
     key_regressor = "NR"
     required = ("R_th [K/W]",)
+    domain = ("n", "nu*n", "dM", "load")  # through N_R = M_R*n, which all of them set
 
     def _predict(self, data: ModelData, R_th: float, rows: np.ndarray) -> np.ndarray:
         return heated_total_torque(R_th, data.f0[rows], data.nu[rows], data.n[rows], data.dM[rows],
@@ -405,6 +429,7 @@ class DragLosses(Candidate):
     description = "oil churning c*1e-7*dM^3*(n*dM/1000)^p, growing faster than n^(2/3)"
     key_regressor = "n"
     required = ("c", "p")
+    domain = ("n", "dM")  # the churning term c*1e-7*dM^3*(n*dM/1000)^p
     P_BOUNDS = (0.9, 3.0)
 
     def fit(self, data: ModelData, rows: np.ndarray) -> Params:
@@ -439,6 +464,7 @@ class RunIn(Candidate):
     description = "extra speed-dependent friction a*M0*exp(-t/tau) that decays with running time t"
     key_regressor = "t"
     required = ("a", "tau [h]")
+    domain = ("nu*n",)  # a share of M0
 
     def applicable(self, data: ModelData) -> str:
         t = data.t
@@ -491,6 +517,7 @@ class Preload(Candidate):
     description = "an undeclared axial preload F_pre per bearing added to Fa before P0, P1 and f1 (the Schaeffler catalogue p. 68)"
     key_regressor = "load"
     required = ("F_pre [N]",)
+    domain = ("load",)  # P1 and f1 with the preload added to Fa
 
     @staticmethod
     def _arrays(data: ModelData) -> SupportArrays:
@@ -591,17 +618,25 @@ def format_value(value: Any, digits: int = 4) -> str:
 class FittedEffect:
     """An effect fitted by ``diagnose``, applied to calc results (MR, NR in place).
 
+    ``domain`` holds the ranges of the quantities the effect depends on over
+    the fitted rows and the bearings (:func:`bearingheat.analysis.domain.fitted_domain`;
+    None: not known, as in a summary.json of an older diagnose), ``base_model``
+    the friction model it extends.
+
     >>> effect = FittedEffect("f0_scale", {"k": 2.0})
     >>> frame = pd.DataFrame({"designation": ["6205"], "d": [25.0], "D": [52.0], "n": [3000.0], "nu": [12.0]})
     >>> results = pd.DataFrame({"M0": [12.0], "M1": [8.0], "M2": [0.0], "MR": [20.0], "NR": [6.28],
     ...                         "f0": [2.0], "status": ["ok"], "message": [""]})
     >>> effect.apply(frame, results)
+    []
     >>> float(results.at[0, "MR"]), round(float(results.at[0, "NR"]), 4)
     (32.0, 10.0524)
     """
 
     effect: str
     parameters: dict[str, Any]
+    domain: dict[str, Any] | None = None
+    base_model: str = DEFAULT_MODEL
 
     def __post_init__(self) -> None:
         if self.effect not in CANDIDATES:
@@ -609,10 +644,18 @@ class FittedEffect:
         for name in CANDIDATES[self.effect].required:
             if name not in self.parameters:
                 raise DiagnoseError(f"effect {self.effect!r} needs the parameter {name!r}")
+        if self.domain is not None:
+            self.domain = read_domain(self.domain)
+        try:
+            self.base_model = get_model(str(self.base_model)).name
+        except ModelError as exc:
+            raise DiagnoseError(f"base_model of the summary: {exc}") from exc
 
     @classmethod
     def from_summary(cls, path: str | Path) -> FittedEffect:
-        """Load the effect of a ``diagnose`` summary.json."""
+        """Load the effect of a ``diagnose`` summary.json (one without 'domain' or 'base_model', written before
+        they were recorded, loads with the domain unknown and the catalogue model, the only one diagnose fitted
+        effects on)."""
         text = Path(path).read_text(encoding="utf-8")
         try:
             summary = json.loads(text)
@@ -620,12 +663,33 @@ class FittedEffect:
             raise DiagnoseError(f"not a JSON file ({exc})") from exc
         if not isinstance(summary, dict) or "effect" not in summary:
             raise DiagnoseError("no 'effect' in the summary; expected the summary.json of bearingheat diagnose")
-        return cls(str(summary["effect"]), dict(summary.get("parameters") or {}))
+        return cls(str(summary["effect"]), dict(summary.get("parameters") or {}), summary.get("domain"),
+                   str(summary.get("base_model") or DEFAULT_MODEL))
 
     def describe(self) -> str:
-        return f"diagnose effect {self.effect} ({format_value(self.parameters)})" if self.parameters else \
+        text = f"diagnose effect {self.effect} ({format_value(self.parameters)})" if self.parameters else \
             f"diagnose effect {self.effect}"
+        if self.domain is None and self.effect != "none":
+            text += " (its fitted domain is unknown: rows outside it are not flagged)"
+        return text
 
-    def apply(self, frame: pd.DataFrame, results: pd.DataFrame) -> None:
-        """Add the effect to MR and recompute NR for every row that is not in error (the candidate applies itself)."""
-        CANDIDATES[self.effect].apply(frame, results, self.parameters, self.describe())
+    def apply(self, frame: pd.DataFrame, results: pd.DataFrame, model: str = DEFAULT_MODEL
+              ) -> list[tuple[int, str, str]]:
+        """Add the effect to MR and recompute NR for every row that is not in error (the candidate applies itself).
+
+        Returns (row position, level, message) for calc to add: an error for each row whose friction model
+        (its ``model`` cell, else ``model``) is not the one the effect was fitted on, a warning for each row and
+        quantity outside the fitted domain.
+        """
+        refused = np.zeros(len(frame), dtype=bool)
+        problems: list[tuple[int, str, str]] = []
+        if self.effect != "none":
+            names = row_model_names(frame.reset_index(drop=True), model)
+            refused = (names != self.base_model) & ~failed_rows(results)
+            problems = [(int(i), "error",
+                         f"diagnose effect {self.effect} extends the {self.base_model} model it was fitted on, not "
+                         f"the {names[i]} model of this row (compute the row with the {self.base_model} model, or "
+                         "without the effect)") for i in np.flatnonzero(refused)]
+        problems += CANDIDATES[self.effect].apply(frame, results, self.parameters, self.describe(), refused=refused,
+                                                  domain=self.domain)
+        return problems

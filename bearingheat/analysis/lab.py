@@ -24,6 +24,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
+from bearingheat.analysis.diagnose import not_a_number, numbers_of, row_number, row_numbers
 from bearingheat.calc.contract import parse_header
 from bearingheat.calc.table import calc
 from bearingheat.catalogue.lab import (
@@ -63,8 +64,12 @@ def read_lab_table(table: pd.DataFrame) -> pd.DataFrame:
 
     Any unit of the right dimension is converted (``T [N*m]``, ``n [Hz]``,
     ``nu [cSt]``); a missing column, a cell that is not a number, a unit that
-    does not fit and a value out of range raise :class:`~bearingheat.errors.LabError`.
+    does not fit and a value out of range raise :class:`~bearingheat.errors.LabError`. A table read from a CSV
+    by :func:`bearingheat.io.tables.read_table` is read with its decimal mark (``attrs['decimal']``) and its
+    messages cite the file's lines (``attrs['lines']``), as calc's do.
     """
+    rows = row_numbers(table)
+    decimal = str(table.attrs.get("decimal", "."))
     out = pd.DataFrame(index=range(len(table)))
     seen = {}
     for header in table.columns:
@@ -76,18 +81,22 @@ def read_lab_table(table: pd.DataFrame) -> pd.DataFrame:
             unit = LAB_UNITS[name]
             raise LabError(f"missing column: '{name} [{unit}]'" if unit else f"missing column: '{name}'")
     values = table.reset_index(drop=True)
+    typed: dict[str, np.ndarray] = {}  # the numbers as typed, in the user's unit
     for name, (header, unit_text) in seen.items():
         target = LAB_UNITS[name]
         if target == "":
             out[name] = values[header].astype(str).str.strip()
             continue
-        numbers = pd.to_numeric(values[header], errors="coerce").to_numpy(dtype=float)
+        numbers = numbers_of(values[header], decimal)
+        typed[name] = numbers
         bad = np.flatnonzero(~np.isfinite(numbers))  # (text, a blank cell, inf)
         if len(bad):
             i = int(bad[0])
             cell = values[header].iat[i]
-            shown = "blank" if pd.isna(cell) else repr(cell.item() if isinstance(cell, np.generic) else cell)
-            raise LabError(f"row {i + 1}: {shown} is not a number for {header}")
+            if pd.isna(cell):
+                raise LabError(f"row {row_number(rows, i)}: blank is not a number for {header}")
+            value = cell.item() if isinstance(cell, np.generic) else cell
+            raise LabError(f"row {row_number(rows, i)}: {not_a_number(value, header, decimal)}")
         if unit_text is None or unit_text.strip() in ("", "-"):
             raise LabError(f"column {header!r}: needs a unit, e.g. '{name} [{target}]'")
         try:
@@ -102,7 +111,7 @@ def read_lab_table(table: pd.DataFrame) -> pd.DataFrame:
         bad = (col <= low) | ((col > high) if high is not None else False)
         if bad.any():
             i = int(np.flatnonzero(bad)[0])
-            raise LabError(f"row {i + 1}: {seen[name][0]} = {float(values[seen[name][0]].iat[i]):g} {text}")
+            raise LabError(f"row {row_number(rows, i)}: {seen[name][0]} = {typed[name][i]:g} {text}")
     return out
 
 

@@ -157,7 +157,8 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
         ``cell(name, row position) -> str`` naming a cell in messages (e.g.
         the workbook cell of a value).
     effects : bearingheat.analysis.diagnose.FittedEffect, optional
-        A fitted effect of ``bearingheat diagnose`` applied to MR and NR.
+        A fitted effect of ``bearingheat diagnose`` applied to MR and NR; a row whose model is not the
+        one it was fitted on is an error, a row outside its fitted domain a warning.
     n_per_method : str, optional
         How n_per finds its speed factor where the ``n_per_method`` cell is
         blank: 'exact' (default) or 'approximation'.
@@ -267,8 +268,9 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
                   + [(i, level, cite(m, i), True) for i, level, m in fill_problems if level == "error"]
                   + [(i, level, cite(m, i), False) for i, level, m in
                      extra_problems + _implausible_relations(frame, converted.labels, from_table)])
-    if effects is not None:
-        effects.apply(frame, results)
+    if effects is not None:  # a row of another model is refused, a row outside the fitted domain warned
+        _add_messages(results, [(i, level, cite(m, i), level == "error")
+                                for i, level, m in effects.apply(frame, results, model=model)])
     extension_columns = []
     for ext in EXTENSIONS.values():
         with np.errstate(all="ignore"):  # rows in error are computed too, and masked afterwards

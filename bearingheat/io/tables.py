@@ -73,7 +73,9 @@ def read_table(path, sheet: str | None = None, *, sep: str | None = None, decima
     """A CSV or xlsx file of measurements or readings as a DataFrame (first sheet unless ``sheet``).
 
     A missing or unreadable file raises :class:`InputError` naming it; a CSV
-    is read as :func:`read_csv` reads it.
+    is read as :func:`read_csv` reads it. ``attrs['lines']`` holds the row
+    number of each row in the file (a CSV's line, a sheet's row; none for
+    Parquet and Arrow, which have no rows to cite).
     """
     path = Path(path)
     if not path.is_file():
@@ -90,6 +92,9 @@ def read_table(path, sheet: str | None = None, *, sep: str | None = None, decima
         raise InputError(f"{path}: not a readable table ({exc})") from exc
     if len(table) == 0:
         raise InputError(f"{path}: no rows (only a header row)")
+    # the sheet's row numbers (header in row 1, blank rows kept as rows), as calc's messages name a workbook's
+    # cells ('Sheet1!E3')
+    table.attrs["lines"] = RowLines(np.arange(2, len(table) + 2))
     return table
 
 

@@ -5,6 +5,7 @@ import json
 import subprocess
 import sys
 
+import numpy as np
 import pandas as pd
 import pytest
 from diagnose_cases import CASES, CONTROLS, run_case, small_table
@@ -70,7 +71,7 @@ def test_cli_excluded_rows_exit_1(tmp_path, capsys):
     table.to_csv(source, index=False)
     assert main(["diagnose", str(source), "--out-dir", str(tmp_path / "o")]) == 1
     summary = json.loads((tmp_path / "o" / "summary.json").read_text())
-    assert summary["excluded"] == ["row 1: 'broken' is not a number for M [N*mm]"]
+    assert summary["excluded"] == ["row 2: 'broken' is not a number for M [N*mm]"]
     assert summary["effect"] == "none"
 
 
@@ -105,3 +106,31 @@ def test_diagnose_model_skf_writes_only_the_comparison(tmp_path):
     out = tmp_path / "d"
     assert main(["diagnose", str(source), "--out-dir", str(out), "--model", "skf", "-q"]) == 0
     assert {p.name for p in out.iterdir()} == {"models.md", "models.json", "models.png"}
+
+
+def test_the_residual_plot_draws_every_bearing():
+    """The plot drew the first 10 bearings only; every row is drawn now, the legend names the 10 with the most
+    rows and puts the rest under one entry."""
+    from bearingheat.analysis.diagnose import CandidateScore, Diagnosis
+    from bearingheat.analysis.effects import ModelData
+    from bearingheat.io.reports.diagnose import residuals_figure
+
+    rng = np.random.default_rng(3)
+    bearing = np.repeat(np.arange(13), [5] * 10 + [2, 3, 4])   # 13 bearings, 62 rows
+    N = len(bearing)
+    n = rng.uniform(300.0, 5000.0, N)
+    M = rng.uniform(10.0, 50.0, N)
+    data = ModelData(M=M, M0=0.5 * M, M1=0.4 * M, M2=np.zeros(N), f0=np.full(N, 2.0), n=n, nu=np.full(N, 20.0),
+                     dM=np.full(N, 40.0), Fr=np.full(N, 500.0), Fa=np.zeros(N), load=np.full(N, 500.0),
+                     t=np.full(N, np.nan), T_oil=np.full(N, np.nan), bearing=bearing,
+                     bearing_names=[f"b{i:02d}" for i in range(13)])
+    none = CandidateScore("none", True, predicted=0.9 * M, cv_predicted=0.9 * M)
+    diagnosis = Diagnosis(data, "none", {"none": none}, np.zeros(N, dtype=int), bearing, 5, [])
+    fig, key = residuals_figure(diagnosis)
+    assert key == "n"
+    for ax in fig.axes:
+        drawn = np.concatenate([c.get_offsets() for c in ax.collections])
+        assert sorted(drawn[:, 0]) == sorted(n)
+        np.testing.assert_allclose(sorted(drawn[:, 1]), sorted(np.full(N, 10.0)), rtol=1e-12)
+    labels = [t.get_text() for t in fig.axes[1].get_legend().get_texts()]
+    assert labels == [f"b{i:02d}" for i in range(10)] + ["3 other bearings"]

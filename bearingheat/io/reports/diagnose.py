@@ -24,7 +24,8 @@ from bearingheat.io.files import write_outputs as write_files
 from bearingheat.io.json import json_safe
 from bearingheat.io.reports import FIGURE_DPI, matplotlib_figure
 
-__all__ = ["plot_residuals", "plot_measured_vs_predicted", "report_markdown", "write_outputs", "summary_lines"]
+__all__ = ["plot_residuals", "residuals_figure", "plot_measured_vs_predicted", "report_markdown", "write_outputs",
+           "summary_lines"]
 
 #: at most this many points are drawn (a seeded random subset of larger data sets)
 _PLOT_POINTS = 4000
@@ -42,8 +43,26 @@ def _predicted(score: CandidateScore) -> np.ndarray:
     return score.predicted
 
 
-def plot_residuals(diagnosis: Diagnosis, path: Path) -> str:
-    """Relative residual against the key regressor, before and after; returns the regressor's name."""
+#: bearings named in the legend of the residual plot (the ones with the most rows); the others share one entry
+_LEGEND_BEARINGS = 10
+
+
+def _domain_lines(summary: dict[str, Any]) -> list[str]:
+    """What calc --effects checks, as the report states it: the base model and the fitted ranges."""
+    if summary["effect"] == "none":
+        return []
+    ranges = ", ".join(f"{key} {value[0]:g} to {value[1]:g}" for key, value in summary["domain"].items()
+                       if key != "bearings")
+    return [f"Fitted on the {summary['base_model']} model over {ranges}; `calc --effects` refuses rows of another "
+            "model and warns on rows outside these ranges.", ""]
+
+
+def residuals_figure(diagnosis: Diagnosis) -> tuple[Any, str]:
+    """The figure of :func:`plot_residuals` and the key regressor's name.
+
+    Every bearing's rows are drawn; the legend names the :data:`_LEGEND_BEARINGS` bearings with the most
+    rows and draws the rest in one colour as 'other bearings'.
+    """
     Figure = matplotlib_figure()
 
     data = diagnosis.data
@@ -52,19 +71,31 @@ def plot_residuals(diagnosis: Diagnosis, path: Path) -> str:
     rows = _plot_rows(len(data))
     before = (data.M - _predicted(diagnosis.scores["none"])) / data.M * 100.0
     after = (data.M - _predicted(diagnosis.chosen)) / data.M * 100.0
+    counts = np.bincount(data.bearing, minlength=len(data.bearing_names))
+    named = sorted(np.argsort(-counts, kind="stable")[:_LEGEND_BEARINGS].tolist())
+    others = rows[~np.isin(data.bearing[rows], named)]
     fig = Figure(figsize=(9, 3.6))
     axes = fig.subplots(1, 2, sharey=True)
     for ax, residual, title in ((axes[0], before, "catalogue model"),
                                 (axes[1], after, f"with {diagnosis.effect}")):
-        for code, name in enumerate(data.bearing_names[:10]):
+        for code in named:
             mine = rows[data.bearing[rows] == code]
-            ax.scatter(x[mine], residual[mine], s=6, alpha=0.6, label=name)
+            ax.scatter(x[mine], residual[mine], s=6, alpha=0.6, label=data.bearing_names[code])
+        if len(others):
+            rest = len(data.bearing_names) - len(named)
+            ax.scatter(x[others], residual[others], s=6, alpha=0.4, color="0.5", label=f"{rest} other bearings")
         ax.axhline(0.0, color="k", lw=0.8)
         ax.set_xlabel(f"{key} [{REGRESSOR_UNITS[key]}]")
         ax.set_title(title, fontsize=10)
     axes[0].set_ylabel("(M measured − M model)/M measured [%]")
     axes[1].legend(fontsize=7, loc="best")
     fig.tight_layout()
+    return fig, key
+
+
+def plot_residuals(diagnosis: Diagnosis, path: Path) -> str:
+    """Relative residual against the key regressor, before and after; returns the regressor's name."""
+    fig, key = residuals_figure(diagnosis)
     fig.savefig(path, dpi=FIGURE_DPI, format="png")
     return key
 
@@ -102,6 +133,7 @@ def report_markdown(diagnosis: Diagnosis, summary: dict[str, Any], key: str) -> 
         f"{summary['n_excluded']} row(s) excluded.", "",
         f"**Effect found: `{summary['effect']}`**: {summary['description']}.", "",
         f"Parameters: {format_value(summary['parameters']) or '(none)'}", "",
+        *_domain_lines(summary),
         "## Error before and after", "",
         "| | RMSE [N·mm] | MAPE [%] | bias, measured − model [N·mm] |", "|---|---|---|---|",
         f"| catalogue model, fitting data | {format_value(summary['rmse_before'])} | {format_value(summary['mape_before'])} "

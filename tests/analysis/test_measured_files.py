@@ -1,0 +1,196 @@
+"""Measured files as diagnose and lab read them: the decimal mark, the rows messages cite, headers that look like
+a measured column, blank group labels, why too few rows were left, the arguments of diagnose."""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+from diagnose_cases import small_table
+
+from bearingheat.analysis.diagnose import (DiagnoseError, diagnose, diagnose_measurements, diagnose_table,
+                                           model_data, read_measurements)
+from bearingheat.analysis.lab import process_lab
+from bearingheat.errors import LabError
+from bearingheat.io.tables import calc_csv, read_table
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+MEASURED = EXAMPLES / "measured_torque_example.csv"
+READINGS = EXAMPLES / "lab_dp11a_example.csv"
+
+
+def _exactly(message: str) -> str:
+    return f"^{re.escape(message)}$"
+
+
+def _euro(source: Path, target: Path) -> Path:
+    """The same table as a spreadsheet of a comma-decimal locale writes it: ';' between cells, ',' in numbers."""
+    pd.read_csv(source).to_csv(target, sep=";", decimal=",", index=False)
+    return target
+
+
+# ---- the file's decimal mark -------------------------------------------------------------------
+
+def test_a_comma_decimal_csv_diagnoses_as_the_point_csv(tmp_path):
+    euro = _euro(MEASURED, tmp_path / "euro.csv")
+    assert "0,0;8,0;70,0;" in euro.read_text().splitlines()[1]  # the measured columns are text with commas
+    point = diagnose_measurements(read_measurements(read_table(MEASURED)))
+    for table in (read_table(euro), read_table(euro, sep=";", decimal=",")):
+        comma = diagnose_measurements(read_measurements(table))
+        assert comma.effect == point.effect == "seal_drag"
+        np.testing.assert_allclose(comma.data.M, point.data.M, rtol=1e-12)
+        np.testing.assert_allclose(comma.data.T_oil, point.data.T_oil, rtol=1e-12)
+        got, expected = comma.summary(), point.summary()
+        for key in ("rmse_before", "rmse_after", "cv_rmse_after", "mape_before", "bias_before", "n_rows"):
+            assert got[key] == pytest.approx(expected[key], rel=1e-12)
+        for name, value in expected["parameters"]["M_seal [N*mm]"].items():
+            assert got["parameters"]["M_seal [N*mm]"][name] == pytest.approx(value, rel=1e-12)
+
+
+def test_a_point_in_a_comma_decimal_file_is_no_number(tmp_path):
+    euro = _euro(MEASURED, tmp_path / "euro.csv")
+    lines = euro.read_text().splitlines()
+    lines[3] = ";".join(lines[3].split(";")[:-1] + ["19.68"])
+    euro.write_text("\n".join(lines) + "\n")
+    measured = read_measurements(read_table(euro, decimal=","))
+    assert measured.row_errors[2] == ["row 4: '19.68' is not a number for M [N*mm] (the decimal mark is ',')"]
+
+
+def test_a_comma_decimal_csv_of_lab_readings(tmp_path):
+    euro = _euro(READINGS, tmp_path / "lab_euro.csv")
+    point = process_lab(read_table(READINGS))
+    comma = process_lab(read_table(euro, sep=";", decimal=","))
+    for task in ("task1", "task2", "task3", "comparison"):
+        pd.testing.assert_frame_equal(getattr(comma, task), getattr(point, task), rtol=1e-12, check_exact=False)
+
+
+# ---- the row a message cites -------------------------------------------------------------------
+
+def test_messages_cite_the_line_of_the_file_as_calc_does(tmp_path):
+    table = small_table(5)
+    for column in ("Fr [N]", "M [N*mm]"):
+        table[column] = table[column].astype(object)
+    table.loc[3, "Fr [N]"] = "x"          # file line 5
+    table.loc[1, "M [N*mm]"] = "abc"      # file line 3
+    path = tmp_path / "m.csv"
+    table.to_csv(path, index=False)
+    assert calc_csv(path)["message"].iat[3] == "row 5: 'x' is not a number for Fr [N]"
+    measured = read_measurements(read_table(path))
+    assert measured.row_errors[3] == ["row 5: 'x' is not a number for Fr [N]"]
+    assert measured.row_errors[1] == ["row 3: 'abc' is not a number for M [N*mm]"]
+    # a blank line of the file is no row: the rows after it keep their line numbers
+    text = path.read_text().splitlines()
+    path.write_text("\n".join(text[:2] + [""] + text[2:]) + "\n")
+    measured = read_measurements(read_table(path))
+    assert measured.row_errors[1] == ["row 4: 'abc' is not a number for M [N*mm]"]
+    assert calc_csv(path)["message"].iat[3] == "row 6: 'x' is not a number for Fr [N]"
+    # a sheet: the sheet's row, as calc names the cell (Sheet1!B4)
+    book = tmp_path / "m.xlsx"
+    table.to_excel(book, index=False)
+    assert read_measurements(read_table(book)).row_errors[1] == ["row 3: 'abc' is not a number for M [N*mm]"]
+    # a table without lines (the API, Parquet): the row's position + 1
+    assert read_measurements(table).row_errors[1] == ["row 2: 'abc' is not a number for M [N*mm]"]
+
+
+def test_model_errors_cite_the_line_of_the_file(tmp_path):
+    table = small_table(4)
+    table["designation"] = ["6205", "6205", "6205", "9999X"]
+    table["d [mm]"], table["D [mm]"] = table["d [mm]"].astype(object), table["D [mm]"].astype(object)
+    table.loc[3, ["d [mm]", "D [mm]"]] = None
+    path = tmp_path / "m.csv"
+    table.to_csv(path, index=False)
+    calc_message = calc_csv(path)["message"].iat[3]
+    _, _, excluded = model_data(read_measurements(read_table(path)))
+    assert calc_message.startswith("row 5: ")
+    assert [e.split(": ")[0] for e in excluded] == ["row 5"]
+
+
+def test_lab_messages_cite_the_line_of_the_file(tmp_path):
+    table = pd.read_csv(READINGS).astype({"Q [kg]": object})
+    table.loc[1, "Q [kg]"] = "heavy"
+    path = tmp_path / "r.csv"
+    table.to_csv(path, index=False)
+    with pytest.raises(LabError, match=_exactly("row 3: 'heavy' is not a number for Q [kg]")):
+        process_lab(read_table(path))
+    table.loc[1, "Q [kg]"] = -1.0
+    table.to_csv(path, index=False)
+    with pytest.raises(LabError, match=_exactly("row 3: Q [kg] = -1 must be > 0")):
+        process_lab(read_table(path))
+
+
+# ---- headers that look like a measured column ------------------------------------------------------------
+
+@pytest.mark.parametrize("header,message", [
+    ("T_oil (degC)", "column 'T_oil (degC)' looks like 'T_oil', which is not read from it: name it 'T_oil [degC]' "
+                     "(headers are 'name [unit]', the name in its own letters); as it is, the oil temperature would "
+                     "be taken as not measured"),
+    ("t(h)", "column 't(h)' looks like 't', which is not read from it: name it 't [h]' (headers are 'name [unit]', "
+             "the name in its own letters); as it is, the running time would be taken as not measured (and run_in "
+             "as not applicable)"),
+    ("Group", "column 'Group' looks like 'group', which is not read from it: name it 'group' (headers are "
+              "'name [unit]', the name in its own letters); as it is, the rows would be grouped by operating point "
+              "instead of by these labels"),
+    ("T_OIL [degC]", "column 'T_OIL [degC]' looks like 'T_oil', which is not read from it: name it 'T_oil [degC]' "
+                     "(headers are 'name [unit]', the name in its own letters); as it is, the oil temperature would "
+                     "be taken as not measured"),
+])
+def test_a_header_that_looks_like_a_measured_column_is_refused(header, message):
+    table = small_table(4)
+    table[header] = [1.0, 2.0, 3.0, 4.0]
+    with pytest.raises(DiagnoseError, match=_exactly(message)):
+        read_measurements(table)
+
+
+def test_a_torque_header_with_its_unit_in_parentheses_is_refused():
+    table = small_table(4).rename(columns={"M [N*mm]": "M (N*m)"})
+    with pytest.raises(DiagnoseError, match=_exactly(
+            "column 'M (N*m)' looks like 'M', which is not read from it: name it 'M [N*m]' (headers are "
+            "'name [unit]', the name in its own letters); as it is, the table would have no measured torque")):
+        read_measurements(table)
+
+
+def test_the_measured_column_itself_beside_a_lookalike_is_read():
+    table = small_table(4)
+    table["T_oil [degC]"] = 60.0
+    table["T_oil (max) [degC]"] = 80.0   # another column, not a unit written another way
+    assert np.all(read_measurements(table).T_oil == 60.0)
+
+
+# ---- blank group labels --------------------------------------------------------------------------------
+
+def test_a_blank_group_label_is_a_row_error(tmp_path):
+    table = small_table(4)
+    table["group"] = ["run 1", None, "run 2", " "]
+    path = tmp_path / "g.csv"
+    table.to_csv(path, index=False)
+    measured = read_measurements(read_table(path))
+    assert measured.row_errors == [
+        [], ["row 3: group is blank; with a group column every row needs its label (the run it belongs to)"],
+        [], ["row 5: group is blank; with a group column every row needs its label (the run it belongs to)"]]
+
+
+# ---- why too few rows are left; the arguments of diagnose --------------------------------------------
+
+def test_too_few_rows_says_why_rows_were_left_out():
+    table = small_table(25)
+    table["T_oil [degC]"] = 400.0
+    with pytest.raises(DiagnoseError, match=_exactly(
+            'diagnose needs at least 20 usable rows of measured torque; got 0; 25 rows left out, the first: '
+            'row 1: T_oil = 400 degC is outside -60 to 300 degC')):
+        diagnose_table(table)
+
+
+def test_folds_and_candidates_are_checked():
+    data, _, _ = model_data(read_measurements(small_table(25)))
+    with pytest.raises(DiagnoseError, match=_exactly(
+            'k = 1: the grouped cross-validation needs an integer number of folds >= 2')):
+        diagnose(data, k=1)
+    with pytest.raises(DiagnoseError, match=_exactly(
+            "candidate 'seal' is not one of none, seal_drag, f0_scale, viscosity_heating, drag_losses, run_in, "
+            "preload")):
+        diagnose(data, candidates=["seal"])
+    with pytest.raises(DiagnoseError, match=_exactly(
+            '5-fold cross-validation needs at least 5 operating points (groups); got 1')):
+        diagnose(data, k=5)
