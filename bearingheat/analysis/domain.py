@@ -89,12 +89,12 @@ def outside(domain: dict[str, Any], values: dict[str, np.ndarray], positions: np
         if _key(quantity) not in domain or quantity not in values:
             continue
         low, high = domain[_key(quantity)]
-        column = np.asarray(values[quantity], dtype=float)
+        column = np.asarray(values[quantity], dtype=float)[positions]
         slack = _MARGIN * max(abs(low), abs(high))
-        for i in positions.tolist():
-            value = column[i]
-            if value < low - slack or value > high + slack:
-                problems.append((int(i), "warning",
-                                 f"diagnose effect {effect}: {quantity} = {value:g} {unit} is outside the range it "
-                                 f"was fitted on ({low:g} to {high:g} {unit}): the effect is extrapolated there"))
+        beyond = (column < low - slack) | (column > high + slack)  # (NaN compares False: not judged)
+        for i, value in zip(positions[beyond].tolist(), column[beyond].tolist()):  # texts for those rows only
+            problems.append((int(i), "warning",
+                             f"diagnose effect {effect}: {quantity} = {value:g} {unit} is outside the range it "
+                             f"was fitted on ({low:g} to {high:g} {unit}): the effect is extrapolated there"))
+    problems.sort(key=lambda problem: problem[0])  # row by row, each row's quantities in the order above
     return problems

@@ -76,7 +76,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="digitised chart of the SKF drag loss factor VM against H/dm: oil-bath rows of the SKF "
                              "model with a blank VM read it off (docs/skf.md gives the format)")
     parser.add_argument("--effects", metavar="SUMMARY_JSON",
-                        help="apply an effect fitted by 'bearingheat diagnose' (its summary.json)")
+                        help="apply an effect fitted by 'bearingheat diagnose' (its summary.json); a row outside the "
+                             "speeds, sizes or loads it was fitted on gets a warning, a row of another friction "
+                             "model than the one it was fitted on an error")
     parser.add_argument("--sheet", metavar="NAME", help="input sheet of an Excel workbook")
     parser.add_argument("--in-place", action="store_true",
                         help="Excel: write the results sheet into the input workbook (atomic)")
