@@ -28,6 +28,7 @@ import numpy as np
 from scipy import stats
 
 __all__ = [
+    "CONFIDENCE",
     "MAD_TO_SIGMA",
     "robust_scale",
     "consistent_scale",
@@ -36,6 +37,8 @@ __all__ = [
     "median_interval",
 ]
 
+#: two-sided confidence level of the audits' intervals (coefficients, implied f0 of a group)
+CONFIDENCE = 0.95
 #: 1/Φ⁻¹(3/4): MAD·1.4826 estimates the standard deviation of a normal sample
 MAD_TO_SIGMA = 1.0 / stats.norm.ppf(0.75)
 
