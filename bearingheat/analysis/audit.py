@@ -32,7 +32,7 @@ from scipy import optimize, stats
 
 from bearingheat.analysis.deviations import CONFIDENCE
 from bearingheat.analysis.diagnose import model_data, read_measurements
-from bearingheat.analysis.effects import ModelData, catalogue_arrays
+from bearingheat.analysis.effects import catalogue_arrays
 from bearingheat.analysis.reference_speeds import (GROUP_COLUMNS, REFERENCE_SPEED_COLUMNS, ROUNDING_STEPS,
                                                    SYSTEMATIC_RULE, ReferenceSpeedAudit, audit_reference_speeds,
                                                    classify_reference_speeds, implied_coefficients, rounding_step,
@@ -101,7 +101,9 @@ def audit_coefficients(table: pd.DataFrame, *, confidence: float = CONFIDENCE) -
     (f0, f1 or f1_a, f2), ``table`` (the Schaeffler catalogue value, NaN for f2 read off
     a chart), ``fitted``, ``se``, ``ci_low``, ``ci_high``, ``rows``,
     ``rel_rmse`` [1], ``flag`` ('' or 'table value outside the 95 % interval')
-    and ``status`` ('ok' or the reason the bearing could not be fitted).
+    and ``status`` ('ok' or the reason the coefficient could not be fitted). A coefficient whose term
+    is 0 in every row of a bearing (f1 of a no-load spin test, Fr = 0 so M1 = 0) is not fitted and its
+    status says why; the other coefficients are fitted without it.
     """
     try:
         measured = read_measurements(table)
@@ -146,19 +148,21 @@ def audit_coefficients(table: pd.DataFrame, *, confidence: float = CONFIDENCE) -
             table_values.append(float(np.nanmedian(given)) if np.any(~np.isnan(given)) else math.nan)
             columns.append(X2[mine])
         X = np.column_stack(columns)
-        status = _identifiable(X, names, data, mine)
         base = {"bearing": name, "rows": n_rows}
-        if status:
-            for coef, ref in zip(names, table_values):
+        unfitted = _without_trace(X, names, data.load[mine])
+        kept = [j for j in range(len(names)) if j not in unfitted]
+        status = _identifiable(X[:, kept], [names[j] for j in kept])
+        fit = fit_linear_coefficients(X[:, kept], data.M[mine], confidence=confidence) if not status else None
+        for j, (coef, ref) in enumerate(zip(names, table_values)):
+            if fit is None or j in unfitted:
                 out.append({**base, "coefficient": coef, "table": ref, "fitted": math.nan, "se": math.nan,
                             "ci_low": math.nan, "ci_high": math.nan, "rel_rmse": math.nan, "flag": "",
-                            "status": status})
-            continue
-        fit = fit_linear_coefficients(X, data.M[mine], confidence=confidence)
-        for j, (coef, ref) in enumerate(zip(names, table_values)):
-            outside = not math.isnan(ref) and not (fit["low"][j] <= ref <= fit["high"][j])
-            out.append({**base, "coefficient": coef, "table": ref, "fitted": float(fit["theta"][j]),
-                        "se": float(fit["se"][j]), "ci_low": float(fit["low"][j]), "ci_high": float(fit["high"][j]),
+                            "status": unfitted.get(j, status)})
+                continue
+            k = kept.index(j)
+            outside = not math.isnan(ref) and not (fit["low"][k] <= ref <= fit["high"][k])
+            out.append({**base, "coefficient": coef, "table": ref, "fitted": float(fit["theta"][k]),
+                        "se": float(fit["se"][k]), "ci_low": float(fit["low"][k]), "ci_high": float(fit["high"][k]),
                         "rel_rmse": fit["rel_rmse"],
                         "flag": f"table value outside the {confidence:.0%} interval" if outside else "",
                         "status": "ok"})
@@ -167,9 +171,33 @@ def audit_coefficients(table: pd.DataFrame, *, confidence: float = CONFIDENCE) -
     return result
 
 
-def _identifiable(X: np.ndarray, names: list[str], data: ModelData, mine: np.ndarray) -> str:
-    """'' if the coefficients can be separated, otherwise why not."""
+#: the torque term each coefficient scales
+_TERMS = {"f0": "M0", "f1": "M1", "f1_a": "M1", "f2": "M2"}
+
+
+def _without_trace(X: np.ndarray, names: list[str], load: np.ndarray) -> dict[int, str]:
+    """The coefficients whose term is 0 in every row (column index -> why it is not fitted).
+
+    Such a term leaves no trace in the torque (a no-load spin test has
+    M1 = 0): its coefficient cannot be fitted, and the others are fitted
+    without it.
+    """
+    zero = [j for j in range(X.shape[1]) if np.all(np.isfinite(X[:, j])) and not np.any(X[:, j])]
+    others = ", ".join(names[j] for j in range(len(names)) if j not in zero)
+    reasons = {}
+    for j in zero:
+        term = _TERMS[names[j]]
+        why = "the load is 0 in every row" if term == "M1" and not np.any(load) else f"{term} is 0 in every row"
+        reasons[j] = (f"{names[j]} not fitted: {why} ({len(X)} rows), so {term} = 0 and the torque holds no "
+                      f"information on {names[j]}" + (f"; {others} fitted alone" if others else ""))
+    return reasons
+
+
+def _identifiable(X: np.ndarray, names: list[str]) -> str:
+    """'' if the coefficients can be separated, otherwise why not (no column of X is 0 in every row)."""
     n_rows, p = X.shape
+    if p == 0:
+        return "no coefficient has a term that is not 0 in every row"
     if n_rows <= p:
         return f"{n_rows} rows for {p} coefficients: need more than {p}"
     if not np.all(np.isfinite(X)):
