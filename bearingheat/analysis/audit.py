@@ -97,7 +97,13 @@ def fit_linear_coefficients(X: npt.ArrayLike, M: npt.ArrayLike, *, confidence: f
 def audit_coefficients(table: pd.DataFrame, *, confidence: float = CONFIDENCE) -> pd.DataFrame:
     """Fit f0, f1 (and f2) for each bearing of a measured table and compare them with the tables.
 
-    Returns one row per bearing and coefficient: ``bearing``, ``coefficient``
+    A bearing is fitted once per distinct set of table coefficients (its rows
+    with the same table f0, f1 constant and given f2, :func:`_fit_sets`):
+    one bearing run in an oil bath and with grease gives two fits, each
+    compared with its own table values.
+
+    Returns one row per fit and coefficient: ``bearing``, ``lubrication``
+    (the lubrication of the fit's rows, '' where not given), ``coefficient``
     (f0, f1 or f1_a, f2), ``table`` (the Schaeffler catalogue value, NaN for f2 read off
     a chart), ``fitted``, ``se``, ``ci_low``, ``ci_high``, ``rows``,
     ``rel_rmse`` [1], ``flag`` ('' or 'table value outside the 95 % interval')
@@ -135,9 +141,12 @@ def audit_coefficients(table: pd.DataFrame, *, confidence: float = CONFIDENCE) -
     carries_m2 = a.m2 & (data.Fa > 0)
     X2 = np.where(carries_m2, data.Fa * data.dM, 0.0)
     basis_ratio = (a.f1_basis > 0) & np.isnan(user_f1)
+    lubrication = _texts(frame, "lubrication")[rows]
+    fit_set = _fit_sets(data.bearing, data.f0, a1, table_f2)
     out = []
-    for code, name in enumerate(data.bearing_names):
-        mine = data.bearing == code
+    for code in range(int(fit_set.max()) + 1):
+        mine = fit_set == code
+        name = data.bearing_names[int(data.bearing[mine][0])]
         n_rows = int(mine.sum())
         names = ["f0", "f1_a" if basis_ratio[mine].any() else "f1"]
         table_values = [float(np.nanmedian(data.f0[mine])), float(np.nanmedian(a1[mine]))]
@@ -148,7 +157,7 @@ def audit_coefficients(table: pd.DataFrame, *, confidence: float = CONFIDENCE) -
             table_values.append(float(np.nanmedian(given)) if np.any(~np.isnan(given)) else math.nan)
             columns.append(X2[mine])
         X = np.column_stack(columns)
-        base = {"bearing": name, "rows": n_rows}
+        base = {"bearing": name, "lubrication": ", ".join(sorted(set(lubrication[mine]) - {""})), "rows": n_rows}
         unfitted = _without_trace(X, names, data.load[mine])
         kept = [j for j in range(len(names)) if j not in unfitted]
         status = _identifiable(X[:, kept], [names[j] for j in kept])
@@ -169,6 +178,25 @@ def audit_coefficients(table: pd.DataFrame, *, confidence: float = CONFIDENCE) -
     result = pd.DataFrame(out)
     result.attrs["excluded"] = excluded
     return result
+
+
+def _texts(frame: pd.DataFrame, column: str) -> np.ndarray:
+    """The cleaned texts of a column ('' for blank cells, or every row where the column is absent)."""
+    if column not in frame.columns:
+        return np.full(len(frame), "", dtype=object)
+    values = frame[column].astype(object).to_numpy()
+    return np.array(["" if pd.isna(v) else str(v).strip() for v in values], dtype=object)
+
+
+def _fit_sets(bearing: np.ndarray, f0: np.ndarray, a1: np.ndarray, f2: np.ndarray) -> np.ndarray:
+    """Code of each row's fit: the rows of one bearing with the same table f0, a1 and given f2.
+
+    One bearing run with two lubrications (oil bath f0 = 2, grease f0 = 1.3)
+    has two table f0: pooled, the fit would compare the data with neither.
+    Codes run in the order of the bearings' names, then of f0, a1, f2.
+    """
+    keys = pd.DataFrame({"bearing": bearing, "f0": np.round(f0, 9), "a1": np.round(a1, 12), "f2": np.round(f2, 9)})
+    return keys.groupby(list(keys.columns), sort=True, dropna=False).ngroup().to_numpy()
 
 
 #: the torque term each coefficient scales
