@@ -31,7 +31,7 @@ import pandas as pd
 from scipy import optimize, stats
 
 from bearingheat.analysis.deviations import CONFIDENCE
-from bearingheat.analysis.diagnose import model_data, read_measurements
+from bearingheat.analysis.diagnose import model_data, operating_point_groups, read_measurements
 from bearingheat.analysis.effects import catalogue_arrays
 from bearingheat.analysis.reference_speeds import (GROUP_COLUMNS, REFERENCE_SPEED_COLUMNS, ROUNDING_STEPS,
                                                    SYSTEMATIC_RULE, ReferenceSpeedAudit, audit_reference_speeds,
@@ -48,6 +48,7 @@ __all__ = [
     "GROUP_COLUMNS",
     "ReferenceSpeedAudit",
     "fit_linear_coefficients",
+    "point_means",
     "audit_coefficients",
     "audit_reference_speeds",
     "rounding_step",
@@ -61,18 +62,37 @@ __all__ = [
 # Coefficient fit
 # ---------------------------------------------------------------------------------------------
 
-def fit_linear_coefficients(X: npt.ArrayLike, M: npt.ArrayLike, *, confidence: float = CONFIDENCE) -> dict[str, Any]:
+def fit_linear_coefficients(X: npt.ArrayLike, M: npt.ArrayLike, *, groups: npt.ArrayLike | None = None,
+                            confidence: float = CONFIDENCE) -> dict[str, Any]:
     """Least squares fit of M = X·θ on relative residuals (M − X·θ)/M, with confidence intervals.
 
     Uses ``scipy.optimize.curve_fit`` (trust region reflective, σ = M) on the
     exact Jacobian X/M; its covariance is s²·(JᵀJ)⁻¹ with
     s² = Σr²/(N − p), and the interval is θ ± t(1 − α/2, N − p)·se.
 
+    ``groups`` (a label per row: its operating point) makes the operating
+    point the unit of the fit: the rows of a group are replaced by their
+    mean (of M and of each column of X; the model is linear, so the means
+    follow it exactly) and N is the number of groups. Repeated readings at
+    one point share its deviation (the rig's setting, the oil's temperature)
+    and are no independent evidence of the coefficients: counted as rows,
+    four copies of a data set would halve every interval. A cluster-robust
+    (sandwich) covariance over the groups was not chosen: with the few
+    operating points of a bearing test it is biased low unless corrected
+    (CR2 with Satterthwaite degrees of freedom), and with one reading per
+    point it is White's HC0, not s²·(JᵀJ)⁻¹, so it would change the
+    intervals of data without repeats. Fitting the means leaves those
+    unchanged (every row its own group) and gives a set copied k times the
+    same intervals. Points with more readings weigh alike; the means'
+    noise is then slightly unequal, which the interval ignores.
+
     >>> X = np.array([[1.0, 1.0], [1.0, 2.0], [1.0, 3.0], [1.0, 4.0]])
     >>> fit = fit_linear_coefficients(X, X @ np.array([2.0, 0.5]))
     >>> np.round(fit["theta"], 10).tolist(), fit["dof"]
     ([2.0, 0.5], 2)
     """
+    if groups is not None:
+        X, M = point_means(X, M, groups)
     X = np.asarray(X, dtype=float)
     M = np.asarray(M, dtype=float)
     N, p = X.shape
@@ -94,6 +114,20 @@ def fit_linear_coefficients(X: npt.ArrayLike, M: npt.ArrayLike, *, confidence: f
             "rel_rmse": math.sqrt(sse / N)}
 
 
+def point_means(X: npt.ArrayLike, M: npt.ArrayLike, groups: npt.ArrayLike) -> tuple[np.ndarray, np.ndarray]:
+    """The mean of the rows of X and of M in each group (groups in order of first appearance).
+
+    >>> point_means([[1.0, 2.0], [3.0, 4.0], [5.0, 6.0]], [1.0, 3.0, 5.0], ["a", "a", "b"])[1].tolist()
+    [2.0, 5.0]
+    """
+    X = np.asarray(X, dtype=float)
+    M = np.asarray(M, dtype=float)
+    codes, _ = pd.factorize(pd.Series(np.asarray(groups), dtype=object))
+    counts = np.bincount(codes).astype(float)
+    means = np.column_stack([np.bincount(codes, weights=X[:, j]) / counts for j in range(X.shape[1])])
+    return means.reshape(len(counts), X.shape[1]), np.bincount(codes, weights=M) / counts
+
+
 def audit_coefficients(table: pd.DataFrame, *, confidence: float = CONFIDENCE) -> pd.DataFrame:
     """Fit f0, f1 (and f2) for each bearing of a measured table and compare them with the tables.
 
@@ -105,7 +139,9 @@ def audit_coefficients(table: pd.DataFrame, *, confidence: float = CONFIDENCE) -
     Returns one row per fit and coefficient: ``bearing``, ``lubrication``
     (the lubrication of the fit's rows, '' where not given), ``coefficient``
     (f0, f1 or f1_a, f2), ``table`` (the Schaeffler catalogue value, NaN for f2 read off
-    a chart), ``fitted``, ``se``, ``ci_low``, ``ci_high``, ``rows``,
+    a chart), ``fitted``, ``se``, ``ci_low``, ``ci_high``, ``rows``, ``points``
+    (operating points: the rows' distinct bearing, n, ν, Fr, Fa, T_oil, or
+    the user's ``group`` labels),
     ``rel_rmse`` [1], ``flag`` ('' or 'table value outside the 95 % interval')
     and ``status`` ('ok' or the reason the coefficient could not be fitted). A coefficient whose term
     is 0 in every row of a bearing (f1 of a no-load spin test, Fr = 0 so M1 = 0) is not fitted and its
@@ -143,6 +179,9 @@ def audit_coefficients(table: pd.DataFrame, *, confidence: float = CONFIDENCE) -
     basis_ratio = (a.f1_basis > 0) & np.isnan(user_f1)
     lubrication = _texts(frame, "lubrication")[rows]
     fit_set = _fit_sets(data.bearing, data.f0, a1, table_f2)
+    # the operating point of each row, as diagnose groups its folds (or the user's 'group' column)
+    point = operating_point_groups([fit_set, data.n, data.nu, data.Fr, data.Fa, data.T_oil],
+                                   measured.group[rows] if measured.group is not None else None)
     out = []
     for code in range(int(fit_set.max()) + 1):
         mine = fit_set == code
@@ -157,11 +196,13 @@ def audit_coefficients(table: pd.DataFrame, *, confidence: float = CONFIDENCE) -
             table_values.append(float(np.nanmedian(given)) if np.any(~np.isnan(given)) else math.nan)
             columns.append(X2[mine])
         X = np.column_stack(columns)
-        base = {"bearing": name, "lubrication": ", ".join(sorted(set(lubrication[mine]) - {""})), "rows": n_rows}
+        X_point, M_point = point_means(X, data.M[mine], point[mine])
+        base = {"bearing": name, "lubrication": ", ".join(sorted(set(lubrication[mine]) - {""})), "rows": n_rows,
+                "points": len(M_point)}
         unfitted = _without_trace(X, names, data.load[mine])
         kept = [j for j in range(len(names)) if j not in unfitted]
-        status = _identifiable(X[:, kept], [names[j] for j in kept])
-        fit = fit_linear_coefficients(X[:, kept], data.M[mine], confidence=confidence) if not status else None
+        status = _identifiable(X_point[:, kept], [names[j] for j in kept], n_rows)
+        fit = fit_linear_coefficients(X_point[:, kept], M_point, confidence=confidence) if not status else None
         for j, (coef, ref) in enumerate(zip(names, table_values)):
             if fit is None or j in unfitted:
                 out.append({**base, "coefficient": coef, "table": ref, "fitted": math.nan, "se": math.nan,
@@ -221,17 +262,22 @@ def _without_trace(X: np.ndarray, names: list[str], load: np.ndarray) -> dict[in
     return reasons
 
 
-def _identifiable(X: np.ndarray, names: list[str]) -> str:
-    """'' if the coefficients can be separated, otherwise why not (no column of X is 0 in every row)."""
-    n_rows, p = X.shape
+def _identifiable(X: np.ndarray, names: list[str], n_rows: int) -> str:
+    """'' if the coefficients can be separated with residual degrees of freedom, otherwise why not.
+
+    X holds one row per operating point (:func:`point_means` of ``n_rows``
+    rows) and no column that is 0 in every row.
+    """
+    n_points, p = X.shape
     if p == 0:
         return "no coefficient has a term that is not 0 in every row"
-    if n_rows <= p:
-        return f"{n_rows} rows for {p} coefficients: need more than {p}"
     if not np.all(np.isfinite(X)):
         return "a regressor is not finite (missing C0 or load)"
     scaled = X / np.linalg.norm(X, axis=0)
     if np.linalg.matrix_rank(scaled, tol=1e-8) < p:
         return ("the coefficients cannot be separated: " + ", ".join(names) +
                 " need rows where n·ν and the load vary independently")
+    if n_points <= p:
+        return (f"{n_points} operating points ({n_rows} rows) for {p} coefficients: need more than {p} for an "
+                "interval (repeated readings at one point count once)")
     return ""
