@@ -1,7 +1,8 @@
 """What ``bearingheat audit`` writes: the audit tables as text, CSV files and the reference speed figure.
 
 The coefficient audit (:func:`bearingheat.analysis.audit.audit_coefficients`)
-is printed as one table and written to ``coefficients.csv``. The reference
+is printed as one table and written to ``coefficients.csv``; the rows it left
+out are counted and listed (the first 20) and written to ``excluded.csv``. The reference
 speed audit (:func:`bearingheat.analysis.audit.audit_reference_speeds`,
 grouped by :func:`~bearingheat.analysis.audit.classify_reference_speeds`)
 is printed with the flagged groups and their implied f0 first, then the
@@ -23,8 +24,8 @@ from bearingheat.io.files import write_outputs
 from bearingheat.io.tables import escape_formulas
 from bearingheat.io.reports import FIGURE_DPI, matplotlib_figure
 
-__all__ = ["coefficient_lines", "excluded_lines", "COEFFICIENT_TITLE", "reference_speed_lines", "write_coefficients", "write_reference_speeds",
-           "draw_reference_speeds", "REFERENCE_SPEED_FILES"]
+__all__ = ["coefficient_lines", "excluded_lines", "EXCLUDED_FILE", "COEFFICIENT_TITLE", "reference_speed_lines",
+           "write_coefficients", "write_reference_speeds", "draw_reference_speeds", "REFERENCE_SPEED_FILES"]
 
 #: at most this many excluded rows are listed under the coefficient table
 SHOWN_EXCLUDED = 20
@@ -37,9 +38,22 @@ REFERENCE_SPEED_FILES = ("reference_speeds.csv", "reference_speed_series.csv", "
 COEFFICIENT_TITLE = "Coefficients fitted to the measured torque (95 % confidence intervals):"
 
 
-def excluded_lines(result: pd.DataFrame) -> list[str]:
-    """The rows the coefficient fit left out, a line each (at most :data:`SHOWN_EXCLUDED`)."""
-    return [f"excluded: {message}" for message in result.attrs.get("excluded", [])[:SHOWN_EXCLUDED]]
+#: the file of the rows the coefficient fit left out, with their reasons
+EXCLUDED_FILE = "excluded.csv"
+
+
+def excluded_lines(result: pd.DataFrame, out_dir=None) -> list[str]:
+    """The rows the coefficient fit left out: a count (naming ``out_dir``/excluded.csv where it is written),
+    then a line each, at most :data:`SHOWN_EXCLUDED` and '... N more'."""
+    excluded = list(result.attrs.get("excluded", []))
+    if not excluded:
+        return []
+    where = f", all listed with their reasons in {Path(out_dir) / EXCLUDED_FILE}" if out_dir is not None else ""
+    lines = [f"{len(excluded)} row{'s' if len(excluded) > 1 else ''} excluded from the fit{where}:"]
+    lines += [f"excluded: {message}" for message in excluded[:SHOWN_EXCLUDED]]
+    if len(excluded) > SHOWN_EXCLUDED:
+        lines.append(f"... {len(excluded) - SHOWN_EXCLUDED} more")
+    return lines
 
 
 def coefficient_lines(result: pd.DataFrame) -> list[str]:
@@ -117,8 +131,14 @@ def _csv(frame: pd.DataFrame):
 
 
 def write_coefficients(result: pd.DataFrame, out_dir, *, force: bool = False, inputs=()) -> list[Path]:
-    """``coefficients.csv`` in ``out_dir``, atomically; an existing file is replaced only with ``force``."""
-    return write_outputs(out_dir, {"coefficients.csv": _csv(result)}, force=force, inputs=inputs)
+    """``coefficients.csv`` in ``out_dir``, and ``excluded.csv`` (column ``reason``, a row each) where rows were
+    excluded or an earlier run left one (replaced, so that it never lists another run's rows); each atomically,
+    an existing file replaced only with ``force``."""
+    writers = {"coefficients.csv": _csv(result)}
+    excluded = list(result.attrs.get("excluded", []))
+    if excluded or (Path(out_dir) / EXCLUDED_FILE).exists():
+        writers[EXCLUDED_FILE] = _csv(pd.DataFrame({"reason": pd.Series(excluded, dtype=object)}))
+    return write_outputs(out_dir, writers, force=force, inputs=inputs)
 
 
 def write_reference_speeds(audit: ReferenceSpeedAudit, out_dir, *, force: bool = False, inputs=()) -> list[Path]:
