@@ -281,7 +281,9 @@ class ReferenceSpeedAudit:
     (see :data:`GROUP_COLUMNS`). ``scale`` is the robust scale σ of the
     medians of the consistent series, ``threshold`` = SYSTEMATIC_Z·σ the
     median deviation beyond which a group deviates, ``consistent`` how
-    many series gave σ.
+    many series gave σ (0 where σ is SCALE_FLOOR because fewer than
+    MIN_CONSISTENT series agree), ``series`` how many series have a
+    computed median deviation.
     """
 
     bearings: pd.DataFrame
@@ -289,6 +291,7 @@ class ReferenceSpeedAudit:
     scale: float
     threshold: float
     consistent: int
+    series: int = 0
 
     @property
     def flagged(self) -> pd.DataFrame:
@@ -426,7 +429,8 @@ def classify_reference_speeds(rows: pd.DataFrame, *, confidence: float = CONFIDE
                                              flag=True))
     groups = pd.DataFrame(records, columns=list(GROUP_COLUMNS))
     _judge_spread(groups, split=[len(classes[k]) > 1 for k in series_keys])
-    return ReferenceSpeedAudit(bearings, groups, sigma, threshold, int(np.sum(kept)))
+    return ReferenceSpeedAudit(bearings, groups, sigma, threshold, int(np.sum(kept)),
+                               int(np.isfinite(np.asarray(whole_medians, dtype=float)).sum()))
 
 
 def _judge_spread(groups: pd.DataFrame, split: list[bool]) -> None:

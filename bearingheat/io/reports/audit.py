@@ -19,7 +19,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from bearingheat.analysis.audit import SYSTEMATIC_RULE, ReferenceSpeedAudit
+from bearingheat.analysis.reference_speeds import MIN_CONSISTENT, SYSTEMATIC_RULE, ReferenceSpeedAudit
 from bearingheat.io.files import write_outputs
 from bearingheat.io.tables import escape_formulas
 from bearingheat.io.reports import FIGURE_DPI, matplotlib_figure
@@ -77,10 +77,15 @@ def _f1(value: float) -> str:
 def reference_speed_lines(audit: ReferenceSpeedAudit) -> list[str]:
     """The reference speed audit as text lines: flagged groups with their implied f0, outliers, every group, rule."""
     groups = audit.groups
+    if audit.consistent:
+        scale = (f"sigma = {audit.scale:.2%} (robust scale of the median deviations of the {audit.consistent} "
+                 "series that agree with the tables)")
+    else:
+        scale = (f"sigma = {audit.scale:.2%} (the floor, not estimated from the data: of the {audit.series} series, "
+                 f"fewer than {MIN_CONSISTENT} agree with the tables, too few for a robust scale)")
     lines = ["Thermal reference speed from the tables against the published value "
              "(deviation = n_thr(tables)/n_thr(published) - 1).",
-             f"sigma = {audit.scale:.2%} (robust scale of the median deviations of the {audit.consistent} series "
-             f"that agree with the tables); threshold = +/-{audit.threshold:.2%}."]
+             f"{scale}; threshold = +/-{audit.threshold:.2%}."]
     flagged = audit.flagged
     if len(flagged):
         lines.append(f"Flagged groups ({len(flagged)}), with the f0 that reproduces their published speeds "
