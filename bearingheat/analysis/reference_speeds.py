@@ -91,13 +91,51 @@ _GEOMETRY_UNITS = {"d": "mm", "D": "mm", "B": "mm", "T": "mm", "C0": "N", "Y": "
 VARIANT_COLUMNS = ("shield", "seal", "variant")
 
 
-def _convert(values: pd.Series, header: str, unit_text: str | None, target: str) -> np.ndarray:
-    """A catalogue-list column in the catalogue unit (units.convert_column); AuditError naming the column."""
+#: what each column of a list that must be positive holds, for the messages
+_POSITIVE = {"d": "the bore d", "D": "the outside diameter D", "B": "the width B", "T": "the total width T",
+             "C0": "the static load rating C0", "n": "a published speed"}
+
+
+def _convert(values: pd.Series, header: str, unit_text: str | None, target: str, problems: list[list[str]], *,
+             decimal: str = ".", positive: str | None = None, required: bool = False) -> np.ndarray:
+    """A catalogue-list column in the catalogue unit (units.convert_column); AuditError naming the column.
+
+    Each cell that is text but no number ('abc', '5 600', '5,5' where the
+    decimal mark is '.') adds a problem to its row; so does, where
+    ``positive`` names what the column holds, a number that is not finite
+    and > 0, and, where ``required``, a blank cell. Such a cell is NaN.
+    """
+    if decimal == "," and values.dtype == object:  # '3,2' is 3.2 and '1.480' no number, as calc reads them
+        values = values.map(lambda v: (None if "." in v else v.replace(",", ".")) if isinstance(v, str) else v)
     numbers = pd.to_numeric(values, errors="coerce").to_numpy(dtype=float)
+    raw = values.to_numpy(dtype=object)
+    blank = values.isna().to_numpy() | values.astype(str).str.strip().eq("").to_numpy()
+    expected = f" ({positive} must be a finite number > 0)" if positive else ""
+    for i in np.flatnonzero(np.isnan(numbers) & ~blank).tolist():
+        problems[i].append(f"{str(raw[i]).strip()!r} is not a number for {header}{expected}")
+    if required:
+        for i in np.flatnonzero(blank).tolist():
+            problems[i].append(f"{header} is blank{expected}")
     try:
-        return convert_column(numbers, unit_text, target, name=header, header=header)[0]
+        converted = convert_column(numbers, unit_text, target, name=header, header=header)[0]
     except UnitError as exc:
         raise AuditError(f"column {header!r}: {exc}") from exc
+    converted = np.array(converted, dtype=float)
+    if positive:
+        with np.errstate(invalid="ignore"):
+            out_of_range = ~np.isnan(converted) & ~(np.isfinite(converted) & (converted > 0))
+        for i in np.flatnonzero(out_of_range).tolist():
+            problems[i].append(f"{header} = {numbers[i]:g} is outside the expected range{expected}")
+            converted[i] = np.nan
+    return converted
+
+
+def _row_names(table: pd.DataFrame, names: np.ndarray) -> list[str]:
+    """'row 5 (624-2Z)' of each row: the file line where the table was read from a CSV (``attrs['lines']``,
+    as calc cites rows), else the row's position counting from 1."""
+    lines = table.attrs.get("lines")
+    numbers = list(lines) if lines is not None and len(lines) == len(table) else range(1, len(table) + 1)
+    return [f"row {line} ({name})" if name else f"row {line}" for line, name in zip(numbers, names)]
 
 
 def rounding_step(n: npt.ArrayLike, steps: Sequence[tuple[float, float]] = ROUNDING_STEPS) -> np.ndarray:
@@ -212,8 +250,13 @@ def audit_reference_speeds(table: pd.DataFrame, *, speed_column: str | None = No
     ``n_thr_tables`` [1/min], ``deviation`` [1] (tables/published − 1),
     ``f0_table``, ``f0_implied`` with ``f0_implied_low``/``_high`` (at the
     published speed ± half a rounding step), the same for ``f1`` and
-    ``reason`` (why n_thr could not be computed). Group them with
-    :func:`classify_reference_speeds`.
+    ``reason`` ('' where n_thr was computed, otherwise 'row 5 (624-2Z): '
+    and why not: the row is the file line where the table was read from a
+    CSV, else its position from 1). A cell that is text but no number, a
+    published speed that is blank or not finite and > 0, and a d, D, B, T
+    or C0 that is not finite and > 0 leave the row uncomputed, its reason
+    naming the column, the value and the expected range. Group the rows
+    with :func:`classify_reference_speeds`.
     """
     columns: dict[str, str] = {}
     units: dict[str, str | None] = {}
@@ -234,14 +277,21 @@ def audit_reference_speeds(table: pd.DataFrame, *, speed_column: str | None = No
     else:
         frame["type"] = table[columns["type"]].astype(str).str.strip()
         frame["series"] = table[columns["series"]].astype(str).str.strip()
+    problems: list[list[str]] = [[] for _ in range(len(table))]
+    decimal = str(table.attrs.get("decimal", "."))
     for name, target in _GEOMETRY_UNITS.items():
         if name in columns:
-            frame[name] = _convert(table[columns[name]], columns[name], units[name], target)
+            frame[name] = _convert(table[columns[name]], columns[name], units[name], target, problems,
+                                   decimal=decimal, positive=_POSITIVE.get(name))
         elif name in ("d", "D", "C0"):
             raise AuditError(f"missing column: '{name} [{target}]'")
         else:
             frame[name] = np.nan
-    published = _convert(table[columns[published_name]], columns[published_name], units[published_name], "1/min")
+    published = _convert(table[columns[published_name]], columns[published_name], units[published_name], "1/min",
+                         problems, decimal=decimal, positive=_POSITIVE["n"], required=True)
+    in_error = np.array([bool(p) for p in problems], dtype=bool)
+    # a row with a bad cell is not computed (a bore that is no number is not taken from the designation)
+    frame.loc[in_error, [c for c in _GEOMETRY_UNITS if c in frame.columns]] = np.nan
     details = thermal_reference_speed_details(frame)
     computed = details["n_thr"].to_numpy(dtype=float)
     family, series, variant, bore = _series_names(table, columns, frame)
@@ -262,8 +312,11 @@ def audit_reference_speeds(table: pd.DataFrame, *, speed_column: str | None = No
         out["f0_implied" + when] = implied["f0"]
         out["f1_implied" + when] = implied["f1"]
     out = out[[c for c in out.columns if not c.startswith("f1")] + [c for c in out.columns if c.startswith("f1")]]
-    out["reason"] = np.where(np.isnan(published), f"{columns[published_name]}: blank",
-                             details["reason"].to_numpy(dtype=object))
+    computed_columns = ["n_thr_tables", "deviation"] + [c for c in out.columns if "_implied" in c]
+    out.loc[in_error, computed_columns] = np.nan
+    reason = np.where(in_error, ["; ".join(p) for p in problems], details["reason"].to_numpy(dtype=object))
+    named = _row_names(table, out["designation"].astype(str).to_numpy(dtype=object))
+    out["reason"] = [f"{who}: {why}" if why else "" for who, why in zip(named, reason)]
     return out
 
 

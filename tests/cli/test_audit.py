@@ -178,3 +178,21 @@ def test_an_earlier_runs_excluded_rows_are_not_left_behind(tmp_path, capsys):
     assert main(["audit", str(clean), "--out-dir", str(out), "-q"]) == 2     # excluded.csv is there: --force
     assert main(["audit", str(clean), "--out-dir", str(out), "-q", "--force"]) == 0
     assert pd.read_csv(out / "excluded.csv").empty
+
+
+def test_reference_speed_rows_not_computed_are_listed_and_exit_1(tmp_path, capsys):
+    """n_B = 0 in 25 rows of series 62: no reason, deviation inf and exit 0 before; now each row is named, the
+    first 20 are listed with '... 5 more', and the exit code is 1 (as for a row in error elsewhere)."""
+    table = synthetic_catalogue()
+    table = table[table["series"] == "62"].reset_index(drop=True)
+    table.loc[:24, "n_B [1/min]"] = 0
+    source = tmp_path / "list.csv"
+    table.to_csv(source, index=False)
+    assert main(["audit", "--reference-speeds", str(source)]) == 1
+    printed = capsys.readouterr().out.splitlines()
+    start = printed.index("Rows not computed (25), left out of every group:")
+    assert printed[start + 1:start + 22] == [
+        f"  row {i + 2} ({table['designation'].iat[i]}): n_B [1/min] = 0 is outside the expected range (a published "
+        "speed must be a finite number > 0)" for i in range(20)] + ["  ... 5 more"]
+    assert main(["audit", "--reference-speeds", str(source), "-q"]) == 1
+    assert capsys.readouterr() == ("", "")

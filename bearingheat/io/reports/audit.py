@@ -25,9 +25,10 @@ from bearingheat.io.tables import escape_formulas
 from bearingheat.io.reports import FIGURE_DPI, matplotlib_figure
 
 __all__ = ["coefficient_lines", "excluded_lines", "EXCLUDED_FILE", "COEFFICIENT_TITLE", "reference_speed_lines",
-           "write_coefficients", "write_reference_speeds", "draw_reference_speeds", "REFERENCE_SPEED_FILES"]
+           "not_computed_lines", "write_coefficients", "write_reference_speeds", "draw_reference_speeds", "REFERENCE_SPEED_FILES"]
 
-#: at most this many excluded rows are listed under the coefficient table
+#: at most this many excluded rows are listed under the coefficient table (and rows not computed under the
+#: reference speed tables)
 SHOWN_EXCLUDED = 20
 #: the files of the reference speed audit
 REFERENCE_SPEED_FILES = ("reference_speeds.csv", "reference_speed_series.csv", "reference_speeds.png")
@@ -72,6 +73,19 @@ def _f0(value: float) -> str:
 
 def _f1(value: float) -> str:
     return f"{value:.2e}" if pd.notna(value) else "-"
+
+
+def not_computed_lines(bearings: pd.DataFrame) -> list[str]:
+    """The rows of a catalogue list whose n_thr was not computed, with their reasons (the first
+    :data:`SHOWN_EXCLUDED`, then '... N more'); none where every row was computed."""
+    reasons = [str(r) for r in bearings["reason"] if isinstance(r, str) and r] if "reason" in bearings else []
+    if not reasons:
+        return []
+    lines = [f"Rows not computed ({len(reasons)}), left out of every group:"]
+    lines += [f"  {reason}" for reason in reasons[:SHOWN_EXCLUDED]]
+    if len(reasons) > SHOWN_EXCLUDED:
+        lines.append(f"  ... {len(reasons) - SHOWN_EXCLUDED} more")
+    return lines
 
 
 def reference_speed_lines(audit: ReferenceSpeedAudit) -> list[str]:
@@ -126,7 +140,9 @@ def reference_speed_lines(audit: ReferenceSpeedAudit) -> list[str]:
         "systematic": groups["systematic"].to_numpy(),
         "f0 table": groups["f0_table"].map(_f0).to_numpy(),
         "f0 implied": groups["f0_implied"].map(_f0).to_numpy()})
-    lines += ["All series and size classes:", table.to_string(index=False), f"rule: {SYSTEMATIC_RULE}"]
+    lines += ["All series and size classes:", table.to_string(index=False)]
+    lines += not_computed_lines(audit.bearings)
+    lines.append(f"rule: {SYSTEMATIC_RULE}")
     lines += [f"systematic: {g}" for g in flagged["group"]]
     return lines
 
