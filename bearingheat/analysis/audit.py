@@ -201,7 +201,7 @@ def audit_coefficients(table: pd.DataFrame, *, confidence: float = CONFIDENCE) -
                 "points": len(M_point)}
         unfitted = _without_trace(X, names, data.load[mine])
         kept = [j for j in range(len(names)) if j not in unfitted]
-        status = _identifiable(X_point[:, kept], [names[j] for j in kept], n_rows)
+        status = _identifiable(X[:, kept], X_point[:, kept], [names[j] for j in kept])
         fit = fit_linear_coefficients(X_point[:, kept], M_point, confidence=confidence) if not status else None
         for j, (coef, ref) in enumerate(zip(names, table_values)):
             if fit is None or j in unfitted:
@@ -262,22 +262,31 @@ def _without_trace(X: np.ndarray, names: list[str], load: np.ndarray) -> dict[in
     return reasons
 
 
-def _identifiable(X: np.ndarray, names: list[str], n_rows: int) -> str:
+def _separable(X: np.ndarray) -> bool:
+    """The columns of X (none 0 in every row) are linearly independent (rank of the column-scaled X)."""
+    return bool(np.linalg.matrix_rank(X / np.linalg.norm(X, axis=0), tol=1e-8) == X.shape[1])
+
+
+def _identifiable(X: np.ndarray, X_point: np.ndarray, names: list[str]) -> str:
     """'' if the coefficients can be separated with residual degrees of freedom, otherwise why not.
 
-    X holds one row per operating point (:func:`point_means` of ``n_rows``
-    rows) and no column that is 0 in every row.
+    X holds the rows, X_point their operating points' means
+    (:func:`point_means`); no column is 0 in every row.
     """
-    n_points, p = X.shape
+    n_rows, p = X.shape
+    n_points = len(X_point)
     if p == 0:
         return "no coefficient has a term that is not 0 in every row"
     if not np.all(np.isfinite(X)):
         return "a regressor is not finite (missing C0 or load)"
-    scaled = X / np.linalg.norm(X, axis=0)
-    if np.linalg.matrix_rank(scaled, tol=1e-8) < p:
-        return ("the coefficients cannot be separated: " + ", ".join(names) +
-                " need rows where n·ν and the load vary independently")
+    inseparable = ("the coefficients cannot be separated: " + ", ".join(names) +
+                   " need rows where n·ν and the load vary independently")
+    if not _separable(X):
+        return inseparable
     if n_points <= p:
-        return (f"{n_points} operating points ({n_rows} rows) for {p} coefficients: need more than {p} for an "
-                "interval (repeated readings at one point count once)")
+        return (f"{n_points} operating point{'s' if n_points > 1 else ''} ({n_rows} rows) for {p} coefficients: "
+                f"need more than {p} for an interval (the rows of one operating point, or of one group of the "
+                "'group' column, count once)")
+    if not _separable(X_point):
+        return inseparable + " between operating points"
     return ""

@@ -180,3 +180,12 @@ def test_intervals_with_repeated_readings_cover_the_truth_about_95_percent():
     tolerance = 3 * np.sqrt(0.95 * 0.05 / runs)
     assert np.all(np.abs(covered / runs - 0.95) <= tolerance), covered / runs
     assert np.all(naive / runs < 0.85), naive / runs
+
+
+def test_one_group_for_all_rows_leaves_no_interval_and_says_so():
+    table, _ = _one_reading_per_point()
+    result = audit_coefficients(table.assign(group="A"))
+    assert (result["points"] == 1).all() and result["fitted"].isna().all()
+    assert set(result["status"]) == {
+        "1 operating point (30 rows) for 2 coefficients: need more than 2 for an interval (the rows of one "
+        "operating point, or of one group of the 'group' column, count once)"}
