@@ -1,15 +1,16 @@
 """What ``bearingheat audit`` writes: the audit tables as text, CSV files and the reference speed figure.
 
 The coefficient audit (:func:`bearingheat.analysis.audit.audit_coefficients`)
-is printed as one table and written to ``coefficients.csv``; the rows it left
-out are counted and listed (the first 20) and written to ``excluded.csv``. The reference
-speed audit (:func:`bearingheat.analysis.audit.audit_reference_speeds`,
-grouped by :func:`~bearingheat.analysis.audit.classify_reference_speeds`)
-is printed with the flagged groups and their implied f0 first, then the
-outliers, then every group; it is written to ``reference_speeds.csv`` (one
-row per bearing: its group, deviation and outlier mark),
-``reference_speed_series.csv`` (one row per series and size class) and
-``reference_speeds.png`` (deviation against bore for every series, drawn
+is printed as one table and written to ``coefficients.csv``; the rows it
+left out are counted and listed (the first 20) and written to
+``excluded.csv``. The reference speed audit
+(:func:`bearingheat.analysis.audit.audit_reference_speeds`, grouped by
+:func:`~bearingheat.analysis.audit.classify_reference_speeds`) is printed
+with the flagged groups and their implied f0 first, then the outliers, then
+every group and the rows not computed with their reasons; it is written to
+``reference_speeds.csv`` (one row per bearing: its group, deviation and
+outlier mark), ``reference_speed_series.csv`` (one row per series and size
+class) and ``reference_speeds.png`` (deviation against bore for every series, drawn
 with matplotlib's Figure API).
 """
 from __future__ import annotations
