@@ -1,41 +1,28 @@
-"""Coefficient audit: measured torque against the tables, and the tables against the catalogue's own speeds.
+"""Coefficient audit: measured torque against the tables (the first audit of ``bearingheat audit``).
 
-Two audits, both on tables with unit headers:
+:func:`audit_coefficients` fits f0 and f1 (and f2 where a cylindrical
+roller bearing with ribs carries Fa) for each bearing of a measured data
+set (the columns of ``calc`` plus ``M [N*mm]``) by least squares with
+``scipy.optimize.curve_fit``, gives 95 % confidence intervals from the
+Jacobian and flags the Schaeffler catalogue table values that lie outside them.
 
-* :func:`audit_coefficients` fits f0 and f1 (and f2 where a cylindrical
-  roller bearing with ribs carries Fa) for each bearing of a measured data
-  set (the columns of ``calc`` plus ``M [N*mm]``) by least squares with
-  ``scipy.optimize.curve_fit``, gives 95 % confidence intervals from the
-  Jacobian and flags the Schaeffler catalogue table values that lie outside them.
+The model is linear in the coefficients (the Schaeffler catalogue, pp. 64-70)::
 
-  The model is linear in the coefficients (the Schaeffler catalogue, pp. 64-70)::
+    M = f0·X0 + a1·X1 + f2·X2,  X0 = M0/f0 = g(ν·n)·dM³·1e-7,
+    X1 = M1/a1 = load·dM·(P0/C0 or Fa/C0)^x,  X2 = Fa·dM
 
-      M = f0·X0 + a1·X1 + f2·X2,  X0 = M0/f0 = g(ν·n)·dM³·1e-7,
-      X1 = M1/a1 = load·dM·(P0/C0 or Fa/C0)^x,  X2 = Fa·dM
+where a1 is the f1 constant of the table (f1 itself for constant-f1 types;
+for f1 = a1·(P0/C0)^x it is a1). The residuals are relative,
+(M − model)/M, so bearings and speeds of any size weigh alike.
 
-  where a1 is the f1 constant of the table (f1 itself for constant-f1 types;
-  for f1 = a1·(P0/C0)^x it is a1). The residuals are relative,
-  (M − model)/M, so bearings and speeds of any size weigh alike.
-
-* :func:`audit_reference_speeds` computes the thermal reference speed n_θr
-  of every bearing of a catalogue list from the tables
-  (:func:`bearingheat.calc.thermal.thermal_reference_speed_details`),
-  compares it with the published value and backs out the f0 (and f1) that
-  would reproduce the published value, within the catalogue's rounding of
-  speeds (:func:`rounding_step`, :func:`implied_coefficients`).
-  :func:`classify_reference_speeds` pools each series over its seal and
-  shield variants, splits it into size classes where only some sizes
-  deviate, lists single misprinted rows as outliers and flags the groups
-  that deviate systematically (:data:`SYSTEMATIC_RULE`), with the median
-  implied f0 of each group and its 95 % interval. The robust statistics
-  are :mod:`bearingheat.analysis.deviations`.
+The second audit, the tables against a catalogue's own thermal reference
+speeds, is :mod:`bearingheat.analysis.reference_speeds`; its names are
+imported here too.
 """
 from __future__ import annotations
 
 import math
 import warnings
-from collections.abc import Iterable, Sequence
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -43,18 +30,14 @@ import numpy.typing as npt
 import pandas as pd
 from scipy import optimize, stats
 
-from bearingheat.analysis.diagnose import model_data, read_measurements
-from bearingheat.analysis.effects import ModelData, catalogue_arrays
-from bearingheat.analysis.deviations import (change_point, consistent_scale, local_residuals, median_interval,
-                                             robust_scale)
-from bearingheat.calc.contract import parse_header
-from bearingheat.calc.thermal import thermal_reference_speed_details
-from bearingheat.catalogue.friction import resolve
-from bearingheat.catalogue.thermal import reference_conditions
-from bearingheat.errors import AuditError, DesignationError, DiagnoseError, UnitError
-from bearingheat.kernels import friction
-from bearingheat.kernels.thermal import POWER_PER_TORQUE_SPEED, torque_coefficients
-from bearingheat.units import convert_column
+from bearingheat.analysis.deviations import CONFIDENCE
+from bearingheat.analysis.diagnose import model_data, operating_point_groups, read_measurements
+from bearingheat.analysis.effects import catalogue_arrays
+from bearingheat.analysis.reference_speeds import (GROUP_COLUMNS, REFERENCE_SPEED_COLUMNS, ROUNDING_STEPS,
+                                                   SYSTEMATIC_RULE, ReferenceSpeedAudit, audit_reference_speeds,
+                                                   classify_reference_speeds, implied_coefficients, rounding_step,
+                                                   series_deviation_summary)
+from bearingheat.errors import AuditError, DiagnoseError
 
 __all__ = [
     "AuditError",
@@ -65,6 +48,7 @@ __all__ = [
     "GROUP_COLUMNS",
     "ReferenceSpeedAudit",
     "fit_linear_coefficients",
+    "point_means",
     "audit_coefficients",
     "audit_reference_speeds",
     "rounding_step",
@@ -73,59 +57,42 @@ __all__ = [
     "series_deviation_summary",
 ]
 
-#: two-sided confidence level of the coefficient intervals
-CONFIDENCE = 0.95
-#: a group deviates systematically when its median deviation is beyond SYSTEMATIC_Z robust scales of the
-#: median deviations of the series that agree with the tables, and SYSTEMATIC_SAME_SIGN of its bearings
-#: (at least SYSTEMATIC_MIN_ROWS, outliers left out) deviate in the same direction
-SYSTEMATIC_Z = 5.0
-SYSTEMATIC_SAME_SIGN = 0.8
-SYSTEMATIC_MIN_ROWS = 5
-#: the scale is never taken below this [1] (so the threshold is at least SYSTEMATIC_Z·SCALE_FLOOR), and is
-#: SCALE_FLOOR where fewer than MIN_CONSISTENT series agree with the tables
-SCALE_FLOOR = 0.002
-MIN_CONSISTENT = 5
-#: a size class has at least this many bearings
-CLASS_MIN_ROWS = 5
-#: a bearing is an outlier when its deviation differs from its neighbours' by more than OUTLIER_Z robust
-#: scales of such differences in its class, and by more than the systematic threshold plus one rounding
-#: step of its published speed (relative)
-OUTLIER_Z = 6.0
-#: a group's implied f0 is too spread to be one table value beyond this multiple of the typical spread of the
-#: groups that agree with the tables (same family)
-SPREAD_FACTOR = 4.0
-#: HR 1 (2006) rounds its speeds by magnitude: (below this speed [1/min], to this step [1/min])
-ROUNDING_STEPS = ((500.0, 5.0), (2500.0, 10.0), (5000.0, 50.0), (25000.0, 100.0), (math.inf, 500.0))
-SYSTEMATIC_RULE = (
-    f"a group (a series over all its variants, or a size class of it) deviates systematically when at least "
-    f"{SYSTEMATIC_MIN_ROWS} bearings (outliers left out) have a median of n_thr(tables)/n_thr(published) - 1 "
-    f"beyond {SYSTEMATIC_Z:g} sigma, sigma being the robust scale (1.4826 MAD about 0, at least "
-    f"{SCALE_FLOOR:.1%}) of the medians of the series that agree with the tables, and at least "
-    f"{SYSTEMATIC_SAME_SIGN:.0%} of them deviate in the same direction; a series splits into size classes at a "
-    f"change point in bore when one class agrees and the other deviates (at least {CLASS_MIN_ROWS} bearings "
-    f"each); a bearing is an outlier when it differs from its neighbours by more than {OUTLIER_Z:g} robust "
-    f"scales of such differences and more than the threshold plus one rounding step of its speed"
-)
-#: accepted names of the published thermal reference speed column (first match wins)
-REFERENCE_SPEED_COLUMNS = ("n_thr", "n_B", "n_theta_r", "n_θr", "n_ref", "nthr")
-
 
 # ---------------------------------------------------------------------------------------------
 # Coefficient fit
 # ---------------------------------------------------------------------------------------------
 
-def fit_linear_coefficients(X: npt.ArrayLike, M: npt.ArrayLike, *, confidence: float = CONFIDENCE) -> dict[str, Any]:
+def fit_linear_coefficients(X: npt.ArrayLike, M: npt.ArrayLike, *, groups: npt.ArrayLike | None = None,
+                            confidence: float = CONFIDENCE) -> dict[str, Any]:
     """Least squares fit of M = X·θ on relative residuals (M − X·θ)/M, with confidence intervals.
 
     Uses ``scipy.optimize.curve_fit`` (trust region reflective, σ = M) on the
     exact Jacobian X/M; its covariance is s²·(JᵀJ)⁻¹ with
     s² = Σr²/(N − p), and the interval is θ ± t(1 − α/2, N − p)·se.
 
+    ``groups`` (a label per row: its operating point) makes the operating
+    point the unit of the fit: the rows of a group are replaced by their
+    mean (of M and of each column of X; the model is linear, so the means
+    follow it exactly) and N is the number of groups. Repeated readings at
+    one point share its deviation (the rig's setting, the oil's temperature)
+    and are no independent evidence of the coefficients: counted as rows,
+    four copies of a data set would halve every interval. A cluster-robust
+    (sandwich) covariance over the groups was not chosen: with the few
+    operating points of a bearing test it is biased low unless corrected
+    (CR2 with Satterthwaite degrees of freedom), and with one reading per
+    point it is White's HC0, not s²·(JᵀJ)⁻¹, so it would change the
+    intervals of data without repeats. Fitting the means leaves those
+    unchanged (every row its own group) and gives a set copied k times the
+    same intervals. Points with more readings weigh alike; the means'
+    noise is then slightly unequal, which the interval ignores.
+
     >>> X = np.array([[1.0, 1.0], [1.0, 2.0], [1.0, 3.0], [1.0, 4.0]])
     >>> fit = fit_linear_coefficients(X, X @ np.array([2.0, 0.5]))
     >>> np.round(fit["theta"], 10).tolist(), fit["dof"]
     ([2.0, 0.5], 2)
     """
+    if groups is not None:
+        X, M = point_means(X, M, groups)
     X = np.asarray(X, dtype=float)
     M = np.asarray(M, dtype=float)
     N, p = X.shape
@@ -147,14 +114,38 @@ def fit_linear_coefficients(X: npt.ArrayLike, M: npt.ArrayLike, *, confidence: f
             "rel_rmse": math.sqrt(sse / N)}
 
 
+def point_means(X: npt.ArrayLike, M: npt.ArrayLike, groups: npt.ArrayLike) -> tuple[np.ndarray, np.ndarray]:
+    """The mean of the rows of X and of M in each group (groups in order of first appearance).
+
+    >>> point_means([[1.0, 2.0], [3.0, 4.0], [5.0, 6.0]], [1.0, 3.0, 5.0], ["a", "a", "b"])[1].tolist()
+    [2.0, 5.0]
+    """
+    X = np.asarray(X, dtype=float)
+    M = np.asarray(M, dtype=float)
+    codes, _ = pd.factorize(pd.Series(np.asarray(groups), dtype=object))
+    counts = np.bincount(codes).astype(float)
+    means = np.column_stack([np.bincount(codes, weights=X[:, j]) / counts for j in range(X.shape[1])])
+    return means.reshape(len(counts), X.shape[1]), np.bincount(codes, weights=M) / counts
+
+
 def audit_coefficients(table: pd.DataFrame, *, confidence: float = CONFIDENCE) -> pd.DataFrame:
     """Fit f0, f1 (and f2) for each bearing of a measured table and compare them with the tables.
 
-    Returns one row per bearing and coefficient: ``bearing``, ``coefficient``
+    A bearing is fitted once per distinct set of table coefficients (its rows
+    with the same table f0, f1 constant and given f2, :func:`_fit_sets`):
+    one bearing run in an oil bath and with grease gives two fits, each
+    compared with its own table values.
+
+    Returns one row per fit and coefficient: ``bearing``, ``lubrication``
+    (the lubrication of the fit's rows, '' where not given), ``coefficient``
     (f0, f1 or f1_a, f2), ``table`` (the Schaeffler catalogue value, NaN for f2 read off
-    a chart), ``fitted``, ``se``, ``ci_low``, ``ci_high``, ``rows``,
+    a chart), ``fitted``, ``se``, ``ci_low``, ``ci_high``, ``rows``, ``points``
+    (operating points: the rows' distinct bearing, n, ν, Fr, Fa, T_oil, or
+    the user's ``group`` labels),
     ``rel_rmse`` [1], ``flag`` ('' or 'table value outside the 95 % interval')
-    and ``status`` ('ok' or the reason the bearing could not be fitted).
+    and ``status`` ('ok' or the reason the coefficient could not be fitted). A coefficient whose term
+    is 0 in every row of a bearing (f1 of a no-load spin test, Fr = 0 so M1 = 0) is not fitted and its
+    status says why; the other coefficients are fitted without it.
     """
     try:
         measured = read_measurements(table)
@@ -186,9 +177,15 @@ def audit_coefficients(table: pd.DataFrame, *, confidence: float = CONFIDENCE) -
     carries_m2 = a.m2 & (data.Fa > 0)
     X2 = np.where(carries_m2, data.Fa * data.dM, 0.0)
     basis_ratio = (a.f1_basis > 0) & np.isnan(user_f1)
+    lubrication = _texts(frame, "lubrication")[rows]
+    fit_set = _fit_sets(data.bearing, data.f0, a1, table_f2)
+    # the operating point of each row, as diagnose groups its folds (or the user's 'group' column)
+    point = operating_point_groups([fit_set, data.n, data.nu, data.Fr, data.Fa, data.T_oil],
+                                   measured.group[rows] if measured.group is not None else None)
     out = []
-    for code, name in enumerate(data.bearing_names):
-        mine = data.bearing == code
+    for code in range(int(fit_set.max()) + 1):
+        mine = fit_set == code
+        name = data.bearing_names[int(data.bearing[mine][0])]
         n_rows = int(mine.sum())
         names = ["f0", "f1_a" if basis_ratio[mine].any() else "f1"]
         table_values = [float(np.nanmedian(data.f0[mine])), float(np.nanmedian(a1[mine]))]
@@ -199,19 +196,23 @@ def audit_coefficients(table: pd.DataFrame, *, confidence: float = CONFIDENCE) -
             table_values.append(float(np.nanmedian(given)) if np.any(~np.isnan(given)) else math.nan)
             columns.append(X2[mine])
         X = np.column_stack(columns)
-        status = _identifiable(X, names, data, mine)
-        base = {"bearing": name, "rows": n_rows}
-        if status:
-            for coef, ref in zip(names, table_values):
+        X_point, M_point = point_means(X, data.M[mine], point[mine])
+        base = {"bearing": name, "lubrication": ", ".join(sorted(set(lubrication[mine]) - {""})), "rows": n_rows,
+                "points": len(M_point)}
+        unfitted = _without_trace(X, names, data.load[mine])
+        kept = [j for j in range(len(names)) if j not in unfitted]
+        status = _identifiable(X[:, kept], X_point[:, kept], [names[j] for j in kept])
+        fit = fit_linear_coefficients(X_point[:, kept], M_point, confidence=confidence) if not status else None
+        for j, (coef, ref) in enumerate(zip(names, table_values)):
+            if fit is None or j in unfitted:
                 out.append({**base, "coefficient": coef, "table": ref, "fitted": math.nan, "se": math.nan,
                             "ci_low": math.nan, "ci_high": math.nan, "rel_rmse": math.nan, "flag": "",
-                            "status": status})
-            continue
-        fit = fit_linear_coefficients(X, data.M[mine], confidence=confidence)
-        for j, (coef, ref) in enumerate(zip(names, table_values)):
-            outside = not math.isnan(ref) and not (fit["low"][j] <= ref <= fit["high"][j])
-            out.append({**base, "coefficient": coef, "table": ref, "fitted": float(fit["theta"][j]),
-                        "se": float(fit["se"][j]), "ci_low": float(fit["low"][j]), "ci_high": float(fit["high"][j]),
+                            "status": unfitted.get(j, status)})
+                continue
+            k = kept.index(j)
+            outside = not math.isnan(ref) and not (fit["low"][k] <= ref <= fit["high"][k])
+            out.append({**base, "coefficient": coef, "table": ref, "fitted": float(fit["theta"][k]),
+                        "se": float(fit["se"][k]), "ci_low": float(fit["low"][k]), "ci_high": float(fit["high"][k]),
                         "rel_rmse": fit["rel_rmse"],
                         "flag": f"table value outside the {confidence:.0%} interval" if outside else "",
                         "status": "ok"})
@@ -220,458 +221,72 @@ def audit_coefficients(table: pd.DataFrame, *, confidence: float = CONFIDENCE) -
     return result
 
 
-def _identifiable(X: np.ndarray, names: list[str], data: ModelData, mine: np.ndarray) -> str:
-    """'' if the coefficients can be separated, otherwise why not."""
+def _texts(frame: pd.DataFrame, column: str) -> np.ndarray:
+    """The cleaned texts of a column ('' for blank cells, or every row where the column is absent)."""
+    if column not in frame.columns:
+        return np.full(len(frame), "", dtype=object)
+    values = frame[column].astype(object).to_numpy()
+    return np.array(["" if pd.isna(v) else str(v).strip() for v in values], dtype=object)
+
+
+def _fit_sets(bearing: np.ndarray, f0: np.ndarray, a1: np.ndarray, f2: np.ndarray) -> np.ndarray:
+    """Code of each row's fit: the rows of one bearing with the same table f0, a1 and given f2.
+
+    One bearing run with two lubrications (oil bath f0 = 2, grease f0 = 1.3)
+    has two table f0: pooled, the fit would compare the data with neither.
+    Codes run in the order of the bearings' names, then of f0, a1, f2.
+    """
+    keys = pd.DataFrame({"bearing": bearing, "f0": np.round(f0, 9), "a1": np.round(a1, 12), "f2": np.round(f2, 9)})
+    return keys.groupby(list(keys.columns), sort=True, dropna=False).ngroup().to_numpy()
+
+
+#: the torque term each coefficient scales
+_TERMS = {"f0": "M0", "f1": "M1", "f1_a": "M1", "f2": "M2"}
+
+
+def _without_trace(X: np.ndarray, names: list[str], load: np.ndarray) -> dict[int, str]:
+    """The coefficients whose term is 0 in every row (column index -> why it is not fitted).
+
+    Such a term leaves no trace in the torque (a no-load spin test has
+    M1 = 0): its coefficient cannot be fitted, and the others are fitted
+    without it.
+    """
+    zero = [j for j in range(X.shape[1]) if np.all(np.isfinite(X[:, j])) and not np.any(X[:, j])]
+    others = ", ".join(names[j] for j in range(len(names)) if j not in zero)
+    reasons = {}
+    for j in zero:
+        term = _TERMS[names[j]]
+        why = "the load is 0 in every row" if term == "M1" and not np.any(load) else f"{term} is 0 in every row"
+        reasons[j] = (f"{names[j]} not fitted: {why} ({len(X)} rows), so {term} = 0 and the torque holds no "
+                      f"information on {names[j]}" + (f"; {others} fitted alone" if others else ""))
+    return reasons
+
+
+def _separable(X: np.ndarray) -> bool:
+    """The columns of X (none 0 in every row) are linearly independent (rank of the column-scaled X)."""
+    return bool(np.linalg.matrix_rank(X / np.linalg.norm(X, axis=0), tol=1e-8) == X.shape[1])
+
+
+def _identifiable(X: np.ndarray, X_point: np.ndarray, names: list[str]) -> str:
+    """'' if the coefficients can be separated with residual degrees of freedom, otherwise why not.
+
+    X holds the rows, X_point their operating points' means
+    (:func:`point_means`); no column is 0 in every row.
+    """
     n_rows, p = X.shape
-    if n_rows <= p:
-        return f"{n_rows} rows for {p} coefficients: need more than {p}"
+    n_points = len(X_point)
+    if p == 0:
+        return "no coefficient has a term that is not 0 in every row"
     if not np.all(np.isfinite(X)):
         return "a regressor is not finite (missing C0 or load)"
-    scaled = X / np.linalg.norm(X, axis=0)
-    if np.linalg.matrix_rank(scaled, tol=1e-8) < p:
-        return ("the coefficients cannot be separated: " + ", ".join(names) +
-                " need rows where n·ν and the load vary independently")
+    inseparable = ("the coefficients cannot be separated: " + ", ".join(names) +
+                   " need rows where n·ν and the load vary independently")
+    if not _separable(X):
+        return inseparable
+    if n_points <= p:
+        return (f"{n_points} operating point{'s' if n_points > 1 else ''} ({n_rows} rows) for {p} coefficients: "
+                f"need more than {p} for an interval (the rows of one operating point, or of one group of the "
+                "'group' column, count once)")
+    if not _separable(X_point):
+        return inseparable + " between operating points"
     return ""
-
-
-# ---------------------------------------------------------------------------------------------
-# Catalogue thermal reference speeds
-# ---------------------------------------------------------------------------------------------
-
-_GEOMETRY_UNITS = {"d": "mm", "D": "mm", "B": "mm", "T": "mm", "C0": "N", "Y": "1", "e": "1", "Y0": "1"}
-#: accepted names of the column that names a bearing's variant (seal, shield) in a catalogue list
-VARIANT_COLUMNS = ("shield", "seal", "variant")
-
-
-def _convert(values: pd.Series, header: str, unit_text: str | None, target: str) -> np.ndarray:
-    """A catalogue-list column in the catalogue unit (units.convert_column); AuditError naming the column."""
-    numbers = pd.to_numeric(values, errors="coerce").to_numpy(dtype=float)
-    try:
-        return convert_column(numbers, unit_text, target, name=header, header=header)[0]
-    except UnitError as exc:
-        raise AuditError(f"column {header!r}: {exc}") from exc
-
-
-def rounding_step(n: npt.ArrayLike, steps: Sequence[tuple[float, float]] = ROUNDING_STEPS) -> np.ndarray:
-    """Rounding step [1/min] of each published speed: the step of its magnitude, or a finer one its digits show.
-
-    ``steps`` is a ladder of (upper limit, step) [1/min]: a speed below the
-    first limit is rounded to the first step, and so on (HR 1: 5 below 500,
-    10 below 2500, 50 below 5000, 100 below 25000, 500 above). A speed that
-    is not a multiple of its step was rounded more finely: the largest step
-    of the ladder (or 1) that divides it is taken. 0 for a speed that is
-    not a whole number (taken as exact), NaN for NaN.
-
-    >>> rounding_step([57000, 23400, 18900, 4350, 2260, 980, 455]).tolist()
-    [500.0, 100.0, 100.0, 50.0, 10.0, 10.0, 5.0]
-    """
-    n = np.asarray(n, dtype=float)
-    limits = np.array([limit for limit, _ in steps], dtype=float)
-    sizes = np.array([size for _, size in steps], dtype=float)
-    finite = np.isfinite(n)
-    cap = np.full(n.shape, np.nan)
-    cap[finite] = sizes[np.minimum(np.searchsorted(limits, n[finite], side="right"), len(sizes) - 1)]
-    step = np.where(finite, 0.0, np.nan)
-    for size in sorted(set(sizes) | {1.0}, reverse=True):
-        with np.errstate(invalid="ignore"):
-            ratio = n / size
-            fits = finite & (step == 0.0) & (size <= cap) & np.isclose(ratio, np.round(ratio), rtol=0, atol=1e-9)
-        step[fits] = size
-    return step
-
-
-def implied_coefficients(details: pd.DataFrame, d: npt.ArrayLike, D: npt.ArrayLike,
-                         n: npt.ArrayLike) -> dict[str, np.ndarray]:
-    """f0 (holding the table's f1) and f1 (holding the table's f0) that make ``n`` the thermal reference speed.
-
-    ``details`` are the rows of :func:`bearingheat.calc.thermal.thermal_reference_speed_details`;
-    d, D [mm]; n [1/min]. At the reference the friction power equals the
-    reference heat flow: (π·n/30)·1e-3·(M0 + M1) = q_r·A_r with
-    M0 = f0·(ν·n)^(2/3)·dM³·1e-7 (ν·n >= 2000; 160·f0·dM³·1e-7 below) and
-    M1 = f1·P1·dM, so
-
-        f0 = (q_r·A_r/((π·n/30)·1e-3) − M1) / (M0/f0),   f1 = (q_r·A_r/((π·n/30)·1e-3) − M0) / (P1·dM).
-
-    Both fall as n rises. Returns {'f0': ..., 'f1': ...} (NaN where the
-    row has no n_thr).
-    """
-    kinds = details["kind"].to_numpy(dtype=object)
-    nu = np.array([reference_conditions(k).nu if k else np.nan for k in kinds], dtype=float)
-    dM = friction.mean_diameter(np.asarray(d, dtype=float), np.asarray(D, dtype=float))
-    per_f0_high, per_f0_low = torque_coefficients(1.0, dM)
-    n = np.asarray(n, dtype=float)
-    usable = details["n_thr"].notna().to_numpy()
-    with np.errstate(divide="ignore", invalid="ignore"):
-        torque = (details["q_r"] * details["A_r"]).to_numpy(dtype=float) / (POWER_PER_TORQUE_SPEED * n)
-        nu_n = nu * n
-        m0_per_f0 = np.where(nu_n >= friction.REGIME_LIMIT, per_f0_high * np.power(nu_n, 2.0 / 3.0), per_f0_low)
-        f0 = (torque - details["M1"].to_numpy(dtype=float)) / m0_per_f0
-        f1 = (torque - details["f0"].to_numpy(dtype=float) * m0_per_f0) / (details["P1"].to_numpy(dtype=float) * dM)
-    return {"f0": np.where(usable, f0, np.nan), "f1": np.where(usable, f1, np.nan)}
-
-
-def _text(table: pd.DataFrame, columns: dict[str, str], names: Iterable[str]) -> np.ndarray | None:
-    for name in names:
-        if name in columns:
-            return table[columns[name]].astype(str).str.strip().replace({"nan": ""}).to_numpy(dtype=object)
-    return None
-
-
-def _series_names(table: pd.DataFrame, columns: dict[str, str],
-                  frame: pd.DataFrame) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """(family, series, variant, bore) of each row: the list's columns where given, else the designation's."""
-    family, series = _text(table, columns, ("family",)), _text(table, columns, ("series",))
-    variant = _text(table, columns, VARIANT_COLUMNS)
-    d = frame["d"].to_numpy(dtype=float).copy()
-    fam_out, ser_out, var_out = [], [], []
-    for i in range(len(frame)):
-        try:
-            res = resolve(frame["designation"].iat[i] if "designation" in frame else None,
-                          frame["type"].iat[i] if "type" in frame else None,
-                          frame["series"].iat[i] if "series" in frame else None)
-        except DesignationError:
-            res = None
-        if np.isnan(d[i]) and res is not None and res.designation is not None and res.designation.bore:
-            d[i] = res.designation.bore
-        if family is not None and series is not None:
-            fam_out.append(family[i])
-            ser_out.append(series[i])
-        elif res is not None:
-            fam_out.append(res.entry.bearing_type)
-            ser_out.append(res.entry.series)
-        else:
-            fam_out.append("unresolved")
-            ser_out.append("")
-        var_out.append((variant[i] or "open") if variant is not None else (res.seal if res is not None else "open"))
-    return np.array(fam_out, dtype=object), np.array(ser_out, dtype=object), np.array(var_out, dtype=object), d
-
-
-def audit_reference_speeds(table: pd.DataFrame, *, speed_column: str | None = None,
-                           rounding_steps: Sequence[tuple[float, float]] = ROUNDING_STEPS) -> pd.DataFrame:
-    """n_θr from the tables against the published n_θr, and the f0 and f1 it implies, for each bearing of a list.
-
-    ``table`` has unit headers: ``designation`` (or ``type`` and ``series``
-    of the Schaeffler catalogue tables), ``d``, ``D``, ``B``, ``T`` (tapered), ``C0``
-    and the published speed (``n_thr``, ``n_B``, ... see
-    :data:`REFERENCE_SPEED_COLUMNS`, or ``speed_column``). Optional
-    ``family`` and ``series`` name the series (else the designation's type
-    and series); an optional ``shield`` (``seal``, ``variant``) column
-    names the variant, which is pooled with the open bearings of its series.
-
-    Returns one row per bearing: ``designation``, ``family``, ``series``,
-    ``series_key`` ('family series'), ``variant``, ``d``, ``D`` [mm],
-    ``n_thr_published``, ``rounding_step`` (:func:`rounding_step`),
-    ``n_thr_tables`` [1/min], ``deviation`` [1] (tables/published − 1),
-    ``f0_table``, ``f0_implied`` with ``f0_implied_low``/``_high`` (at the
-    published speed ± half a rounding step), the same for ``f1`` and
-    ``reason`` (why n_thr could not be computed). Group them with
-    :func:`classify_reference_speeds`.
-    """
-    columns: dict[str, str] = {}
-    units: dict[str, str | None] = {}
-    for header in table.columns:
-        name, unit = parse_header(header)
-        columns.setdefault(name, header)
-        units.setdefault(name, unit)
-    wanted = [speed_column] if speed_column else list(REFERENCE_SPEED_COLUMNS)
-    published_name = next((c for c in wanted if c in columns), None)
-    if published_name is None:
-        raise AuditError("missing column: the published thermal reference speed, e.g. 'n_thr [1/min]' "
-                         f"(accepted names: {', '.join(wanted)})")
-    if "designation" not in columns and not {"type", "series"} <= set(columns):
-        raise AuditError("missing column: 'designation' (or 'type' and 'series')")
-    frame = pd.DataFrame(index=table.index)
-    if "designation" in columns:
-        frame["designation"] = table[columns["designation"]].astype(str).str.strip()
-    else:
-        frame["type"] = table[columns["type"]].astype(str).str.strip()
-        frame["series"] = table[columns["series"]].astype(str).str.strip()
-    for name, target in _GEOMETRY_UNITS.items():
-        if name in columns:
-            frame[name] = _convert(table[columns[name]], columns[name], units[name], target)
-        elif name in ("d", "D", "C0"):
-            raise AuditError(f"missing column: '{name} [{target}]'")
-        else:
-            frame[name] = np.nan
-    published = _convert(table[columns[published_name]], columns[published_name], units[published_name], "1/min")
-    details = thermal_reference_speed_details(frame)
-    computed = details["n_thr"].to_numpy(dtype=float)
-    family, series, variant, bore = _series_names(table, columns, frame)
-    step = rounding_step(published, rounding_steps)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        deviation = computed / published - 1.0
-    out = pd.DataFrame({
-        "designation": frame["designation"] if "designation" in frame else frame["type"] + " " + frame["series"],
-        "family": family, "series": series,
-        "series_key": [f"{f} {s}".strip() for f, s in zip(family, series)],
-        "variant": variant, "d": bore, "D": frame["D"].to_numpy(dtype=float),
-        "n_thr_published": published, "rounding_step": step, "n_thr_tables": computed, "deviation": deviation,
-    }, index=table.index)
-    out["f0_table"] = details["f0"].to_numpy(dtype=float)
-    out["f1_table"] = details["f1"].to_numpy(dtype=float)
-    for when, speed in (("", published), ("_low", published + step / 2.0), ("_high", published - step / 2.0)):
-        implied = implied_coefficients(details, bore, out["D"], speed)
-        out["f0_implied" + when] = implied["f0"]
-        out["f1_implied" + when] = implied["f1"]
-    out = out[[c for c in out.columns if not c.startswith("f1")] + [c for c in out.columns if c.startswith("f1")]]
-    out["reason"] = np.where(np.isnan(published), f"{columns[published_name]}: blank",
-                             details["reason"].to_numpy(dtype=object))
-    return out
-
-
-# ---- groups: series, size classes, outliers, flags ------------------------------------------
-
-@dataclass
-class ReferenceSpeedAudit:
-    """The reference speed audit of a catalogue list, grouped (:func:`classify_reference_speeds`).
-
-    ``bearings``: the rows of :func:`audit_reference_speeds` with ``group``
-    (the series key, plus the bore range of its size class where the series
-    splits), ``subgroup`` ('' or 'd 45-140 mm'), ``local_deviation`` (the
-    deviation minus that of its neighbours by bore) and ``outlier``.
-    ``groups``: one row per series and, where it splits, per size class
-    (see :data:`GROUP_COLUMNS`). ``scale`` is the robust scale σ of the
-    medians of the consistent series, ``threshold`` = SYSTEMATIC_Z·σ the
-    median deviation beyond which a group deviates, ``consistent`` how
-    many series gave σ.
-    """
-
-    bearings: pd.DataFrame
-    groups: pd.DataFrame
-    scale: float
-    threshold: float
-    consistent: int
-
-    @property
-    def flagged(self) -> pd.DataFrame:
-        """The groups that deviate systematically."""
-        return self.groups[self.groups["systematic"]]
-
-    @property
-    def outliers(self) -> pd.DataFrame:
-        """The bearings whose published speed is off their own series (misprints?)."""
-        return self.bearings[self.bearings["outlier"]]
-
-
-#: columns of :attr:`ReferenceSpeedAudit.groups`
-GROUP_COLUMNS = (
-    "group", "family", "series", "subgroup", "variants", "d_min", "d_max", "bearings", "computed", "outliers",
-    "median_deviation", "min_deviation", "max_deviation", "share_above", "z", "systematic",
-    "f0_table", "f0_implied", "f0_implied_low", "f0_implied_high", "f0_spread", "single_f0",
-    "f1_table", "f1_implied", "f1_implied_low", "f1_implied_high", "interval_coverage", "note")
-
-
-def _deviates(dev: np.ndarray, threshold: float) -> bool:
-    """A group's deviations are systematic: enough rows, the median beyond the threshold, the signs agree."""
-    if len(dev) < SYSTEMATIC_MIN_ROWS:
-        return False
-    median = float(np.median(dev))
-    same_side = float(np.mean(dev > 0) if median > 0 else np.mean(dev < 0))
-    return abs(median) > threshold and same_side >= SYSTEMATIC_SAME_SIGN
-
-
-def _size_split(dev: np.ndarray, d: np.ndarray, threshold: float) -> int | None:
-    """Where a series (sorted by bore) splits into a size class that agrees and one that deviates, else None."""
-    k = change_point(dev, d, min_size=CLASS_MIN_ROWS)
-    if k is None:
-        return None
-    left, right = dev[:k], dev[k:]
-    off = (_deviates(left, threshold), _deviates(right, threshold))
-    agrees = (abs(np.median(left)) <= threshold, abs(np.median(right)) <= threshold)
-    step = abs(np.median(left) - np.median(right))
-    if ((off[0] and agrees[1]) or (off[1] and agrees[0])) and step > threshold:
-        return k
-    return None
-
-
-def _bore_range(d: np.ndarray) -> str:
-    return f"d {np.nanmin(d):g}-{np.nanmax(d):g} mm"
-
-
-def classify_reference_speeds(rows: pd.DataFrame, *, confidence: float = CONFIDENCE) -> ReferenceSpeedAudit:
-    """Group the bearings of :func:`audit_reference_speeds` by series and size class; flag, mark outliers.
-
-    1. **Scale.** σ = 1.4826·MAD about 0 of the median deviations of the
-       series that agree with the tables, clipped at SYSTEMATIC_Z·σ and
-       iterated (:func:`~bearingheat.analysis.deviations.consistent_scale`);
-       σ >= SCALE_FLOOR; with fewer than MIN_CONSISTENT series, σ = SCALE_FLOOR.
-    2. **Size classes.** Each series (all its variants, sorted by bore) is
-       cut at its best change point (L1,
-       :func:`~bearingheat.analysis.deviations.change_point`, at least
-       CLASS_MIN_ROWS bearings a side); the cut stands when one side
-       agrees with the tables and the other deviates systematically.
-    3. **Outliers.** Within each class, a bearing whose deviation differs
-       from the median of its neighbours (3 bores either side) by more
-       than OUTLIER_Z times the robust scale of these differences, and by
-       more than SYSTEMATIC_Z·σ plus one rounding step of its speed
-       (relative), is an outlier: listed, and left out of its group's
-       statistics.
-    4. **Flags.** :data:`SYSTEMATIC_RULE` on each class, and on a series
-       that does not split.
-    5. **Implied coefficients.** The median of the bearings' implied f0
-       (f1) with the order-statistic interval of the median
-       (:func:`~bearingheat.analysis.deviations.median_interval`), each
-       bearing's value known within ± half a rounding step of its speed.
-       ``f0_spread`` is the robust relative spread of the bearings'
-       implied f0; ``single_f0`` is False where it exceeds SPREAD_FACTOR
-       times the typical spread of the groups of the same family that
-       agree with the tables: the catalogue then did not use one f0 for
-       the group, and the median is only a summary.
-
-    Steps 1 and 2 use the scale of step 1 throughout; a series has at most
-    one change point.
-    """
-    bearings = rows.copy()
-    dev_all = bearings["deviation"].to_numpy(dtype=float)
-    keys = bearings["series_key"].to_numpy(dtype=object)
-    bore = bearings["d"].to_numpy(dtype=float) if "d" in bearings else np.full(len(bearings), np.nan)
-    series_keys = list(dict.fromkeys(keys))
-    whole_medians = [np.nanmedian(dev_all[keys == k]) if np.isfinite(dev_all[keys == k]).any() else np.nan
-                     for k in series_keys]
-    sigma, kept = consistent_scale(whole_medians, z=SYSTEMATIC_Z, floor=SCALE_FLOOR, min_groups=MIN_CONSISTENT)
-    threshold = SYSTEMATIC_Z * sigma
-    with np.errstate(divide="ignore", invalid="ignore"):
-        # a bearing and its neighbours are each off by up to half a rounding step
-        rounding = np.nan_to_num(bearings["rounding_step"].to_numpy(dtype=float)
-                                 / bearings["n_thr_published"].to_numpy(dtype=float)) \
-            if "rounding_step" in bearings else np.zeros(len(bearings))
-    group = keys.copy()
-    subgroup = np.array([""] * len(bearings), dtype=object)
-    local = np.full(len(bearings), np.nan)
-    outlier = np.zeros(len(bearings), dtype=bool)
-    classes: dict[str, list[np.ndarray]] = {}
-    for key in series_keys:
-        members = np.flatnonzero((keys == key) & np.isfinite(dev_all))
-        members = members[np.argsort(bore[members], kind="stable")]
-        parts = [members]
-        if np.isfinite(bore[members]).all():
-            k = _size_split(dev_all[members], bore[members], threshold)
-            if k is not None:
-                parts = [members[:k], members[k:]]
-        classes[key] = parts
-        for part in parts:
-            local[part] = local_residuals(dev_all[part], bore[part])
-            spread = robust_scale(local[part])
-            floor = threshold + rounding[part]
-            outlier[part] = np.abs(local[part]) > (np.maximum(OUTLIER_Z * spread, floor) if np.isfinite(spread)
-                                                   else floor)
-            if len(parts) > 1:
-                label = _bore_range(bore[part])
-                subgroup[part] = label
-                group[part] = f"{key} {label}"
-    bearings["group"] = group
-    bearings["subgroup"] = subgroup
-    bearings["local_deviation"] = local
-    bearings["outlier"] = outlier
-    records = []
-    for key in series_keys:
-        in_series = keys == key
-        parts = classes[key]
-        split = len(parts) > 1
-        records.append(_group_record(bearings, in_series, "", threshold, sigma, confidence,
-                                     flag=not split))
-        if split:
-            for part in parts:
-                mask = np.zeros(len(bearings), dtype=bool)
-                mask[part] = True
-                records.append(_group_record(bearings, mask, subgroup[part[0]], threshold, sigma, confidence,
-                                             flag=True))
-    groups = pd.DataFrame(records, columns=list(GROUP_COLUMNS))
-    _judge_spread(groups, split=[len(classes[k]) > 1 for k in series_keys])
-    return ReferenceSpeedAudit(bearings, groups, sigma, threshold, int(np.sum(kept)))
-
-
-def _judge_spread(groups: pd.DataFrame, split: list[bool]) -> None:
-    """``single_f0`` and the note of the groups whose implied f0 spreads more than one table value explains.
-
-    The reference is the median ``f0_spread`` of the groups that agree with
-    the tables (size classes, and series that do not split) in the same
-    family where it has at least two, otherwise in all families: how well
-    one f0 reproduces a series when the catalogue did use one.
-    """
-    whole_split = np.zeros(len(groups), dtype=bool)
-    whole = np.flatnonzero(groups["subgroup"] == "")
-    whole_split[whole[np.array(split, dtype=bool)]] = True
-    reference = (groups["median_deviation"].notna()
-                 & ~groups["systematic"] & ~whole_split & (groups["computed"] >= SYSTEMATIC_MIN_ROWS)
-                 & groups["note"].eq("") & groups["f0_spread"].notna())
-    overall = float(groups.loc[reference, "f0_spread"].median()) if reference.any() else math.nan
-    single = np.ones(len(groups), dtype=bool)
-    spreads = groups["f0_spread"].to_numpy(dtype=float)
-    for i in range(len(groups)):
-        same = reference & (groups["family"] == groups["family"].iat[i])
-        typical = float(groups.loc[same, "f0_spread"].median()) if same.sum() >= 2 else overall
-        spread = spreads[i]
-        if np.isfinite(typical) and np.isfinite(spread) and spread > SPREAD_FACTOR * typical:
-            single[i] = False
-            if groups["systematic"].iat[i]:
-                groups.loc[groups.index[i], "note"] = _join(
-                    str(groups["note"].iat[i]), f"implied f0 spreads {spread:.1%} (series that agree: {typical:.1%}): "
-                    "no single f0 reproduces the group; the median is a summary")
-    groups["single_f0"] = single
-
-
-def _join(*parts: str) -> str:
-    return "; ".join(p for p in parts if p)
-
-
-def _group_record(bearings: pd.DataFrame, mask: np.ndarray, subgroup: str, threshold: float, sigma: float,
-                  confidence: float, *, flag: bool) -> dict:
-    """One row of the groups table: the bearings of ``mask`` (outliers left out of the statistics)."""
-    part = bearings[mask]
-    first = part.iloc[0]
-    use = part[np.isfinite(part["deviation"].to_numpy(dtype=float)) & ~part["outlier"].to_numpy(dtype=bool)]
-    dev = use["deviation"].to_numpy(dtype=float)
-    record = {"group": f"{first['series_key']} {subgroup}".strip(), "family": first["family"],
-              "series": first["series"], "subgroup": subgroup,
-              "variants": ", ".join(dict.fromkeys(part["variant"].astype(str))),
-              "d_min": float(part["d"].min()), "d_max": float(part["d"].max()),
-              "bearings": len(part), "computed": int(np.isfinite(part["deviation"]).sum()),
-              "outliers": int(part["outlier"].sum()), "note": ""}
-    if len(dev) == 0:
-        return {**record, "systematic": False, "single_f0": True}
-    median = float(np.median(dev))
-    systematic = flag and _deviates(dev, threshold)
-    f0 = median_interval(use["f0_implied"], use["f0_implied_low"], use["f0_implied_high"], confidence=confidence)
-    f1 = median_interval(use["f1_implied"], use["f1_implied_low"], use["f1_implied_high"], confidence=confidence)
-    implied = use["f0_implied"].to_numpy(dtype=float)
-    record.update(
-        median_deviation=median, min_deviation=float(dev.min()), max_deviation=float(dev.max()),
-        share_above=float(np.mean(dev > 0)), z=median / sigma, systematic=bool(systematic),
-        f0_table=float(np.nanmedian(use["f0_table"])) if use["f0_table"].notna().any() else math.nan,
-        f0_implied=f0[0], f0_implied_low=f0[1], f0_implied_high=f0[2],
-        f0_spread=robust_scale(implied) / abs(f0[0]) if np.isfinite(implied).sum() >= 2 else math.nan,
-        f1_table=float(np.nanmedian(use["f1_table"])) if use["f1_table"].notna().any() else math.nan,
-        f1_implied=f1[0], f1_implied_low=f1[1], f1_implied_high=f1[2], interval_coverage=f0[3])
-    if len(dev) < SYSTEMATIC_MIN_ROWS:
-        record["note"] = f"{len(dev)} bearings: too few to judge"
-    elif not flag and _deviates(dev, threshold):
-        record["note"] = "the deviation lies in one size class"
-    elif systematic and f1[2] <= 0:
-        record["note"] = "no positive f1 reproduces the published speeds: the change is in f0"
-    return record
-
-
-def series_deviation_summary(rows: pd.DataFrame) -> pd.DataFrame:
-    """The groups of :func:`classify_reference_speeds`: per series and size class, with the systematic flag.
-
-    >>> rows = pd.DataFrame({"series_key": ["a"] * 6, "deviation": [0.2, 0.21, 0.19, 0.2, 0.22, 0.18]})
-    >>> s = series_deviation_summary(rows)
-    >>> bool(s.loc[0, "systematic"]), round(float(s.loc[0, "median_deviation"]), 3)
-    (True, 0.2)
-    """
-    return classify_reference_speeds(_with_defaults(rows)).groups
-
-
-def _with_defaults(rows: pd.DataFrame) -> pd.DataFrame:
-    """A bare table of ``series_key`` and ``deviation`` completed with the columns the grouping reads."""
-    out = rows.copy()
-    defaults = {"family": out["series_key"], "series": "", "variant": "open", "d": np.nan}
-    for name, value in defaults.items():
-        if name not in out:
-            out[name] = value
-    for name in ("f0_table", "f0_implied", "f0_implied_low", "f0_implied_high",
-                 "f1_table", "f1_implied", "f1_implied_low", "f1_implied_high"):
-        if name not in out:
-            out[name] = np.nan
-    return out

@@ -28,6 +28,7 @@ import numpy as np
 from scipy import stats
 
 __all__ = [
+    "CONFIDENCE",
     "MAD_TO_SIGMA",
     "robust_scale",
     "consistent_scale",
@@ -36,6 +37,8 @@ __all__ = [
     "median_interval",
 ]
 
+#: two-sided confidence level of the audits' intervals (coefficients, implied f0 of a group)
+CONFIDENCE = 0.95
 #: 1/Φ⁻¹(3/4): MAD·1.4826 estimates the standard deviation of a normal sample
 MAD_TO_SIGMA = 1.0 / stats.norm.ppf(0.75)
 
@@ -60,25 +63,29 @@ def consistent_scale(medians, *, z: float, floor: float, min_groups: int) -> tup
     zero, the value the medians would have if the tables were right), keeps
     the groups with |m| <= z·σ and repeats until the kept set no longer
     changes. σ is at least ``floor``; with fewer than ``min_groups`` groups
-    (or kept groups) it is ``floor``. Returns (σ, kept mask).
+    (or kept groups) it is ``floor``, estimated from no group, and the kept
+    mask is all False. Returns (σ, kept mask: the groups σ was estimated from).
 
     >>> sigma, kept = consistent_scale([0.001, -0.002, 0.003, 0.0, -0.001, 0.15, -0.2], z=5, floor=0.001,
     ...                                min_groups=3)
     >>> round(sigma, 4), kept.tolist()
     (0.0015, [True, True, True, True, True, False, False])
+    >>> consistent_scale([-0.175, -0.154], z=5, floor=0.002, min_groups=5)[1].tolist()   # too few: the floor
+    [False, False]
     """
     m = np.asarray(medians, dtype=float)
     kept = np.isfinite(m)
+    too_few = (floor, np.zeros(len(m), dtype=bool))
     for _ in range(len(m) + 1):
         if kept.sum() < min_groups:
-            return floor, kept
+            return too_few
         sigma = max(floor, float(MAD_TO_SIGMA * np.median(np.abs(m[kept]))))
         now = np.isfinite(m) & (np.abs(m) <= z * sigma)
         if np.array_equal(now, kept):
             break
         kept = now
     if kept.sum() < min_groups:
-        return floor, kept
+        return too_few
     return sigma, kept
 
 

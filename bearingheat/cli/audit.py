@@ -20,7 +20,7 @@ from bearingheat.io.json import json_safe
 from bearingheat.errors import AuditError, DiagnoseError
 from bearingheat.io.files import check_outputs
 from bearingheat.io.reports.comparison import COMPARISON_FILES, comparison_lines, write_comparison
-from bearingheat.io.reports.audit import (COEFFICIENT_TITLE, REFERENCE_SPEED_FILES, excluded_lines,
+from bearingheat.io.reports.audit import (COEFFICIENT_TITLE, EXCLUDED_FILE, REFERENCE_SPEED_FILES, excluded_lines,
                                           reference_speed_lines, write_coefficients, write_reference_speeds)
 from bearingheat.io.tables import read_table
 
@@ -50,17 +50,22 @@ list can also be given with --reference-speeds.
    catalogue's rounding of speeds); single misprinted rows are listed as
    outliers.
 
-Output: tables on stdout (flagged groups and their implied f0 first); with
---out-dir DIR also coefficients.csv, or reference_speeds.csv (per bearing),
-reference_speed_series.csv (per series and size class) and reference_speeds.png
-(existing files are replaced only with --force; each file is written atomically).
-Exit codes: 0 done, nothing flagged; 1 done, something flagged or a bearing could
-not be fitted; 2 unusable input or a file fault.
+Output: tables on stdout (flagged groups and their implied f0 first; the rows
+left out, the first 20 and how many more); with --out-dir DIR also
+coefficients.csv and, where rows were excluded, excluded.csv (each with its
+reason), or reference_speeds.csv (per bearing), reference_speed_series.csv (per
+series and size class) and reference_speeds.png (existing files are replaced
+only with --force; each file is written atomically).
+Exit codes: 0 done, nothing flagged; 1 done, but something was flagged, a
+coefficient could not be fitted, or a row is in error: a measured row excluded
+from the fit, a catalogue row whose n_thr could not be computed (an excluded row
+is a row error, as in diagnose; -q prints none of them, the exit code and the
+files tell); 2 unusable input or a file fault.
 """
 
 
 #: the files each audit writes into --out-dir DIR
-_FILES = {"coefficients": ("coefficients.csv",),
+_FILES = {"coefficients": ("coefficients.csv", EXCLUDED_FILE),
           "models": COMPARISON_FILES,
           "speeds": REFERENCE_SPEED_FILES}
 
@@ -121,10 +126,13 @@ def run(args: argparse.Namespace) -> int:
                 result = audit_coefficients(table)
                 if not silent:
                     print_table(result, float_format=".4g", title=COEFFICIENT_TITLE)
-                for line in excluded_lines(result):
+                for line in excluded_lines(result, out_dir):
                     say(line)
-                flagged |= bool((result["flag"] != "").any() or (result["status"] != "ok").any())
+                # an excluded row is a row error, as in diagnose: exit 1
+                flagged |= bool((result["flag"] != "").any() or (result["status"] != "ok").any()
+                                or result.attrs.get("excluded"))
                 printed["coefficients"] = result.to_dict(orient="records")
+                printed["excluded"] = list(result.attrs.get("excluded", []))
                 writes.append(partial(write_coefficients, result, out_dir, force=True, inputs=inputs))
             elif kind == "models":
                 try:
@@ -140,7 +148,9 @@ def run(args: argparse.Namespace) -> int:
                 speeds = classify_reference_speeds(audit_reference_speeds(table, speed_column=args.speed_column))
                 for line in reference_speed_lines(speeds):
                     say(line)
-                flagged |= bool(len(speeds.flagged))
+                not_computed = [r for r in speeds.bearings["reason"] if r]
+                flagged |= bool(len(speeds.flagged) or not_computed)   # a row not computed is a row error
+                printed["reference_speed_rows_not_computed"] = not_computed
                 printed["reference_speed_groups"] = speeds.groups.to_dict(orient="records")
                 writes.append(partial(write_reference_speeds, speeds, out_dir, force=True, inputs=inputs))
     except AuditError as exc:

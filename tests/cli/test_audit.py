@@ -5,13 +5,16 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pandas as pd
 import pytest
 from PIL import Image
 from synthetic_catalogue import synthetic_catalogue
 from synthetic_torque import measured_set, model_set
 
+from bearingheat.analysis.audit import audit_coefficients
 from bearingheat.cli import main
+from bearingheat.io.tables import read_table
 
 HR1 = Path(__file__).resolve().parents[2].parent / "shared" / "data" / "hr1_2006_reference_speeds.csv"
 
@@ -130,3 +133,66 @@ def test_audit_writes_no_file_when_one_of_its_jobs_fails(tmp_path, capsys):
     assert main(["audit", str(example), "--model", "all", "--out-dir", str(out), "-q"]) == 2
     assert "the model comparison needs" in capsys.readouterr().err
     assert list(out.iterdir()) == []
+
+
+def _with_blank_torque(tmp_path):
+    """A 6205/6310 set of 60 rows with M blanked in 48 of them (every row whose position is no multiple of 5)."""
+    table, _, _ = measured_set("none", 3, designations=["6205", "6310"])
+    table = table.iloc[:60].reset_index(drop=True)
+    blank = np.arange(len(table)) % 5 != 0
+    table.loc[blank, "M [N*mm]"] = np.nan
+    source = tmp_path / "blank.csv"
+    table.to_csv(source, index=False)
+    return source, int(blank.sum())
+
+
+def test_excluded_rows_are_counted_listed_written_and_exit_1(tmp_path, capsys):
+    """48 rows without torque: exit 0 before, 20 'excluded:' lines and no '... 28 more', no file."""
+    source, blank = _with_blank_torque(tmp_path)
+    assert blank == 48
+    out = tmp_path / "out"
+    out.mkdir()
+    assert main(["audit", str(source), "--out-dir", str(out)]) == 1
+    printed = capsys.readouterr().out.splitlines()
+    excluded = audit_coefficients(read_table(str(source), None)).attrs["excluded"]
+    assert len(excluded) == 48
+    start = printed.index(f"48 rows excluded from the fit, all listed with their reasons in {out / 'excluded.csv'}:")
+    assert printed[start + 1:start + 21] == [f"excluded: {message}" for message in excluded[:20]]
+    assert printed[start + 21] == "... 28 more"
+    written = pd.read_csv(out / "excluded.csv", keep_default_na=False)
+    assert list(written.columns) == ["reason"] and list(written["reason"]) == excluded
+    # -q: nothing printed, the exit code and the file still tell; a second run needs --force for excluded.csv
+    assert main(["audit", str(source), "--out-dir", str(out), "-q"]) == 2
+    capsys.readouterr()
+    assert main(["audit", str(source), "--out-dir", str(out), "-q", "--force"]) == 1
+    assert capsys.readouterr() == ("", "")
+
+
+def test_an_earlier_runs_excluded_rows_are_not_left_behind(tmp_path, capsys):
+    source, _ = _with_blank_torque(tmp_path)
+    out = tmp_path / "out"
+    out.mkdir()
+    assert main(["audit", str(source), "--out-dir", str(out), "-q"]) == 1
+    clean = tmp_path / "clean.csv"
+    measured_set("none", 3, designations=["6205", "6310"])[0].to_csv(clean, index=False)
+    assert main(["audit", str(clean), "--out-dir", str(out), "-q"]) == 2     # excluded.csv is there: --force
+    assert main(["audit", str(clean), "--out-dir", str(out), "-q", "--force"]) == 0
+    assert pd.read_csv(out / "excluded.csv").empty
+
+
+def test_reference_speed_rows_not_computed_are_listed_and_exit_1(tmp_path, capsys):
+    """n_B = 0 in 25 rows of series 62: no reason, deviation inf and exit 0 before; now each row is named, the
+    first 20 are listed with '... 5 more', and the exit code is 1 (as for a row in error elsewhere)."""
+    table = synthetic_catalogue()
+    table = table[table["series"] == "62"].reset_index(drop=True)
+    table.loc[:24, "n_B [1/min]"] = 0
+    source = tmp_path / "list.csv"
+    table.to_csv(source, index=False)
+    assert main(["audit", "--reference-speeds", str(source)]) == 1
+    printed = capsys.readouterr().out.splitlines()
+    start = printed.index("Rows not computed (25), left out of every group:")
+    assert printed[start + 1:start + 22] == [
+        f"  row {i + 2} ({table['designation'].iat[i]}): n_B [1/min] = 0 is outside the expected range (a published "
+        "speed must be a finite number > 0)" for i in range(20)] + ["  ... 5 more"]
+    assert main(["audit", "--reference-speeds", str(source), "-q"]) == 1
+    assert capsys.readouterr() == ("", "")

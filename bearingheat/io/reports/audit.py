@@ -1,14 +1,16 @@
 """What ``bearingheat audit`` writes: the audit tables as text, CSV files and the reference speed figure.
 
 The coefficient audit (:func:`bearingheat.analysis.audit.audit_coefficients`)
-is printed as one table and written to ``coefficients.csv``. The reference
-speed audit (:func:`bearingheat.analysis.audit.audit_reference_speeds`,
-grouped by :func:`~bearingheat.analysis.audit.classify_reference_speeds`)
-is printed with the flagged groups and their implied f0 first, then the
-outliers, then every group; it is written to ``reference_speeds.csv`` (one
-row per bearing: its group, deviation and outlier mark),
-``reference_speed_series.csv`` (one row per series and size class) and
-``reference_speeds.png`` (deviation against bore for every series, drawn
+is printed as one table and written to ``coefficients.csv``; the rows it
+left out are counted and listed (the first 20) and written to
+``excluded.csv``. The reference speed audit
+(:func:`bearingheat.analysis.audit.audit_reference_speeds`, grouped by
+:func:`~bearingheat.analysis.audit.classify_reference_speeds`) is printed
+with the flagged groups and their implied f0 first, then the outliers, then
+every group and the rows not computed with their reasons; it is written to
+``reference_speeds.csv`` (one row per bearing: its group, deviation and
+outlier mark), ``reference_speed_series.csv`` (one row per series and size
+class) and ``reference_speeds.png`` (deviation against bore for every series, drawn
 with matplotlib's Figure API).
 """
 from __future__ import annotations
@@ -18,15 +20,16 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from bearingheat.analysis.audit import SYSTEMATIC_RULE, ReferenceSpeedAudit
+from bearingheat.analysis.reference_speeds import MIN_CONSISTENT, SYSTEMATIC_RULE, ReferenceSpeedAudit
 from bearingheat.io.files import write_outputs
 from bearingheat.io.tables import escape_formulas
 from bearingheat.io.reports import FIGURE_DPI, matplotlib_figure
 
-__all__ = ["coefficient_lines", "excluded_lines", "COEFFICIENT_TITLE", "reference_speed_lines", "write_coefficients", "write_reference_speeds",
-           "draw_reference_speeds", "REFERENCE_SPEED_FILES"]
+__all__ = ["coefficient_lines", "excluded_lines", "EXCLUDED_FILE", "COEFFICIENT_TITLE", "reference_speed_lines",
+           "not_computed_lines", "write_coefficients", "write_reference_speeds", "draw_reference_speeds", "REFERENCE_SPEED_FILES"]
 
-#: at most this many excluded rows are listed under the coefficient table
+#: at most this many excluded rows are listed under the coefficient table (and rows not computed under the
+#: reference speed tables)
 SHOWN_EXCLUDED = 20
 #: the files of the reference speed audit
 REFERENCE_SPEED_FILES = ("reference_speeds.csv", "reference_speed_series.csv", "reference_speeds.png")
@@ -37,9 +40,22 @@ REFERENCE_SPEED_FILES = ("reference_speeds.csv", "reference_speed_series.csv", "
 COEFFICIENT_TITLE = "Coefficients fitted to the measured torque (95 % confidence intervals):"
 
 
-def excluded_lines(result: pd.DataFrame) -> list[str]:
-    """The rows the coefficient fit left out, a line each (at most :data:`SHOWN_EXCLUDED`)."""
-    return [f"excluded: {message}" for message in result.attrs.get("excluded", [])[:SHOWN_EXCLUDED]]
+#: the file of the rows the coefficient fit left out, with their reasons
+EXCLUDED_FILE = "excluded.csv"
+
+
+def excluded_lines(result: pd.DataFrame, out_dir=None) -> list[str]:
+    """The rows the coefficient fit left out: a count (naming ``out_dir``/excluded.csv where it is written),
+    then a line each, at most :data:`SHOWN_EXCLUDED` and '... N more'."""
+    excluded = list(result.attrs.get("excluded", []))
+    if not excluded:
+        return []
+    where = f", all listed with their reasons in {Path(out_dir) / EXCLUDED_FILE}" if out_dir is not None else ""
+    lines = [f"{len(excluded)} row{'s' if len(excluded) > 1 else ''} excluded from the fit{where}:"]
+    lines += [f"excluded: {message}" for message in excluded[:SHOWN_EXCLUDED]]
+    if len(excluded) > SHOWN_EXCLUDED:
+        lines.append(f"... {len(excluded) - SHOWN_EXCLUDED} more")
+    return lines
 
 
 def coefficient_lines(result: pd.DataFrame) -> list[str]:
@@ -60,13 +76,31 @@ def _f1(value: float) -> str:
     return f"{value:.2e}" if pd.notna(value) else "-"
 
 
+def not_computed_lines(bearings: pd.DataFrame) -> list[str]:
+    """The rows of a catalogue list whose n_thr was not computed, with their reasons (the first
+    :data:`SHOWN_EXCLUDED`, then '... N more'); none where every row was computed."""
+    reasons = [str(r) for r in bearings["reason"] if isinstance(r, str) and r] if "reason" in bearings else []
+    if not reasons:
+        return []
+    lines = [f"Rows not computed ({len(reasons)}), left out of every group:"]
+    lines += [f"  {reason}" for reason in reasons[:SHOWN_EXCLUDED]]
+    if len(reasons) > SHOWN_EXCLUDED:
+        lines.append(f"  ... {len(reasons) - SHOWN_EXCLUDED} more")
+    return lines
+
+
 def reference_speed_lines(audit: ReferenceSpeedAudit) -> list[str]:
     """The reference speed audit as text lines: flagged groups with their implied f0, outliers, every group, rule."""
     groups = audit.groups
+    if audit.consistent:
+        scale = (f"sigma = {audit.scale:.2%} (robust scale of the median deviations of the {audit.consistent} "
+                 "series that agree with the tables)")
+    else:
+        scale = (f"sigma = {audit.scale:.2%} (the floor, not estimated from the data: of the {audit.series} series, "
+                 f"fewer than {MIN_CONSISTENT} agree with the tables, too few for a robust scale)")
     lines = ["Thermal reference speed from the tables against the published value "
              "(deviation = n_thr(tables)/n_thr(published) - 1).",
-             f"sigma = {audit.scale:.2%} (robust scale of the median deviations of the {audit.consistent} series "
-             f"that agree with the tables); threshold = +/-{audit.threshold:.2%}."]
+             f"{scale}; threshold = +/-{audit.threshold:.2%}."]
     flagged = audit.flagged
     if len(flagged):
         lines.append(f"Flagged groups ({len(flagged)}), with the f0 that reproduces their published speeds "
@@ -107,7 +141,9 @@ def reference_speed_lines(audit: ReferenceSpeedAudit) -> list[str]:
         "systematic": groups["systematic"].to_numpy(),
         "f0 table": groups["f0_table"].map(_f0).to_numpy(),
         "f0 implied": groups["f0_implied"].map(_f0).to_numpy()})
-    lines += ["All series and size classes:", table.to_string(index=False), f"rule: {SYSTEMATIC_RULE}"]
+    lines += ["All series and size classes:", table.to_string(index=False)]
+    lines += not_computed_lines(audit.bearings)
+    lines.append(f"rule: {SYSTEMATIC_RULE}")
     lines += [f"systematic: {g}" for g in flagged["group"]]
     return lines
 
@@ -117,8 +153,14 @@ def _csv(frame: pd.DataFrame):
 
 
 def write_coefficients(result: pd.DataFrame, out_dir, *, force: bool = False, inputs=()) -> list[Path]:
-    """``coefficients.csv`` in ``out_dir``, atomically; an existing file is replaced only with ``force``."""
-    return write_outputs(out_dir, {"coefficients.csv": _csv(result)}, force=force, inputs=inputs)
+    """``coefficients.csv`` in ``out_dir``, and ``excluded.csv`` (column ``reason``, a row each) where rows were
+    excluded or an earlier run left one (replaced, so that it never lists another run's rows); each atomically,
+    an existing file replaced only with ``force``."""
+    writers = {"coefficients.csv": _csv(result)}
+    excluded = list(result.attrs.get("excluded", []))
+    if excluded or (Path(out_dir) / EXCLUDED_FILE).exists():
+        writers[EXCLUDED_FILE] = _csv(pd.DataFrame({"reason": pd.Series(excluded, dtype=object)}))
+    return write_outputs(out_dir, writers, force=force, inputs=inputs)
 
 
 def write_reference_speeds(audit: ReferenceSpeedAudit, out_dir, *, force: bool = False, inputs=()) -> list[Path]:

@@ -1,0 +1,96 @@
+"""The reference-speed audit on lists it could not fully use: few series, cells that are no published speed."""
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+from synthetic_catalogue import synthetic_catalogue
+
+from bearingheat.analysis.audit import audit_reference_speeds, classify_reference_speeds
+from bearingheat.analysis.deviations import consistent_scale
+from bearingheat.catalogue.bearings import bearing_table
+from bearingheat.io.reports.audit import reference_speed_lines
+from bearingheat.io.tables import read_table
+
+HR1_COLUMNS = {"d": "d [mm]", "D": "D [mm]", "B": "B [mm]", "T": "T [mm]", "C0": "C0 [N]", "n_thr": "n_thr [1/min]"}
+
+
+def test_too_few_series_keep_none_and_sigma_is_the_floor():
+    sigma, kept = consistent_scale([-0.175, -0.154], z=5.0, floor=0.002, min_groups=5)
+    assert sigma == 0.002 and kept.tolist() == [False, False]
+    # three of five agree: too few to estimate from after clipping, none kept
+    sigma, kept = consistent_scale([0.001, -0.002, 0.0015, 0.2, -0.15], z=5.0, floor=0.002, min_groups=5)
+    assert sigma == 0.002 and not kept.any()
+
+
+def test_two_series_say_sigma_is_the_floor_not_the_scale_of_series_that_agree():
+    """618 and 313 of HR 1 alone: the text called 0.20 % the robust scale of '2 series that agree with the
+    tables' and then flagged both."""
+    hr1 = bearing_table().rename(columns=HR1_COLUMNS)
+    keys = audit_reference_speeds(hr1)["series_key"]
+    two = hr1[keys.isin(["deep groove ball 618", "tapered roller 313"]).to_numpy()]
+    audit = classify_reference_speeds(audit_reference_speeds(two))
+    assert (audit.scale, audit.consistent, audit.series) == (0.002, 0, 2)
+    assert reference_speed_lines(audit)[1] == (
+        "sigma = 0.20% (the floor, not estimated from the data: of the 2 series, fewer than 5 agree with the "
+        "tables, too few for a robust scale); threshold = +/-1.00%.")
+    # the whole list: 14 series give sigma, as before
+    whole = classify_reference_speeds(audit_reference_speeds(hr1))
+    assert whole.consistent == 14 and np.isclose(whole.scale, 0.0029, atol=5e-5)
+    assert reference_speed_lines(whole)[1].startswith(
+        "sigma = 0.29% (robust scale of the median deviations of the 14 series that agree with the tables)")
+
+
+# ---- cells that are no published speed or no dimension ------------------------------------------
+
+#: position in series 62 of the synthetic list -> (column, typed cell, the reason of its row)
+BAD_CELLS = {
+    3: ("C0 [N]", "abc", "row 5 (624-2Z): 'abc' is not a number for C0 [N] (the static load rating C0 must be a "
+                         "finite number > 0)"),
+    4: ("n_B [1/min]", "5 600", "row 6 (625): '5 600' is not a number for n_B [1/min] (a published speed must be a "
+                                "finite number > 0)"),
+    5: ("d [mm]", "5,5", "row 7 (625-2Z): '5,5' is not a number for d [mm] (the bore d must be a finite number > 0)"),
+    6: ("n_B [1/min]", "0", "row 8 (626): n_B [1/min] = 0 is outside the expected range (a published speed must be "
+                            "a finite number > 0)"),
+    7: ("n_B [1/min]", "-5", "row 9 (626-2Z): n_B [1/min] = -5 is outside the expected range (a published speed "
+                             "must be a finite number > 0)"),
+    8: ("n_B [1/min]", "", "row 10 (627): n_B [1/min] is blank (a published speed must be a finite number > 0)"),
+    9: ("C0 [N]", "-220", "row 11 (627-2Z): C0 [N] = -220 is outside the expected range (the static load rating C0 "
+                          "must be a finite number > 0)"),
+}
+
+
+def series_62(tmp_path, cells=None):
+    """Series 62 of the synthetic list (the tables' own speeds) as a CSV with ``cells`` typed in, read as the
+    command reads it (file lines: the header is line 1, the row at position i is line i + 2)."""
+    table = synthetic_catalogue()
+    table = table[table["series"] == "62"].reset_index(drop=True).astype(object)
+    for position, (column, text, _) in (cells or {}).items():
+        table.loc[position, column] = text
+    path = tmp_path / "list.csv"
+    table.to_csv(path, index=False)
+    return read_table(path), path
+
+
+def test_cells_that_are_no_number_or_out_of_range_name_row_column_value_and_range(tmp_path):
+    """'abc' in C0 was 'C0 [N]: missing', '5 600' in n_B 'blank', '5,5' in d silently the catalogue bore,
+    n_B = 0 a deviation of inf without reason, n_B = -5 an outlier of -932066.9 %."""
+    clean = audit_reference_speeds(series_62(tmp_path)[0])
+    rows = audit_reference_speeds(series_62(tmp_path, BAD_CELLS)[0])
+    bad = sorted(BAD_CELLS)
+    assert list(rows["reason"].iloc[bad]) == [BAD_CELLS[i][2] for i in bad]
+    assert (rows["reason"].drop(index=bad) == "").all() and (clean["reason"] == "").all()
+    for column in ("n_thr_tables", "deviation", "f0_implied", "f0_implied_low", "f1_implied_high"):
+        assert rows[column].iloc[bad].isna().all(), column
+        np.testing.assert_array_equal(rows[column].drop(index=bad), clean[column].drop(index=bad))
+    audit = classify_reference_speeds(rows)
+    assert audit.outliers.empty and audit.groups["computed"].iat[0] == len(rows) - len(bad)
+    assert reference_speed_lines(audit)[-2 - len(bad):-1] == [
+        f"Rows not computed ({len(bad)}), left out of every group:"] + [f"  {BAD_CELLS[i][2]}" for i in bad]
+
+
+def test_rows_of_a_frame_are_numbered_from_1():
+    table = pd.DataFrame({"designation": ["6205", "6206"], "d [mm]": [25, 30], "D [mm]": [52, 62],
+                          "B [mm]": [15, 16], "C0 [N]": [7800, 11200], "n_B [1/min]": [14400, float("inf")]})
+    assert list(audit_reference_speeds(table)["reason"]) == [
+        "", "row 2 (6206): n_B [1/min] = inf is outside the expected range (a published speed must be a finite "
+            "number > 0)"]
