@@ -60,20 +60,24 @@ def _name(header) -> str:
         return str(header)
 
 
-def coefficient_uncertainties(coefficients: pd.DataFrame) -> dict[str, dict[str, float]]:
-    """bearing -> {'f0_rel_unc': .., 'f1_rel_unc': ..} from the ``coefficients.csv`` of ``bearingheat audit``:
-    the half-width of each fitted coefficient's 95 % interval over the fitted value (f1_a counts as f1)."""
+def coefficient_uncertainties(coefficients: pd.DataFrame) -> dict[tuple[str, str | None], dict[str, float]]:
+    """(bearing, lubrication) -> {'f0_rel_unc': .., 'f1_rel_unc': ..} from the ``coefficients.csv`` of
+    ``bearingheat audit``: the half-width of each fitted coefficient's 95 % interval over the fitted value (f1_a
+    counts as f1). The audit fits a bearing once per lubrication (their table coefficients differ); a file of an
+    older audit, without the ``lubrication`` column, gives the key (bearing, None): any lubrication."""
     missing = {"bearing", "coefficient", "fitted", "ci_low", "ci_high"} - set(coefficients.columns)
     if missing:
         raise InputError(f"coefficients: missing column(s) {', '.join(sorted(missing))}; expected the "
                          "coefficients.csv of 'bearingheat audit'")
-    out: dict[str, dict[str, float]] = {}
+    out: dict[tuple[str, str | None], dict[str, float]] = {}
     fitted, low, high = (pd.to_numeric(coefficients[c], errors="coerce").to_numpy(dtype=float)
                          for c in ("fitted", "ci_low", "ci_high"))
     names = coefficients["coefficient"].astype(str).map({"f0": "f0_rel_unc", "f1": "f1_rel_unc", "f1_a": "f1_rel_unc"})
+    lubrications = text_column(coefficients, "lubrication")  # (None in every row of an older file)
     for i in np.flatnonzero(names.notna().to_numpy() & np.isfinite(fitted) & (fitted != 0)):  # a short table
-        out.setdefault(str(coefficients["bearing"].iat[int(i)]), {})[str(names.iat[int(i)])] = \
-            float((high[i] - low[i]) / 2.0 / abs(fitted[i]))
+        row = int(i)
+        key = (str(coefficients["bearing"].iat[row]).strip(), lubrications[row])
+        out.setdefault(key, {})[str(names.iat[row])] = float((high[i] - low[i]) / 2.0 / abs(fitted[i]))
     return out
 
 
@@ -165,13 +169,16 @@ def _reference_speed_band(frame: pd.DataFrame, u0: np.ndarray, u1: np.ndarray,
 
 def fill_from_coefficients(table: pd.DataFrame, coefficients: pd.DataFrame) -> pd.DataFrame:
     """The table with blank or missing ``f0_rel_unc``/``f1_rel_unc`` taken from an audit's coefficients by
-    designation (the audit's 'bearing'); a value in the table wins."""
+    designation and lubrication (the audit's 'bearing' and 'lubrication'); a value in the table wins."""
     known = coefficient_uncertainties(coefficients)
-    designations = text_column(table.rename(columns={h: _name(h) for h in table.columns}), "designation")
+    named = table.rename(columns={h: _name(h) for h in table.columns})
+    keys = list(zip(text_column(named, "designation"), text_column(named, "lubrication")))
+    # a row takes the fit of its bearing in its lubrication (an older file's fit of the bearing in any)
+    found = [known.get((d or "", lub), known.get((d or "", None), {})) for d, lub in keys]
     out = table.copy()
     for name in UNCERTAINTY_INPUTS:
         header = next((h for h in table.columns if _name(h) == name), name)
         given = number_column(out.rename(columns={header: name}), name)
-        fitted = np.array([known.get(d or "", {}).get(name, np.nan) for d in designations], dtype=float)
+        fitted = np.array([fit.get(name, np.nan) for fit in found], dtype=float)
         out[header] = np.where(np.isnan(given), fitted, given)
     return out
