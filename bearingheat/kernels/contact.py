@@ -37,7 +37,6 @@ Fa = 2 kgf:
 """
 from __future__ import annotations
 
-import functools
 import math
 from typing import Any, NamedTuple
 
@@ -46,7 +45,9 @@ from scipy.optimize import brentq
 from scipy.special import ellipe, ellipk
 
 from bearingheat.errors import ContactInputError
-from bearingheat.kernels._series import series_aware
+from bearingheat.kernels._contact_refusals import (_ball_refusal, _balls_refusal, _broadcast, _check_alpha0,
+                                                   _check_ball, _check_balls, _check_groove_sum, _check_grooves,
+                                                   _check_load, _check_pitch, _kernel, _pitch_refusal, _refuse)
 
 __all__ = [
     "KGF",
@@ -96,120 +97,6 @@ GYROSCOPIC_CONSTANT_KGF = 5.75e-12
 
 _DEG = math.pi / 180.0
 _ROUNDING = 1e-12  # relative rounding of a clearance typed at its limit (420 um in mm: 0.42000000000000004)
-
-
-# --------------------------------------------------------------------------- helpers
-def _broadcast(*values):
-    """Float arrays of one broadcast shape (Series were made arrays by :func:`_kernel`)."""
-    arrays = np.broadcast_arrays(*[np.asarray(v, dtype=float) for v in values])
-    return [np.array(a, dtype=float) for a in arrays]
-
-
-def _refuse(bad, template: str, **values):
-    """Raise ContactInputError for the first element where ``bad`` holds (NaN never counts as bad).
-
-    The message names the element of an array; :func:`_kernel` renames it to
-    the row label when the kernel was called with a Series.
-    """
-    bad = np.asarray(bad, dtype=bool)
-    if not bad.any():
-        return
-    flat = int(np.flatnonzero(bad.ravel())[0])
-    cells = {k: np.broadcast_to(np.asarray(v, dtype=float), bad.shape).ravel()[flat] for k, v in values.items()}
-    message = template.format(**cells)
-    if bad.ndim == 0:
-        raise ContactInputError(message)
-    position = np.unravel_index(flat, bad.shape)
-    row = position[0] if len(position) == 1 else tuple(int(p) for p in position)
-    error = ContactInputError(f"{message} (element {row})", row)
-    setattr(error, "_refusal", (message, flat))
-    raise error
-
-
-def _row_labels(values):
-    """Row labels (the index) of the first pandas Series among ``values``, else None.
-
-    Duck-typed on a non-callable ``index`` attribute (a list's ``index`` is a
-    method), so that the kernels need no pandas of their own.
-    """
-    for value in values:
-        labels = getattr(value, "index", None)
-        if labels is not None and not callable(labels):
-            return labels
-    return None
-
-
-def _kernel(func):
-    """:func:`series_aware` (Series in, Series out), and a refusal that names the Series row, not the element."""
-    inner = series_aware(func)
-
-    @functools.wraps(func)
-    def wrapper(*args, **kwargs):
-        try:
-            return inner(*args, **kwargs)
-        except ContactInputError as exc:
-            refusal = exc.__dict__.pop("_refusal", None)  # popped: an outer kernel does not rename it again
-            labels = _row_labels((*args, *kwargs.values()))
-            if refusal is None or labels is None:
-                raise
-            message, flat = refusal
-            row = labels[flat]
-            raise ContactInputError(f"{message} (row {row})", row) from None
-
-    return wrapper
-
-
-def _ball_refusal(d_w):
-    """(bad, message template, values) of a check: the kernels raise on the first bad element
-    (:func:`_refuse`), :func:`minimum_axial_load_rows` tells each bad row."""
-    return d_w <= 0, "d_w = {d_w:g} mm: the ball diameter must be positive", {"d_w": d_w}
-
-
-def _check_ball(d_w):
-    bad, template, values = _ball_refusal(d_w)
-    _refuse(bad, template, **values)
-
-
-def _check_groove_sum(r_i, r_o, d_w):
-    total = r_i + r_o
-    _refuse(total <= d_w,
-            "impossible geometry: r_i + r_o = {total:g} mm must exceed d_w = {d_w:g} mm",
-            total=total, d_w=d_w)
-
-
-def _check_grooves(r_i, r_o, d_w):
-    _check_groove_sum(r_i, r_o, d_w)
-    half = d_w / 2.0
-    _refuse(r_i <= half,
-            "impossible geometry: r_i = {r:g} mm must exceed d_w/2 = {half:g} mm (groove narrower than the ball)",
-            r=r_i, half=half)
-    _refuse(r_o <= half,
-            "impossible geometry: r_o = {r:g} mm must exceed d_w/2 = {half:g} mm (groove narrower than the ball)",
-            r=r_o, half=half)
-
-
-def _pitch_refusal(d_m, d_w, name="d_m"):
-    return (d_m <= d_w, "impossible geometry: pitch diameter " + name + " = {d_m:g} mm must exceed d_w = {d_w:g} mm",
-            {"d_m": d_m, "d_w": d_w})
-
-
-def _check_pitch(d_m, d_w, name="d_m"):
-    bad, template, values = _pitch_refusal(d_m, d_w, name)
-    _refuse(bad, template, **values)
-
-
-def _check_alpha0(alpha0):
-    _refuse((alpha0 < 0) | (alpha0 >= 90),
-            "alpha0 = {a:g} deg must lie in [0, 90) deg", a=alpha0)
-
-
-def _balls_refusal(z):
-    return (z < 1) | (z != np.round(z)), "z = {z:g}: the number of balls must be a whole number of at least 1", {"z": z}
-
-
-def _check_balls(z):
-    bad, template, values = _balls_refusal(z)
-    _refuse(bad, template, **values)
 
 
 # --------------------------------------------------------------------------- initial contact angle
@@ -456,11 +343,6 @@ def axial_displacement(xi_a, r_i, r_o, d_w):
     """
     xi_a, r_i, r_o, d_w = _broadcast(xi_a, r_i, r_o, d_w)
     return xi_a * (r_i + r_o - d_w)
-
-def _check_load(Fa, C_star):
-    _refuse(Fa < 0, "Fa = {Fa:g} N: the axial load must not be negative", Fa=Fa)
-    _refuse(C_star <= 0, "C_star = {C:g} N: the stiffness characteristic must be positive", C=C_star)
-
 
 def _solve_angle(load_ratio_23: float, alpha0_rad: float) -> float:
     if math.isnan(load_ratio_23) or math.isnan(alpha0_rad):

@@ -333,13 +333,26 @@ def test_error_names_the_row_of_a_series():
     assert info.value.row == "bearing B"
 
 
-def test_error_of_an_inner_kernel_names_the_element():
-    """A kernel calling another with its arrays: the inner refusal names the element, as before the layered move."""
+def test_error_of_an_inner_kernel_names_the_row_of_the_outer_series():
+    """A kernel calling another with the arrays of its Series: the inner refusal is renamed to the Series row by
+    the outer kernel (the inner wrapper, which sees no labels, used to drop what the renaming needs)."""
     with pytest.raises(ContactInputError) as info:
         ct.stiffness_characteristic(pd.Series([7, 7], index=["a", "b"]), 2.0, 8.7355, 12.0,
                                     pd.Series([1.05, 0.95], index=["a", "b"]), 1.16)
     assert str(info.value) == ("impossible geometry: r_i = 0.95 mm must exceed d_w/2 = 1 mm "
-                               "(groove narrower than the ball) (element 1)")
+                               "(groove narrower than the ball) (row b)")
+    assert info.value.row == "b"
+    index = ["6205", "6206"]
+    d_w, d_m = pd.Series([2.0, 2.0], index=index), pd.Series([8.7, 1.0], index=index)
+    expected = "impossible geometry: pitch diameter d_m = 1 mm must exceed d_w = 2 mm (row 6206)"
+    for call in (lambda: ct.stiffness_characteristic(7, d_w, d_m, 12.0, 1.05, 1.16),
+                 lambda: ct.race_curvatures(d_w, d_m, 12.0, 1.05, 1.16)):
+        with pytest.raises(ContactInputError) as info:
+            call()
+        assert str(info.value) == expected and info.value.row == "6206"
+    with pytest.raises(ContactInputError) as info:  # an array still names the element
+        ct.stiffness_characteristic(7, d_w.to_numpy(), d_m.to_numpy(), 12.0, 1.05, 1.16)
+    assert str(info.value) == "impossible geometry: pitch diameter d_m = 1 mm must exceed d_w = 2 mm (element 1)"
     assert info.value.row == 1
     with pytest.raises(ContactInputError) as info:
         ct.stiffness_characteristic(pd.Series([7, 6.5], index=["a", "b"]), 2.0, 8.7355, 12.0, 1.05, 1.16)
