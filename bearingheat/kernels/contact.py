@@ -48,6 +48,7 @@ from bearingheat.errors import ContactInputError
 from bearingheat.kernels._contact_refusals import (_ball_refusal, _balls_refusal, _broadcast, _check_alpha0,
                                                    _check_ball, _check_balls, _check_groove_sum, _check_grooves,
                                                    _check_load, _check_pitch, _kernel, _pitch_refusal, _refuse)
+from bearingheat.kernels._series import series_aware
 
 __all__ = [
     "KGF",
@@ -478,7 +479,8 @@ def series_iterates(Fa, C_star, alpha0, newton_steps: int = 1) -> list[SeriesIte
     """The paper's iteration table: x_0 from :func:`series_start`, then ``newton_steps`` Newton steps.
 
     Row k holds x_k, α = α0 + x_k [deg], ξ_a at α, the load Fa_k at α and
-    Δ_k = (Fa_k − Fa)/Fa·100 [%] (Zaitsev & Voronkin, p. 3). Fa, C* in one force unit.
+    Δ_k = (Fa_k − Fa)/Fa·100 [%] (Zaitsev & Voronkin, p. 3). Fa, C* in one force unit. Fa = 0 gives
+    x = 0, α = α0 and Δ = 0 in every row.
 
     >>> rows = series_iterates(2.0, 7792.0, 12.0, newton_steps=1)
     >>> [(round(r.x, 7), round(r.load, 3)) for r in rows]    # paper: (0.0433985, 2.029), (0.0430573, 2.001)
@@ -493,10 +495,18 @@ def series_iterates(Fa, C_star, alpha0, newton_steps: int = 1) -> list[SeriesIte
             x = x + newton_increment(Fa, C_star, alpha0, x)
         alpha = alpha0 + x * (180.0 / math.pi)
         load = axial_load_at_angle(alpha, alpha0, C_star)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            deviation = (load - Fa) / Fa * 100.0
-        rows.append(SeriesIterate(k, x, alpha, axial_displacement_ratio(alpha, alpha0), load, deviation))
+        rows.append(SeriesIterate(k, x, alpha, axial_displacement_ratio(alpha, alpha0), load,
+                                  _deviation_percent(load, Fa)))
     return rows
+
+
+@series_aware
+def _deviation_percent(load, Fa):
+    """Δ = (Fa_k − Fa)/Fa·100 [%] (Zaitsev & Voronkin, p. 3), 0 where Fa = 0: the iterates stay at α0 there
+    (x_0 = 0, Newton step 0), so Fa_k = 0 = Fa exactly, for a scalar Fa as for an array."""
+    load, Fa = _broadcast(load, Fa)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(Fa == 0, 0.0, (load - Fa) / Fa * 100.0)
 
 
 def working_contact_angle_series(Fa, C_star, alpha0, newton_steps: int = 2):

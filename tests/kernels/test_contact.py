@@ -368,3 +368,17 @@ def test_a_clearance_at_its_limit_is_90_degrees_whichever_way_its_float_rounds()
         assert initial_contact_angle(e, 1.05, 1.16, 2.0) == 90.0
     with pytest.raises(Exception, match=r"^e = 0.43 mm exceeds 2\*\(r_i \+ r_o - d_w\) = 0.42 mm"):
         initial_contact_angle(0.43, 1.05, 1.16, 2.0)
+
+
+def test_series_at_zero_load_gives_alpha0_for_a_scalar_as_for_an_array():
+    """Fa = 0: x_0 = 0, the Newton step is 0, α = α0 = 12° and Fa_k = 0 = Fa, so Δ = 0 %; the scalar form used to
+    divide by zero, the array form gave a NaN deviation."""
+    scalar = ct.series_iterates(0.0, 7792.0, 12.0, newton_steps=2)
+    array = ct.series_iterates(np.array([0.0, 2.0]), 7792.0, 12.0, newton_steps=2)
+    for row, row_of_array in zip(scalar, array):
+        assert (row.x, row.alpha, row.xi_a, row.load, row.deviation_percent) == (0.0, 12.0, 0.0, 0.0, 0.0)
+        assert (row_of_array.alpha[0], row_of_array.deviation_percent[0]) == (12.0, 0.0)
+    assert ct.working_contact_angle_series(0.0, 7792.0, 12.0) == 12.0
+    assert ct.working_contact_angle_series(np.array([0.0]), 7792.0, 12.0).tolist() == [12.0]
+    series = ct.series_iterates(pd.Series([0.0, 2.0], index=["x", "y"]), 7792.0, 12.0)[-1].deviation_percent
+    assert isinstance(series, pd.Series) and series["x"] == 0.0
