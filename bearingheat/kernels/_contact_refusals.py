@@ -130,7 +130,41 @@ def _check_balls(z):
     _refuse(bad, template, **values)
 
 
+#: Largest load ratio Fa/C* the working angle is solved for: the angle is then within 0.01 deg of 90 deg (at
+#: alpha0 = 0: 89.994 deg), far past the Hertz contact of Zaitsev & Voronkin; above about 1e24 the residual of
+#: the angle equation no longer changes sign below 90 deg in floating point.
+LOAD_RATIO_MAX = 1e6
+
 
 def _check_load(Fa, C_star):
     _refuse(Fa < 0, "Fa = {Fa:g} N: the axial load must not be negative", Fa=Fa)
+    _refuse(np.isinf(Fa), "Fa = {Fa:g} N: the axial load must be finite", Fa=Fa)
     _refuse(C_star <= 0, "C_star = {C:g} N: the stiffness characteristic must be positive", C=C_star)
+    _refuse(np.isinf(C_star), "C_star = {C:g} N: the stiffness characteristic must be finite", C=C_star)
+    with np.errstate(invalid="ignore"):
+        ratio = Fa / C_star
+    _refuse(ratio > LOAD_RATIO_MAX,
+            "Fa = {Fa:g} N with C_star = {C:g} N: Fa/C_star = {ratio:g} must lie in [0, " + f"{LOAD_RATIO_MAX:g}"
+            + "] (the working angle is then within 0.01 deg of 90 deg)", Fa=Fa, C=C_star, ratio=ratio)
+
+
+def _check_outer_groove(d_w, d_m, alpha0, r_o):
+    """cos τ_o >= 0 (Zaitsev & Voronkin, p. 2): 1/f_o >= 2γ/(1 + γ), that is r_o no larger than the outer raceway's
+    radius in the rolling direction, (d_m + d_w·cos α0)/(2·cos α0): the groove must curve across at least as much
+    as the race curves along (otherwise the principal planes of the contact swap and F(ρ) < 0)."""
+    cos0 = np.cos(np.radians(alpha0))
+    with np.errstate(divide="ignore"):
+        race = (d_m + d_w * cos0) / (2.0 * cos0)
+    _refuse(r_o > race * (1.0 + 1e-12),
+            "impossible geometry: r_o = {r:g} mm must not exceed (d_m + d_w*cos(alpha0))/(2*cos(alpha0)) = {race:g} mm"
+            " with d_w = {d_w:g} mm, d_m = {d_m:g} mm, alpha0 = {a:g} deg (the outer groove would be flatter "
+            "across than the race is along it)", r=r_o, race=race, d_w=d_w, d_m=d_m, a=alpha0)
+
+
+def _check_deflection_coefficients(inner, outer):
+    """2K/(μπ) of a Hertz contact lies in (0, 1]: 1 for a circle (κ = 1), falling towards 0 as the ellipse lengthens."""
+    for side, value in (("inner", inner), ("outer", outer)):
+        value = np.asarray(value, dtype=float)
+        _refuse(~((value > 0) & (value <= 1)) & ~np.isnan(value),
+                "deflection_coefficients: " + side + " 2K/(mu*pi) = {c:g} must lie in (0, 1] "
+                "(1 for a circular contact, falling towards 0 as the contact ellipse lengthens)", c=value)

@@ -46,8 +46,10 @@ from scipy.special import ellipe, ellipk
 
 from bearingheat.errors import ContactInputError
 from bearingheat.kernels._contact_refusals import (_ball_refusal, _balls_refusal, _broadcast, _check_alpha0,
-                                                   _check_ball, _check_balls, _check_groove_sum, _check_grooves,
-                                                   _check_load, _check_pitch, _kernel, _pitch_refusal, _refuse)
+                                                   _check_ball, _check_balls, _check_deflection_coefficients,
+                                                   _check_groove_sum, _check_grooves, _check_load,
+                                                   _check_outer_groove, _check_pitch, _kernel, _pitch_refusal,
+                                                   _refuse)
 from bearingheat.kernels._series import series_aware
 
 __all__ = [
@@ -166,7 +168,8 @@ def race_curvatures(d_w, d_m, alpha0, r_i, r_o) -> RaceCurvatures:
     This is the paper's form in T/(d_w cos α0) with the groove-centre diameters
     T_i = d_m + (2r_i − d_w)·cos α0 and T_o = d_m − (2r_o − d_w)·cos α0 (the
     paper's T_в = d_1 + 2r_в, T_н = D_1 − 2r_н) and its "± 2ξ − 1" read as
-    "± (2ξ − 1)". d_w, d_m, r_i, r_o in mm, α0 in degrees.
+    "± (2ξ − 1)". d_w, d_m, r_i, r_o in mm, α0 in degrees. cos τ_o ≥ 0 needs r_o no larger than the
+    outer race's radius along the rolling direction, (d_m + d_w·cos α0)/(2·cos α0); a larger r_o is refused.
 
     >>> rc = race_curvatures(2.0, 8.7355, 12.0, 1.05, 1.16)
     >>> [round(v, 7) for v in rc]           # paper: 1.3361919, 0.9549594, 0.9287242, 0.7111268
@@ -182,6 +185,7 @@ def _race_curvatures(d_w, d_m, alpha0, r_i, r_o):
     _check_grooves(r_i, r_o, d_w)
     _check_pitch(d_m, d_w)
     _check_alpha0(alpha0)
+    _check_outer_groove(d_w, d_m, alpha0, r_o)
     gamma = d_w * np.cos(alpha0 * _DEG) / d_m
     inner_rolling = 2.0 * gamma / (1.0 - gamma)
     outer_rolling = 2.0 * gamma / (1.0 + gamma)
@@ -273,7 +277,8 @@ def stiffness_characteristic(z, d_w, d_m, alpha0, r_i, r_o, *, deflection_coeffi
     diameter), r_i, r_o in mm; α0 in degrees.
 
     ``deflection_coefficients=(inner, outer)`` replaces the exact 2K/(μπ) by
-    given values, e.g. the paper's table readings (0.63, 0.852).
+    given values, e.g. the paper's table readings (0.63, 0.852); each must lie in (0, 1] (1 for a
+    circular contact).
 
     >>> round(stiffness_characteristic(7, 2.0, 8.7355, 12.0, 1.05, 1.16,
     ...                                deflection_coefficients=(0.63, 0.852)) / KGF)   # paper: 7792 kgf
@@ -287,6 +292,7 @@ def stiffness_characteristic(z, d_w, d_m, alpha0, r_i, r_o, *, deflection_coeffi
         deflection_o = hertz_coefficients(curv.cos_tau_o).deflection
     else:
         deflection_i, deflection_o = deflection_coefficients
+        _check_deflection_coefficients(deflection_i, deflection_o)
     c_i = race_compliance(d_w, curv.sum_rho_i, deflection_i)
     c_o = race_compliance(d_w, curv.sum_rho_o, deflection_o)
     xi = (r_i + r_o) / d_w - 1.0
@@ -366,7 +372,8 @@ def working_contact_angle(Fa, C_star, alpha0):
     Solves Fa = C*·(cos α0 / cos α − 1)^(3/2)·sin α for α in [α0, 90°), written
     as (cos α0 / cos α − 1)·sin^(2/3) α = (Fa/C*)^(2/3), which increases
     monotonically in α. Fa, C* in N (any one force unit for both); α0 in
-    degrees, 0 ≤ α0 < 90°. Fa = 0 gives α0.
+    degrees, 0 ≤ α0 < 90°. Fa = 0 gives α0. Fa and C* must be finite, Fa/C* at most 1e6 (α is then
+    within 0.01° of 90°).
 
     >>> round(working_contact_angle(2.0, 7792.0, 12.0), 4)     # kgf in; paper: 14°28′
     14.467
@@ -549,6 +556,7 @@ def minimum_axial_load(z, d_w, d_pitch, n, alpha):
 def _minimum_axial_load_refusals(z, d_w, d_pitch, n, alpha):
     return [_balls_refusal(z), _ball_refusal(d_w), _pitch_refusal(d_pitch, d_w, name="D0"),
             (n < 0, "n = {n:g} 1/min: the speed must not be negative", {"n": n}),
+            (np.isinf(n), "n = {n:g} 1/min: the speed must be finite", {"n": n}),
             ((alpha < 0) | (alpha > 90), "alpha = {a:g} deg must lie in [0, 90] deg", {"a": alpha})]
 
 

@@ -318,6 +318,27 @@ def test_scalar_array_and_series_agree():
      "impossible geometry: pitch diameter D0 = 2 mm must exceed d_w = 2 mm"),
     (lambda: ct.axial_load_at_angle(11.0, 12.0, 7792.0),
      "alpha = 11 deg must lie in [alpha0, 90) deg = [12, 90) deg"),
+    # non-finite and far-out inputs: refused by the package, not by scipy's bracket or as inf/nan out
+    (lambda: ct.working_contact_angle(np.inf, 7792.0, 12.0), "Fa = inf N: the axial load must be finite"),
+    (lambda: ct.working_contact_angle(2.0, np.inf, 12.0), "C_star = inf N: the stiffness characteristic must be finite"),
+    (lambda: ct.working_contact_angle(1e30, 1.0, 12.0),
+     "Fa = 1e+30 N with C_star = 1 N: Fa/C_star = 1e+30 must lie in [0, 1e+06] "
+     "(the working angle is then within 0.01 deg of 90 deg)"),
+    (lambda: ct.working_contact_angle_series(2e7, 2.0, 12.0),
+     "Fa = 2e+07 N with C_star = 2 N: Fa/C_star = 1e+07 must lie in [0, 1e+06] "
+     "(the working angle is then within 0.01 deg of 90 deg)"),
+    (lambda: ct.minimum_axial_load(7, 2, 8.7, np.inf, 12), "n = inf 1/min: the speed must be finite"),
+    (lambda: ct.stiffness_characteristic(7, 2.0, 8.7355, 12.0, 1.05, 1.16, deflection_coefficients=(-0.63, -0.852)),
+     "deflection_coefficients: inner 2K/(mu*pi) = -0.63 must lie in (0, 1] "
+     "(1 for a circular contact, falling towards 0 as the contact ellipse lengthens)"),
+    (lambda: ct.stiffness_characteristic(7, 2.0, 8.7355, 12.0, 1.05, 1.16, deflection_coefficients=(0.63, 1.5)),
+     "deflection_coefficients: outer 2K/(mu*pi) = 1.5 must lie in (0, 1] "
+     "(1 for a circular contact, falling towards 0 as the contact ellipse lengthens)"),
+    # r_o above the outer race's radius along the rolling direction: (2.2 + 2*cos 0)/(2*cos 0) = 2.1 mm by hand
+    (lambda: ct.race_curvatures(2.0, 2.2, 0.0, 1.05, 2.5),
+     "impossible geometry: r_o = 2.5 mm must not exceed (d_m + d_w*cos(alpha0))/(2*cos(alpha0)) = 2.1 mm "
+     "with d_w = 2 mm, d_m = 2.2 mm, alpha0 = 0 deg (the outer groove would be flatter across than the race is "
+     "along it)"),
 ])
 def test_errors_exact_messages(call, message):
     with pytest.raises(ContactInputError) as info:
@@ -368,6 +389,17 @@ def test_a_clearance_at_its_limit_is_90_degrees_whichever_way_its_float_rounds()
         assert initial_contact_angle(e, 1.05, 1.16, 2.0) == 90.0
     with pytest.raises(Exception, match=r"^e = 0.43 mm exceeds 2\*\(r_i \+ r_o - d_w\) = 0.42 mm"):
         initial_contact_angle(0.43, 1.05, 1.16, 2.0)
+
+
+def test_the_outer_groove_limit_is_where_cos_tau_o_reaches_zero():
+    """By hand: cos τ_o = [d_w/r_o − 2γ/(1 + γ)]/(d_w·Σρ_o) is 0 at r_o = d_w(1 + γ)/(2γ), γ = d_w·cos α0/d_m
+    (d_w = 2, d_m = 8.7355, α0 = 12°: γ = 0.223949, 5.4653 mm); just below it is accepted with cos τ_o ≈ 0."""
+    gamma = 2.0 * math.cos(math.radians(12.0)) / 8.7355
+    limit = 2.0 * (1.0 + gamma) / (2.0 * gamma)
+    assert limit == pytest.approx(5.4653, abs=1e-4)
+    assert ct.race_curvatures(2.0, 8.7355, 12.0, 1.05, limit * (1 - 1e-9)).cos_tau_o == pytest.approx(0.0, abs=1e-8)
+    with pytest.raises(ContactInputError, match=r"^impossible geometry: r_o = 5\.5 mm must not exceed"):
+        ct.race_curvatures(2.0, 8.7355, 12.0, 1.05, 5.5)
 
 
 def test_series_at_zero_load_gives_alpha0_for_a_scalar_as_for_an_array():
