@@ -376,7 +376,7 @@ def working_contact_angle(Fa, C_star, alpha0):
     within 0.01° of 90°).
 
     >>> round(working_contact_angle(2.0, 7792.0, 12.0), 4)     # kgf in; paper: 14°28′
-    14.467
+    14.4677
     """
     Fa, C_star, alpha0 = _broadcast(Fa, C_star, alpha0)
     _check_load(Fa, C_star)
@@ -455,7 +455,7 @@ def newton_increment(Fa, C_star, alpha0, x):
     denominator is (2/3)·d ln Fa/dα. Requires x > 0 (or Fa = 0, giving 0).
 
     >>> x0 = series_start(2.0, 7792.0, 12.0)
-    >>> round(x0 + newton_increment(2.0, 7792.0, 12.0, x0), 7)   # paper: 0.0430573; exact root 0.0430678
+    >>> round(x0 + newton_increment(2.0, 7792.0, 12.0, x0), 7)   # paper: 0.0430573; exact root 0.0430689
     0.0430694
     """
     Fa, C_star, alpha0, x = _broadcast(Fa, C_star, alpha0, x)

@@ -414,3 +414,18 @@ def test_series_at_zero_load_gives_alpha0_for_a_scalar_as_for_an_array():
     assert ct.working_contact_angle_series(np.array([0.0]), 7792.0, 12.0).tolist() == [12.0]
     series = ct.series_iterates(pd.Series([0.0, 2.0], index=["x", "y"]), 7792.0, 12.0)[-1].deviation_percent
     assert isinstance(series, pd.Series) and series["x"] == 0.0
+
+
+def test_the_docstrings_show_the_digits_the_code_prints():
+    """The doctest NUMBER flag accepts 14.467 for 14.4677: the docstrings must carry the printed digits. The exact
+    root x = α − α0 at Fa = 2, C* = 7792, α0 = 12° by an independent bisection of Fa = C*(cos α0/cos α − 1)^1.5 sin α."""
+    assert round(ct.working_contact_angle(2.0, 7792.0, 12.0), 4) == 14.4677
+    assert "    14.4677\n" in ct.working_contact_angle.__doc__
+    a0 = math.radians(12.0)
+    low, high = 0.0, 0.1
+    for _ in range(200):
+        mid = 0.5 * (low + high)
+        load = 7792.0 * (math.cos(a0) / math.cos(a0 + mid) - 1.0) ** 1.5 * math.sin(a0 + mid)
+        low, high = (mid, high) if load < 2.0 else (low, mid)
+    assert round(low, 7) == 0.0430689
+    assert "exact root 0.0430689" in ct.newton_increment.__doc__
