@@ -192,6 +192,7 @@ def interval_friction_table(t: npt.ArrayLike, n_smooth: npt.ArrayLike, I: float,
     range. Crossing times are interpolated linearly on the smoothed curve.
     Returns a DataFrame; the ``f`` column is NaN when G or r is not given.
     """
+    _check_interval_count(count)
     t = np.asarray(t, dtype=float)
     speed = np.asarray(n_smooth, dtype=float)
     if dn is not None and dt is not None:
@@ -228,6 +229,13 @@ def interval_friction_table(t: npt.ArrayLike, n_smooth: npt.ArrayLike, I: float,
                      "t_from [s]": t_from, "t_to [s]": t_to, "dt [s]": duration, "M [N*m]": torque, "f": f})
     columns = ["n_from [1/min]", "n_to [1/min]", "n_mean [1/min]", "t_from [s]", "t_to [s]", "dt [s]", "M [N*m]", "f"]
     return pd.DataFrame(rows, columns=columns)
+
+
+def _check_interval_count(count: Any) -> None:
+    """``count`` equal speed steps: a whole number >= 1 (0 divided the range by zero, -3 made a negative Δn)."""
+    if isinstance(count, bool) or not isinstance(count, (int, float, np.integer, np.floating)) or \
+            not (math.isfinite(count) and count == int(count) and count >= 1):
+        raise CoastdownError(f"intervals: interval_count = {count!r}; expected a whole number >= 1")
 
 
 def _first_crossing(t: np.ndarray, speed: np.ndarray, level: float) -> float:
@@ -407,9 +415,12 @@ def coastdown_analysis(t: npt.ArrayLike, n: npt.ArrayLike, I: float, G: float | 
 
     t [s], n [1/min] samples; I [kg·m²]; G [N] and r [mm] (None: no friction
     coefficient, torques only); window: Savitzky–Golay window in samples
-    (default about a tenth of the samples, odd, 7 to 51).
+    (default about a tenth of the samples, odd, 7 to 51); interval_count: the
+    number of equal speed steps of formula (2) where neither interval_dn nor
+    interval_dt is given, a whole number >= 1.
     """
     t, n = _validate(t, n, I, G, r)
+    _check_interval_count(interval_count)
     window = _default_window(t.size) if window is None else int(window)
     n_smooth, dn_dt = savitzky_golay_irregular(t, n, window)
     n_max = float(np.max(n))

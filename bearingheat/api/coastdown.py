@@ -100,7 +100,8 @@ def analyse_coastdown(t: Quantity, n: Quantity, *, I: Quantity | _Rig = _TMM, G:
         length, fewer than 10 samples (or fewer than 4 above 2 % of the top
         speed), a non-finite time, a negative or non-finite speed, times
         that do not increase strictly, a speed that does not fall, I, G or
-        r not > 0, I = None, both interval steps or a step not > 0.
+        r not > 0, I = None, both interval steps or a step not > 0, an
+        interval_count that is not a whole number >= 1.
     bearingheat.errors.UnitError
         For a plain number where a Quantity is needed, or a unit of the
         wrong dimension (a speed must be revolutions or radians per time).

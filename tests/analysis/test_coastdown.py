@@ -166,3 +166,33 @@ def test_standard_errors_are_those_of_curve_fit():
     values, covariance = curve_fit(speed, t, n, p0=fit.values, method="trf", x_scale=np.abs(fit.values))
     np.testing.assert_allclose(values, fit.values, rtol=1e-6)
     np.testing.assert_allclose(np.sqrt(np.diag(covariance)), fit.std_errors, rtol=1e-3)
+
+
+def _line():
+    t = np.arange(0.0, 61.0, 2.0)
+    return t, 600.0 - 10.0 * t
+
+
+@pytest.mark.parametrize("count", [0, -3, 2.5, float("nan"), "3"])
+def test_interval_count_must_be_a_whole_number_of_at_least_one(count):
+    """0 divided the speed range by zero, -3 gave a message about a Δn the user never gave, 2.5 was accepted."""
+    t, n = _line()
+    message = f"intervals: interval_count = {count!r}; expected a whole number >= 1"
+    for call in (lambda: cd.coastdown_analysis(t, n, 2.6, 1100.0, 25.0, interval_count=count),
+                 lambda: cd.interval_friction_table(t, n, 2.6, 1100.0, 25.0, count=count)):
+        with pytest.raises(CoastdownError) as info:
+            call()
+        assert str(info.value) == message
+
+
+def test_interval_count_through_the_unit_aware_api():
+    from bearingheat.api.coastdown import analyse_coastdown
+    from bearingheat.units import ureg
+    u = ureg()
+    t, n = _line()
+    with pytest.raises(CoastdownError) as info:
+        analyse_coastdown(t * u.s, n * u.rpm, interval_count=0)
+    assert str(info.value) == "intervals: interval_count = 0; expected a whole number >= 1"
+    # a whole count given as a float is a count: 4 equal steps of (600 - 20)/4 = 145 1/min by hand
+    table = cd.coastdown_analysis(t, n, 2.6, 1100.0, 25.0, interval_count=4.0).intervals
+    np.testing.assert_allclose(table["n_from [1/min]"], [600.0, 455.0, 310.0, 165.0], rtol=1e-9)
