@@ -497,9 +497,14 @@ def spindle_coastdown_fit(t: npt.ArrayLike, n: npt.ArrayLike, I: float, nu: floa
     M(n) = bearings·(M0(n; ν, dM, f0) + M1) [N·mm], M0 from
     :func:`rolling_bearing_M0_seed002`, M1 = f1·P·dM constant during the
     run-down (the load does not change). ν [mm²/s] is taken as constant
-    (steady temperature). f1 = M1/(P·dM) is reported when P [N] is given.
+    (steady temperature). f1 = M1/(P·dM) is reported when P [N] is given;
+    the fitted f0 is compared with ``f0_catalogue`` when given (finite, > 0).
     """
     t, n = _validate(t, n, I, None, None)
+    if f0_catalogue is not None and not (math.isfinite(f0_catalogue) and f0_catalogue > 0.0):
+        # the fitted-to-catalogue ratio divides by it: 0 crashed, nan became null, -2 gave a negative ratio
+        raise CoastdownError(f"spindle coast-down: catalogue f0 = {f0_catalogue:g}; expected a finite value > 0 "
+                             "to compare the fitted f0 with")
     for name, value, unit in (("nu", nu, "mm^2/s"), ("dM", dM, "mm")):
         if not (math.isfinite(value) and value > 0.0):
             raise CoastdownError(f"spindle coast-down: {name} = {value:g} {unit}; expected a value > 0")

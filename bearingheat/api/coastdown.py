@@ -161,7 +161,7 @@ def analyse_spindle_coastdown(t: Quantity, n: Quantity, *, I: Quantity, nu: Quan
     P : pint.Quantity [force], optional
         Bearing load, > 0; gives f1 = M1/(P·dM).
     f0_catalogue : float, optional
-        The catalogue f0 to compare the fitted one with.
+        The catalogue f0 to compare the fitted one with, finite and > 0.
 
     Returns
     -------
@@ -173,7 +173,7 @@ def analyse_spindle_coastdown(t: Quantity, n: Quantity, *, I: Quantity, nu: Quan
     ------
     bearingheat.errors.CoastdownError
         For a record that cannot be analysed (as for
-        :func:`analyse_coastdown`), nu, dM, I or P not > 0, a number of
+        :func:`analyse_coastdown`), nu, dM, I, P or f0_catalogue not > 0, a number of
         bearings that is not a whole number >= 1, or a run-down whose ν·n
         stays below 2000 (M0 is then constant and cannot be told apart
         from M1).

@@ -72,7 +72,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--dM", default=None, help="bearing mean diameter (d + D)/2, e.g. 50mm")
     parser.add_argument("--bearings", type=int, default=2, help="number of identical bearings (default 2)")
     parser.add_argument("--P", default=None, help="load that sets M1 of one bearing, e.g. 1000N (gives f1)")
-    parser.add_argument("--f0", type=float, default=None, help="catalogue f0 to audit against")
+    parser.add_argument("--f0", type=float, default=None, help="catalogue f0 to audit against (> 0)")
 
 
 #: a unit of each option's kind, for the message of a number typed without one

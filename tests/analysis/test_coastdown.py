@@ -196,3 +196,13 @@ def test_interval_count_through_the_unit_aware_api():
     # a whole count given as a float is a count: 4 equal steps of (600 - 20)/4 = 145 1/min by hand
     table = cd.coastdown_analysis(t, n, 2.6, 1100.0, 25.0, interval_count=4.0).intervals
     np.testing.assert_allclose(table["n_from [1/min]"], [600.0, 455.0, 310.0, 165.0], rtol=1e-9)
+
+
+@pytest.mark.parametrize(("f0", "shown"), [(0.0, "0"), (float("nan"), "nan"), (-2.0, "-2"), (float("inf"), "inf")])
+def test_spindle_catalogue_f0_must_be_finite_and_positive(f0, shown):
+    t = np.linspace(0.0, 20.0, 41)
+    n = 6000.0 - 250.0 * t
+    with pytest.raises(CoastdownError) as info:
+        cd.spindle_coastdown_fit(t, n, 0.01, 20.0, 50.0, f0_catalogue=f0)
+    assert str(info.value) == (f"spindle coast-down: catalogue f0 = {shown}; expected a finite value > 0 "
+                               "to compare the fitted f0 with")

@@ -72,3 +72,12 @@ def test_coastdown_absurd_reading_is_named(tmp_path, capsys, cell):
     assert main(["coastdown", str(path)]) == 2
     assert capsys.readouterr().err == (f"bearingheat coastdown: error: {path} line 4, column 'n [1/min]': {cell!r} is "
                                        "not a plausible reading (not finite, or beyond 1e+09)\n")
+
+
+@pytest.mark.parametrize("f0", ["0", "nan", "-2"])
+def test_coastdown_catalogue_f0_must_be_positive(f0, capsys):
+    """--f0 0 crashed (ZeroDivisionError, exit 1), nan became null, -2 printed a negative ratio: now exit 2."""
+    shown = {"0": "0", "nan": "nan", "-2": "-2"}[f0]
+    assert main(["coastdown", str(EXAMPLE), "--spindle", "--nu", "20mm^2/s", "--dM", "50mm", f"--f0={f0}"]) == 2
+    assert capsys.readouterr().err == (f"bearingheat coastdown: error: spindle coast-down: catalogue f0 = {shown}; "
+                                       "expected a finite value > 0 to compare the fitted f0 with\n")
