@@ -53,6 +53,7 @@ __all__ = [
     "MIN_SAMPLES",
     "CV_FOLDS",
     "CONFIDENCE",
+    "EXTRAPOLATION_WARNING_FACTOR",
     "interval_friction_table",
     "ModelFit",
     "SpindleFit",
@@ -60,6 +61,10 @@ __all__ = [
     "coastdown_analysis",
     "spindle_coastdown_fit",
 ]
+
+#: A run-down time extrapolated past the record by more than this many record durations is flagged: the fitted
+#: torque near standstill, which sets it, was not measured.
+EXTRAPOLATION_WARNING_FACTOR = 10.0
 
 #: Nested models of the resisting torque, simplest first: name -> fitted components.
 PLAIN_MODELS: dict[str, tuple[str, ...]] = {
@@ -313,6 +318,8 @@ class CoastdownResult:
     rundown_extrapolated: bool
     energy: dict[str, float]  # [J]
     spindle: SpindleFit | None = field(default=None)
+    #: the rig values (of "I", "G", "r") taken from the TMM-7M rig's defaults, not given (set by the unit-aware API)
+    rig_defaults: tuple[str, ...] = ()
 
     @property
     def chosen(self) -> ModelFit:
@@ -324,6 +331,28 @@ class CoastdownResult:
         if self.G is None or self.r is None:
             return float("nan")
         return self.fits["coulomb"].value("M_c") / (self.G * self.r / 1000.0)
+
+    @property
+    def f_computed(self) -> bool:
+        """Whether f is computed: it needs the journal load G and radius r (without them: torques only)."""
+        return self.G is not None and self.r is not None
+
+    @property
+    def record_duration(self) -> float:
+        """Duration of the record [s], first to last sample."""
+        t = self.samples["t [s]"]
+        return float(t.iloc[-1] - t.iloc[0])
+
+    @property
+    def rundown_warning(self) -> str | None:
+        """Why the run-down time is doubtful: extrapolated past the record by more than
+        :data:`EXTRAPOLATION_WARNING_FACTOR` times its duration (None otherwise)."""
+        beyond = self.rundown_time - self.record_duration
+        if not (math.isfinite(beyond) and beyond > EXTRAPOLATION_WARNING_FACTOR * self.record_duration):
+            return None
+        return (f"the run-down time is extrapolated {beyond:.4g} s past a record of {self.record_duration:.4g} s "
+                f"(more than {EXTRAPOLATION_WARNING_FACTOR:g} times its duration): it rests on the fitted torque "
+                "near standstill, which was not measured")
 
     @property
     def rmse_before(self) -> float:
@@ -347,15 +376,18 @@ class CoastdownResult:
             # a component the chosen model does not have is 0 there, but was not measured: no interval (null)
             out[f"{name}_ci95 [{unit}]"] = list(fit.interval(name)) if name in fit.parameters else None
         out.update({
+            "f_computed": self.f_computed,
             "f_constant": self.f_constant,
             "rmse_before [1/min]": self.rmse_before,
             "rmse_after [1/min]": self.rmse_after,
             "rundown_time [s]": self.rundown_time,
             "rundown_time_extrapolated": self.rundown_extrapolated,
+            "rundown_time_warning": self.rundown_warning,
             "energy [J]": dict(self.energy),
             "I [kg*m^2]": self.I,
             "G [N]": self.G,
             "r [mm]": self.r,
+            "rig_defaults": list(self.rig_defaults),
             "savgol_window": self.window,
             "models": {
                 name: {"parameters": dict(zip(f.parameters, map(float, f.values))),

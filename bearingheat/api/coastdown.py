@@ -91,7 +91,8 @@ def analyse_coastdown(t: Quantity, n: Quantity, *, I: Quantity | _Rig = _TMM, G:
         The chosen model and every fit (parameters in N·m, N·m·s, N·m·s²
         with 95 % intervals), ``f_constant`` (the source's single
         coefficient, NaN without G and r), the smoothed samples, the
-        interval table, the run-down time [s] and the energies [J].
+        interval table, the run-down time [s] and the energies [J];
+        ``rig_defaults`` names the rig values taken from the TMM-7M defaults.
 
     Raises
     ------
@@ -126,8 +127,10 @@ def analyse_coastdown(t: Quantity, n: Quantity, *, I: Quantity | _Rig = _TMM, G:
     r_mm = _rig_value(r, TMM_7M["r"], "mm", "r")
     dn = None if interval_dn is None else float(speed_rpm(interval_dn, "interval_dn"))
     dt = None if interval_dt is None else float(magnitude(interval_dt, "s", "interval_dt"))
-    return coastdown_analysis(t_s, n_rpm, I_kgm2, G_n, r_mm, window=window, interval_dn=dn, interval_dt=dt,
-                              interval_count=interval_count)
+    result = coastdown_analysis(t_s, n_rpm, I_kgm2, G_n, r_mm, window=window, interval_dn=dn, interval_dt=dt,
+                                interval_count=interval_count)
+    result.rig_defaults = tuple(name for name, value in (("I", I), ("G", G), ("r", r)) if value is _TMM)
+    return result
 
 
 def analyse_spindle_coastdown(t: Quantity, n: Quantity, *, I: Quantity, nu: Quantity, dM: Quantity, bearings: int = 2,

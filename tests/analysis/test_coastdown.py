@@ -206,3 +206,22 @@ def test_spindle_catalogue_f0_must_be_finite_and_positive(f0, shown):
         cd.spindle_coastdown_fit(t, n, 0.01, 20.0, 50.0, f0_catalogue=f0)
     assert str(info.value) == (f"spindle coast-down: catalogue f0 = {shown}; expected a finite value > 0 "
                                "to compare the fitted f0 with")
+
+
+def test_a_run_down_time_extrapolated_far_past_the_record_is_warned():
+    """The straight line stops at 60 s inside its 60 s record: no warning. Set by hand to 650 s (590 s past the
+    record, under 10 x 60 s) still none; 700 s (640 s past it) is warned, in the summary as in the report."""
+    import dataclasses
+
+    from bearingheat.io.reports.coastdown import coastdown_summary, render_report
+    t, n = _line()
+    result = cd.coastdown_analysis(t, n, 2.6, 1100.0, 25.0)
+    assert result.record_duration == 60.0 and result.rundown_time == pytest.approx(60.0, rel=1e-3)
+    assert result.rundown_warning is None and coastdown_summary(result)["rundown_time_warning"] is None
+    assert dataclasses.replace(result, rundown_time=650.0).rundown_warning is None
+    far = dataclasses.replace(result, rundown_time=700.0, rundown_extrapolated=True)
+    text = ("the run-down time is extrapolated 640 s past a record of 60 s (more than 10 times its duration): "
+            "it rests on the fitted torque near standstill, which was not measured")
+    assert far.rundown_warning == text
+    assert coastdown_summary(far)["rundown_time_warning"] == text
+    assert f"- **Warning:** {text}\n" in render_report(far, "line.csv", png=None)
