@@ -14,15 +14,24 @@ from bearingheat.io.files import write_outputs
 from bearingheat.io.json import json_safe
 from bearingheat.io.reports import FIGURE_DPI, matplotlib_figure
 
-__all__ = ["plot_coastdown", "render_report", "coastdown_summary", "write_coastdown_outputs"]
+__all__ = ["draw_coastdown", "plot_coastdown", "render_report", "coastdown_summary", "write_coastdown_outputs"]
+
+#: legend label of the formula (2) intervals in the lower panel
+INTERVALS_LABEL = "formula (2), intervals"
 
 
 def plot_coastdown(result: CoastdownResult, path) -> None:
     """n(t) with the constant-f and the chosen fit, and f (or M) against n; PNG at ``path``."""
+    draw_coastdown(result).savefig(path, format="png", dpi=FIGURE_DPI)
+
+
+def draw_coastdown(result: CoastdownResult):
+    """The matplotlib Figure of :func:`plot_coastdown`: each formula (2) interval is a horizontal segment from its
+    n_from to its n_to (the interval's mean f or M holds over that whole speed step)."""
     Figure = matplotlib_figure()
 
     s = result.samples
-    use_f = result.G is not None and result.r is not None
+    use_f = result.f_computed
     fig = Figure(figsize=(6.4, 6.4), dpi=80)
     top, bottom = fig.subplots(2, 1)
     top.plot(s["t [s]"], s["n [1/min]"], ".", ms=3, color="0.4", label="data")
@@ -41,12 +50,12 @@ def plot_coastdown(result: CoastdownResult, path) -> None:
     iv = result.intervals
     if len(iv):
         values = iv["f"] if use_f else iv["M [N*m]"]
-        bottom.step(iv["n_mean [1/min]"], values, where="mid", label="formula (2), intervals")
+        bottom.hlines(values, iv["n_to [1/min]"], iv["n_from [1/min]"], colors="tab:green", label=INTERVALS_LABEL)
     bottom.set_xlabel("n [1/min]")
     bottom.set_ylabel(label)
     bottom.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(path, format="png", dpi=FIGURE_DPI)
+    return fig
 
 
 def _ci(fit, name, digits=4):
