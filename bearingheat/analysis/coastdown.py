@@ -53,6 +53,7 @@ __all__ = [
     "MIN_SAMPLES",
     "CV_FOLDS",
     "CONFIDENCE",
+    "EXTRAPOLATION_WARNING_FACTOR",
     "interval_friction_table",
     "ModelFit",
     "SpindleFit",
@@ -60,6 +61,10 @@ __all__ = [
     "coastdown_analysis",
     "spindle_coastdown_fit",
 ]
+
+#: A run-down time extrapolated past the record by more than this many record durations is flagged: the fitted
+#: torque near standstill, which sets it, was not measured.
+EXTRAPOLATION_WARNING_FACTOR = 10.0
 
 #: Nested models of the resisting torque, simplest first: name -> fitted components.
 PLAIN_MODELS: dict[str, tuple[str, ...]] = {
@@ -192,6 +197,7 @@ def interval_friction_table(t: npt.ArrayLike, n_smooth: npt.ArrayLike, I: float,
     range. Crossing times are interpolated linearly on the smoothed curve.
     Returns a DataFrame; the ``f`` column is NaN when G or r is not given.
     """
+    _check_interval_count(count)
     t = np.asarray(t, dtype=float)
     speed = np.asarray(n_smooth, dtype=float)
     if dn is not None and dt is not None:
@@ -228,6 +234,13 @@ def interval_friction_table(t: npt.ArrayLike, n_smooth: npt.ArrayLike, I: float,
                      "t_from [s]": t_from, "t_to [s]": t_to, "dt [s]": duration, "M [N*m]": torque, "f": f})
     columns = ["n_from [1/min]", "n_to [1/min]", "n_mean [1/min]", "t_from [s]", "t_to [s]", "dt [s]", "M [N*m]", "f"]
     return pd.DataFrame(rows, columns=columns)
+
+
+def _check_interval_count(count: Any) -> None:
+    """``count`` equal speed steps: a whole number >= 1 (0 divided the range by zero, -3 made a negative Δn)."""
+    if isinstance(count, bool) or not isinstance(count, (int, float, np.integer, np.floating)) or \
+            not (math.isfinite(count) and count == int(count) and count >= 1):
+        raise CoastdownError(f"intervals: interval_count = {count!r}; expected a whole number >= 1")
 
 
 def _first_crossing(t: np.ndarray, speed: np.ndarray, level: float) -> float:
@@ -305,6 +318,8 @@ class CoastdownResult:
     rundown_extrapolated: bool
     energy: dict[str, float]  # [J]
     spindle: SpindleFit | None = field(default=None)
+    #: the rig values (of "I", "G", "r") taken from the TMM-7M rig's defaults, not given (set by the unit-aware API)
+    rig_defaults: tuple[str, ...] = ()
 
     @property
     def chosen(self) -> ModelFit:
@@ -316,6 +331,28 @@ class CoastdownResult:
         if self.G is None or self.r is None:
             return float("nan")
         return self.fits["coulomb"].value("M_c") / (self.G * self.r / 1000.0)
+
+    @property
+    def f_computed(self) -> bool:
+        """Whether f is computed: it needs the journal load G and radius r (without them: torques only)."""
+        return self.G is not None and self.r is not None
+
+    @property
+    def record_duration(self) -> float:
+        """Duration of the record [s], first to last sample."""
+        t = self.samples["t [s]"]
+        return float(t.iloc[-1] - t.iloc[0])
+
+    @property
+    def rundown_warning(self) -> str | None:
+        """Why the run-down time is doubtful: extrapolated past the record by more than
+        :data:`EXTRAPOLATION_WARNING_FACTOR` times its duration (None otherwise)."""
+        beyond = self.rundown_time - self.record_duration
+        if not (math.isfinite(beyond) and beyond > EXTRAPOLATION_WARNING_FACTOR * self.record_duration):
+            return None
+        return (f"the run-down time is extrapolated {beyond:.4g} s past a record of {self.record_duration:.4g} s "
+                f"(more than {EXTRAPOLATION_WARNING_FACTOR:g} times its duration): it rests on the fitted torque "
+                "near standstill, which was not measured")
 
     @property
     def rmse_before(self) -> float:
@@ -339,15 +376,18 @@ class CoastdownResult:
             # a component the chosen model does not have is 0 there, but was not measured: no interval (null)
             out[f"{name}_ci95 [{unit}]"] = list(fit.interval(name)) if name in fit.parameters else None
         out.update({
+            "f_computed": self.f_computed,
             "f_constant": self.f_constant,
             "rmse_before [1/min]": self.rmse_before,
             "rmse_after [1/min]": self.rmse_after,
             "rundown_time [s]": self.rundown_time,
             "rundown_time_extrapolated": self.rundown_extrapolated,
+            "rundown_time_warning": self.rundown_warning,
             "energy [J]": dict(self.energy),
             "I [kg*m^2]": self.I,
             "G [N]": self.G,
             "r [mm]": self.r,
+            "rig_defaults": list(self.rig_defaults),
             "savgol_window": self.window,
             "models": {
                 name: {"parameters": dict(zip(f.parameters, map(float, f.values))),
@@ -407,9 +447,12 @@ def coastdown_analysis(t: npt.ArrayLike, n: npt.ArrayLike, I: float, G: float | 
 
     t [s], n [1/min] samples; I [kg·m²]; G [N] and r [mm] (None: no friction
     coefficient, torques only); window: Savitzky–Golay window in samples
-    (default about a tenth of the samples, odd, 7 to 51).
+    (default about a tenth of the samples, odd, 7 to 51); interval_count: the
+    number of equal speed steps of formula (2) where neither interval_dn nor
+    interval_dt is given, a whole number >= 1.
     """
     t, n = _validate(t, n, I, G, r)
+    _check_interval_count(interval_count)
     window = _default_window(t.size) if window is None else int(window)
     n_smooth, dn_dt = savitzky_golay_irregular(t, n, window)
     n_max = float(np.max(n))
@@ -486,9 +529,14 @@ def spindle_coastdown_fit(t: npt.ArrayLike, n: npt.ArrayLike, I: float, nu: floa
     M(n) = bearings·(M0(n; ν, dM, f0) + M1) [N·mm], M0 from
     :func:`rolling_bearing_M0_seed002`, M1 = f1·P·dM constant during the
     run-down (the load does not change). ν [mm²/s] is taken as constant
-    (steady temperature). f1 = M1/(P·dM) is reported when P [N] is given.
+    (steady temperature). f1 = M1/(P·dM) is reported when P [N] is given;
+    the fitted f0 is compared with ``f0_catalogue`` when given (finite, > 0).
     """
     t, n = _validate(t, n, I, None, None)
+    if f0_catalogue is not None and not (math.isfinite(f0_catalogue) and f0_catalogue > 0.0):
+        # the fitted-to-catalogue ratio divides by it: 0 crashed, nan became null, -2 gave a negative ratio
+        raise CoastdownError(f"spindle coast-down: catalogue f0 = {f0_catalogue:g}; expected a finite value > 0 "
+                             "to compare the fitted f0 with")
     for name, value, unit in (("nu", nu, "mm^2/s"), ("dM", dM, "mm")):
         if not (math.isfinite(value) and value > 0.0):
             raise CoastdownError(f"spindle coast-down: {name} = {value:g} {unit}; expected a value > 0")

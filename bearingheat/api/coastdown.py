@@ -91,7 +91,8 @@ def analyse_coastdown(t: Quantity, n: Quantity, *, I: Quantity | _Rig = _TMM, G:
         The chosen model and every fit (parameters in N·m, N·m·s, N·m·s²
         with 95 % intervals), ``f_constant`` (the source's single
         coefficient, NaN without G and r), the smoothed samples, the
-        interval table, the run-down time [s] and the energies [J].
+        interval table, the run-down time [s] and the energies [J];
+        ``rig_defaults`` names the rig values taken from the TMM-7M defaults.
 
     Raises
     ------
@@ -100,7 +101,8 @@ def analyse_coastdown(t: Quantity, n: Quantity, *, I: Quantity | _Rig = _TMM, G:
         length, fewer than 10 samples (or fewer than 4 above 2 % of the top
         speed), a non-finite time, a negative or non-finite speed, times
         that do not increase strictly, a speed that does not fall, I, G or
-        r not > 0, I = None, both interval steps or a step not > 0.
+        r not > 0, I = None, both interval steps or a step not > 0, an
+        interval_count that is not a whole number >= 1.
     bearingheat.errors.UnitError
         For a plain number where a Quantity is needed, or a unit of the
         wrong dimension (a speed must be revolutions or radians per time).
@@ -125,8 +127,10 @@ def analyse_coastdown(t: Quantity, n: Quantity, *, I: Quantity | _Rig = _TMM, G:
     r_mm = _rig_value(r, TMM_7M["r"], "mm", "r")
     dn = None if interval_dn is None else float(speed_rpm(interval_dn, "interval_dn"))
     dt = None if interval_dt is None else float(magnitude(interval_dt, "s", "interval_dt"))
-    return coastdown_analysis(t_s, n_rpm, I_kgm2, G_n, r_mm, window=window, interval_dn=dn, interval_dt=dt,
-                              interval_count=interval_count)
+    result = coastdown_analysis(t_s, n_rpm, I_kgm2, G_n, r_mm, window=window, interval_dn=dn, interval_dt=dt,
+                                interval_count=interval_count)
+    result.rig_defaults = tuple(name for name, value in (("I", I), ("G", G), ("r", r)) if value is _TMM)
+    return result
 
 
 def analyse_spindle_coastdown(t: Quantity, n: Quantity, *, I: Quantity, nu: Quantity, dM: Quantity, bearings: int = 2,
@@ -160,7 +164,7 @@ def analyse_spindle_coastdown(t: Quantity, n: Quantity, *, I: Quantity, nu: Quan
     P : pint.Quantity [force], optional
         Bearing load, > 0; gives f1 = M1/(P·dM).
     f0_catalogue : float, optional
-        The catalogue f0 to compare the fitted one with.
+        The catalogue f0 to compare the fitted one with, finite and > 0.
 
     Returns
     -------
@@ -172,7 +176,7 @@ def analyse_spindle_coastdown(t: Quantity, n: Quantity, *, I: Quantity, nu: Quan
     ------
     bearingheat.errors.CoastdownError
         For a record that cannot be analysed (as for
-        :func:`analyse_coastdown`), nu, dM, I or P not > 0, a number of
+        :func:`analyse_coastdown`), nu, dM, I, P or f0_catalogue not > 0, a number of
         bearings that is not a whole number >= 1, or a run-down whose ν·n
         stays below 2000 (M0 is then constant and cannot be told apart
         from M1).

@@ -11,7 +11,8 @@ from bearingheat.errors import BearingheatError, UnitError
 from bearingheat.io.coastdown import read_rundown
 from bearingheat.io.files import check_outputs
 from bearingheat.io.reports.coastdown import coastdown_summary, render_report, write_coastdown_outputs
-from bearingheat.units import parse_quantity
+from bearingheat.kernels.coastdown import TMM_7M
+from bearingheat.units import parse_quantity, ureg
 
 
 DESCRIPTION = """\
@@ -30,6 +31,10 @@ constant f (before) and with the chosen model (after), the run-down time, the
 energy dissipated, and f against n by formula (2) over intervals.
 
 Rig parameters with units (defaults: TMM-7M): --I 2.6kg*m^2 --G 1100N --r 25mm.
+f = M/(G*r) is that of the rotor only with its own G and r: a value left out is
+the TMM-7M rig's, and the report says so. --torque-only (for a rotor whose
+journal load or radius is unknown) computes the torques without f: the report
+says f is not computed and summary.json has f_constant null.
 Intervals for formula (2): --dn 100rpm (speed steps) or --dt 10s (time steps);
 default 10 equal speed steps. --window: Savitzky-Golay window in samples.
 
@@ -40,13 +45,16 @@ so that f0 can be audited against the catalogue value given by --f0.
 --out-dir DIR writes DIR/report.md, DIR/coastdown.png and DIR/summary.json
 (keys include model, 'M_c [N*m]', 'c_v [N*m*s]', 'c_a [N*m*s^2]' with their
 95 % intervals, e.g. 'M_c_ci95 [N*m]' (null for a component the chosen model
-does not have: it is 0 there, not measured), f_constant, 'rmse_before [1/min]',
-'rmse_after [1/min]'). Existing files in DIR are
+does not have: it is 0 there, not measured), f_constant (null with
+--torque-only), f_computed, rig_defaults (the rig values left at the TMM-7M
+defaults), 'rmse_before [1/min]', 'rmse_after [1/min]', rundown_time_warning
+(a run-down time extrapolated more than 10 times the record's duration past
+it, else null)). Existing files in DIR are
 replaced only with --force; each file is written atomically. --json prints
 the summary instead of the report; -q prints nothing but errors.
 
 Exit codes: 0 done; 2 unusable input (missing file or column, bad cell, bad
-unit, too few samples, speed not falling) or a file fault."""
+unit, too few samples, speed not falling, --f0 not > 0) or a file fault."""
 
 
 #: the files written into --out-dir DIR
@@ -55,9 +63,12 @@ _FILES = ("coastdown.png", "report.md", "summary.json")
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("data", metavar="DATA.csv", help="run-down samples: columns 't [s]' and 'n [1/min]'")
-    parser.add_argument("--I", default="2.6kg*m^2", help="moment of inertia about the shaft (default 2.6kg*m^2)")
-    parser.add_argument("--G", default="1100N", help="rotor weight = journal load (default 1100N)")
-    parser.add_argument("--r", default="25mm", help="journal radius (default 25mm)")
+    parser.add_argument("--I", default=None, help="moment of inertia about the shaft (default 2.6kg*m^2, TMM-7M)")
+    parser.add_argument("--G", default=None, help="rotor weight = journal load (default 1100N, TMM-7M)")
+    parser.add_argument("--r", default=None, help="journal radius (default 25mm, TMM-7M)")
+    parser.add_argument("--torque-only", action="store_true",
+                        help="no friction coefficient f, torques only (journal load or radius unknown); "
+                             "not with --G or --r")
     parser.add_argument("--window", type=int, default=None, help="Savitzky-Golay window, odd number of samples")
     intervals = parser.add_mutually_exclusive_group()
     intervals.add_argument("--dn", default=None, help="speed step of the formula (2) intervals, e.g. 100rpm")
@@ -72,7 +83,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--dM", default=None, help="bearing mean diameter (d + D)/2, e.g. 50mm")
     parser.add_argument("--bearings", type=int, default=2, help="number of identical bearings (default 2)")
     parser.add_argument("--P", default=None, help="load that sets M1 of one bearing, e.g. 1000N (gives f1)")
-    parser.add_argument("--f0", type=float, default=None, help="catalogue f0 to audit against")
+    parser.add_argument("--f0", type=float, default=None, help="catalogue f0 to audit against (> 0)")
 
 
 #: a unit of each option's kind, for the message of a number typed without one
@@ -94,7 +105,13 @@ def run(args: argparse.Namespace) -> int:
         t, n = read_rundown(args.data, sep=args.sep, decimal=args.decimal)
     except BearingheatError as exc:
         raise UsageError(str(exc)) from exc
-    rig = {name: _quantity(getattr(args, name), f"--{name}") for name in ("I", "G", "r")}
+    if args.torque_only and (args.G is not None or args.r is not None):
+        raise UsageError("--torque-only computes no f and takes no --G or --r")
+    # a value left out is the API's TMM-7M default (and the result names it in rig_defaults)
+    rig = {name: _quantity(getattr(args, name), f"--{name}") for name in ("I", "G", "r")
+           if getattr(args, name) is not None}
+    if args.torque_only:
+        rig.update(G=None, r=None)
     dn = None if args.dn is None else _quantity(args.dn, "--dn")
     dt = None if args.dt is None else _quantity(args.dt, "--dt")
     try:
@@ -104,7 +121,7 @@ def run(args: argparse.Namespace) -> int:
             if missing:
                 raise UsageError(f"--spindle needs {' and '.join(missing)}")
             result.spindle = analyse_spindle_coastdown(
-                t, n, I=rig["I"], nu=_quantity(args.nu, "--nu"), dM=_quantity(args.dM, "--dM"),
+                t, n, I=rig.get("I", TMM_7M["I"] * ureg()("kg*m^2")), nu=_quantity(args.nu, "--nu"), dM=_quantity(args.dM, "--dM"),
                 bearings=args.bearings, P=None if args.P is None else _quantity(args.P, "--P"),
                 f0_catalogue=args.f0)
     except BearingheatError as exc:

@@ -37,7 +37,6 @@ Fa = 2 kgf:
 """
 from __future__ import annotations
 
-import functools
 import math
 from typing import Any, NamedTuple
 
@@ -46,6 +45,11 @@ from scipy.optimize import brentq
 from scipy.special import ellipe, ellipk
 
 from bearingheat.errors import ContactInputError
+from bearingheat.kernels._contact_refusals import (_ball_refusal, _balls_refusal, _broadcast, _check_alpha0,
+                                                   _check_ball, _check_balls, _check_deflection_coefficients,
+                                                   _check_groove_sum, _check_grooves, _check_load,
+                                                   _check_outer_groove, _check_pitch, _kernel, _pitch_refusal,
+                                                   _refuse)
 from bearingheat.kernels._series import series_aware
 
 __all__ = [
@@ -96,120 +100,6 @@ GYROSCOPIC_CONSTANT_KGF = 5.75e-12
 
 _DEG = math.pi / 180.0
 _ROUNDING = 1e-12  # relative rounding of a clearance typed at its limit (420 um in mm: 0.42000000000000004)
-
-
-# --------------------------------------------------------------------------- helpers
-def _broadcast(*values):
-    """Float arrays of one broadcast shape (Series were made arrays by :func:`_kernel`)."""
-    arrays = np.broadcast_arrays(*[np.asarray(v, dtype=float) for v in values])
-    return [np.array(a, dtype=float) for a in arrays]
-
-
-def _refuse(bad, template: str, **values):
-    """Raise ContactInputError for the first element where ``bad`` holds (NaN never counts as bad).
-
-    The message names the element of an array; :func:`_kernel` renames it to
-    the row label when the kernel was called with a Series.
-    """
-    bad = np.asarray(bad, dtype=bool)
-    if not bad.any():
-        return
-    flat = int(np.flatnonzero(bad.ravel())[0])
-    cells = {k: np.broadcast_to(np.asarray(v, dtype=float), bad.shape).ravel()[flat] for k, v in values.items()}
-    message = template.format(**cells)
-    if bad.ndim == 0:
-        raise ContactInputError(message)
-    position = np.unravel_index(flat, bad.shape)
-    row = position[0] if len(position) == 1 else tuple(int(p) for p in position)
-    error = ContactInputError(f"{message} (element {row})", row)
-    setattr(error, "_refusal", (message, flat))
-    raise error
-
-
-def _row_labels(values):
-    """Row labels (the index) of the first pandas Series among ``values``, else None.
-
-    Duck-typed on a non-callable ``index`` attribute (a list's ``index`` is a
-    method), so that the kernels need no pandas of their own.
-    """
-    for value in values:
-        labels = getattr(value, "index", None)
-        if labels is not None and not callable(labels):
-            return labels
-    return None
-
-
-def _kernel(func):
-    """:func:`series_aware` (Series in, Series out), and a refusal that names the Series row, not the element."""
-    inner = series_aware(func)
-
-    @functools.wraps(func)
-    def wrapper(*args, **kwargs):
-        try:
-            return inner(*args, **kwargs)
-        except ContactInputError as exc:
-            refusal = exc.__dict__.pop("_refusal", None)  # popped: an outer kernel does not rename it again
-            labels = _row_labels((*args, *kwargs.values()))
-            if refusal is None or labels is None:
-                raise
-            message, flat = refusal
-            row = labels[flat]
-            raise ContactInputError(f"{message} (row {row})", row) from None
-
-    return wrapper
-
-
-def _ball_refusal(d_w):
-    """(bad, message template, values) of a check: the kernels raise on the first bad element
-    (:func:`_refuse`), :func:`minimum_axial_load_rows` tells each bad row."""
-    return d_w <= 0, "d_w = {d_w:g} mm: the ball diameter must be positive", {"d_w": d_w}
-
-
-def _check_ball(d_w):
-    bad, template, values = _ball_refusal(d_w)
-    _refuse(bad, template, **values)
-
-
-def _check_groove_sum(r_i, r_o, d_w):
-    total = r_i + r_o
-    _refuse(total <= d_w,
-            "impossible geometry: r_i + r_o = {total:g} mm must exceed d_w = {d_w:g} mm",
-            total=total, d_w=d_w)
-
-
-def _check_grooves(r_i, r_o, d_w):
-    _check_groove_sum(r_i, r_o, d_w)
-    half = d_w / 2.0
-    _refuse(r_i <= half,
-            "impossible geometry: r_i = {r:g} mm must exceed d_w/2 = {half:g} mm (groove narrower than the ball)",
-            r=r_i, half=half)
-    _refuse(r_o <= half,
-            "impossible geometry: r_o = {r:g} mm must exceed d_w/2 = {half:g} mm (groove narrower than the ball)",
-            r=r_o, half=half)
-
-
-def _pitch_refusal(d_m, d_w, name="d_m"):
-    return (d_m <= d_w, "impossible geometry: pitch diameter " + name + " = {d_m:g} mm must exceed d_w = {d_w:g} mm",
-            {"d_m": d_m, "d_w": d_w})
-
-
-def _check_pitch(d_m, d_w, name="d_m"):
-    bad, template, values = _pitch_refusal(d_m, d_w, name)
-    _refuse(bad, template, **values)
-
-
-def _check_alpha0(alpha0):
-    _refuse((alpha0 < 0) | (alpha0 >= 90),
-            "alpha0 = {a:g} deg must lie in [0, 90) deg", a=alpha0)
-
-
-def _balls_refusal(z):
-    return (z < 1) | (z != np.round(z)), "z = {z:g}: the number of balls must be a whole number of at least 1", {"z": z}
-
-
-def _check_balls(z):
-    bad, template, values = _balls_refusal(z)
-    _refuse(bad, template, **values)
 
 
 # --------------------------------------------------------------------------- initial contact angle
@@ -278,7 +168,8 @@ def race_curvatures(d_w, d_m, alpha0, r_i, r_o) -> RaceCurvatures:
     This is the paper's form in T/(d_w cos α0) with the groove-centre diameters
     T_i = d_m + (2r_i − d_w)·cos α0 and T_o = d_m − (2r_o − d_w)·cos α0 (the
     paper's T_в = d_1 + 2r_в, T_н = D_1 − 2r_н) and its "± 2ξ − 1" read as
-    "± (2ξ − 1)". d_w, d_m, r_i, r_o in mm, α0 in degrees.
+    "± (2ξ − 1)". d_w, d_m, r_i, r_o in mm, α0 in degrees. cos τ_o ≥ 0 needs r_o no larger than the
+    outer race's radius along the rolling direction, (d_m + d_w·cos α0)/(2·cos α0); a larger r_o is refused.
 
     >>> rc = race_curvatures(2.0, 8.7355, 12.0, 1.05, 1.16)
     >>> [round(v, 7) for v in rc]           # paper: 1.3361919, 0.9549594, 0.9287242, 0.7111268
@@ -294,6 +185,7 @@ def _race_curvatures(d_w, d_m, alpha0, r_i, r_o):
     _check_grooves(r_i, r_o, d_w)
     _check_pitch(d_m, d_w)
     _check_alpha0(alpha0)
+    _check_outer_groove(d_w, d_m, alpha0, r_o)
     gamma = d_w * np.cos(alpha0 * _DEG) / d_m
     inner_rolling = 2.0 * gamma / (1.0 - gamma)
     outer_rolling = 2.0 * gamma / (1.0 + gamma)
@@ -385,7 +277,8 @@ def stiffness_characteristic(z, d_w, d_m, alpha0, r_i, r_o, *, deflection_coeffi
     diameter), r_i, r_o in mm; α0 in degrees.
 
     ``deflection_coefficients=(inner, outer)`` replaces the exact 2K/(μπ) by
-    given values, e.g. the paper's table readings (0.63, 0.852).
+    given values, e.g. the paper's table readings (0.63, 0.852); each must lie in (0, 1] (1 for a
+    circular contact).
 
     >>> round(stiffness_characteristic(7, 2.0, 8.7355, 12.0, 1.05, 1.16,
     ...                                deflection_coefficients=(0.63, 0.852)) / KGF)   # paper: 7792 kgf
@@ -399,6 +292,7 @@ def stiffness_characteristic(z, d_w, d_m, alpha0, r_i, r_o, *, deflection_coeffi
         deflection_o = hertz_coefficients(curv.cos_tau_o).deflection
     else:
         deflection_i, deflection_o = deflection_coefficients
+        _check_deflection_coefficients(deflection_i, deflection_o)
     c_i = race_compliance(d_w, curv.sum_rho_i, deflection_i)
     c_o = race_compliance(d_w, curv.sum_rho_o, deflection_o)
     xi = (r_i + r_o) / d_w - 1.0
@@ -457,11 +351,6 @@ def axial_displacement(xi_a, r_i, r_o, d_w):
     xi_a, r_i, r_o, d_w = _broadcast(xi_a, r_i, r_o, d_w)
     return xi_a * (r_i + r_o - d_w)
 
-def _check_load(Fa, C_star):
-    _refuse(Fa < 0, "Fa = {Fa:g} N: the axial load must not be negative", Fa=Fa)
-    _refuse(C_star <= 0, "C_star = {C:g} N: the stiffness characteristic must be positive", C=C_star)
-
-
 def _solve_angle(load_ratio_23: float, alpha0_rad: float) -> float:
     if math.isnan(load_ratio_23) or math.isnan(alpha0_rad):
         return math.nan
@@ -483,10 +372,11 @@ def working_contact_angle(Fa, C_star, alpha0):
     Solves Fa = C*·(cos α0 / cos α − 1)^(3/2)·sin α for α in [α0, 90°), written
     as (cos α0 / cos α − 1)·sin^(2/3) α = (Fa/C*)^(2/3), which increases
     monotonically in α. Fa, C* in N (any one force unit for both); α0 in
-    degrees, 0 ≤ α0 < 90°. Fa = 0 gives α0.
+    degrees, 0 ≤ α0 < 90°. Fa = 0 gives α0. Fa and C* must be finite, Fa/C* at most 1e6 (α is then
+    within 0.01° of 90°).
 
     >>> round(working_contact_angle(2.0, 7792.0, 12.0), 4)     # kgf in; paper: 14°28′
-    14.467
+    14.4677
     """
     Fa, C_star, alpha0 = _broadcast(Fa, C_star, alpha0)
     _check_load(Fa, C_star)
@@ -565,7 +455,7 @@ def newton_increment(Fa, C_star, alpha0, x):
     denominator is (2/3)·d ln Fa/dα. Requires x > 0 (or Fa = 0, giving 0).
 
     >>> x0 = series_start(2.0, 7792.0, 12.0)
-    >>> round(x0 + newton_increment(2.0, 7792.0, 12.0, x0), 7)   # paper: 0.0430573; exact root 0.0430678
+    >>> round(x0 + newton_increment(2.0, 7792.0, 12.0, x0), 7)   # paper: 0.0430573; exact root 0.0430689
     0.0430694
     """
     Fa, C_star, alpha0, x = _broadcast(Fa, C_star, alpha0, x)
@@ -596,7 +486,8 @@ def series_iterates(Fa, C_star, alpha0, newton_steps: int = 1) -> list[SeriesIte
     """The paper's iteration table: x_0 from :func:`series_start`, then ``newton_steps`` Newton steps.
 
     Row k holds x_k, α = α0 + x_k [deg], ξ_a at α, the load Fa_k at α and
-    Δ_k = (Fa_k − Fa)/Fa·100 [%] (Zaitsev & Voronkin, p. 3). Fa, C* in one force unit.
+    Δ_k = (Fa_k − Fa)/Fa·100 [%] (Zaitsev & Voronkin, p. 3). Fa, C* in one force unit. Fa = 0 gives
+    x = 0, α = α0 and Δ = 0 in every row.
 
     >>> rows = series_iterates(2.0, 7792.0, 12.0, newton_steps=1)
     >>> [(round(r.x, 7), round(r.load, 3)) for r in rows]    # paper: (0.0433985, 2.029), (0.0430573, 2.001)
@@ -611,10 +502,18 @@ def series_iterates(Fa, C_star, alpha0, newton_steps: int = 1) -> list[SeriesIte
             x = x + newton_increment(Fa, C_star, alpha0, x)
         alpha = alpha0 + x * (180.0 / math.pi)
         load = axial_load_at_angle(alpha, alpha0, C_star)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            deviation = (load - Fa) / Fa * 100.0
-        rows.append(SeriesIterate(k, x, alpha, axial_displacement_ratio(alpha, alpha0), load, deviation))
+        rows.append(SeriesIterate(k, x, alpha, axial_displacement_ratio(alpha, alpha0), load,
+                                  _deviation_percent(load, Fa)))
     return rows
+
+
+@series_aware
+def _deviation_percent(load, Fa):
+    """Δ = (Fa_k − Fa)/Fa·100 [%] (Zaitsev & Voronkin, p. 3), 0 where Fa = 0: the iterates stay at α0 there
+    (x_0 = 0, Newton step 0), so Fa_k = 0 = Fa exactly, for a scalar Fa as for an array."""
+    load, Fa = _broadcast(load, Fa)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(Fa == 0, 0.0, (load - Fa) / Fa * 100.0)
 
 
 def working_contact_angle_series(Fa, C_star, alpha0, newton_steps: int = 2):
@@ -657,6 +556,7 @@ def minimum_axial_load(z, d_w, d_pitch, n, alpha):
 def _minimum_axial_load_refusals(z, d_w, d_pitch, n, alpha):
     return [_balls_refusal(z), _ball_refusal(d_w), _pitch_refusal(d_pitch, d_w, name="D0"),
             (n < 0, "n = {n:g} 1/min: the speed must not be negative", {"n": n}),
+            (np.isinf(n), "n = {n:g} 1/min: the speed must be finite", {"n": n}),
             ((alpha < 0) | (alpha > 90), "alpha = {a:g} deg must lie in [0, 90] deg", {"a": alpha})]
 
 

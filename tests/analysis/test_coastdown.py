@@ -166,3 +166,62 @@ def test_standard_errors_are_those_of_curve_fit():
     values, covariance = curve_fit(speed, t, n, p0=fit.values, method="trf", x_scale=np.abs(fit.values))
     np.testing.assert_allclose(values, fit.values, rtol=1e-6)
     np.testing.assert_allclose(np.sqrt(np.diag(covariance)), fit.std_errors, rtol=1e-3)
+
+
+def _line():
+    t = np.arange(0.0, 61.0, 2.0)
+    return t, 600.0 - 10.0 * t
+
+
+@pytest.mark.parametrize("count", [0, -3, 2.5, float("nan"), "3"])
+def test_interval_count_must_be_a_whole_number_of_at_least_one(count):
+    """0 divided the speed range by zero, -3 gave a message about a Δn the user never gave, 2.5 was accepted."""
+    t, n = _line()
+    message = f"intervals: interval_count = {count!r}; expected a whole number >= 1"
+    for call in (lambda: cd.coastdown_analysis(t, n, 2.6, 1100.0, 25.0, interval_count=count),
+                 lambda: cd.interval_friction_table(t, n, 2.6, 1100.0, 25.0, count=count)):
+        with pytest.raises(CoastdownError) as info:
+            call()
+        assert str(info.value) == message
+
+
+def test_interval_count_through_the_unit_aware_api():
+    from bearingheat.api.coastdown import analyse_coastdown
+    from bearingheat.units import ureg
+    u = ureg()
+    t, n = _line()
+    with pytest.raises(CoastdownError) as info:
+        analyse_coastdown(t * u.s, n * u.rpm, interval_count=0)
+    assert str(info.value) == "intervals: interval_count = 0; expected a whole number >= 1"
+    # a whole count given as a float is a count: 4 equal steps of (600 - 20)/4 = 145 1/min by hand
+    table = cd.coastdown_analysis(t, n, 2.6, 1100.0, 25.0, interval_count=4.0).intervals
+    np.testing.assert_allclose(table["n_from [1/min]"], [600.0, 455.0, 310.0, 165.0], rtol=1e-9)
+
+
+@pytest.mark.parametrize(("f0", "shown"), [(0.0, "0"), (float("nan"), "nan"), (-2.0, "-2"), (float("inf"), "inf")])
+def test_spindle_catalogue_f0_must_be_finite_and_positive(f0, shown):
+    t = np.linspace(0.0, 20.0, 41)
+    n = 6000.0 - 250.0 * t
+    with pytest.raises(CoastdownError) as info:
+        cd.spindle_coastdown_fit(t, n, 0.01, 20.0, 50.0, f0_catalogue=f0)
+    assert str(info.value) == (f"spindle coast-down: catalogue f0 = {shown}; expected a finite value > 0 "
+                               "to compare the fitted f0 with")
+
+
+def test_a_run_down_time_extrapolated_far_past_the_record_is_warned():
+    """The straight line stops at 60 s inside its 60 s record: no warning. Set by hand to 650 s (590 s past the
+    record, under 10 x 60 s) still none; 700 s (640 s past it) is warned, in the summary as in the report."""
+    import dataclasses
+
+    from bearingheat.io.reports.coastdown import coastdown_summary, render_report
+    t, n = _line()
+    result = cd.coastdown_analysis(t, n, 2.6, 1100.0, 25.0)
+    assert result.record_duration == 60.0 and result.rundown_time == pytest.approx(60.0, rel=1e-3)
+    assert result.rundown_warning is None and coastdown_summary(result)["rundown_time_warning"] is None
+    assert dataclasses.replace(result, rundown_time=650.0).rundown_warning is None
+    far = dataclasses.replace(result, rundown_time=700.0, rundown_extrapolated=True)
+    text = ("the run-down time is extrapolated 640 s past a record of 60 s (more than 10 times its duration): "
+            "it rests on the fitted torque near standstill, which was not measured")
+    assert far.rundown_warning == text
+    assert coastdown_summary(far)["rundown_time_warning"] == text
+    assert f"- **Warning:** {text}\n" in render_report(far, "line.csv", png=None)

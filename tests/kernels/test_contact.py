@@ -318,6 +318,27 @@ def test_scalar_array_and_series_agree():
      "impossible geometry: pitch diameter D0 = 2 mm must exceed d_w = 2 mm"),
     (lambda: ct.axial_load_at_angle(11.0, 12.0, 7792.0),
      "alpha = 11 deg must lie in [alpha0, 90) deg = [12, 90) deg"),
+    # non-finite and far-out inputs: refused by the package, not by scipy's bracket or as inf/nan out
+    (lambda: ct.working_contact_angle(np.inf, 7792.0, 12.0), "Fa = inf N: the axial load must be finite"),
+    (lambda: ct.working_contact_angle(2.0, np.inf, 12.0), "C_star = inf N: the stiffness characteristic must be finite"),
+    (lambda: ct.working_contact_angle(1e30, 1.0, 12.0),
+     "Fa = 1e+30 N with C_star = 1 N: Fa/C_star = 1e+30 must lie in [0, 1e+06] "
+     "(the working angle is then within 0.01 deg of 90 deg)"),
+    (lambda: ct.working_contact_angle_series(2e7, 2.0, 12.0),
+     "Fa = 2e+07 N with C_star = 2 N: Fa/C_star = 1e+07 must lie in [0, 1e+06] "
+     "(the working angle is then within 0.01 deg of 90 deg)"),
+    (lambda: ct.minimum_axial_load(7, 2, 8.7, np.inf, 12), "n = inf 1/min: the speed must be finite"),
+    (lambda: ct.stiffness_characteristic(7, 2.0, 8.7355, 12.0, 1.05, 1.16, deflection_coefficients=(-0.63, -0.852)),
+     "deflection_coefficients: inner 2K/(mu*pi) = -0.63 must lie in (0, 1] "
+     "(1 for a circular contact, falling towards 0 as the contact ellipse lengthens)"),
+    (lambda: ct.stiffness_characteristic(7, 2.0, 8.7355, 12.0, 1.05, 1.16, deflection_coefficients=(0.63, 1.5)),
+     "deflection_coefficients: outer 2K/(mu*pi) = 1.5 must lie in (0, 1] "
+     "(1 for a circular contact, falling towards 0 as the contact ellipse lengthens)"),
+    # r_o above the outer race's radius along the rolling direction: (2.2 + 2*cos 0)/(2*cos 0) = 2.1 mm by hand
+    (lambda: ct.race_curvatures(2.0, 2.2, 0.0, 1.05, 2.5),
+     "impossible geometry: r_o = 2.5 mm must not exceed (d_m + d_w*cos(alpha0))/(2*cos(alpha0)) = 2.1 mm "
+     "with d_w = 2 mm, d_m = 2.2 mm, alpha0 = 0 deg (the outer groove would be flatter across than the race is "
+     "along it)"),
 ])
 def test_errors_exact_messages(call, message):
     with pytest.raises(ContactInputError) as info:
@@ -333,13 +354,26 @@ def test_error_names_the_row_of_a_series():
     assert info.value.row == "bearing B"
 
 
-def test_error_of_an_inner_kernel_names_the_element():
-    """A kernel calling another with its arrays: the inner refusal names the element, as before the layered move."""
+def test_error_of_an_inner_kernel_names_the_row_of_the_outer_series():
+    """A kernel calling another with the arrays of its Series: the inner refusal is renamed to the Series row by
+    the outer kernel (the inner wrapper, which sees no labels, used to drop what the renaming needs)."""
     with pytest.raises(ContactInputError) as info:
         ct.stiffness_characteristic(pd.Series([7, 7], index=["a", "b"]), 2.0, 8.7355, 12.0,
                                     pd.Series([1.05, 0.95], index=["a", "b"]), 1.16)
     assert str(info.value) == ("impossible geometry: r_i = 0.95 mm must exceed d_w/2 = 1 mm "
-                               "(groove narrower than the ball) (element 1)")
+                               "(groove narrower than the ball) (row b)")
+    assert info.value.row == "b"
+    index = ["6205", "6206"]
+    d_w, d_m = pd.Series([2.0, 2.0], index=index), pd.Series([8.7, 1.0], index=index)
+    expected = "impossible geometry: pitch diameter d_m = 1 mm must exceed d_w = 2 mm (row 6206)"
+    for call in (lambda: ct.stiffness_characteristic(7, d_w, d_m, 12.0, 1.05, 1.16),
+                 lambda: ct.race_curvatures(d_w, d_m, 12.0, 1.05, 1.16)):
+        with pytest.raises(ContactInputError) as info:
+            call()
+        assert str(info.value) == expected and info.value.row == "6206"
+    with pytest.raises(ContactInputError) as info:  # an array still names the element
+        ct.stiffness_characteristic(7, d_w.to_numpy(), d_m.to_numpy(), 12.0, 1.05, 1.16)
+    assert str(info.value) == "impossible geometry: pitch diameter d_m = 1 mm must exceed d_w = 2 mm (element 1)"
     assert info.value.row == 1
     with pytest.raises(ContactInputError) as info:
         ct.stiffness_characteristic(pd.Series([7, 6.5], index=["a", "b"]), 2.0, 8.7355, 12.0, 1.05, 1.16)
@@ -355,3 +389,43 @@ def test_a_clearance_at_its_limit_is_90_degrees_whichever_way_its_float_rounds()
         assert initial_contact_angle(e, 1.05, 1.16, 2.0) == 90.0
     with pytest.raises(Exception, match=r"^e = 0.43 mm exceeds 2\*\(r_i \+ r_o - d_w\) = 0.42 mm"):
         initial_contact_angle(0.43, 1.05, 1.16, 2.0)
+
+
+def test_the_outer_groove_limit_is_where_cos_tau_o_reaches_zero():
+    """By hand: cos τ_o = [d_w/r_o − 2γ/(1 + γ)]/(d_w·Σρ_o) is 0 at r_o = d_w(1 + γ)/(2γ), γ = d_w·cos α0/d_m
+    (d_w = 2, d_m = 8.7355, α0 = 12°: γ = 0.223949, 5.4653 mm); just below it is accepted with cos τ_o ≈ 0."""
+    gamma = 2.0 * math.cos(math.radians(12.0)) / 8.7355
+    limit = 2.0 * (1.0 + gamma) / (2.0 * gamma)
+    assert limit == pytest.approx(5.4653, abs=1e-4)
+    assert ct.race_curvatures(2.0, 8.7355, 12.0, 1.05, limit * (1 - 1e-9)).cos_tau_o == pytest.approx(0.0, abs=1e-8)
+    with pytest.raises(ContactInputError, match=r"^impossible geometry: r_o = 5\.5 mm must not exceed"):
+        ct.race_curvatures(2.0, 8.7355, 12.0, 1.05, 5.5)
+
+
+def test_series_at_zero_load_gives_alpha0_for_a_scalar_as_for_an_array():
+    """Fa = 0: x_0 = 0, the Newton step is 0, α = α0 = 12° and Fa_k = 0 = Fa, so Δ = 0 %; the scalar form used to
+    divide by zero, the array form gave a NaN deviation."""
+    scalar = ct.series_iterates(0.0, 7792.0, 12.0, newton_steps=2)
+    array = ct.series_iterates(np.array([0.0, 2.0]), 7792.0, 12.0, newton_steps=2)
+    for row, row_of_array in zip(scalar, array):
+        assert (row.x, row.alpha, row.xi_a, row.load, row.deviation_percent) == (0.0, 12.0, 0.0, 0.0, 0.0)
+        assert (row_of_array.alpha[0], row_of_array.deviation_percent[0]) == (12.0, 0.0)
+    assert ct.working_contact_angle_series(0.0, 7792.0, 12.0) == 12.0
+    assert ct.working_contact_angle_series(np.array([0.0]), 7792.0, 12.0).tolist() == [12.0]
+    series = ct.series_iterates(pd.Series([0.0, 2.0], index=["x", "y"]), 7792.0, 12.0)[-1].deviation_percent
+    assert isinstance(series, pd.Series) and series["x"] == 0.0
+
+
+def test_the_docstrings_show_the_digits_the_code_prints():
+    """The doctest NUMBER flag accepts 14.467 for 14.4677: the docstrings must carry the printed digits. The exact
+    root x = α − α0 at Fa = 2, C* = 7792, α0 = 12° by an independent bisection of Fa = C*(cos α0/cos α − 1)^1.5 sin α."""
+    assert round(ct.working_contact_angle(2.0, 7792.0, 12.0), 4) == 14.4677
+    assert "    14.4677\n" in ct.working_contact_angle.__doc__
+    a0 = math.radians(12.0)
+    low, high = 0.0, 0.1
+    for _ in range(200):
+        mid = 0.5 * (low + high)
+        load = 7792.0 * (math.cos(a0) / math.cos(a0 + mid) - 1.0) ** 1.5 * math.sin(a0 + mid)
+        low, high = (mid, high) if load < 2.0 else (low, mid)
+    assert round(low, 7) == 0.0430689
+    assert "exact root 0.0430689" in ct.newton_increment.__doc__

@@ -14,15 +14,24 @@ from bearingheat.io.files import write_outputs
 from bearingheat.io.json import json_safe
 from bearingheat.io.reports import FIGURE_DPI, matplotlib_figure
 
-__all__ = ["plot_coastdown", "render_report", "coastdown_summary", "write_coastdown_outputs"]
+__all__ = ["draw_coastdown", "plot_coastdown", "render_report", "coastdown_summary", "write_coastdown_outputs"]
+
+#: legend label of the formula (2) intervals in the lower panel
+INTERVALS_LABEL = "formula (2), intervals"
 
 
 def plot_coastdown(result: CoastdownResult, path) -> None:
     """n(t) with the constant-f and the chosen fit, and f (or M) against n; PNG at ``path``."""
+    draw_coastdown(result).savefig(path, format="png", dpi=FIGURE_DPI)
+
+
+def draw_coastdown(result: CoastdownResult):
+    """The matplotlib Figure of :func:`plot_coastdown`: each formula (2) interval is a horizontal segment from its
+    n_from to its n_to (the interval's mean f or M holds over that whole speed step)."""
     Figure = matplotlib_figure()
 
     s = result.samples
-    use_f = result.G is not None and result.r is not None
+    use_f = result.f_computed
     fig = Figure(figsize=(6.4, 6.4), dpi=80)
     top, bottom = fig.subplots(2, 1)
     top.plot(s["t [s]"], s["n [1/min]"], ".", ms=3, color="0.4", label="data")
@@ -41,12 +50,12 @@ def plot_coastdown(result: CoastdownResult, path) -> None:
     iv = result.intervals
     if len(iv):
         values = iv["f"] if use_f else iv["M [N*m]"]
-        bottom.step(iv["n_mean [1/min]"], values, where="mid", label="formula (2), intervals")
+        bottom.hlines(values, iv["n_to [1/min]"], iv["n_from [1/min]"], colors="tab:green", label=INTERVALS_LABEL)
     bottom.set_xlabel("n [1/min]")
     bottom.set_ylabel(label)
     bottom.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(path, format="png", dpi=FIGURE_DPI)
+    return fig
 
 
 def _ci(fit, name, digits=4):
@@ -59,9 +68,17 @@ def render_report(result: CoastdownResult, source: str, png: str | None) -> str:
     fit = result.chosen
     lines = [f"# Coast-down analysis of {source}", ""]
     rig = f"I = {result.I:g} kg·m²"
-    if result.G is not None and result.r is not None:
+    if result.f_computed:
         rig += f", G = {result.G:g} N, r = {result.r:g} mm"
+    else:
+        rig += " (G and r not given: torques only, f is not computed)"
+    defaults = [name for name in ("I", "G", "r") if name in result.rig_defaults]
+    if defaults:
+        rig += f"; {', '.join(defaults)}: the TMM-7M rig's default{'s' if len(defaults) > 1 else ''}"
     lines += [f"Rig: {rig}. Samples: {len(result.samples)}; Savitzky–Golay window {result.window} samples.", ""]
+    if result.f_computed and "I" not in result.rig_defaults and {"G", "r"} & set(result.rig_defaults):
+        lines += ["**Note:** f is computed with the TMM-7M rig's journal load G and radius r (not given) for a rotor "
+                  "of another inertia: it is not the f of that rotor. Give its G and r, or analyse torques only.", ""]
     lines += ["## Models of the resisting torque M(ω) = M_c + c_v·ω + c_a·ω²", "",
               "| model | M_c [N·m] | c_v [N·m·s] | c_a [N·m·s²] | RMSE [1/min] | CV RMSE [1/min] | BIC |",
               "|---|---|---|---|---|---|---|"]
@@ -75,21 +92,25 @@ def render_report(result: CoastdownResult, source: str, png: str | None) -> str:
     if fit.value("c_v") < 0 or fit.value("c_a") < 0:
         lines.append("- A negative component means the torque falls with speed over part of the range; "
                      "it is a curve shape, not a physical viscous or windage drag.")
-    lines += ["", f"- Constant f (the TMM-7M lab sheet's single coefficient, from the Coulomb-only fit): {result.f_constant:.4g}",
+    f_text = f"{result.f_constant:.4g}" if result.f_computed else "not computed (no G and r: torques only)"
+    lines += ["", f"- Constant f (the TMM-7M lab sheet's single coefficient, from the Coulomb-only fit): {f_text}",
               f"- RMSE of n(t): {result.rmse_before:.4g} 1/min with constant f (before), "
               f"{result.rmse_after:.4g} 1/min with {result.model} (after)"]
     stop = result.rundown_time
     when = "extrapolated past the last sample" if result.rundown_extrapolated else "within the record"
     lines.append(f"- Run-down time to standstill: {stop:.4g} s ({when})" if stop != float("inf")
                  else "- The fitted torque does not bring the rotor to rest")
+    if result.rundown_warning:
+        lines.append(f"- **Warning:** {result.rundown_warning}")
     e = result.energy
     lines.append(f"- Energy dissipated over the record: {e['total']:.4g} J (Coulomb {e['coulomb']:.4g} J, "
                  f"viscous {e['viscous']:.4g} J, aerodynamic {e['aero']:.4g} J); to standstill {e['to_standstill']:.4g} J")
     lines += ["", "## f against n, formula (2) over intervals", "",
               "| n from [1/min] | n to [1/min] | Δt [s] | M [N·m] | f |", "|---|---|---|---|---|"]
     for _, row in result.intervals.iterrows():
+        f_cell = f"{row['f']:.4g}" if result.f_computed else "not computed"
         lines.append(f"| {row['n_from [1/min]']:.4g} | {row['n_to [1/min]']:.4g} | {row['dt [s]']:.4g} | "
-                     f"{row['M [N*m]']:.4g} | {row['f']:.4g} |")
+                     f"{row['M [N*m]']:.4g} | {f_cell} |")
     if result.spindle is not None:
         s = result.spindle
         lines += ["", "## Rolling-bearing form of the Schaeffler catalogue: M = z·(M0 + M1)", "",

@@ -5,6 +5,7 @@ import json
 import math
 
 import numpy as np
+import pytest
 
 from PIL import Image
 
@@ -36,3 +37,22 @@ def test_outputs_written(tmp_path):
     assert (tmp_path / "run" / "report.md").read_text(encoding="utf-8") == render_report(
         result, "straight.csv", png="coastdown.png")
     assert json.loads((tmp_path / "run" / "summary.json").read_text())["model"] == "coulomb"
+
+
+def test_figure_draws_each_formula2_interval_from_n_from_to_n_to():
+    """The intervals were drawn with step(n_mean, where='mid'), so the first and last were half as wide. By hand for
+    the straight line: 10 steps of (600 - 20)/10 = 58 1/min from 600 1/min, f = 2.6*(pi/30)*10/(1100*0.025)."""
+    from matplotlib.collections import LineCollection
+
+    from bearingheat.io.reports.coastdown import INTERVALS_LABEL, draw_coastdown
+    result = _straight_rundown(1100.0, 25.0)
+    bottom = draw_coastdown(result).axes[1]
+    drawn = [c for c in bottom.collections if isinstance(c, LineCollection) and c.get_label() == INTERVALS_LABEL]
+    assert len(drawn) == 1
+    segments = drawn[0].get_segments()
+    assert len(segments) == 10
+    f = 2.6 * math.pi / 30.0 * 10.0 / 27.5
+    for k, segment in enumerate(segments):
+        (x0, y0), (x1, y1) = segment
+        assert sorted((x0, x1)) == pytest.approx([600.0 - 58.0 * (k + 1), 600.0 - 58.0 * k], abs=1e-6)
+        assert y0 == y1 == pytest.approx(f, rel=1e-6)
