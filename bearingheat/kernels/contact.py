@@ -47,7 +47,7 @@ from scipy.special import ellipe, ellipk
 from bearingheat.errors import ContactInputError
 from bearingheat.kernels._contact_refusals import (_ball_refusal, _balls_refusal, _broadcast, _check_alpha0,
                                                    _check_ball, _check_balls, _check_deflection_coefficients,
-                                                   _check_groove_sum, _check_grooves, _check_load,
+                                                   _check_grooves, _check_load,
                                                    _check_outer_groove, _check_pitch, _kernel, _pitch_refusal,
                                                    _refuse)
 from bearingheat.kernels._series import series_aware
@@ -118,7 +118,7 @@ def initial_contact_angle(e, r_i, r_o, d_w):
     """
     e, r_i, r_o, d_w = _broadcast(e, r_i, r_o, d_w)
     _check_ball(d_w)
-    _check_groove_sum(r_i, r_o, d_w)
+    _check_grooves(r_i, r_o, d_w)
     _refuse(e < 0, "e = {e:g} mm: the radial clearance must not be negative", e=e)
     span = 2.0 * (r_i + r_o - d_w)
     _refuse(e > span * (1.0 + _ROUNDING),  # (the limit itself is valid: 90 deg; its float may round either way)

@@ -429,3 +429,12 @@ def test_the_docstrings_show_the_digits_the_code_prints():
         low, high = (mid, high) if load < 2.0 else (low, mid)
     assert round(low, 7) == 0.0430689
     assert "exact root 0.0430689" in ct.newton_increment.__doc__
+
+
+def test_initial_contact_angle_refuses_a_groove_narrower_than_the_ball():
+    # r_i = 0.9 mm < d_w/2 = 1 mm: the ball does not fit the groove (race_curvatures refused it; the contact angle
+    # from the clearance gave 12.84 deg)
+    with pytest.raises(ContactInputError) as exc:
+        ct.initial_contact_angle(0.01, 0.9, 1.5, 2.0)
+    assert str(exc.value) == ("impossible geometry: r_i = 0.9 mm must exceed d_w/2 = 1 mm (groove narrower than "
+                              "the ball)")
