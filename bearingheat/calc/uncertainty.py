@@ -76,8 +76,11 @@ def coefficient_uncertainties(coefficients: pd.DataFrame) -> dict[tuple[str, str
     lubrications = text_column(coefficients, "lubrication")  # (None in every row of an older file)
     for i in np.flatnonzero(names.notna().to_numpy() & np.isfinite(fitted) & (fitted != 0)):  # a short table
         row = int(i)
-        key = (str(coefficients["bearing"].iat[row]).strip(), lubrications[row])
-        out.setdefault(key, {})[str(names.iat[row])] = float((high[i] - low[i]) / 2.0 / abs(fitted[i]))
+        bearing = str(coefficients["bearing"].iat[row]).strip()
+        # one fit may hold lubrications of equal table coefficients: 'circulating_oil, oil_mist'
+        for lubrication in (lubrications[row].split(", ") if lubrications[row] else [None]):
+            out.setdefault((bearing, lubrication), {})[str(names.iat[row])] = \
+                float((high[i] - low[i]) / 2.0 / abs(fitted[i]))
     return out
 
 

@@ -131,11 +131,13 @@ def test_the_sampled_reference_speed_band_is_the_percentiles_of_its_draws():
 
 def test_the_bands_follow_the_lubrication_the_audit_fitted(tmp_path):
     """The audit fits a bearing once per lubrication (their table f0 differ); calc took the last fit of the bearing
-    whatever its row's lubrication. Each row now takes its own lubrication's fit, and a file of an older audit
-    (no lubrication column) its bearing's fit in any lubrication."""
+    whatever its row's lubrication. Each row now takes its own lubrication's fit (one fit may name two lubrications
+    of equal table coefficients), and a file of an older audit (no lubrication column) its bearing's fit in any
+    lubrication."""
     rows = [{"bearing": "6208", "lubrication": lubrication, "coefficient": "f0", "fitted": fitted,
              "ci_low": fitted * (1 - half), "ci_high": fitted * (1 + half)}
-            for lubrication, fitted, half in (("oil_bath", 2.0, 0.10), ("grease", 1.3, 0.30))]
+            for lubrication, fitted, half in (("oil_bath", 2.0, 0.10), ("grease", 1.3, 0.30),
+                                              ("circulating_oil, oil_mist", 2.0, 0.20))]
     path = tmp_path / "coefficients.csv"
     pd.DataFrame(rows).to_csv(path, index=False)
     supports = pd.DataFrame({"designation": "6208", "lubrication": ["oil_bath", "grease", "oil_mist"],
@@ -143,8 +145,9 @@ def test_the_bands_follow_the_lubrication_the_audit_fitted(tmp_path):
     out = bh.calc(supports, coefficients=str(path))
     # f0 alone is banded: MR_high - MR = u0 * M0, u0 the relative half-width of the row's own fit
     np.testing.assert_allclose(out["MR_high [N*mm]"] - out["MR [N*mm]"],
-                               [0.10 * out["M0 [N*mm]"].iat[0], 0.30 * out["M0 [N*mm]"].iat[1], np.nan], rtol=1e-9)
+                               [0.10 * out["M0 [N*mm]"].iat[0], 0.30 * out["M0 [N*mm]"].iat[1],
+                                0.20 * out["M0 [N*mm]"].iat[2]], rtol=1e-9)  # (a fit of two lubrications)
     older = tmp_path / "older.csv"
-    pd.DataFrame(rows[1:]).drop(columns="lubrication").to_csv(older, index=False)
+    pd.DataFrame(rows[1:2]).drop(columns="lubrication").to_csv(older, index=False)
     out = bh.calc(supports, coefficients=str(older))
     np.testing.assert_allclose(out["MR_high [N*mm]"] - out["MR [N*mm]"], 0.30 * out["M0 [N*mm]"], rtol=1e-9)
