@@ -40,7 +40,7 @@ from scipy import stats
 from bearingheat.analysis.domain import domain_values, fitted_domain
 from bearingheat.analysis.effects import (CANDIDATES, EFFECT_NAMES, FittedEffect, ModelData, bearing_keys,
                                           catalogue_arrays, format_value, m1_load)
-from bearingheat.calc.contract import column, parse_header
+from bearingheat.calc.contract import column, parse_header, readable_header
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.fill import fill_from_catalogue
 from bearingheat.calc.models import DEFAULT_MODEL, compute_supports
@@ -233,6 +233,10 @@ def read_measurements(table: pd.DataFrame) -> MeasuredData:
     and its line numbers (``attrs['lines']``: messages cite the file's rows,
     as calc does).
     """
+    if not all(readable_header(h) for h in table.columns):  # ('remark [see note]]': a note, as calc passes it)
+        attrs = dict(table.attrs)
+        table = table[[h for h in table.columns if readable_header(h)]]
+        table.attrs.update(attrs)
     names = [parse_header(h)[0] for h in table.columns]
     _refuse_lookalikes(table.columns, names)
     if "M" not in names:

@@ -72,8 +72,8 @@ def read_lab_table(table: pd.DataFrame) -> pd.DataFrame:
     decimal = str(table.attrs.get("decimal", "."))
     out = pd.DataFrame(index=range(len(table)))
     seen = {}
-    for header in table.columns:
-        name, unit = parse_header(header)
+    for header in table.columns:  # (a header that is no 'name [unit]' names no reading: left alone, as calc does)
+        name, unit = parse_header(header, strict=False)
         if name in LAB_UNITS:
             seen[name] = (header, unit)
     for name in ("bearing", "Q", "beta", "n", "T"):

@@ -45,6 +45,7 @@ __all__ = [
     "LABEL_COLUMNS",
     "column",
     "columns",
+    "readable_header",
     "input_units",
     "output_units",
     "output_header",
@@ -383,6 +384,15 @@ def output_header(name: str, unit: str | None = None) -> str:
 
 
 _HEADER = re.compile(r"^\s*(?P<name>[^\[\]]+?)\s*(?:\[\s*(?P<unit>[^\]]*?)\s*\])?\s*$")
+
+
+def readable_header(header) -> bool:
+    """Whether a header reads as ``name`` or ``name [unit]`` (calc passes the other columns through untouched).
+
+    >>> readable_header("Fr [kN]"), readable_header("remark [see note]]")
+    (True, False)
+    """
+    return _HEADER.match(str(header)) is not None
 
 
 def parse_header(header, *, strict: bool = True) -> tuple[str, str | None]:

@@ -31,7 +31,7 @@ import numpy as np
 import pandas as pd
 import pyarrow as pa
 
-from bearingheat.calc.contract import parse_header
+from bearingheat.calc.contract import readable_header
 from bearingheat.calc.table import calc
 from bearingheat.errors import InputError
 from bearingheat.io.arrow import ARROW_SUFFIXES, read_arrow, write_arrow
@@ -121,12 +121,8 @@ def cite_rows(result: pd.DataFrame, lines: list[int] | RowLines | None) -> pd.Da
 
 def set_aside(table: pd.DataFrame) -> tuple[pd.DataFrame, list[tuple[int, str, pd.Series]]]:
     """Columns whose header calc cannot read (brackets that are no ``name [unit]``), taken out to be put back."""
-    extras = []
-    for position, header in enumerate(table.columns):
-        try:
-            parse_header(header)
-        except InputError:
-            extras.append((position, header, table[header]))
+    extras = [(position, header, table[header]) for position, header in enumerate(table.columns)
+              if not readable_header(header)]
     if extras:
         table = table.drop(columns=[header for _, header, _ in extras])
     return table, extras

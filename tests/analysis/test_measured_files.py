@@ -194,3 +194,22 @@ def test_folds_and_candidates_are_checked():
     with pytest.raises(DiagnoseError, match=_exactly(
             '5-fold cross-validation needs at least 5 operating points (groups); got 1')):
         diagnose(data, k=5)
+
+
+# ---- a header that is no 'name [unit]' ---------------------------------------------------------
+
+def test_a_header_that_is_no_name_and_unit_is_left_alone_as_calc_leaves_it(tmp_path):
+    """'remark [see note]]' passes through calc; diagnose, audit and lab refused the whole file ('cannot read the
+    header'). It names no measured quantity, so they now leave it out and read the rest as before."""
+    noted = tmp_path / "noted.csv"
+    table = pd.read_csv(MEASURED)
+    table.insert(2, "remark [see note]]", "r")
+    table.to_csv(noted, index=False)
+    plain, with_note = (diagnose_measurements(read_measurements(read_table(path))) for path in (MEASURED, noted))
+    assert with_note.effect == plain.effect == "seal_drag"
+    assert with_note.summary()["rmse_after"] == pytest.approx(plain.summary()["rmse_after"], rel=1e-12)
+    readings = pd.read_csv(READINGS)
+    readings["remark [see note]]"] = "r"
+    lab_noted = tmp_path / "lab_noted.csv"
+    readings.to_csv(lab_noted, index=False)
+    pd.testing.assert_frame_equal(process_lab(read_table(lab_noted)).task1, process_lab(read_table(READINGS)).task1)
