@@ -51,6 +51,7 @@ __all__ = [
     "output_header",
     "TEXT_DTYPE",
     "parse_header",
+    "result_column",
     "register_choices",
     "range_problems",
     "RANGES",
@@ -412,6 +413,21 @@ def parse_header(header, *, strict: bool = True) -> tuple[str, str | None]:
             return str(header).strip(), None
         raise InputError(f"column {header!r}: cannot read the header; write it as 'name [unit]'")
     return match.group("name").strip(), match.group("unit")
+
+
+def result_column(header) -> str | None:
+    """The result column of calc that an input header names (None for any other header): calc writes that column
+    itself, so an input column of that name would be hidden by it or overwrite it ('status' of a designer's
+    released/draft list replaced by ok/error). Names that are inputs as well (f0, f1, mu_sl) are inputs.
+
+    >>> result_column("status"), result_column("MR [N*mm]"), result_column("Fa/A"), result_column("f0")
+    ('status', 'MR', 'Fa/A', None)
+    """
+    name, _ = parse_header(header, strict=False)
+    if name in _BY_KIND["input"]:
+        return None
+    written = {c.shown or c.name for c in _BY_KIND["output"].values()} | set(_BY_KIND["output"])
+    return name if name in written else None
 
 
 def choices(name: str) -> tuple[str, ...]:

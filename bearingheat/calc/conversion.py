@@ -213,9 +213,10 @@ _OTHER_UNIT_FORM = re.compile(r"^\s*(\w+)\s*(?:\((.+)\)|,\s*(.+)|/\s*(.+)|\s+in\
 
 
 def _refuse_lookalikes(headers, known: dict[str, str]) -> None:
-    """:class:`InputError` for a header that is not read but looks like a number column the table lacks: the
-    unit written another way ('Fr (kN)') or the name in other letter case ('FR', 'fr [kN]'; names of two or
-    more letters). Such a column would be passed through and its loads taken as 0, or its values as absent."""
+    """:class:`InputError` for a header that is not read but looks like a column the table lacks: the unit written
+    another way ('Fr (kN)') or the name in other letter case ('FR', 'fr [kN]', 'Arrangement'; names of two or more
+    letters). Such a column would be passed through and its loads taken as 0, its values as absent, or a paired
+    arrangement computed as a single bearing."""
     names = {}
     for header in headers:
         try:
@@ -223,8 +224,10 @@ def _refuse_lookalikes(headers, known: dict[str, str]) -> None:
         except InputError:
             names[header] = (str(header), None)
     present = {name for name, _ in names.values()}
-    numeric = {name: unit for name, unit in known.items() if unit != "" and name not in present}
-    by_case = {name.casefold(): name for name in numeric if len(name) > 1}
+    # (a label column is only passed through: 'ID' beside it loses nothing)
+    missing = {name: unit for name, unit in known.items() if name not in present and name not in LABEL_COLUMNS}
+    numeric = {name: unit for name, unit in missing.items() if unit != ""}
+    by_case = {name.casefold(): name for name in missing if len(name) > 1}
     for header, (name, unit) in names.items():
         if name in known:
             continue
@@ -232,9 +235,9 @@ def _refuse_lookalikes(headers, known: dict[str, str]) -> None:
         base, typed = (other_form.group(1), next(g for g in other_form.groups()[1:] if g)) if other_form \
             else (name, unit)
         meant = base if base in numeric else by_case.get(base.casefold()) if len(base) > 1 else None
-        if meant is None:
+        if meant is None or (other_form and meant not in numeric):  # ('Model (old)' is a note, not a unit)
             continue
-        written = f"{meant} [{(typed or numeric[meant]).strip()}]"
+        written = f"{meant} [{(typed or numeric[meant]).strip()}]" if meant in numeric else meant
         raise InputError(f"column {header!r} looks like {meant!r}, which calc would not read from it: name it "
                          f"{written!r} (headers are 'name [unit]', the name in its own letters); as it is, the table "
                          f"would be computed as if {meant} were not given")

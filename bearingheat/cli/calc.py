@@ -327,7 +327,7 @@ def run_calc_workbook(args: argparse.Namespace) -> int:
         else:
             run = calc_workbook(source, None if csv_target is not None else target, **options)
         if csv_target is not None:
-            write_csv(run.result, csv_target, escape=not args.no_csv_escape)
+            write_csv(run.csv_table(), csv_target, escape=not args.no_csv_escape)  # units in the headers
             if run.duty is not None:
                 _write_duty_beside(run.duty, csv_target, source, args)
         if pdf is not None and run.results_sheet is not None:  # a workbook written has its results sheet

@@ -185,8 +185,22 @@ def test_a_header_that_looks_like_a_missing_number_column_is_refused(header, wri
         calc(table)
 
 
+@pytest.mark.parametrize("header, meant", [("Arrangement", "arrangement"), ("Model", "model"), ("TYPE", "type"),
+                                           ("Series", "series"), ("Lubrication", "lubrication")])
+def test_a_header_that_looks_like_a_missing_text_column_is_refused(header, meant):
+    """'Arrangement' = paired was passed through and the pair computed as a single bearing, status ok."""
+    table = pd.DataFrame([{k: v for k, v in row().items() if k != meant}])
+    table[header] = "paired" if meant == "arrangement" else "x"
+    message = (f"column {header!r} looks like {meant!r}, which calc would not read from it: name it {meant!r} "
+               f"(headers are 'name [unit]', the name in its own letters); as it is, the table would be computed as "
+               f"if {meant} were not given")
+    with pytest.raises(InputError, match=f"^{re.escape(message)}$"):
+        calc(table)
+
+
 def test_columns_of_the_users_own_are_still_passed_through():
-    out = run(row(**{"ID": "x", "E": 2.1e5, "Fa (kN)": 9.0, "note": "spare"}))  # 'Fa [kN]' is there: Fa (kN) is his
+    # 'Fa [kN]' is there: Fa (kN) is his; 'Model (old)' is a note on a model, no unit
+    out = run(row(**{"ID": "x", "E": 2.1e5, "Fa (kN)": 9.0, "note": "spare", "Model (old)": "x"}))
     assert out["status"].tolist() == ["ok"] and out["E"].iat[0] == 2.1e5
 
 

@@ -75,6 +75,30 @@ def test_cli_workbook_to_csv(tmp_path):
     np.testing.assert_allclose(pd.read_csv(out)["MR [N*mm]"], csv_result()["MR [N*mm]"], rtol=1e-12)
 
 
+def test_cli_workbook_to_csv_writes_the_units_of_the_units_row(tmp_path):
+    """The CSV had 'd,D,n,Fr' over kN and rpm; read back it gave "column 'd': needs a unit"."""
+    out, again = tmp_path / "r.csv", tmp_path / "again.csv"
+    assert main(["calc", str(make_workbook(tmp_path / "in.xlsx")), "-o", str(out), "-q"]) == 0
+    written = pd.read_csv(out)
+    assert list(written.columns[:13]) == ["id", "designation", "d [mm]", "D [mm]", "n [rpm]", "Fr [kN]", "Fa [kN]",
+                                          "nu [mm^2/s]", "lubrication", "arrangement", "C0 [kN]", "Y", "Y0"]
+    assert main(["calc", str(out), "-o", str(again), "-q"]) == 0
+    np.testing.assert_allclose(pd.read_csv(again)["MR [N*mm]"], csv_result()["MR [N*mm]"], rtol=1e-12)
+
+
+def test_cli_in_place_formulas_refuses_an_input_column_named_status(tmp_path, capsys):
+    """--in-place --formulas crashed with a traceback on a designer's own 'status' column."""
+    rows = [row + ["released"] for row in gearbox_rows()]
+    header = ["id", "designation", "d", "D", "n", "Fr", "Fa", "nu", "lubrication", "arrangement", "C0", "Y", "Y0"]
+    units = ["-", "-", "mm", "mm", "rpm", "kN", "kN", "mm^2/s", "-", "-", "kN", "1", "1"]
+    path = make_workbook(tmp_path / "in.xlsx", header=header + ["status"], units=units + ["-"], rows=rows)
+    before = digest(path)
+    assert main(["calc", str(path), "--in-place", "--formulas"]) == 2
+    err = capsys.readouterr().err
+    assert "Supports!N1: 'status' is a column calc writes; rename it (e.g. 'status (design)')" in err
+    assert "Traceback" not in err and digest(path) == before
+
+
 def test_cli_quiet_prints_nothing(tmp_path, capsys):
     assert main(["calc", str(EXAMPLE_XLSX), "-o", str(tmp_path / "o.xlsx"), "--quiet"]) == 0
     assert capsys.readouterr() == ("", "")

@@ -462,3 +462,29 @@ def test_only_a_cell_that_begins_with_0x_is_a_hexadecimal_number(raw, sep, found
     from bearingheat.io.csv_reader import _holds_a_hexadecimal_cell
 
     assert _holds_a_hexadecimal_cell(raw, sep) is found
+
+
+def test_a_column_named_like_a_result_is_refused(tmp_path, capsys):
+    """A designer's 'status' (released/draft) was replaced in the output by calc's ok/error."""
+    table = pd.read_csv(EXAMPLE_CSV)
+    table["status"] = "released"
+    table.to_csv(tmp_path / "own.csv", index=False)
+    message = "column 'status' is a column calc writes; rename it (e.g. 'status (design)')"
+    with pytest.raises(InputError, match=f"^{re.escape(message)}$"):
+        calc_csv(tmp_path / "own.csv")
+    assert main(["calc", str(tmp_path / "own.csv"), "-o", str(tmp_path / "out.csv")]) == 2
+    assert message in capsys.readouterr().err and not (tmp_path / "out.csv").exists()
+    table = table.drop(columns="status").assign(**{"MR [N*mm]": 999.0})
+    table.to_parquet(tmp_path / "own.parquet")
+    with pytest.raises(InputError, match=re.escape("column 'MR [N*mm]' is a column calc writes; rename it "
+                                                   "(e.g. 'MR (design)')")):
+        calc_csv(tmp_path / "own.parquet")
+
+
+def test_a_results_table_of_calc_is_computed_again(tmp_path):
+    """calc's own output read back: its status holds only ok/warning/error, its result columns are calc's."""
+    write_csv(csv_result(), tmp_path / "results.csv")
+    again = calc_csv(tmp_path / "results.csv")
+    expected = csv_result()
+    pd.testing.assert_series_equal(again["MR [N*mm]"], expected["MR [N*mm]"], rtol=1e-12)
+    assert again["status"].tolist() == expected["status"].tolist()

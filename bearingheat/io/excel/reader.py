@@ -10,7 +10,9 @@ is the column contract of ``bearingheat calc`` (:mod:`bearingheat.calc.contract`
 - :func:`with_units`: plain columns + units -> pint-pandas columns.
 
 Formula cells are read as the values a spreadsheet program saved for them
-(:func:`_cached_values`). Messages cite cells, e.g.
+(:func:`_cached_values`; a 0 that a script such as XlsxWriter stored is no such value, :func:`_unsaved_zeros`),
+and a row of formulas that show an empty text is blank. Headers calc would misread (named like a result column,
+or renamed by an Excel table: 'D2') are refused. Messages cite cells, e.g.
 ``Supports!F2: unit 'kN' contradicts the header 'Fr [N]'; keep one of them``.
 
 >>> supports, info = read_supports("spreadsheets/gearbox_shaft_example.xlsx")
@@ -40,8 +42,9 @@ from openpyxl.utils.exceptions import InvalidFileException
 from openpyxl.workbook import Workbook
 from openpyxl.worksheet.worksheet import Worksheet
 
-from bearingheat.calc.contract import input_units, parse_header
+from bearingheat.calc.contract import input_units, parse_header, result_column
 from bearingheat.errors import ExcelError, InputError, UnitError
+from bearingheat.io.excel.opc import MAIN, PKG_REL, parse_part, resolve_target
 from bearingheat.io.excel.ownership import read_marks
 from bearingheat.io.files import EXCEL_SUFFIXES
 from bearingheat.units import convert_column, parse_unit, quantity
@@ -313,6 +316,7 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
         seen[text] = get_column_letter(col)
         columns.append((col, text))
     names = [contract_name(text) for _, text in columns]
+    _refuse_header_clashes(ws.title, header_row, columns, names)
 
     # units row: under the header, unless its cells belong to the header's merged cells
     units: dict[str, str] = {}
@@ -378,12 +382,25 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
     uncached: list[tuple[int, str, str]] = []
     if formula_cells:
         cached = _cached_values(path, ws.title, formula_cells, letters)
+        for key in _unsaved_zeros(path, workbook, cached):
+            cached[key] = None
         position_of_row = {row: i for i, row in enumerate(rows)}
         col_index = {header: i for i, (_, header) in enumerate(columns)}
         for (header, row), formula in formula_cells.items():
-            value = cached.get((header, row))
-            data[col_index[header]][position_of_row[row]] = value
-            if value is None:
+            data[col_index[header]][position_of_row[row]] = cached.get((header, row))
+        # a row of formulas that show "" (=IF(Data!A5="","",Data!A5) down a pre-filled sheet) is as blank as an
+        # empty row: only its cached values tell, so blank rows are dropped once they are filled in
+        keep = [i for i, row in enumerate(rows) if any(
+            (header, row) in formula_cells if value is None else not (isinstance(value, str) and not value.strip())
+            for value, (_, header) in zip((column[i] for column in data), columns))]
+        if len(keep) < len(rows):
+            dropped = set(rows) - {rows[i] for i in keep}
+            rows = [rows[i] for i in keep]
+            data = [[column[i] for i in keep] for column in data]
+            formula_cells = {key: formula for key, formula in formula_cells.items() if key[1] not in dropped}
+        position_of_row = {row: i for i, row in enumerate(rows)}
+        for (header, row), formula in formula_cells.items():
+            if data[col_index[header]][position_of_row[row]] is None:
                 uncached.append((position_of_row[row], header, formula))
 
     known = input_units()
@@ -402,6 +419,96 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
                      letters=letters, rows=rows, headers=contract_headers, formula_cells=formula_cells,
                      uncached=uncached, hidden_rows=hidden)
     return table, info
+
+
+#: Excel renames a table header that repeats another one without regard to letter case: 'd' and 'D' -> 'D2'
+_RENAMED = re.compile(r"^(?P<base>.*?\D)(?P<digits>\d+)$")
+
+
+def _renamed_duplicate(header: str, name: str | None, present: set[str]) -> str | None:
+    """The contract header an Excel table made ``header`` of by appending digits ('D2', 'D [mm]2' -> 'D'; 'd2'
+    beside a 'd' -> 'D'), None for any other header (d1, D1, f0 and nu40 are contract names of their own)."""
+    if name is not None:
+        return None
+    match = _RENAMED.match(header)
+    if match is None:
+        return None
+    text, digits = match.group("base"), match.group("digits")
+    for split in range(len(digits)):  # 'nu402' is nu40 + 2 or nu + 402: the longest contract name wins
+        base = (text + digits[:split]).strip()
+        try:
+            found, _ = parse_header(base)
+        except InputError:
+            continue
+        alike = sorted((known for known in _known_names() if known.casefold() == found.casefold()),
+                       key=lambda known: (known in present, known != found))
+        if alike:  # the one of the names alike the sheet lacks: the column Excel renamed
+            return alike[0]
+    return None
+
+
+def _refuse_header_clashes(sheet: str, header_row: int, columns: list[tuple[int, str]],
+                           names: list[str | None]) -> None:
+    """:class:`ExcelError` naming the header cell of a column calc would misread: one named like a result column
+    (calc writes that column: the designer's 'status' would be hidden or overwritten by ok/error), one that is a
+    contract header renamed by an Excel table ('D2': the D typed there would be passed through unread and the
+    catalogue's D used instead)."""
+    present = {name for name in names if name is not None}
+    for (col, header), name in zip(columns, names):
+        where = f"{_ref(sheet)}!{get_column_letter(col)}{header_row}"
+        written = result_column(header)
+        if written is not None:
+            raise ExcelError(f"{where}: {header!r} is a column calc writes; rename it (e.g. "
+                             f"'{written} (design)')")
+        meant = _renamed_duplicate(header, name, present)
+        if meant is not None:
+            raise ExcelError(
+                f"{where}: header {header!r} looks like {meant!r} renamed by Excel, which renames a table header "
+                "that repeats another one without regard to letter case ('d' and 'D' -> 'D2'); calc would not "
+                f"read it and would take {meant} as not given. Make the headers differ beyond letter case (e.g. "
+                "'d' and 'D [mm]', mm under d in the units row), or convert the table to a range")
+
+
+def _workbook_part(archive: zipfile.ZipFile) -> str:
+    """The workbook part of a package (xl/workbook.xml unless its relationships say otherwise)."""
+    try:
+        rels = parse_part(archive.read("_rels/.rels"), "_rels/.rels", str(archive.filename))
+    except KeyError:
+        return "xl/workbook.xml"
+    for rel in rels.iter(f"{{{PKG_REL}}}Relationship"):
+        if rel.get("Type", "").endswith("/officeDocument"):
+            return resolve_target("", rel.get("Target", ""))
+    return "xl/workbook.xml"
+
+
+def _recalculates_on_load(path: Path) -> bool:
+    """Whether the workbook's calcPr asks for a full recalculation on load (fullCalcOnLoad), read from the file:
+    openpyxl reports the flag set for a workbook without calcPr."""
+    with zipfile.ZipFile(path) as archive:
+        part = _workbook_part(archive)
+        try:
+            root = parse_part(archive.read(part), part, path)
+        except KeyError:
+            return False
+    calc = root.find(f"{{{MAIN}}}calcPr")
+    return calc is not None and calc.get("fullCalcOnLoad") in ("1", "true")
+
+
+def _unsaved_zeros(path: Path, workbook: Workbook, cached: dict[tuple[str, int], Any]) -> set[tuple[str, int]]:
+    """The formula cells whose cached 0 no spreadsheet program computed: they have no saved value.
+
+    A script writing with XlsxWriter (and the like) stores 0 for every formula it is given no value for and asks
+    for a full recalculation on load (calcPr fullCalcOnLoad): Fr =1.6*2 would be read as 0. Excel and
+    LibreOffice drop that flag when they save, so with it a cached 0 is distrusted. bearingheat sets the flag
+    too when it writes results into a workbook (its ownership marks say so) and leaves the input sheet's cached
+    values as they were: there a 0 is trusted unless every formula caches 0 (a script's workbook that
+    bearingheat wrote results into)."""
+    zeros = {key for key, value in cached.items() if _is_number(value) and value == 0}
+    if not zeros or not _recalculates_on_load(path):
+        return set()
+    if read_marks(defined_name_values(workbook)) and len(zeros) < len(cached):
+        return set()
+    return zeros
 
 
 def _refuse_merged_data(ws: Worksheet, columns: list[int], first_data: int) -> None:

@@ -30,7 +30,7 @@ import pandas as pd
 from openpyxl.workbook import Workbook
 from openpyxl.workbook.defined_name import DefinedName
 
-from bearingheat.calc.contract import columns
+from bearingheat.calc.contract import columns, parse_header, readable_header
 from bearingheat.calc.duty import duty_cycle, has_duty_cycle
 from bearingheat.calc.models import DEFAULT_MODEL
 from bearingheat.calc.table import calc
@@ -94,17 +94,34 @@ def _duty_cycle(result: pd.DataFrame, info: SheetInfo) -> pd.DataFrame | None:
     return duty_cycle(result.rename(columns=named), cell=info.cell)
 
 
+def _units_in_headers(result: pd.DataFrame, info: SheetInfo) -> pd.DataFrame:
+    """The results with the units of the units row in the input headers ('Fr' over kN -> 'Fr [kN]'): a CSV has no
+    units row, and without them its numbers would have no unit (calc refuses 'd' without one when it is read
+    back)."""
+    named = {}
+    for header, unit in info.units.items():
+        # (text columns have none, dimensionless ones need none; a header with its own unit keeps it)
+        if unit in ("", "-", "1") or header not in result.columns or parse_header(header, strict=False)[1]:
+            continue
+        written = f"{header} [{unit}]"
+        if readable_header(written) and written not in result.columns:
+            named[header] = written
+    return result.rename(columns=named) if named else result
+
+
 def _input_error(exc: Exception, info: SheetInfo) -> ExcelError:
     """An InputError of calc with the cell of the column it names."""
     message = str(exc)
-    match = re.match(r"column '(?P<header>.+?)': ", message)
+    match = re.match(r"column '(?P<header>.+?)'(?P<lookalike>: | looks like )", message)
     if match:
         header = match.group("header")
         letter = info.letters.get(header) or info.letters.get(contract_name(header) or "")
         if letter is not None:
             # the header's cell, or the units row's where the unit the message is about was typed there (calc
-            # names such a column 'Fr [kg]', which no header of the sheet is)
-            typed_below = info.units.get(header) if header in info.letters else True
+            # names such a column 'Fr [kg]', which no header of the sheet is); a header that looks like another
+            # column ('Arrangement') is its header cell
+            typed_below = (info.units.get(header) if header in info.letters else True) \
+                and match.group("lookalike") == ": "
             row = info.units_row if info.units_row and typed_below else info.header_row
             return ExcelError(f"{info.sheet_ref}!{letter}{row}: {message}")
     return ExcelError(f"sheet {info.sheet!r} (header row {info.header_row}): {message}")
@@ -130,6 +147,10 @@ class WorkbookRun:
     notes: list[str] = field(default_factory=list)
     companions: dict[str, str] = field(default_factory=dict)
     duty: pd.DataFrame | None = None
+
+    def csv_table(self) -> pd.DataFrame:
+        """The results as a CSV holds them: the units of the units row in the input headers ('Fr [kN]')."""
+        return _units_in_headers(self.result, self.info)
 
 
 def _mark_results_sheet(workbook: Workbook, input_sheet: str, placeholders: list[str], roles: dict[str, str]
@@ -175,7 +196,8 @@ def calc_workbook(path: str | os.PathLike[str], output: str | os.PathLike[str] |
     the file that edit would make of the workbook; where the edit is
     refused, or an .xlsm is written as .xlsx, a copy written by openpyxl
     (``WorkbookRun.dropped`` names what it lacks); a .csv output gets the
-    results table. With neither, nothing is written.
+    results table (the units of the units row in its input headers: 'Fr [kN]'). With neither, nothing is
+    written.
     A results sheet replaces only a results sheet that bearingheat marked as
     its own (:mod:`.ownership`). ``formulas=True`` writes live Excel
     formulas for P1, M0, M1, M2, MR and NR. ``progress`` (e.g.
@@ -288,7 +310,7 @@ def _run(source: Path, target: Path | None, edit: tuple[Package, WorkbookLock] |
     companions: dict[str, str] = {}
     results_sheet = None
     if target is not None and target.suffix.lower() == ".csv":
-        write_csv(result, target)
+        write_csv(_units_in_headers(result, info), target)  # a CSV has no units row
     elif target is not None and writes_workbook:
         sheets = results_sheets(source, workbook, table, info, result, formulas=formulas, model=model, duty=duty)
         placeholders = [ws.title for ws in workbook.worksheets if is_placeholder(ws)]

@@ -1,0 +1,265 @@
+"""What the reader must not take at face value: formula values cached by scripts, headers an Excel table renamed,
+headers in other letter case, rows of formulas that show "", input columns named like results, units in a CSV."""
+from __future__ import annotations
+
+import re
+import zipfile
+
+import numpy as np
+import openpyxl
+import pandas as pd
+import pytest
+import xlsxwriter
+from excel_helpers import HEADER, UNITS, gearbox_rows, make_workbook, require_soffice
+from workbook_corpus import edit_package
+
+from bearingheat.calc.table import calc
+from bearingheat.errors import ExcelError
+from bearingheat.io.excel.libreoffice import convert
+from bearingheat.io.excel.reader import read_supports
+from bearingheat.io.excel.workbook import calc_workbook
+from bearingheat.io.tables import calc_csv
+
+
+def csv_of(rows, tmp_path, header=HEADER, units=UNITS, name="same_rows.csv"):
+    """calc on a CSV of the same rows (units in the headers): what the workbook must give."""
+    headers = [h if u in ("-", "", None) else f"{h} [{u}]" for h, u in zip(header, units)]
+    path = tmp_path / name
+    pd.DataFrame(rows, columns=headers).to_csv(path, index=False)
+    return calc_csv(path)
+
+
+def xlsxwriter_book(path, rows, formulas):
+    """A workbook a script writes with XlsxWriter: ``formulas`` {cell: (formula, value or None)}; XlsxWriter
+    stores 0 for a formula given no value and sets calcPr fullCalcOnLoad."""
+    workbook = xlsxwriter.Workbook(str(path))
+    ws = workbook.add_worksheet("Supports")
+    ws.write_row(0, 0, HEADER)
+    ws.write_row(1, 0, UNITS)
+    for i, row in enumerate(rows, start=2):
+        for j, value in enumerate(row):
+            if value is not None:
+                ws.write(i, j, value)
+    for cell, (formula, value) in formulas.items():
+        if value is None:
+            ws.write_formula(cell, formula)
+        else:
+            ws.write_formula(cell, formula, None, value)
+    workbook.close()
+    return path
+
+
+UNSAVED = ("{cell}: formula {formula} has no saved value (the file was never opened and saved in a spreadsheet "
+           "program); open it in Excel or LibreOffice, save it, and run again")
+
+
+# ---- 1. a script's cached 0 ---------------------------------------------------------------------------------------
+
+def test_a_formula_cached_as_0_by_xlsxwriter_has_no_saved_value(tmp_path):
+    """XlsxWriter stores <v>0</v> for =1.6*2: Fr was read as 0 (MR 90.98 instead of 138.48, status ok)."""
+    rows = gearbox_rows()
+    path = xlsxwriter_book(tmp_path / "script.xlsx", rows, {"F3": ("=1.6*2", None), "E4": ("=2*1500", None),
+                                                              "F5": ("=2*3.1", rows[2][5])})
+    assert re.search(rb'<c r="F3"><f>1.6\*2</f><v>0</v></c>', zipped(path, "xl/worksheets/sheet1.xml"))
+    assert b'fullCalcOnLoad="1"' in zipped(path, "xl/workbook.xml")
+    result = calc_workbook(path).result
+    assert result["status"].tolist()[:2] == ["error", "error"]
+    assert result["message"].iat[0] == UNSAVED.format(cell="Supports!F3", formula="=1.6*2")
+    assert result["message"].iat[1].startswith(UNSAVED.format(cell="Supports!E4", formula="=2*1500") + "; ")
+    assert result["MR [N*mm]"].iloc[:2].isna().all()
+    expected = csv_of(rows, tmp_path)  # the value a script gave (6.2 for =2*3.1) is read
+    np.testing.assert_allclose(result["MR [N*mm]"].iloc[2:], expected["MR [N*mm]"].iloc[2:], rtol=1e-12)
+    assert (result["status"].iloc[2:] == expected["status"].iloc[2:]).all()
+
+
+def test_a_cached_0_is_read_where_no_recalculation_is_asked_for(tmp_path):
+    """Excel and LibreOffice drop fullCalcOnLoad when they save: their cached 0 is a value (Fa =0*1 is 0)."""
+    rows = gearbox_rows()
+    rows[0][6] = 0
+    path = xlsxwriter_book(tmp_path / "saved.xlsx", rows, {"G3": ("=0*1", None)})
+    edit_package(path, {"xl/workbook.xml": lambda data: data.replace(b' fullCalcOnLoad="1"', b"")})
+    result = calc_workbook(path).result
+    expected = csv_of(rows, tmp_path)
+    np.testing.assert_allclose(result["MR [N*mm]"], expected["MR [N*mm]"], rtol=1e-12)
+    assert result["status"].tolist() == expected["status"].tolist()
+
+
+def test_bearingheats_own_recalculation_flag_leaves_cached_values_read(tmp_path):
+    """--in-place sets fullCalcOnLoad and marks the workbook: a saved 0 among other values stays a value; a
+    script's workbook whose every formula still caches 0 stays without saved values."""
+    rows = gearbox_rows()
+    rows[0][6] = 0
+    path = xlsxwriter_book(tmp_path / "saved.xlsx", rows, {"G3": ("=0*1", None), "F4": ("=1.5*1", rows[1][5])})
+    edit_package(path, {"xl/workbook.xml": lambda data: data.replace(b' fullCalcOnLoad="1"', b"")})
+    calc_workbook(path, in_place=True)
+    assert b'fullCalcOnLoad="1"' in zipped(path, "xl/workbook.xml")
+    result = calc_workbook(path).result
+    np.testing.assert_allclose(result["MR [N*mm]"], csv_of(rows, tmp_path)["MR [N*mm]"], rtol=1e-12)
+
+    script = xlsxwriter_book(tmp_path / "script.xlsx", gearbox_rows(), {"F3": ("=1.6*2", None)})
+    calc_workbook(script, in_place=True)
+    assert calc_workbook(script).result["message"].iat[0] == UNSAVED.format(cell="Supports!F3", formula="=1.6*2")
+
+
+def zipped(path, member):
+    with zipfile.ZipFile(path) as archive:
+        return archive.read(member)
+
+
+# ---- 2. headers an Excel table renamed ----------------------------------------------------------------------------
+
+RENAMED = ("Supports!D1: header {header!r} looks like 'D' renamed by Excel, which renames a table header that repeats "
+           "another one without regard to letter case ('d' and 'D' -> 'D2'); calc would not read it and would take D "
+           "as not given. Make the headers differ beyond letter case (e.g. 'd' and 'D [mm]', mm under d in the units "
+           "row), or convert the table to a range")
+
+
+@pytest.mark.parametrize("header, unit", [("D2", "mm"), ("D [mm]2", "-"), ("d2", "mm")])
+def test_a_header_renamed_by_an_excel_table_is_refused(tmp_path, header, unit):
+    """calc passed 'D2' through unread and took the catalogue's D (MR 138.48 ok where the CSV gives 162.36)."""
+    names, units = list(HEADER), list(UNITS)
+    names[3], units[3] = header, unit
+    path = make_workbook(tmp_path / "table.xlsx", header=names, units=units)
+    with pytest.raises(ExcelError, match=f"^{re.escape(RENAMED.format(header=header))}$"):
+        read_supports(path)
+
+
+def test_contract_names_ending_in_digits_are_read(tmp_path):
+    names, units = list(HEADER), list(UNITS)
+    names[10:13], units[10:13] = ["d1", "D1", "nu40"], ["mm", "mm", "mm^2/s"]
+    rows = [row[:10] + [None, None, None] for row in gearbox_rows()]
+    table, info = read_supports(make_workbook(tmp_path / "digits.xlsx", header=names, units=units, rows=rows))
+    assert info.headers["d1"] == "d1" and info.headers["nu40"] == "nu40"
+    names[10] = "spare2"
+    _, info = read_supports(make_workbook(tmp_path / "other.xlsx", header=names, units=units, rows=rows))
+    assert info.letters["spare2"] == "K"
+
+
+def test_the_form_the_refusal_suggests_is_read(tmp_path):
+    names, units = list(HEADER), list(UNITS)
+    names[3] = "D [mm]"
+    rows = gearbox_rows()
+    table, info = read_supports(make_workbook(tmp_path / "table.xlsx", header=names, units=units, rows=rows))
+    assert info.headers["D"] == "D [mm]" and info.unit_of("d") == "mm"
+
+
+# ---- 3. text headers in other letter case -------------------------------------------------------------------------
+
+LOOKS_LIKE = ("Supports!{cell}: column {header!r} looks like {meant!r}, which calc would not read from it: name it "
+              "{meant!r} (headers are 'name [unit]', the name in its own letters); as it is, the table would be "
+              "computed as if {meant} were not given")
+
+
+@pytest.mark.parametrize("header, cell", [("Arrangement", "J1"), ("Designation", "B1"), ("Lubrication", "I1")])
+def test_a_text_header_in_other_letter_case_is_refused_naming_its_cell(tmp_path, header, cell):
+    """'Arrangement' = paired was passed through and the pair computed as a single bearing, status ok."""
+    names = [header if name == header.lower() else name for name in HEADER]
+    path = make_workbook(tmp_path / "case.xlsx", header=names)
+    message = LOOKS_LIKE.format(cell=cell, header=header, meant=header.lower())
+    with pytest.raises(ExcelError, match=f"^{re.escape(message)}$"):
+        calc_workbook(path)
+
+
+@pytest.mark.parametrize("header", ["Model", "Type", "Series"])
+def test_an_added_text_column_in_other_letter_case_is_refused(tmp_path, header):
+    rows = [row + ["x"] for row in gearbox_rows()]
+    path = make_workbook(tmp_path / "case.xlsx", header=HEADER + [header], units=UNITS + ["-"], rows=rows)
+    message = LOOKS_LIKE.format(cell="N1", header=header, meant=header.lower())
+    with pytest.raises(ExcelError, match=f"^{re.escape(message)}$"):
+        calc_workbook(path)
+
+
+# ---- 4. rows of formulas that show "" -----------------------------------------------------------------------------
+
+def test_rows_of_formulas_that_show_empty_text_are_blank(tmp_path):
+    """A sheet pre-filled with =IF(Data!A5="","",Data!A5) down to row 10 gave 5 error rows and exit 1."""
+    rows = gearbox_rows()[:3]
+    blank = [f'=IF(Data!{letter}5="","",Data!{letter}5)' for letter in "ABCDEFGHIJKLM"]
+    path = make_workbook(tmp_path / "prefilled.xlsx", rows=rows + [blank] * 5)
+    workbook = openpyxl.load_workbook(path)
+    workbook.create_sheet("Data")
+    workbook.save(path)
+    # as Excel and LibreOffice save them: an empty text (t="str", an empty <v>)
+    edit_package(path, {"xl/worksheets/sheet1.xml": lambda data: re.sub(
+        rb'<c r="([A-M](?:[6-9]|10))"([^>]*)><f>([^<]*)</f><v\s*/?>(</v>)?', rb'<c r="\1"\2 t="str"><f>\3</f><v></v>',
+        data)})
+    table, info = read_supports(path)
+    assert info.rows == [3, 4, 5] and info.uncached == []
+    assert all(row <= 5 for _, row in info.formula_cells)
+    result = calc_workbook(path).result
+    expected = csv_of(rows, tmp_path)
+    np.testing.assert_allclose(result["MR [N*mm]"], expected["MR [N*mm]"], rtol=1e-12)
+    assert result["status"].tolist() == expected["status"].tolist()
+
+
+@pytest.mark.integration
+def test_rows_of_formulas_saved_by_libreoffice_as_empty_text_are_blank(tmp_path):
+    """The auditor's sheet: every cell of rows 3-10 pulls from a sheet Data that has 3 supports."""
+    require_soffice()
+    rows = gearbox_rows()[:3]
+    workbook = openpyxl.Workbook()
+    ws = workbook.active
+    ws.title = "Supports"
+    data = workbook.create_sheet("Data")
+    ws.append(HEADER)
+    ws.append(UNITS)
+    for row in rows:
+        data.append(row)
+    for i in range(8):
+        for j, letter in enumerate("ABCDEFGHIJKLM", start=1):
+            ws.cell(3 + i, j).value = f'=IF(Data!{letter}{i + 1}="","",Data!{letter}{i + 1})'
+    workbook.save(tmp_path / "pulled.xlsx")
+    path = convert([tmp_path / "pulled.xlsx"], "xlsx", tmp_path / "saved")[0]
+    table, info = read_supports(path)
+    assert info.rows == [3, 4, 5] and info.uncached == []
+    result = calc_workbook(path).result
+    expected = csv_of(rows, tmp_path)
+    np.testing.assert_allclose(result["MR [N*mm]"], expected["MR [N*mm]"], rtol=1e-12)
+    assert result["status"].tolist() == expected["status"].tolist()
+
+
+def test_a_row_with_a_formula_never_saved_is_not_blank(tmp_path):
+    rows = gearbox_rows()[:2] + [['=IF(Data!A5="","",Data!A5)'] + [None] * (len(HEADER) - 1)]
+    path = make_workbook(tmp_path / "unsaved.xlsx", rows=rows)
+    table, info = read_supports(path)
+    assert info.rows == [3, 4, 5] and [(p, h) for p, h, _ in info.uncached] == [(2, "id")]
+
+
+# ---- 5. input columns named like results --------------------------------------------------------------------------
+
+@pytest.mark.parametrize("header, name", [("status", "status"), ("message", "message"), ("MR [N*mm]", "MR"),
+                                          ("NR", "NR")])
+def test_an_input_column_named_like_a_result_is_refused(tmp_path, header, name):
+    """calc writes that column: the designer's status (released/draft) was replaced by ok/error or hidden."""
+    rows = [row + ["released"] for row in gearbox_rows()]
+    path = make_workbook(tmp_path / "named.xlsx", header=HEADER + [header], units=UNITS + ["-"], rows=rows)
+    message = f"Supports!N1: {header!r} is a column calc writes; rename it (e.g. '{name} (design)')"
+    with pytest.raises(ExcelError, match=f"^{re.escape(message)}$"):
+        read_supports(path)
+
+
+def test_the_suggested_name_is_passed_through(tmp_path):
+    rows = [row + ["released"] for row in gearbox_rows()]
+    path = make_workbook(tmp_path / "named.xlsx", header=HEADER + ["status (design)"], units=UNITS + ["-"],
+                         rows=rows)
+    result = calc_workbook(path, tmp_path / "out.csv").result
+    assert result["status (design)"].tolist() == ["released"] * 6
+    assert pd.read_csv(tmp_path / "out.csv")["status (design)"].tolist() == ["released"] * 6
+
+
+# ---- 6. units of the units row in a CSV ---------------------------------------------------------------------------
+
+def test_a_csv_of_a_workbook_has_the_units_in_its_headers_and_reads_back(tmp_path):
+    """The CSV had 'd,D,n,Fr' over kN and rpm and no unit anywhere; read back: "column 'd': needs a unit"."""
+    path = make_workbook(tmp_path / "in.xlsx")
+    out = tmp_path / "out.csv"
+    run = calc_workbook(path, out)
+    written = pd.read_csv(out)
+    # (a dimensionless column needs no unit: 'Y', not 'Y [1]')
+    assert list(written.columns[:13]) == [h if u in ("-", "1") else f"{h} [{u}]" for h, u in zip(HEADER, UNITS)]
+    assert list(run.result.columns[:3]) == ["id", "designation", "d"]  # the result keeps the sheet's headers
+    np.testing.assert_array_equal(written["Fr [kN]"], [row[5] for row in gearbox_rows()])
+    again = calc_csv(out)
+    np.testing.assert_allclose(again["MR [N*mm]"], run.result["MR [N*mm]"], rtol=1e-12)
+    assert again["status"].tolist() == run.result["status"].tolist()
+    np.testing.assert_allclose(again["MR [N*mm]"], calc(pd.read_csv(out))["MR [N*mm]"], rtol=1e-12)
