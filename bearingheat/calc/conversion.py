@@ -18,13 +18,14 @@ from typing import Callable
 import numpy as np
 import pandas as pd
 
-from bearingheat.calc.contract import LABEL_COLUMNS, input_units, parse_header, range_problems
+from bearingheat.calc.contract import (LABEL_COLUMNS, input_units, parse_header, range_problems, readable_header,
+                                      result_column)
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.supports import column_codes, per_distinct, text_categorical
 from bearingheat.errors import InputError, UnitError
 from bearingheat.units import convert_column
 
-__all__ = ["to_catalogue_units", "ConvertedTable"]
+__all__ = ["to_catalogue_units", "ConvertedTable", "refuse_result_columns"]
 
 
 @dataclass
@@ -241,3 +242,27 @@ def _refuse_lookalikes(headers, known: dict[str, str]) -> None:
         raise InputError(f"column {header!r} looks like {meant!r}, which calc would not read from it: name it "
                          f"{written!r} (headers are 'name [unit]', the name in its own letters); as it is, the table "
                          f"would be computed as if {meant} were not given")
+
+
+#: the status values calc writes
+_STATUSES = frozenset({"ok", "warning", "error"})
+
+
+def _calc_results(table: pd.DataFrame) -> bool:
+    """Whether ``table`` is a results table of calc (a CSV it wrote, read back to be computed again, or some of its
+    columns): a status column holding only what calc writes."""
+    if "status" not in table.columns:
+        return False
+    given = table["status"].dropna()
+    return bool(given.map(lambda value: isinstance(value, str) and value.strip() in _STATUSES).all())
+
+
+def refuse_result_columns(table: pd.DataFrame) -> None:
+    """:class:`InputError` for a column named like a result of calc ('status', 'message', 'MR [N*mm]'): calc writes
+    that column, so a designer's own (a status of released/draft) would be replaced in the output by calc's. A
+    results table of calc itself (:func:`_calc_results`) is computed again: its result columns are calc's."""
+    clashes = [(header, written) for header in table.columns if readable_header(header)
+               and (written := result_column(header)) is not None]
+    if clashes and not _calc_results(table):
+        header, written = clashes[0]
+        raise InputError(f"column {header!r} is a column calc writes; rename it (e.g. '{written} (design)')")

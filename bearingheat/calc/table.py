@@ -34,7 +34,7 @@ from bearingheat.calc.contract import PLAIN_TYPES, TEXT_DTYPE, input_units, outp
 from bearingheat.calc.messages import ERROR, WARNING, Labels, status_codes, status_column, with_texts
 from bearingheat.calc.supports import blanks_filled, number_column, per_distinct, text_column, with_bearing_groups
 from bearingheat.calc.distributed import calc_dask, is_dask_frame
-from bearingheat.calc.conversion import to_catalogue_units
+from bearingheat.calc.conversion import refuse_result_columns, to_catalogue_units
 from bearingheat.calc.fill import fill_from_catalogue
 from bearingheat.calc.uncertainty import fill_from_coefficients, has_uncertainty, uncertainty_bands
 from bearingheat.catalogue.bearings import CATALOGUE
@@ -232,6 +232,7 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
         raise InputError(f"viscosity_at: {viscosity_at!r} is not one of {', '.join(VISCOSITY_AT)}")
     if decimal not in (".", ","):
         raise InputError(f"decimal: {decimal!r} is not one of '.', ','")
+    refuse_result_columns(table)  # a designer's 'status' column would be replaced by calc's
     converted = to_catalogue_units(table, units=units, cell=cell, decimal=decimal)
     frame = with_bearing_groups(converted.frame)  # rows alike in every bearing input: one bearing
     if n_per_method != DEFAULT_SPEED_FACTOR_METHOD:  # the table's default for blank n_per_method cells

@@ -31,7 +31,7 @@ import numpy as np
 import pandas as pd
 import pyarrow as pa
 
-from bearingheat.calc.contract import readable_header, result_column
+from bearingheat.calc.contract import readable_header
 from bearingheat.calc.table import calc
 from bearingheat.errors import InputError
 from bearingheat.io.arrow import ARROW_SUFFIXES, read_arrow, write_arrow
@@ -41,7 +41,7 @@ from bearingheat.io.files import atomic_write
 
 __all__ = ["read_csv", "read_table", "read_text", "write_csv", "sniff_format", "escape_formulas", "escape_cell",
            "calc_csv", "calc_passing_through", "cite_rows", "set_aside", "RowLines", "separator", "SEPARATORS",
-           "TABLE_WRITERS", "write_table", "check_table_suffix", "refuse_result_columns"]
+           "TABLE_WRITERS", "write_table", "check_table_suffix"]
 
 
 def _read_frame(path, *, sep: str | None, decimal: str | None, what: str) -> pd.DataFrame:
@@ -148,38 +148,14 @@ def calc_passing_through(table: pd.DataFrame, lines: list[int] | RowLines | None
     """``compute`` (calc, or calc of a partition) of ``table`` with the columns whose header calc cannot read set
     aside (:func:`set_aside`) and put back in their places, row messages citing ``lines`` (:func:`cite_rows`).
 
-    A column named like a result of calc ('status', 'MR [N*mm]') is refused (:func:`refuse_result_columns`).
+    A column named like a result of calc ('status', 'MR [N*mm]') is refused by calc
+    (:func:`bearingheat.calc.conversion.refuse_result_columns`).
     """
-    refuse_result_columns(table)
     usable, extras = set_aside(table)
     result = compute(usable)
     for position, header, values in extras:
         result.insert(position, header, values.array)
     return cite_rows(result, lines)
-
-
-#: the status values calc writes
-_STATUSES = frozenset({"ok", "warning", "error"})
-
-
-def _calc_results(table: pd.DataFrame) -> bool:
-    """Whether ``table`` is a results table of calc (a CSV it wrote, read back to be computed again): status and
-    message columns, the status holding only what calc writes."""
-    if "status" not in table.columns or "message" not in table.columns:
-        return False
-    given = table["status"].dropna()
-    return bool(given.map(lambda value: isinstance(value, str) and value.strip() in _STATUSES).all())
-
-
-def refuse_result_columns(table: pd.DataFrame) -> None:
-    """:class:`InputError` for a column named like a result of calc ('status', 'message', 'MR [N*mm]'): calc writes
-    that column, so a designer's own (a status of released/draft) would be replaced in the output by calc's. A
-    results table of calc itself (:func:`_calc_results`) is computed again: its result columns are calc's."""
-    clashes = [(header, written) for header in table.columns if readable_header(header)
-               and (written := result_column(header)) is not None]
-    if clashes and not _calc_results(table):
-        header, written = clashes[0]
-        raise InputError(f"column {header!r} is a column calc writes; rename it (e.g. '{written} (design)')")
 
 
 def escape_formulas(frame: pd.DataFrame) -> pd.DataFrame:

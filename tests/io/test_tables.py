@@ -8,6 +8,7 @@ import pyarrow as pa
 import pytest
 from excel_helpers import EXAMPLE_CSV, csv_result
 
+import bearingheat as bh
 from bearingheat.cli import main
 from bearingheat.errors import InputError
 from bearingheat.io.tables import calc_csv, cite_rows, escape_formulas, read_csv, sniff_format, write_csv
@@ -479,6 +480,9 @@ def test_a_column_named_like_a_result_is_refused(tmp_path, capsys):
     with pytest.raises(InputError, match=re.escape("column 'MR [N*mm]' is a column calc writes; rename it "
                                                    "(e.g. 'MR (design)')")):
         calc_csv(tmp_path / "own.parquet")
+    # the Python API refuses it alike (the check is calc's own)
+    with pytest.raises(InputError, match=re.escape("column 'MR [N*mm]' is a column calc writes")):
+        bh.calc(table)
 
 
 def test_a_results_table_of_calc_is_computed_again(tmp_path):
