@@ -51,6 +51,7 @@ from typing import TYPE_CHECKING, Protocol
 
 import pandas as pd
 from lxml import etree
+from openpyxl.utils import get_column_letter
 from openpyxl.utils.datetime import CALENDAR_MAC_1904, CALENDAR_WINDOWS_1900
 
 from bearingheat.errors import ExcelError, SheetContentError
@@ -195,6 +196,23 @@ class _Workbook:
         element = etree.SubElement(names, _M + "definedName", {"name": "_xlnm.Print_Titles", "localSheetId": index})
         element.text = value
         self.changed = True
+
+    def extend_print_area(self, sheet: _Sheet, value: str) -> str | None:
+        """Set the print area of ``sheet`` that the designer gave it (``_xlnm.Print_Area``) to ``value``, the whole
+        new results sheet: one set for fewer supports would leave the new ones off the paper and the PDF. The
+        note that says so; None where the sheet has no print area or it is ``value`` already."""
+        names = self.child("definedNames")
+        index = str(self.sheets.index(sheet))
+        for element in names.iter(_M + "definedName") if names is not None else ():
+            if element.get("name", "").lower() == "_xlnm.print_area" and element.get("localSheetId") == index:
+                old = (element.text or "").strip()
+                if old == value:
+                    return None
+                element.text = value
+                self.changed = True
+                return (f"the print area of sheet {sheet.name!r} ({old}) now covers the results written, {value}; "
+                        "set it again (Page Layout > Print Area) to print less")
+        return None
 
     def full_calc_on_load(self) -> None:
         calc = self.ensure_child("calcPr")
@@ -441,8 +459,12 @@ def write_results_in_place(package: Package, input_sheet: str, table: pd.DataFra
     workbook.set_marks(k, name, input_sheet, [j for j in stale if j != k], names)
     if print_setup is not None:
         workbook.print_titles(sheet, print_setup.print_titles(sheet_ref(name)))
+    notes = [note] if note else []
+    if replace:
+        area = f"{sheet_ref(name)}!$A$1:${get_column_letter(max(len(table.columns), 1))}${len(table) + 2}"
+        notes += [text] if (text := workbook.extend_print_area(sheet, area)) else []
     written = edit.write(lock, package.path if target is None else target)
-    return InPlaceResult(name, replace, [note] if note else [], written, names)
+    return InPlaceResult(name, replace, notes, written, names)
 
 
 def write_table_in_place(package: Package, sheet: str, table: pd.DataFrame, *, lock: WorkbookLock | None,
