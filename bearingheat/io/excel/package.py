@@ -59,7 +59,9 @@ from bearingheat.io.excel.ownership import (COMPANION_MARKS, INPUT_MARK, RESULTS
                                             choose_companion_sheet, choose_results_sheet, mark_value,
                                             read_companions, read_marks, sheet_ref, table_mark_slots,
                                             written_sheets)
+from bearingheat.io.excel import references
 from bearingheat.io.excel.freshness import ConditionalRule
+from bearingheat.io.excel.layout import split_header
 from bearingheat.io.excel.opc import (MAIN, PKG_REL, CT, REL, STYLES_TYPE, WORKSHEET_TYPE, Package, parse_part,
                                       refusal, rels_part, resolve_target, write_package, xml_bytes)
 from bearingheat.io.excel.printing import PrintSetup, is_bearingheat_header
@@ -422,6 +424,7 @@ def write_results_in_place(package: Package, input_sheet: str, table: pd.DataFra
     current = next((k for k, (results, source) in marks.items()
                     if results is not None and results.casefold() == name.casefold() and source == input_sheet), None)
     stale = [k for k, (results, _) in marks.items() if results is None or results.casefold() not in present]
+    written_before = current is not None  # the sheet is bearingheat's by its mark, not the template's placeholder
     if current is None:  # a results sheet the designer deleted: its pair (and its companions) is taken again
         current = next((k for k in stale if marks[k][1] == input_sheet), None)
     k = current if current is not None else 1 + max(list(marks) + list(owned) + [0])
@@ -434,9 +437,13 @@ def write_results_in_place(package: Package, input_sheet: str, table: pd.DataFra
     if not replace or any(not again for _, again in chosen.values()):
         edit.refuse_added_sheet()
     kept: dict[str, str] = {}
+    old_headers: list[str | None] = []
     if replace:
         sheet = next(s for s in workbook.sheets if s.name == name)
         kept = edit.rewrite(sheet, whose)
+        shared = workbook.relationship("sharedStrings")
+        if written_before:  # (the template's placeholder lists columns, but no run wrote them)
+            old_headers = references.header_row(package, sheet.part, shared[1] if shared else None)
     else:
         sheet = edit.add_sheet(name)
     names = {role: sheet_name for role, (sheet_name, _) in chosen.items()}
@@ -460,6 +467,14 @@ def write_results_in_place(package: Package, input_sheet: str, table: pd.DataFra
     if print_setup is not None:
         workbook.print_titles(sheet, print_setup.print_titles(sheet_ref(name)))
     notes = [note] if note else []
+    if old_headers and (moved := references.moved_columns(old_headers, [split_header(h, table[h], units)[0]
+                                                                        for h in table.columns])):
+        # a designer's =SUM(Results!K3:K5) reads the letter, not the quantity: say which columns moved, and who
+        # reads the sheet
+        every_name = [(n.get("name", ""), n.text or "") for n in workbook.root.iter(_M + "definedName")]
+        readers = references.readers_of(package, name, [(s.name, s.part) for s in workbook.sheets], every_name,
+                                        skip=[sheet.part, *(s.part for s in workbook.sheets if s.name in names.values())])
+        notes.append(references.note(name, moved, readers))
     if replace:
         area = f"{sheet_ref(name)}!$A$1:${get_column_letter(max(len(table.columns), 1))}${len(table) + 2}"
         notes += [text] if (text := workbook.extend_print_area(sheet, area)) else []

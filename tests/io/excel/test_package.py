@@ -10,6 +10,7 @@ import zipfile
 import openpyxl
 import pytest
 from excel_helpers import EXAMPLE_XLSX, gearbox_rows, make_workbook
+from excel_helpers import HEADER as HEADER_PLAIN, UNITS as UNITS_PLAIN
 from workbook_corpus import CASES, edit_package, results_part
 
 from bearingheat.cli import main
@@ -235,3 +236,40 @@ def test_libreoffice_reads_the_results_written_in_place(tmp_path):
     mr = [ws.cell(r, header.index("MR") + 1).value for r in range(3, 3 + len(run.result))]
     assert mr == pytest.approx(list(run.result["MR [N*mm]"]), rel=1e-12)
     assert [ws.cell(r, 2).value for r in range(3, 3 + len(run.result))] == list(run.result["id"])
+
+
+def test_type_and_series_filled_in_later_do_not_move_the_results(tmp_path):
+    """type and series go after the results: filled in on a re-run, MR stays in the column the designer's
+    =SUM(Results!K3:K5) reads."""
+    header, units = [*HEADER_PLAIN, "type", "series"], [*UNITS_PLAIN, "-", "-"]
+    path = make_workbook(tmp_path / "ts.xlsx", header, units, [[*row, None, None] for row in gearbox_rows()])
+    calc_workbook(path, in_place=True)
+    before = [c.value for c in openpyxl.load_workbook(path)["Results"][1]]
+    workbook = openpyxl.load_workbook(path)
+    for row in range(3, workbook["Supports"].max_row + 1):
+        workbook["Supports"].cell(row, len(header) - 1).value = "deep_groove_ball"
+        workbook["Supports"].cell(row, len(header)).value = "62"
+    workbook.save(path)
+    run = calc_workbook(path, in_place=True)
+    after = [c.value for c in openpyxl.load_workbook(path)["Results"][1]]
+    assert after == before + ["type", "series"] and run.notes == []
+
+
+def test_columns_that_moved_and_their_readers_are_named(tmp_path):
+    """A viscosity from the oil's grade adds nu_used and nu_at before n_thr: the note names the columns that
+    moved and the formula and defined name that read the results sheet by letter."""
+    path = make_workbook(tmp_path / "moved.xlsx")
+    calc_workbook(path, in_place=True)
+    workbook = openpyxl.load_workbook(path)
+    ws = workbook["Supports"]
+    ws["H1"], ws["H2"], ws["N1"], ws["N2"] = "iso_vg", "1", "T_bearing", "degC"
+    for row in range(3, ws.max_row + 1):
+        ws.cell(row, 8).value, ws.cell(row, 14).value = 46, 70
+    workbook.create_sheet("Summary")["B1"] = "=SUM(Results!M3:M8)"
+    workbook.defined_names["n_thr_all"] = openpyxl.workbook.defined_name.DefinedName(
+        "n_thr_all", attr_text="Results!$M$3:$M$8")
+    workbook.save(path)
+    run = calc_workbook(path, in_place=True)
+    assert run.notes == ["the columns of sheet 'Results' changed since the last run: n_thr (M -> O), status "
+                         "(N -> P), message (O -> Q); the name n_thr_all, Summary!B1 refer to sheet 'Results' "
+                         "and may now read other quantities: check them"]
