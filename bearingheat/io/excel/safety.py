@@ -29,6 +29,7 @@ from openpyxl.utils import get_column_letter
 
 from bearingheat.io.excel.ownership import INPUT_MARK, RESULTS_MARK, read_marks, sheet_ref
 from bearingheat.io.excel.reader import defined_name_values
+from bearingheat.io.excel.record import RECORD_MARK
 
 __all__ = ["unsupported_content", "workbook_fingerprint", "LOSSY_PARTS"]
 
@@ -177,7 +178,7 @@ def workbook_fingerprint(workbook_or_path, *, skip_sheets=()) -> dict:
         workbook = load_workbook(workbook_or_path, keep_vba=str(workbook_or_path).endswith(".xlsm"))
     marks = read_marks(defined_name_values(workbook))
     skipped_marks = {f"{prefix}{k}".lower() for k, (results, _) in marks.items() if results in skip_sheets
-                     for prefix in (RESULTS_MARK, INPUT_MARK)}
+                     for prefix in (RESULTS_MARK, INPUT_MARK, RECORD_MARK)}
     out: dict = {
         "sheets": [(ws.title, ws.sheet_state) for ws in workbook.worksheets if ws.title not in skip_sheets],
         "defined_names": sorted((name, str(dn.attr_text), dn.localSheetId)

@@ -38,8 +38,9 @@ def test_output_leaves_the_input_untouched(tmp_path):
     copy.pop("named_styles"), original.pop("named_styles")
     assert copy == original  # the marks of the skipped results sheet are left out too
     marks = [n for n in workbook_fingerprint(tmp_path / "copy.xlsx")["defined_names"] if n[0].startswith("_bearing")]
-    assert marks == [("_bearingheat_input_1", "Supports!$1:$1048576", None),
-                     ("_bearingheat_results_1", "Results!$1:$1048576", None)]
+    assert marks[:1] + marks[2:] == [("_bearingheat_input_1", "Supports!$1:$1048576", None),
+                                     ("_bearingheat_results_1", "Results!$1:$1048576", None)]
+    assert re.fullmatch(r'"A1:[A-Z]+8 [0-9a-f]{16}"', marks[1][1]) and marks[1][0] == "_bearingheat_record_1"
     assert run.dropped == []
 
 
