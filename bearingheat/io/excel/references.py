@@ -23,9 +23,9 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable, Sequence
 
-from lxml import etree
 from openpyxl.utils import get_column_letter
 
+from bearingheat.io.excel import record
 from bearingheat.io.excel.opc import MAIN, Package, parse_part
 from bearingheat.io.excel.ownership import sheet_ref
 
@@ -52,42 +52,16 @@ def moved_columns(old: Sequence[str | None], new: Sequence[str]) -> list[str]:
     return out
 
 
-def _shared_strings(package: Package, part: str | None) -> list[str]:
-    data = package.read(part) if part else None
-    if data is None:
-        return []
-    root = parse_part(data, part or "", package.path)
-    return ["".join(t.text or "" for t in si.iter(_M + "t")) for si in root.iter(_M + "si")]
-
-
 def header_row(package: Package, part: str, shared_part: str | None) -> list[str | None]:
-    """The texts of row 1 of the worksheet ``part`` by column (inline strings, shared strings, numbers)."""
+    """The texts of row 1 of the worksheet ``part`` by column (inline strings, shared strings, numbers); only the
+    first row is read (:func:`bearingheat.io.excel.record.read_cells` on the text up to its end)."""
     data = package.read(part)
     if data is None:
         return []
-    root = parse_part(data, part, package.path)
-    row = next((r for r in root.iter(_M + "row") if r.get("r") == "1"), None)
-    if row is None:
-        return []
-    shared: list[str] | None = None
-    cells: dict[int, str] = {}
-    for cell in row.iter(_M + "c"):
-        match = re.match(r"([A-Z]+)", cell.get("r", ""))
-        if match is None:
-            continue
-        column = 0
-        for char in match.group(1):
-            column = column * 26 + ord(char) - 64
-        kind, value = cell.get("t"), cell.find(_M + "v")
-        if kind == "inlineStr":
-            text = "".join(t.text or "" for t in cell.iter(_M + "t"))
-        elif kind == "s" and value is not None and (value.text or "").strip().isdigit():
-            shared = _shared_strings(package, shared_part) if shared is None else shared
-            position = int(value.text or "0")
-            text = shared[position] if position < len(shared) else ""
-        else:
-            text = value.text or "" if value is not None else ""
-        cells[column] = text
+    end = re.search(rb"</(?:\w+:)?row>", data)
+    head = data[:end.end()] if end is not None else data
+    shared = record.shared_strings(package.read(shared_part)) if shared_part and b't="s"' in head else []
+    cells = {col: value for col, row, kind, value in record.read_cells(head, shared).cells if row == 1}
     return [cells.get(c) for c in range(1, max(cells, default=0) + 1)]
 
 
