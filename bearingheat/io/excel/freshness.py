@@ -17,15 +17,22 @@ is a formula that compares the row's input cells with that copy:
   ``recalculate with bearingheat (every result)`` (:data:`NOTE_EVERY`), and
   every result of the row is struck through.
 
-Running calc again writes a new copy, so the marks go. The label column
-``id`` is not compared. Text is compared without case, as Excel's ``<>``
+- a header or a unit changed (a cell of the header row or the units row,
+  from the first to the last column calc read; the copy keeps them too, and
+  one SUMPRODUCT compares them, so the formula stays short on a wide
+  sheet): :data:`NOTE_EVERY` on every
+  row, as calc would read the column anew (another unit, another quantity)
+  and the live formulas have the unit's factor built in (``*1000`` of kN).
+
+Running calc again writes a new copy, so the marks go. The values of the
+label column ``id`` are not compared (its header is). Text is compared without case, as Excel's ``<>``
 does (calc reads the lubrication as typed, so a change of case alone
 would not be caught).
 
 >>> check = FreshnessCheck("Supports", [3], {"n": "E", "designation": "B"}, ["ok"],
-...                        [frozenset({"designation"})], [])
+...                        [frozenset({"designation"})], [], "$A$1:$E$2")
 >>> print(check.status_formulas("Calc inputs")[0].replace("),", "),\\n"))
-=IF(OR(Supports!B3<>'Calc inputs'!B3),
+=IF(OR(SUMPRODUCT(--(Supports!$A$1:$E$2<>'Calc inputs'!$A$1:$E$2))>0,Supports!B3<>'Calc inputs'!B3),
 "recalculate with bearingheat (every result)",IF(OR(Supports!E3<>'Calc inputs'!E3),
 "recalculate with bearingheat","ok"))
 """
@@ -72,7 +79,8 @@ class FreshnessCheck:
     compared input columns (contract name -> column letter), ``statuses``
     calc's status of each row, ``every`` per row the inputs whose change
     makes every result stale (None: any input), ``snapshot`` the cells of
-    the copy as (row, column index, value).
+    the copy as (row, column index, value), ``titles`` the block of header and units
+    cells ('$A$1:$AZ$2') whose change makes every result of every row stale.
     """
 
     input_sheet: str
@@ -81,6 +89,7 @@ class FreshnessCheck:
     statuses: list[str]
     every: list[frozenset[str] | None]
     snapshot: list[tuple[int, int, object]]
+    titles: str | None = None
 
     def status_formulas(self, snapshot_sheet: str) -> list[str]:
         """The formula of every status cell, comparing the input sheet with ``snapshot_sheet``."""
@@ -88,15 +97,20 @@ class FreshnessCheck:
         names = sorted(self.letters, key=lambda n: (len(self.letters[n]), self.letters[n]))
         out = []
         for row, status, every in zip(self.rows, self.statuses, self.every):
-            def differ(group, r=row):
-                return ",".join(f"{here}!{self.letters[n]}{r}<>{copy}!{self.letters[n]}{r}" for n in group)
+            def differ(cells):
+                return ",".join(f"{here}!{cell}<>{copy}!{cell}" for cell in cells)
             strict = names if every is None else [n for n in names if n in every]
             rest = [n for n in names if n not in strict]
             text = '"' + str(status).replace('"', '""') + '"'
             if rest:
-                text = f'IF(OR({differ(rest)}),"{NOTE}",{text})'
-            if strict:
-                text = f'IF(OR({differ(strict)}),"{NOTE_EVERY}",{text})'
+                text = f'IF(OR({differ(self.letters[n] + str(row) for n in rest)}),"{NOTE}",{text})'
+            # a header or unit typed anew: calc would read the column otherwise (kN -> N is a factor of 1000
+            # that the live formulas have built in), so every result of every row is stale
+            stale_all = [differ(self.letters[n] + str(row) for n in strict)] if strict else []
+            if self.titles is not None:
+                stale_all.insert(0, f"SUMPRODUCT(--({here}!{self.titles}<>{copy}!{self.titles}))>0")
+            if stale_all:
+                text = f'IF(OR({",".join(stale_all)}),"{NOTE_EVERY}",{text})'
             out.append("=" + text)
         return out
 
@@ -106,13 +120,21 @@ def freshness_check(ws, table, info, statuses, every) -> FreshnessCheck:
     openpyxl worksheet ``ws``: the copy holds the cells as stored (formula cells: the value calc read), and
     the header and units rows."""
     letters = {name: info.letters[header] for name, header in info.headers.items() if name != "id"}
-    snapshot = []
+    snapshot: list[tuple[int, int, object]] = []
     cells = ws._cells
+    # the header and units rows from the first to the last column read, every cell of them (a header typed
+    # over a column calc passed by changes the reading as well)
+    columns = [_column_index(info.letters[header]) for header in info.headers.values()]
+    last_title = info.units_row if info.units_row is not None else info.header_row
+    titles = (f"${get_column_letter(min(columns))}${info.header_row}:"
+              f"${get_column_letter(max(columns))}${last_title}") if columns else None
+    for (row, col), cell in cells.items():
+        if (columns and info.header_row <= row <= last_title and min(columns) <= col <= max(columns)
+                and cell.value is not None):
+            value = cell.value
+            snapshot.append((row, col, value if isinstance(value, (str, int, float, bool)) else str(value)))
     for name, header in info.headers.items():
         col = _column_index(info.letters[header])
-        for title_row in (info.header_row, info.units_row):
-            if title_row is not None and (title_row, col) in cells:
-                snapshot.append((title_row, col, cells[(title_row, col)].value))
         if name == "id":
             continue
         for position, row in enumerate(info.rows):
@@ -123,7 +145,8 @@ def freshness_check(ws, table, info, statuses, every) -> FreshnessCheck:
                 value = table[header].iloc[position]  # a formula cell: the value the spreadsheet saved
             if value is not None and not (isinstance(value, float) and value != value):
                 snapshot.append((row, col, value))
-    return FreshnessCheck(info.sheet, list(info.rows), letters, [str(s) for s in statuses], list(every), snapshot)
+    return FreshnessCheck(info.sheet, list(info.rows), letters, [str(s) for s in statuses], list(every), snapshot,
+                          titles)
 
 
 def _column_index(letter: str) -> int:

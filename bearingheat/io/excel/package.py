@@ -14,7 +14,10 @@ and changes only what registers them:
 
 - ``xl/workbook.xml``: their ``<sheet>`` entries, the hidden defined names
   that mark them as bearingheat's (:mod:`.ownership`), the print titles of
-  the results sheet (``_xlnm.Print_Titles``, where it has none), and
+  the results sheet (``_xlnm.Print_Titles``, where it has none), a print area
+  the designer set on it (``_xlnm.Print_Area``, set to the whole new sheet),
+  the record of the cells written (:mod:`.record`: a re-run refuses to
+  replace a sheet the designer has typed on since), and
   ``calcPr fullCalcOnLoad="1"`` so that Excel and LibreOffice recalculate
   formulas (the live formulas, and the designer's formulas that read the
   results) when the file is opened;
@@ -51,14 +54,17 @@ from typing import TYPE_CHECKING, Protocol
 
 import pandas as pd
 from lxml import etree
+from openpyxl.utils import get_column_letter
 from openpyxl.utils.datetime import CALENDAR_MAC_1904, CALENDAR_WINDOWS_1900
 
-from bearingheat.errors import ExcelError, SheetContentError
+from bearingheat.errors import ExcelError, SheetContentError, WorkbookContentError
 from bearingheat.io.excel.ownership import (COMPANION_MARKS, INPUT_MARK, RESULTS_MARK, TABLE_MARK,
                                             choose_companion_sheet, choose_results_sheet, mark_value,
                                             read_companions, read_marks, sheet_ref, table_mark_slots,
                                             written_sheets)
+from bearingheat.io.excel import record, references
 from bearingheat.io.excel.freshness import ConditionalRule
+from bearingheat.io.excel.layout import split_header
 from bearingheat.io.excel.opc import (MAIN, PKG_REL, CT, REL, STYLES_TYPE, WORKSHEET_TYPE, Package, parse_part,
                                       refusal, rels_part, resolve_target, write_package, xml_bytes)
 from bearingheat.io.excel.printing import PrintSetup, is_bearingheat_header
@@ -156,13 +162,15 @@ class _Workbook:
                 if n.get("localSheetId") is None]
 
     def set_marks(self, k: int, results: str, source: str, stale: list[int],
-                  companions: dict[str, str] | None = None) -> None:
-        """Write the marks of pair ``k`` (results sheet, input sheet, companion sheets by role); drop the marks
-        of pairs in ``stale``."""
+                  companions: dict[str, str] | None = None, written: str | None = None) -> None:
+        """Write the marks of pair ``k`` (results sheet, input sheet, companion sheets by role, the record of what
+        the results sheet holds, :mod:`.record`); drop the marks of pairs in ``stale``."""
         names = self.ensure_child("definedNames")
         wanted = {f"{RESULTS_MARK}{k}": mark_value(results), f"{INPUT_MARK}{k}": mark_value(source)}
         wanted.update({f"{COMPANION_MARKS[role]}{k}": mark_value(sheet) for role, sheet in (companions or {}).items()})
-        drop = {f"{m}{j}".lower() for j in stale for m in (RESULTS_MARK, INPUT_MARK)}
+        if written is not None:
+            wanted[f"{record.RECORD_MARK}{k}"] = written
+        drop = {f"{m}{j}".lower() for j in stale for m in (RESULTS_MARK, INPUT_MARK, record.RECORD_MARK)}
         for element in list(names.iter(_M + "definedName")):
             if element.get("localSheetId") is not None:
                 continue
@@ -195,6 +203,23 @@ class _Workbook:
         element = etree.SubElement(names, _M + "definedName", {"name": "_xlnm.Print_Titles", "localSheetId": index})
         element.text = value
         self.changed = True
+
+    def extend_print_area(self, sheet: _Sheet, value: str) -> str | None:
+        """Set the print area of ``sheet`` that the designer gave it (``_xlnm.Print_Area``) to ``value``, the whole
+        new results sheet: one set for fewer supports would leave the new ones off the paper and the PDF. The
+        note that says so; None where the sheet has no print area or it is ``value`` already."""
+        names = self.child("definedNames")
+        index = str(self.sheets.index(sheet))
+        for element in names.iter(_M + "definedName") if names is not None else ():
+            if element.get("name", "").lower() == "_xlnm.print_area" and element.get("localSheetId") == index:
+                old = (element.text or "").strip()
+                if old == value:
+                    return None
+                element.text = value
+                self.changed = True
+                return (f"the print area of sheet {sheet.name!r} ({old}) now covers the results written, {value}; "
+                        "set it again (Page Layout > Print Area) to print less")
+        return None
 
     def full_calc_on_load(self) -> None:
         calc = self.ensure_child("calcPr")
@@ -304,6 +329,36 @@ def _kept_setup(package: Package, sheet: _Sheet, whose: str) -> dict[str, str]:
     return kept
 
 
+def _foreign_edit(package: Package, sheet: _Sheet, shared_part: str | None, recorded: tuple[str, str] | None,
+                  target: Path | None) -> list[str]:
+    """Refuse to replace a results sheet that holds what bearingheat did not write (:mod:`.record`), naming the
+    first such cell; into a copy (``target``) it is written with a note instead, as the workbook keeps the edit.
+    The notes: that, or that a sheet without a record was checked outside its table only."""
+    data = package.read(sheet.part)
+    if data is None:
+        return []
+    shared = record.shared_strings(package.read(shared_part)) if shared_part else []
+    found = record.foreign_edit(record.read_cells(data, shared), recorded)
+    if found is None:
+        return [] if recorded is not None else [
+            f"sheet {sheet.name!r} has no record of the cells bearingheat wrote (an earlier version wrote it): "
+            "nothing was found beyond its table, and it was replaced; edits inside the table cannot be told from "
+            "bearingheat's own cells. From now on any edit of it is found"]
+    where, value = found
+    if value is None:
+        what = (f"sheet {sheet.name!r} was edited since bearingheat wrote it: what {sheet_ref(sheet.name)}!{where} "
+                "holds (a value, a formula, a conditional format, a validation, merged cells or the tab colour) "
+                "differs from what bearingheat wrote")
+        todo = "move your edits to another sheet or run with -o to write a copy"
+    else:
+        shown = value if len(value) <= 60 else value[:57] + "..."
+        what = f"{sheet_ref(sheet.name)}!{where} holds {shown!r} that bearingheat did not write"
+        todo = "move it to another sheet or run with -o to write a copy"
+    if target is not None:
+        return [f"{what}; the copy {target} has the results sheet without it (the workbook keeps it)"]
+    raise WorkbookContentError(f"{package.path}: {what}; {todo}; the file is unchanged")
+
+
 def _drop_from_calc_chain(data: bytes, sheet_id: int, where: str, path: str | os.PathLike[str]) -> bytes | None:
     """The calc chain without the cells of sheet ``sheet_id`` (None: nothing is left; ``data``: nothing changed)."""
     root = parse_part(data, where, path)
@@ -404,6 +459,7 @@ def write_results_in_place(package: Package, input_sheet: str, table: pd.DataFra
     current = next((k for k, (results, source) in marks.items()
                     if results is not None and results.casefold() == name.casefold() and source == input_sheet), None)
     stale = [k for k, (results, _) in marks.items() if results is None or results.casefold() not in present]
+    written_before = current is not None  # the sheet is bearingheat's by its mark, not the template's placeholder
     if current is None:  # a results sheet the designer deleted: its pair (and its companions) is taken again
         current = next((k for k in stale if marks[k][1] == input_sheet), None)
     k = current if current is not None else 1 + max(list(marks) + list(owned) + [0])
@@ -416,9 +472,17 @@ def write_results_in_place(package: Package, input_sheet: str, table: pd.DataFra
     if not replace or any(not again for _, again in chosen.values()):
         edit.refuse_added_sheet()
     kept: dict[str, str] = {}
+    old_headers: list[str | None] = []
+    notes_before: list[str] = []
     if replace:
         sheet = next(s for s in workbook.sheets if s.name == name)
         kept = edit.rewrite(sheet, whose)
+        shared = workbook.relationship("sharedStrings")
+        if written_before:  # (the template's placeholder lists columns, but no run wrote them)
+            old_headers = references.header_row(package, sheet.part, shared[1] if shared else None)
+            foreign = _foreign_edit(package, sheet, shared[1] if shared else None,
+                                    record.record_names(workbook.names()).get(k), target)
+            notes_before.extend(foreign)
     else:
         sheet = edit.add_sheet(name)
     names = {role: sheet_name for role, (sheet_name, _) in chosen.items()}
@@ -438,11 +502,26 @@ def write_results_in_place(package: Package, input_sheet: str, table: pd.DataFra
                                                  kept=kept, print_setup=print_setup, rules=rules,
                                                  dxf_index=edit.styles.dxf, progress=progress, title=name,
                                                  hidden_columns=hidden_columns, epoch=edit.epoch)
-    workbook.set_marks(k, name, input_sheet, [j for j in stale if j != k], names)
+    written_cells = record.read_cells(edit.changes[sheet.part])
+    extent = written_cells.extent
+    workbook.set_marks(k, name, input_sheet, [j for j in stale if j != k], names,
+                       record.record_value(extent, written_cells.digest(extent)))
     if print_setup is not None:
         workbook.print_titles(sheet, print_setup.print_titles(sheet_ref(name)))
+    notes = ([note] if note else []) + notes_before
+    if old_headers and (moved := references.moved_columns(old_headers, [split_header(h, table[h], units)[0]
+                                                                        for h in table.columns])):
+        # a designer's =SUM(Results!K3:K5) reads the letter, not the quantity: say which columns moved, and who
+        # reads the sheet
+        every_name = [(n.get("name", ""), n.text or "") for n in workbook.root.iter(_M + "definedName")]
+        readers = references.readers_of(package, name, [(s.name, s.part) for s in workbook.sheets], every_name,
+                                        skip=[sheet.part, *(s.part for s in workbook.sheets if s.name in names.values())])
+        notes.append(references.note(name, moved, readers))
+    if replace:
+        area = f"{sheet_ref(name)}!$A$1:${get_column_letter(max(len(table.columns), 1))}${len(table) + 2}"
+        notes += [text] if (text := workbook.extend_print_area(sheet, area)) else []
     written = edit.write(lock, package.path if target is None else target)
-    return InPlaceResult(name, replace, [note] if note else [], written, names)
+    return InPlaceResult(name, replace, notes, written, names)
 
 
 def write_table_in_place(package: Package, sheet: str, table: pd.DataFrame, *, lock: WorkbookLock | None,

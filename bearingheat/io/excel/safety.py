@@ -19,13 +19,17 @@ two workbooks with equal fingerprints show the same content in Excel.
 """
 from __future__ import annotations
 
+import html
+import posixpath
 import re
 import zipfile
 
 from openpyxl import load_workbook
+from openpyxl.utils import get_column_letter
 
-from bearingheat.io.excel.ownership import INPUT_MARK, RESULTS_MARK, read_marks
+from bearingheat.io.excel.ownership import INPUT_MARK, RESULTS_MARK, read_marks, sheet_ref
 from bearingheat.io.excel.reader import defined_name_values
+from bearingheat.io.excel.record import RECORD_MARK
 
 __all__ = ["unsupported_content", "workbook_fingerprint", "LOSSY_PARTS"]
 
@@ -66,10 +70,79 @@ def _drawing_shapes(archive: zipfile.ZipFile) -> bool:
     return False
 
 
+#: the objects of a VML drawing (x:ClientData ObjectType) other than notes, as a designer calls them
+_VML_OBJECTS = {"Button": "form button", "Checkbox": "check box", "Radio": "option button", "Drop": "drop-down list",
+                "List": "list box", "Spin": "spin button", "Scroll": "scroll bar", "Label": "label",
+                "GBox": "group box", "Edit": "edit box", "Dialog": "dialog frame", "Movie": "movie",
+                "Pict": "picture", "Shape": "shape", "Rect": "rectangle"}
+_OBJECT_TYPE = re.compile(r'<x:ClientData\s+ObjectType="([^"]+)"(.*?)</x:ClientData>', re.DOTALL)
+_ANCHOR = re.compile(r"<x:Anchor>\s*(\d+)\s*,\s*\d+\s*,\s*(\d+)")
+
+
+def _vml_sheets(archive: zipfile.ZipFile) -> dict[str, str]:
+    """VML drawing part -> the name of the sheet that shows it (from the workbook's and the sheets' relationships)."""
+    names = set(archive.namelist())
+
+    def targets(rels: str) -> dict[str, str]:
+        if rels not in names:
+            return {}
+        folder = rels.rsplit("_rels/", 1)[0]
+        text = archive.read(rels).decode("utf-8", "replace")
+        out = {}
+        for element in re.findall(r"<Relationship\b[^>]*>", text):
+            rid, target = re.search(r'\bId="([^"]*)"', element), re.search(r'\bTarget="([^"]*)"', element)
+            if rid and target:
+                out[rid.group(1)] = posixpath.normpath(target.group(1).lstrip("/") if target.group(1).startswith("/")
+                                                       else posixpath.join(folder, target.group(1)))
+        return out
+
+    if "xl/workbook.xml" not in names:
+        return {}
+    sheet_parts = targets("xl/_rels/workbook.xml.rels")
+    out = {}
+    workbook = archive.read("xl/workbook.xml").decode("utf-8", "replace")
+    for element in re.findall(r"<(?:\w+:)?sheet\b[^>]*>", workbook):
+        name, rid = re.search(r'\bname="([^"]*)"', element), re.search(r'\br:id="([^"]*)"', element)
+        part = sheet_parts.get(rid.group(1)) if rid else None
+        if name and part:
+            folder, base = posixpath.split(part)
+            for target in targets(posixpath.join(folder, "_rels", base + ".rels")).values():
+                if target.endswith(".vml"):
+                    out[target] = html.unescape(name.group(1))
+    return out
+
+
+def _vml_objects(archive: zipfile.ZipFile) -> list[str]:
+    """The objects of the workbook's VML drawings other than notes (form buttons, check boxes ... of Excel's old
+    kind, which openpyxl writes only with the macros), each as 'form button at Supports!P2'."""
+    sheets = _vml_sheets(archive)
+    found = []
+    for name in archive.namelist():
+        if not name.lower().endswith(".vml"):
+            continue
+        text = archive.read(name).decode("utf-8", "replace")
+        for kind, body in _OBJECT_TYPE.findall(text):
+            if kind == "Note":
+                continue
+            what = _VML_OBJECTS.get(kind, f"{kind} control")
+            anchor = _ANCHOR.search(body)
+            sheet = sheets.get(name)
+            if anchor is not None and sheet is not None:
+                cell = f"{get_column_letter(int(anchor.group(1)) + 1)}{int(anchor.group(2)) + 1}"
+                what += f" at {sheet_ref(sheet)}!{cell}"
+            elif sheet is not None:
+                what += f" on sheet {sheet!r}"
+            if what not in found:
+                found.append(what)
+    return found
+
+
 def unsupported_content(path, workbook=None, *, keep_vba: bool = True) -> list[str]:
     """What rewriting ``path`` with openpyxl would drop, in words ('charts', 'images', ...); [] when nothing.
 
-    ``workbook`` is the loaded workbook (its load warnings are checked too).
+    ``workbook`` is the loaded workbook (its load warnings are checked too). Without ``keep_vba`` the
+    objects of VML drawings other than notes (an old-style form button ...) are named one by one: openpyxl
+    keeps a VML drawing only together with the macros.
     """
     found: list[str] = []
     with zipfile.ZipFile(path) as archive:
@@ -81,6 +154,8 @@ def unsupported_content(path, workbook=None, *, keep_vba: bool = True) -> list[s
             found.append("drawing shapes and text boxes")
         if _VBA_PART in names and not keep_vba:
             found.append("VBA macros")
+        if not keep_vba:
+            found += [what for what in _vml_objects(archive) if what not in found]
     for message in getattr(workbook, "_bearingheat_load_warnings", ()):
         for words, what in _WARNING_WORDS.items():
             if words in message and what not in found:
@@ -103,7 +178,7 @@ def workbook_fingerprint(workbook_or_path, *, skip_sheets=()) -> dict:
         workbook = load_workbook(workbook_or_path, keep_vba=str(workbook_or_path).endswith(".xlsm"))
     marks = read_marks(defined_name_values(workbook))
     skipped_marks = {f"{prefix}{k}".lower() for k, (results, _) in marks.items() if results in skip_sheets
-                     for prefix in (RESULTS_MARK, INPUT_MARK)}
+                     for prefix in (RESULTS_MARK, INPUT_MARK, RECORD_MARK)}
     out: dict = {
         "sheets": [(ws.title, ws.sheet_state) for ws in workbook.worksheets if ws.title not in skip_sheets],
         "defined_names": sorted((name, str(dn.attr_text), dn.localSheetId)

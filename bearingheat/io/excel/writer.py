@@ -168,18 +168,25 @@ def _style_arrays(ws: Worksheet, keys: Iterable[tuple[str, str | None]]) -> dict
 
 
 def result_table(result: pd.DataFrame, table: pd.DataFrame, info: SheetInfo) -> pd.DataFrame:
-    """The columns of the results sheet: the input row, id/designation (support, case, type and series where
-    the sheet gives them), then every result column."""
+    """The columns of the results sheet: the input row, id/designation (support and case where the sheet gives
+    them), every result column, then type and series where the sheet gives them.
+
+    type and series are at the end: a designer fills them in later, and a column added before the results
+    would move every result one letter on, under the designer's formulas that read them by letter
+    (=SUM(Results!K3:K5))."""
     out = pd.DataFrame({"row": pd.Series(info.rows, dtype="int64", index=result.index)})
-    for header in table.columns:
-        name = contract_name(header)
-        if name in ("id", "designation") or (name in ("support", "case", "type", "series")
-                                             and table[header].notna().any()):
+    given = [h for h in table.columns if contract_name(h) in ("id", "designation") or (
+        contract_name(h) in ("support", "case", "type", "series") and table[h].notna().any())]
+    for header in given:
+        if contract_name(header) not in ("type", "series"):
             out[header] = result[header]
     for header in result.columns:
         if header not in table.columns or contract_name(header) in ("f0", "f1"):
             if header in out.columns:
                 continue
+            out[header] = result[header]
+    for header in given:
+        if contract_name(header) in ("type", "series"):
             out[header] = result[header]
     return out
 

@@ -156,8 +156,10 @@ def test_status_formula_and_conditional_formats(tmp_path):
     ws = workbook["Results"]
     header = [c.value for c in ws[1]]
     status = ws.cell(3, header.index("status") + 1).value
-    # the designation, arrangement, alpha, type, series, f2 (not read for a 6208) make every result stale
-    assert status.startswith("=IF(OR(Supports!B3<>'Calc inputs'!B3,Supports!J3<>'Calc inputs'!J3,")
+    # a header or unit, the designation, arrangement, alpha, type, series, f2 (not read for a 6208) make every
+    # result stale
+    assert status.startswith("=IF(OR(SUMPRODUCT(--(Supports!$A$1:$AZ$2<>'Calc inputs'!$A$1:$AZ$2))>0,"
+                             "Supports!B3<>'Calc inputs'!B3,Supports!J3<>'Calc inputs'!J3,")
     assert '"recalculate with bearingheat (every result)",IF(OR(Supports!C3<>\'Calc inputs\'!C3,' in status
     assert status.endswith('),"recalculate with bearingheat","ok"))')
     assert "Supports!A3" not in status  # the id is a label
@@ -237,3 +239,31 @@ def test_a_viscosity_from_the_oils_curve_is_a_value_and_any_change_marks_every_r
     np.testing.assert_allclose(before["MR"].astype(float), run.result["MR [N*mm]"], rtol=1e-9)
     assert before["status"].tolist() == ["ok"] * 6
     assert after["status"].tolist() == ["ok", NOTE_EVERY, "ok", "ok", "ok", "ok"]
+
+
+@pytest.mark.integration
+def test_a_changed_unit_marks_every_result_of_every_row(tmp_path):
+    """Fr typed in N instead of kN (the units cell only, and with the loads retyped in N): the live MR has the
+    factor 1000 of kN built in, so every row says NOTE_EVERY; the same workbook unchanged stays as calc gave."""
+    require_soffice()
+    live = tmp_path / "live.xlsx"
+    run = calc_workbook(EXAMPLE_XLSX, live, formulas=True)
+    edited = {}
+    for tag in ("unit", "unit_and_loads", "unchanged"):
+        workbook = openpyxl.load_workbook(live)
+        ws = workbook["Supports"]
+        fr = {c.value: c.column_letter for c in ws[1]}["Fr"]
+        if tag != "unchanged":
+            ws[f"{fr}2"] = "N"
+        if tag == "unit_and_loads":
+            for row in range(3, ws.max_row + 1):
+                if isinstance(ws[f"{fr}{row}"].value, (int, float)):
+                    ws[f"{fr}{row}"] = ws[f"{fr}{row}"].value * 1000
+        edited[tag] = tmp_path / f"{tag}.xlsx"
+        workbook.save(edited[tag])
+    recalculated = convert(list(edited.values()), "xlsx", tmp_path / "recalculated")
+    by_tag = {path.stem: results(path)["status"].tolist() for path in recalculated}
+    n_rows = len(run.result)
+    assert by_tag["unit"] == [NOTE_EVERY] * n_rows
+    assert by_tag["unit_and_loads"] == [NOTE_EVERY] * n_rows
+    assert by_tag["unchanged"] == run.result["status"].tolist()

@@ -10,6 +10,7 @@ import zipfile
 import openpyxl
 import pytest
 from excel_helpers import EXAMPLE_XLSX, gearbox_rows, make_workbook
+from excel_helpers import HEADER as HEADER_PLAIN, UNITS as UNITS_PLAIN
 from workbook_corpus import CASES, edit_package, results_part
 
 from bearingheat.cli import main
@@ -126,7 +127,10 @@ def test_a_second_run_adds_no_style_and_keeps_the_workbook_part(tmp_path):
     assert b'<dxfs count="2"><dxf><font><strike/><color rgb="FF808080"/></font></dxf>' in styles
     calc_workbook(path, in_place=True, formulas=True)
     calc_workbook(path, in_place=True)
-    assert part(path, "xl/styles.xml") == styles and part(path, "xl/workbook.xml") == workbook
+    # (the record of the cells written follows the sheet: values only have fewer columns than --formulas)
+    record = re.compile(rb'<definedName name="_bearingheat_record_1" hidden="1">[^<]*</definedName>')
+    assert part(path, "xl/styles.xml") == styles
+    assert record.sub(b"", part(path, "xl/workbook.xml")) == record.sub(b"", workbook)
     assert names(path) == parts
     names_ = openpyxl.load_workbook(path).named_styles
     assert "bearingheat result" in names_ and "bearingheat status ok" in names_
@@ -235,3 +239,105 @@ def test_libreoffice_reads_the_results_written_in_place(tmp_path):
     mr = [ws.cell(r, header.index("MR") + 1).value for r in range(3, 3 + len(run.result))]
     assert mr == pytest.approx(list(run.result["MR [N*mm]"]), rel=1e-12)
     assert [ws.cell(r, 2).value for r in range(3, 3 + len(run.result))] == list(run.result["id"])
+
+
+def test_type_and_series_filled_in_later_do_not_move_the_results(tmp_path):
+    """type and series go after the results: filled in on a re-run, MR stays in the column the designer's
+    =SUM(Results!K3:K5) reads."""
+    header, units = [*HEADER_PLAIN, "type", "series"], [*UNITS_PLAIN, "-", "-"]
+    path = make_workbook(tmp_path / "ts.xlsx", header, units, [[*row, None, None] for row in gearbox_rows()])
+    calc_workbook(path, in_place=True)
+    before = [c.value for c in openpyxl.load_workbook(path)["Results"][1]]
+    workbook = openpyxl.load_workbook(path)
+    for row in range(3, workbook["Supports"].max_row + 1):
+        workbook["Supports"].cell(row, len(header) - 1).value = "deep_groove_ball"
+        workbook["Supports"].cell(row, len(header)).value = "62"
+    workbook.save(path)
+    run = calc_workbook(path, in_place=True)
+    after = [c.value for c in openpyxl.load_workbook(path)["Results"][1]]
+    assert after == before + ["type", "series"] and run.notes == []
+
+
+def test_columns_that_moved_and_their_readers_are_named(tmp_path):
+    """A viscosity from the oil's grade adds nu_used and nu_at before n_thr: the note names the columns that
+    moved and the formula and defined name that read the results sheet by letter."""
+    path = make_workbook(tmp_path / "moved.xlsx")
+    calc_workbook(path, in_place=True)
+    workbook = openpyxl.load_workbook(path)
+    ws = workbook["Supports"]
+    ws["H1"], ws["H2"], ws["N1"], ws["N2"] = "iso_vg", "1", "T_bearing", "degC"
+    for row in range(3, ws.max_row + 1):
+        ws.cell(row, 8).value, ws.cell(row, 14).value = 46, 70
+    workbook.create_sheet("Summary")["B1"] = "=SUM(Results!M3:M8)"
+    workbook.defined_names["n_thr_all"] = openpyxl.workbook.defined_name.DefinedName(
+        "n_thr_all", attr_text="Results!$M$3:$M$8")
+    workbook.save(path)
+    run = calc_workbook(path, in_place=True)
+    assert run.notes == ["the columns of sheet 'Results' changed since the last run: n_thr (M -> O), status "
+                         "(N -> P), message (O -> Q); the name n_thr_all, Summary!B1 refer to sheet 'Results' "
+                         "and may now read other quantities: check them"]
+
+
+def _hand_edit(path, edit):
+    workbook = openpyxl.load_workbook(path)
+    edit(workbook["Results"])
+    workbook.save(path)
+
+
+def _refusal(path) -> str:
+    with pytest.raises(ExcelError) as exc:
+        calc_workbook(path, in_place=True)
+    return str(exc.value)
+
+
+def test_what_the_designer_typed_on_the_results_sheet_is_refused_not_lost(tmp_path):
+    """A note beside the results, a sign-off below them, a changed result, a tab colour or a conditional format of
+    the designer's: a re-run refuses, naming the first foreign cell, and leaves the file as it was; a sheet only
+    opened and saved (here by openpyxl, which rewrites every number and string) is replaced."""
+    path = make_workbook(tmp_path / "book.xlsx")
+    calc_workbook(path, in_place=True)
+    _hand_edit(path, lambda ws: None)
+    assert calc_workbook(path, in_place=True).notes == []
+    _hand_edit(path, lambda ws: (ws.cell(3, 16, "checked JS"), ws.cell(10, 1, "Reviewer sign-off: ____")))
+    before = path.read_bytes()
+    assert _refusal(path) == (f"{path}: Results!P3 holds 'checked JS' that bearingheat did not write; move it to "
+                              "another sheet or run with -o to write a copy; the file is unchanged")
+    assert path.read_bytes() == before
+    _hand_edit(path, lambda ws: setattr(ws["P3"], "value", None))
+    assert "Results!A10 holds 'Reviewer sign-off: ____' that bearingheat did not write" in _refusal(path)
+    # into a copy the results go, with a note: the workbook keeps the sign-off
+    run = calc_workbook(path, tmp_path / "copy.xlsx")
+    assert run.notes == [f"Results!A10 holds 'Reviewer sign-off: ____' that bearingheat did not write; the copy "
+                         f"{tmp_path / 'copy.xlsx'} has the results sheet without it (the workbook keeps it)"]
+    _hand_edit(path, lambda ws: setattr(ws["A10"], "value", None))
+    calc_workbook(path, in_place=True)
+    edited = ("C4 changed", lambda ws: ws.cell(4, 3, 1.0)), \
+        ("tab colour", lambda ws: setattr(ws.sheet_properties, "tabColor", "FF0000")), \
+        ("conditional format", lambda ws: ws.conditional_formatting.add(
+            "K3:K8", openpyxl.formatting.rule.CellIsRule(operator="greaterThan", formula=["100"])))
+    for what, edit in edited:
+        shutil.copyfile(path, tmp_path / "edited.xlsx")
+        _hand_edit(tmp_path / "edited.xlsx", edit)
+        assert _refusal(tmp_path / "edited.xlsx") == (
+            f"{tmp_path / 'edited.xlsx'}: sheet 'Results' was edited since bearingheat wrote it: what "
+            "Results!A1:O8 holds (a value, a formula, a conditional format, a validation, merged cells or the tab "
+            "colour) differs from what bearingheat wrote; move your edits to another sheet or run with -o to write "
+            "a copy; the file is unchanged"), what
+
+
+def test_a_results_sheet_without_a_record_is_checked_beyond_its_table(tmp_path):
+    """A results sheet of an earlier version has no record of its cells: a cell beyond its table (right of the
+    header row, below the last row of column A) is refused; without one it is replaced, once, with a note."""
+    path = make_workbook(tmp_path / "old.xlsx")
+    calc_workbook(path, in_place=True)
+    workbook = openpyxl.load_workbook(path)
+    del workbook.defined_names["_bearingheat_record_1"]
+    workbook["Results"]["P3"] = "checked JS"
+    workbook.save(path)
+    assert "Results!P3 holds 'checked JS' that bearingheat did not write" in _refusal(path)
+    _hand_edit(path, lambda ws: setattr(ws["P3"], "value", None))
+    assert calc_workbook(path, in_place=True).notes == [
+        "sheet 'Results' has no record of the cells bearingheat wrote (an earlier version wrote it): nothing was "
+        "found beyond its table, and it was replaced; edits inside the table cannot be told from bearingheat's own "
+        "cells. From now on any edit of it is found"]
+    assert calc_workbook(path, in_place=True).notes == []

@@ -157,3 +157,20 @@ def test_a_designers_print_setup_is_kept_and_bearingheats_header_is_dated_anew(t
     with zipfile.ZipFile(plain) as archive:
         xml = archive.read(part).decode()
     assert f"bearingheat {package_version()}, {TODAY}</oddHeader>" in xml and "2001-02-03" not in xml
+
+
+def test_a_print_area_set_by_hand_covers_the_new_supports(tmp_path):
+    """A print area the designer gave the results sheet for 3 supports would leave a 4th off the paper and the
+    PDF: the replaced sheet's print area covers every result, and the run says so."""
+    path = make_workbook(tmp_path / "area.xlsx", rows=gearbox_rows()[:3])
+    calc_workbook(path, in_place=True)
+    workbook = openpyxl.load_workbook(path)
+    last = openpyxl.utils.get_column_letter(workbook["Results"].max_column)
+    workbook["Results"].print_area = f"A1:{last}5"
+    workbook["Supports"].append(list(gearbox_rows()[3]))
+    workbook.save(path)
+    run = calc_workbook(path, in_place=True)
+    assert run.notes == [f"the print area of sheet 'Results' ('Results'!$A$1:${last}$5) now covers the results "
+                         f"written, Results!$A$1:${last}$6; set it again (Page Layout > Print Area) to print less"]
+    assert openpyxl.load_workbook(path)["Results"].print_area == f"'Results'!$A$1:${last}$6"
+    assert calc_workbook(path, in_place=True).notes == []  # the same supports again: nothing to say

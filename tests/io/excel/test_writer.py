@@ -198,8 +198,8 @@ def test_write_results_replaces_the_sheet_it_wrote(tmp_path):
     workbook = openpyxl.load_workbook(path)
     assert workbook.sheetnames == ["Supports", "Loads", "Results"]
     assert workbook["Results"]["A3"].value == 4.0
-    assert sorted(workbook.defined_names) == ["_bearingheat_input_1", "_bearingheat_results_1",
-                                              "_bearingheat_table_1"]
+    assert sorted(workbook.defined_names) == ["_bearingheat_input_1", "_bearingheat_record_1",
+                                              "_bearingheat_results_1", "_bearingheat_table_1"]
 
 
 @pytest.mark.integration

@@ -1,0 +1,203 @@
+"""What bearingheat wrote on its results sheet, so that a re-run replaces nothing the designer typed there.
+
+A re-run writes the results sheet anew. A note typed beside the results, a
+sign-off line below them, a conditional format or a validation of the
+designer's would be thrown away. So each results sheet bearingheat writes
+gets a record, a hidden defined name beside its marks (:mod:`.ownership`)::
+
+    _bearingheat_record_1    "A1:O5 3f9c0d2a71b4e8c6"
+
+the range of the cells it wrote and a digest of what they hold: every cell
+with a value (numbers to 6 significant digits, text as text whether inline
+or shared, a formula as a formula whatever its text and cached value, as
+Excel and LibreOffice may rewrite both), the tab colour and the numbers of
+conditional format rules, validations and merged ranges. Opening and saving
+the workbook in Excel or LibreOffice keeps the digest; an edit changes it.
+:func:`foreign_edit` finds the first cell outside the range that holds a
+value (named in the refusal) or tells that the digest differs. A results
+sheet of an earlier bearingheat has no record: its range is taken from the
+sheet itself (the header row's last column, the last row of column A, which
+holds the input row of every support), so cells beyond the table are still
+found; edits inside it cannot be told from bearingheat's own cells.
+
+>>> value = record_value("A1:O5", "3f9c0d2a71b4e8c6")
+>>> value, parse_record(value)
+('"A1:O5 3f9c0d2a71b4e8c6"', ('A1:O5', '3f9c0d2a71b4e8c6'))
+>>> print(parse_record("#REF!"))
+None
+"""
+from __future__ import annotations
+
+import hashlib
+import html
+import re
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass
+
+from openpyxl.utils import column_index_from_string, get_column_letter, range_boundaries
+
+
+__all__ = ["RECORD_MARK", "record_value", "parse_record", "SheetCells", "read_cells", "foreign_edit", "shared_strings",
+           "record_names"]
+
+RECORD_MARK = "_bearingheat_record_"
+
+
+def record_value(cells: str, digest: str) -> str:
+    """The defined name's value: a text constant (Excel keeps a name's text as it is)."""
+    return f'"{cells} {digest}"'
+
+
+def parse_record(value: str | None) -> tuple[str, str] | None:
+    """(range, digest) of a record's value; None for a value that is no record."""
+    match = re.fullmatch(r'\s*=?"([A-Z]+\d+:[A-Z]+\d+) ([0-9a-f]{16})"\s*', value or "")
+    return (match.group(1), match.group(2)) if match else None
+
+
+@dataclass
+class SheetCells:
+    """The cells with a value of a worksheet part, in document order: (column, row, kind, value) with kind 'n'
+    (number), 't' (text), 'b' (boolean), 'e' (error), 'f' (formula, no value); and what else the digest holds."""
+
+    cells: list[tuple[int, int, str, str]]
+    extras: str
+
+    @property
+    def extent(self) -> str:
+        """The range from A1 to the last column and row holding a value."""
+        if not self.cells:
+            return "A1:A1"
+        return f"A1:{get_column_letter(max(c for c, *_ in self.cells))}{max(r for _, r, *_ in self.cells)}"
+
+    def digest(self, cells: str) -> str:
+        """The digest of what the sheet holds inside ``cells`` (a range)."""
+        low_col, low_row, high_col, high_row = range_boundaries(cells)
+        sha = hashlib.sha256(self.extras.encode())
+        for col, row, kind, value in self.cells:
+            if low_col <= col <= high_col and low_row <= row <= high_row:
+                sha.update(f"{col},{row},{kind},{value}\n".encode("utf-8", "surrogatepass"))
+        return sha.hexdigest()[:16]
+
+    def outside(self, cells: str) -> Iterator[tuple[str, str]]:
+        """(address, value) of each cell with a value outside ``cells``, row by row."""
+        low_col, low_row, high_col, high_row = range_boundaries(cells)
+        for col, row, kind, value in sorted(self.cells, key=lambda c: (c[1], c[0])):
+            if not (low_col <= col <= high_col and low_row <= row <= high_row):
+                yield f"{get_column_letter(col)}{row}", ("a formula" if kind == "f" else value)
+
+    def table_extent(self) -> str:
+        """The range of a results sheet without a record: the header row's columns down to the last row of
+        column A (the input row of each support)."""
+        last_col = max([c for c, r, *_ in self.cells if r == 1], default=1)
+        last_row = max([r for c, r, *_ in self.cells if c == 1], default=1)
+        return f"A1:{get_column_letter(last_col)}{max(last_row, 2)}"
+
+
+def _number(text: str) -> str:
+    """A number to 6 significant digits: Excel writes 17 digits, openpyxl 16, bearingheat the shortest repr, so the
+    last bit may differ after a save; a rounding boundary falls between two such neighbours once in about 1e10
+    cells, while an edit of a result changes its first digits."""
+    try:
+        return format(float(text), ".6g")
+    except ValueError:
+        return text
+
+
+# the parts of a worksheet the record reads, as regular expressions on its text: a sheet of 10 000 supports
+# has 150 000 cells, which an XML parser visits ten times slower (a cell never holds another cell)
+_CELL = re.compile(r"<(?:\w+:)?c\b([^>]*?)(?:/>|>(.*?)</(?:\w+:)?c>)", re.DOTALL)
+_REF = re.compile(r'\br="([A-Z]{1,3})(\d+)"')
+_KIND = re.compile(r'\bt="(\w+)"')
+_VALUE = re.compile(r"<(?:\w+:)?v>([^<]*)</(?:\w+:)?v>")
+_TEXT = re.compile(r"<(?:\w+:)?t(?:\s[^>]*)?>([^<]*)</(?:\w+:)?t>|<(?:\w+:)?t\s*/>")
+_PHONETIC = re.compile(r"<(?:\w+:)?rPh\b.*?</(?:\w+:)?rPh>", re.DOTALL)
+_FORMULA = re.compile(r"<(?:\w+:)?f[\s>/]")
+_TAB = re.compile(r"<(?:\w+:)?tabColor\b([^>]*?)/?>")
+
+
+def _texts(inner: str) -> str:
+    if inner.startswith("<is><t>") and inner.endswith("</t></is>") and inner.count("<") == 4:  # bearingheat's
+        plain = inner[7:-9]
+        return html.unescape(plain) if "&" in plain else plain
+    return html.unescape("".join(_TEXT.findall(_PHONETIC.sub("", inner))))
+
+
+def read_cells(data: bytes, shared: list[str] | None = None) -> SheetCells:
+    """The cells of the worksheet part ``data`` (``shared``: the workbook's shared strings)."""
+    text = data.decode("utf-8", "replace")
+    shared = shared or []
+    cells: list[tuple[int, int, str, str]] = []
+    columns: dict[str, int] = {}
+    for attributes, inner in _CELL.findall(text):
+        if not inner:
+            continue
+        ref = _REF.search(attributes)
+        if ref is None:
+            continue
+        kind = _KIND.search(attributes)
+        cell = _cell(kind.group(1) if kind else "n", inner, shared)
+        if cell is not None:
+            letters = ref.group(1)
+            col = columns.get(letters)
+            if col is None:
+                col = columns[letters] = column_index_from_string(letters)
+            cells.append((col, int(ref.group(2)), *cell))
+    tab = _TAB.search(text)
+    tab_text = ",".join(sorted(_ATTRIBUTE_ANY.findall(tab.group(1)))) if tab else ""
+    counts = [len(re.findall(rf"<(?:\w+:)?{tag}\b", text)) if tag in text else 0
+              for tag in ("cfRule", "dataValidation", "mergeCell")]
+    return SheetCells(cells, f"tab {tab_text}; rules {counts[0]}; validations {counts[1]}; merged {counts[2]}\n")
+
+
+_ATTRIBUTE_ANY = re.compile(r'(\w+="[^"]*")')
+
+
+def _cell(kind: str, inner: str, shared: list[str]) -> tuple[str, str] | None:
+    if kind == "n" and inner.startswith("<v>") and inner.endswith("</v>"):  # most cells: a number
+        return "n", _number(inner[3:-4])
+    if _FORMULA.search(inner):
+        return "f", ""
+    if kind == "inlineStr":
+        text = _texts(inner)
+        return ("t", text) if text else None
+    value = _VALUE.search(inner)
+    if value is None:
+        return None
+    if kind == "s":
+        index = int(value.group(1)) if value.group(1).strip().isdigit() else -1
+        text = shared[index] if 0 <= index < len(shared) else ""
+        return ("t", text) if text else None
+    if kind in ("str", "e", "b"):
+        return ("t" if kind == "str" else kind), html.unescape(value.group(1))
+    return "n", _number(value.group(1))
+
+
+def foreign_edit(cells: SheetCells, recorded: tuple[str, str] | None) -> tuple[str, str | None] | None:
+    """What the designer added to a results sheet: (address, value) of the first cell with a value outside what
+    bearingheat wrote, (range, None) when the cells inside it differ from the record; None when the sheet is as
+    bearingheat wrote it (without a record: nothing outside the table)."""
+    extent = recorded[0] if recorded is not None else cells.table_extent()
+    first = next(cells.outside(extent), None)
+    if first is not None:
+        return first
+    if recorded is not None and cells.digest(extent) != recorded[1]:
+        return extent, None
+    return None
+
+
+def shared_strings(data: bytes | None) -> list[str]:
+    """The texts of ``xl/sharedStrings.xml`` (rich text joined, phonetic guides left out)."""
+    if data is None:
+        return []
+    return [_texts(inner) for inner in re.findall(r"<(?:\w+:)?si>(.*?)</(?:\w+:)?si>|<(?:\w+:)?si/>",
+                                                   data.decode("utf-8", "replace"), re.DOTALL)]
+
+
+def record_names(names: Iterable[tuple[str, str]]) -> dict[int, tuple[str, str] | None]:
+    """{k: (range, digest)} of the records among (defined name, value) pairs."""
+    out: dict[int, tuple[str, str] | None] = {}
+    for name, value in names:
+        match = re.fullmatch(rf"{RECORD_MARK}(\d+)", name or "", re.IGNORECASE)
+        if match is not None:
+            out[int(match.group(1))] = parse_record(value)
+    return out
