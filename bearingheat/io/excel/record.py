@@ -105,9 +105,10 @@ def _number(text: str) -> str:
 
 # the parts of a worksheet the record reads, as regular expressions on its text: a sheet of 10 000 supports
 # has 150 000 cells, which an XML parser visits ten times slower (a cell never holds another cell)
-_CELL = re.compile(r"<(?:\w+:)?c\b([^>]*?)(?:/>|>(.*?)</(?:\w+:)?c>)", re.DOTALL)
-_REF = re.compile(r'\br="([A-Z]{1,3})(\d+)"')
-_KIND = re.compile(r'\bt="(\w+)"')
+# a cell's address and kind read by lookaheads in its start tag, whatever the order of its attributes: one match a
+# cell, no search of its attributes afterwards
+_CELL_PARTS = re.compile(r'<(?:\w+:)?c\b(?=[^>]*?\br="([A-Z]{1,3})(\d+)")(?=(?:[^>]*?\bt="(\w+)")?)[^>]*?'
+                         r"(?:/>|>(.*?)</(?:\w+:)?c>)", re.DOTALL)
 _VALUE = re.compile(r"<(?:\w+:)?v>([^<]*)</(?:\w+:)?v>")
 _TEXT = re.compile(r"<(?:\w+:)?t(?:\s[^>]*)?>([^<]*)</(?:\w+:)?t>|<(?:\w+:)?t\s*/>")
 _PHONETIC = re.compile(r"<(?:\w+:)?rPh\b.*?</(?:\w+:)?rPh>", re.DOTALL)
@@ -128,20 +129,20 @@ def read_cells(data: bytes, shared: list[str] | None = None) -> SheetCells:
     shared = shared or []
     cells: list[tuple[int, int, str, str]] = []
     columns: dict[str, int] = {}
-    for attributes, inner in _CELL.findall(text):
+    for letters, row, kind, inner in _CELL_PARTS.findall(text):  # (a cell without r: no address, left out)
         if not inner:
             continue
-        ref = _REF.search(attributes)
-        if ref is None:
-            continue
-        kind = _KIND.search(attributes)
-        cell = _cell(kind.group(1) if kind else "n", inner, shared)
+        if not kind and inner.startswith("<v>") and inner.endswith("</v>"):  # most cells: a number, inline here
+            cell: tuple[str, str] | None = ("n", _number(inner[3:-4]))
+        elif inner.startswith(("<f>", "<f ")):  # a formula first (what bearingheat's live sheets hold)
+            cell = ("f", "")
+        else:
+            cell = _cell(kind or "n", inner, shared)
         if cell is not None:
-            letters = ref.group(1)
             col = columns.get(letters)
             if col is None:
                 col = columns[letters] = column_index_from_string(letters)
-            cells.append((col, int(ref.group(2)), *cell))
+            cells.append((col, int(row), *cell))
     tab = _TAB.search(text)
     tab_text = ",".join(sorted(_ATTRIBUTE_ANY.findall(tab.group(1)))) if tab else ""
     counts = [len(re.findall(rf"<(?:\w+:)?{tag}\b", text)) if tag in text else 0
@@ -155,7 +156,7 @@ _ATTRIBUTE_ANY = re.compile(r'(\w+="[^"]*")')
 def _cell(kind: str, inner: str, shared: list[str]) -> tuple[str, str] | None:
     if kind == "n" and inner.startswith("<v>") and inner.endswith("</v>"):  # most cells: a number
         return "n", _number(inner[3:-4])
-    if _FORMULA.search(inner):
+    if "f" in inner and _FORMULA.search(inner):  # (the substring test first: most cells hold no formula)
         return "f", ""
     if kind == "inlineStr":
         text = _texts(inner)
