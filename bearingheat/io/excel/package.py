@@ -349,14 +349,14 @@ def _foreign_edit(package: Package, sheet: _Sheet, shared_part: str | None, reco
         what = (f"sheet {sheet.name!r} was edited since bearingheat wrote it: what {sheet_ref(sheet.name)}!{where} "
                 "holds (a value, a formula, a conditional format, a validation, merged cells or the tab colour) "
                 "differs from what bearingheat wrote")
-        todo = "move your edits to another sheet or run with -o to write a copy"
+        remedy = "move your edits to another sheet or run with -o to write a copy"
     else:
         shown = value if len(value) <= 60 else value[:57] + "..."
         what = f"{sheet_ref(sheet.name)}!{where} holds {shown!r} that bearingheat did not write"
-        todo = "move it to another sheet or run with -o to write a copy"
+        remedy = "move it to another sheet or run with -o to write a copy"
     if target is not None:
         return [f"{what}; the copy {target} has the results sheet without it (the workbook keeps it)"]
-    raise WorkbookContentError(f"{package.path}: {what}; {todo}; the file is unchanged")
+    raise WorkbookContentError(f"{package.path}: {what}; {remedy}; the file is unchanged")
 
 
 def _drop_from_calc_chain(data: bytes, sheet_id: int, where: str, path: str | os.PathLike[str]) -> bytes | None:
