@@ -28,7 +28,6 @@ friction model (each candidate applies itself, :meth:`Candidate.apply`).
 from __future__ import annotations
 
 import math
-import re
 from dataclasses import dataclass, field
 from typing import Any, cast
 
@@ -45,7 +44,8 @@ from bearingheat.calc.messages import Labels
 from bearingheat.calc.fill import fill_from_catalogue
 from bearingheat.calc.models import DEFAULT_MODEL, compute_supports
 from bearingheat.calc.supports import SupportArrays, per_distinct
-from bearingheat.calc.conversion import to_catalogue_units
+from bearingheat.calc.conversion import (OTHER_UNIT_FORM, blank_cell, not_a_number, to_catalogue_units,
+                                         with_decimal_point)
 from bearingheat.errors import DiagnoseError, InputError, UnitError
 from bearingheat.kernels import friction
 from bearingheat.units import convert_column, parse_unit
@@ -128,27 +128,12 @@ def row_number(rows: np.ndarray | None, position: int) -> int:
     return int(rows[position]) if rows is not None else position + 1
 
 
-def _with_decimal_point(value: Any) -> Any:
-    """A text number with a decimal comma as pandas reads numbers ('3,2' -> '3.2'); text with a point is no
-    number then ('1.480' is no 1.48), as at calc's unit boundary; numbers and blanks as they are."""
-    if not isinstance(value, str):
-        return value
-    return None if "." in value else value.replace(",", ".")
-
-
 def numbers_of(values: pd.Series, decimal: str = ".") -> np.ndarray:
     """The cells of a measured column as numbers, text read with the file's decimal mark (``attrs['decimal']``,
     '.' or ','); cells that are no numbers are NaN (each distinct text looked at once)."""
     if decimal == "," and not pd.api.types.is_numeric_dtype(values.dtype):
-        values = pd.Series(per_distinct(values, _with_decimal_point), index=values.index, dtype=object)
+        values = pd.Series(per_distinct(values, with_decimal_point), index=values.index, dtype=object)
     return pd.to_numeric(values, errors="coerce").to_numpy(dtype=float)
-
-
-def not_a_number(value: Any, header: str, decimal: str = ".") -> str:
-    """The message of a cell that is no number, with the decimal mark when the text holds the other one."""
-    other = {".": ",", ",": "."}[decimal]
-    mark = f" (the decimal mark is {decimal!r})" if isinstance(value, str) and other in value else ""
-    return f"{value!r} is not a number for {header}{mark}"
 
 
 def _measured_column(table: pd.DataFrame, name: str, row_errors: list[list[str]], rows: np.ndarray | None,
@@ -170,7 +155,7 @@ def _measured_column(table: pd.DataFrame, name: str, row_errors: list[list[str]]
     raw = table[header]
     numbers = numbers_of(raw, decimal)
     for i, (num, value) in enumerate(zip(numbers, raw.to_numpy(dtype=object))):
-        if np.isnan(num) and not _blank(value):
+        if np.isnan(num) and not blank_cell(value):
             row_errors[i].append(f"row {row_number(rows, i)}: {not_a_number(value, header, decimal)}")
     try:  # the unit reads (above): a refusal here is its dimension
         converted, _ = convert_column(numbers, unit_text, target, name=name, header=header)
@@ -183,10 +168,6 @@ def _measured_column(table: pd.DataFrame, name: str, row_errors: list[list[str]]
 #: contract (T_bearing)
 T_OIL_RANGE = cast(tuple[float, float], column("T_bearing").valid)
 
-
-#: a header that writes its unit another way than 'name [unit]': 'T_oil (degC)', 't(h)', 'M, N*mm', 'M/N*mm',
-#: 'M in N*mm' (the forms calc refuses for its own columns, bearingheat.calc.conversion)
-_OTHER_UNIT_FORM = re.compile(r"^\s*(\w+)\s*(?:\((.+)\)|,\s*(.+)|/\s*(.+)|\s+in\s+(.+))\s*$")
 
 #: measured column -> what becomes of the table when its header is not read
 _UNREAD = {"M": "the table would have no measured torque",
@@ -206,7 +187,7 @@ def _refuse_lookalikes(headers: Any, names: list[str]) -> None:
         if name in MEASURED_UNITS or name == "group":
             continue
         unit = parse_header(header)[1]
-        other_form = _OTHER_UNIT_FORM.match(name)
+        other_form = OTHER_UNIT_FORM.match(name)  # ('T_oil (degC)', 't(h)': calc's forms)
         base, typed = (other_form.group(1), next(g for g in other_form.groups()[1:] if g)) if other_form \
             else (name, unit)
         meant = base if base in wanted else by_case.get(base.casefold()) if len(base) > 1 else None
@@ -217,10 +198,6 @@ def _refuse_lookalikes(headers: Any, names: list[str]) -> None:
         raise DiagnoseError(f"column {header!r} looks like {meant!r}, which is not read from it: name it "
                             f"{written!r} (headers are 'name [unit]', the name in its own letters); as it is, "
                             f"{_UNREAD[meant]}")
-
-
-def _blank(value: Any) -> bool:
-    return value is None or (isinstance(value, float) and math.isnan(value)) or str(value).strip() == ""
 
 
 def read_measurements(table: pd.DataFrame) -> MeasuredData:
@@ -290,7 +267,7 @@ def read_measurements(table: pd.DataFrame) -> MeasuredData:
     if "group" in names:  # a blank label would pool the unlabelled rows of every run into one group
         header = table.columns[names.index("group")]
         labels = table[header]
-        for position in np.flatnonzero(per_distinct(labels, _blank).astype(bool)).tolist():
+        for position in np.flatnonzero(per_distinct(labels, blank_cell).astype(bool)).tolist():
             row_errors[position].append(f"{row(position)}: {header} is blank; with a group column every row needs its "
                                  "label (the run it belongs to)")
         group = labels.astype(str).to_numpy()

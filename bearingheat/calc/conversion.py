@@ -25,7 +25,8 @@ from bearingheat.calc.supports import column_codes, per_distinct, text_categoric
 from bearingheat.errors import InputError, UnitError
 from bearingheat.units import convert_column
 
-__all__ = ["to_catalogue_units", "ConvertedTable", "refuse_result_columns"]
+__all__ = ["to_catalogue_units", "ConvertedTable", "refuse_result_columns", "not_a_number", "with_decimal_point",
+           "blank_cell", "OTHER_UNIT_FORM"]
 
 
 @dataclass
@@ -73,7 +74,7 @@ def _convert_column(values: pd.Series, header: str, unit_text: str | None, targe
     else:
         given = values.where(~logical, np.nan) if logical.any() else values
         if decimal == ",":  # '3,2' is 3.2 and '1.480' no number (each distinct text looked at once)
-            given = pd.Series(per_distinct(given, _with_decimal_point), index=values.index, dtype=object)
+            given = pd.Series(per_distinct(given, with_decimal_point), index=values.index, dtype=object)
         numeric = pd.to_numeric(given, errors="coerce").to_numpy(dtype=float)
 
     def where(i):
@@ -84,16 +85,14 @@ def _convert_column(values: pd.Series, header: str, unit_text: str | None, targe
     if values.dtype.kind == "f" or not len(missing):  # a missing number is a blank cell
         blank = np.ones(len(missing), dtype=bool)
     else:
-        blank = per_distinct(values.iloc[missing], _blank).astype(bool)
+        blank = per_distinct(values.iloc[missing], blank_cell).astype(bool)
     for i in missing[~blank | logical[missing]].tolist():  # cells that are no numbers; blank cells are not given
         raw = values.iloc[i]
         raw = raw.item() if isinstance(raw, np.generic) else raw  # as typed: True, not np.True_
         if logical[i]:
             errors[i].append(f"{where(i)}{raw!r} is a logical value, not a number for {header}")
-        elif not _blank(raw):
-            mark = f" (the decimal mark is {decimal!r})" if isinstance(raw, str) and _DECIMAL_MARKS[decimal] in raw \
-                else ""
-            errors[i].append(f"{where(i)}{_as_typed(raw)!r} is not a number for {header}{mark}")
+        elif not blank_cell(raw):
+            errors[i].append(f"{where(i)}{not_a_number(raw, header, decimal, shown=_as_typed(raw))}")
     try:
         converted, factor = convert_column(numeric, unit_text, target, name=name, header=header, copy=False)
     except UnitError as exc:
@@ -120,7 +119,14 @@ def _convert_column(values: pd.Series, header: str, unit_text: str | None, targe
 _DECIMAL_MARKS = {".": ",", ",": "."}
 
 
-def _with_decimal_point(value):
+def not_a_number(value, header: str, decimal: str = ".", shown=None) -> str:
+    """The message of a cell that is no number (``shown``: the cell as the message shows it, else ``value``), with
+    the decimal mark where a text holds the other mark."""
+    mark = f" (the decimal mark is {decimal!r})" if isinstance(value, str) and _DECIMAL_MARKS[decimal] in value else ""
+    return f"{(value if shown is None else shown)!r} is not a number for {header}{mark}"
+
+
+def with_decimal_point(value):
     """A text number with a decimal comma as pandas reads numbers ('3,2' -> '3.2'); text with a point is no
     number then (None: '1.480' is no 1.48); numbers and blanks as they are."""
     if not isinstance(value, str):
@@ -164,7 +170,8 @@ def _text_cell(value) -> str:
     return str(value).strip()
 
 
-def _blank(value) -> bool:
+def blank_cell(value) -> bool:
+    """Whether a cell is blank: None, NaN or only spaces."""
     return value is None or (isinstance(value, float) and math.isnan(value)) or str(value).strip() == ""
 
 
@@ -197,7 +204,7 @@ def to_catalogue_units(table: pd.DataFrame, *, units: dict[str, str] | None = No
         target = known[name]
         display = f"{name} [{unit_text}]" if unit_text not in (None, "", "-", "1") else name
         if target == "":
-            columns[name] = pd.Series(text_categorical(table[header], lambda v: None if _blank(v) else _text_cell(v)),
+            columns[name] = pd.Series(text_categorical(table[header], lambda v: None if blank_cell(v) else _text_cell(v)),
                                       index=table.index)
             continue
         columns[name], factor = _convert_column(table[header], display, unit_text, target, cell, name, errors,
@@ -210,7 +217,7 @@ def to_catalogue_units(table: pd.DataFrame, *, units: dict[str, str] | None = No
 
 
 #: a header that writes its unit another way than 'name [unit]': 'Fr (kN)', 'Fr, kN', 'Fr/kN', 'Fr in kN'
-_OTHER_UNIT_FORM = re.compile(r"^\s*(\w+)\s*(?:\((.+)\)|,\s*(.+)|/\s*(.+)|\s+in\s+(.+))\s*$")
+OTHER_UNIT_FORM = re.compile(r"^\s*(\w+)\s*(?:\((.+)\)|,\s*(.+)|/\s*(.+)|\s+in\s+(.+))\s*$")
 
 
 def _refuse_lookalikes(headers, known: dict[str, str]) -> None:
@@ -232,7 +239,7 @@ def _refuse_lookalikes(headers, known: dict[str, str]) -> None:
     for header, (name, unit) in names.items():
         if name in known:
             continue
-        other_form = _OTHER_UNIT_FORM.match(name)
+        other_form = OTHER_UNIT_FORM.match(name)
         base, typed = (other_form.group(1), next(g for g in other_form.groups()[1:] if g)) if other_form \
             else (name, unit)
         meant = base if base in numeric else by_case.get(base.casefold()) if len(base) > 1 else None
