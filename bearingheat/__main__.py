@@ -1,5 +1,5 @@
 import sys
 
-from bearingheat.cli import main
+from bearingheat.cli import command_line
 
-sys.exit(main())
+sys.exit(command_line())

@@ -29,7 +29,7 @@ from lxml.etree import LxmlError
 
 from bearingheat.errors import BearingheatError, UsageError
 
-__all__ = ["main", "COMMANDS", "UsageError", "FAULTS", "describe_fault"]
+__all__ = ["main", "command_line", "COMMANDS", "UsageError", "FAULTS", "describe_fault"]
 
 #: faults of the machine or of a file rather than of the input's content: exit 2 with one line, no traceback
 FAULTS: tuple[type[BaseException], ...] = (OSError, zipfile.BadZipFile, zlib.error, ElementTree.ParseError,
@@ -128,9 +128,25 @@ def describe_fault(exc: BaseException, args: argparse.Namespace | None = None) -
     return _one_line(f"{source}: {cause}" if source else cause)
 
 
+def _command_of(arguments: list[str]) -> str | None:
+    """The command named in ``arguments`` (the options before it are --help, --version)."""
+    return next((a for a in arguments if not a.startswith("-")), None)
+
+
+def command_line() -> int:
+    """The ``bearingheat`` program (and ``python -m bearingheat``): :func:`main` in a process of its own, where pint
+    may keep its parsed unit definitions in the user's cache folder (a faster start; see
+    :func:`bearingheat.units.use_definition_cache`). :func:`main` alone leaves the caller's registry as it is."""
+    arguments = sys.argv[1:]
+    if _command_of(arguments) in COMMANDS:  # (--help and --version load no units)
+        from bearingheat.units import use_definition_cache
+        use_definition_cache()
+    return main(arguments)
+
+
 def main(argv: list[str] | None = None) -> int:
     arguments = sys.argv[1:] if argv is None else list(argv)
-    command = next((a for a in arguments if not a.startswith("-")), None)  # the options before it are --help, --version
+    command = _command_of(arguments)
     parser = build_parser([command] if command in COMMANDS else [])  # --help and --version load no command
     args = parser.parse_args(arguments)
     try:

@@ -53,3 +53,36 @@ def test_calc_of_a_table_loads_neither_the_excel_bridge_nor_scipy_optimize(tmp_p
              "print(status, 'openpyxl' in sys.modules, 'scipy.optimize' in sys.modules)")
     out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True).stdout
     assert out.split() == ["0", "False", "False"]
+
+
+def _program(argv, cache_home):
+    """``python -m bearingheat`` in a process of its own, with the user's cache folder at ``cache_home``."""
+    env = {**__import__("os").environ, "XDG_CACHE_HOME": str(cache_home)}
+    return subprocess.run([sys.executable, "-m", "bearingheat", *argv], capture_output=True, text=True, env=env)
+
+
+def test_the_program_keeps_pints_parsed_definitions_in_the_users_cache_and_gives_the_same_output(tmp_path, capsys):
+    from bearingheat.cli import main
+    main(["lookup", "6205"])
+    expected = capsys.readouterr().out
+    first, again = _program(["lookup", "6205"], tmp_path), _program(["lookup", "6205"], tmp_path)
+    assert (first.returncode, first.stdout, again.returncode, again.stdout) == (0, expected, 0, expected)
+    assert {p.suffix for p in (tmp_path / "pint").iterdir()} == {".json", ".pickle"}  # pint's own cache files
+
+
+def test_a_damaged_definition_cache_only_slows_the_start(tmp_path):
+    assert _program(["lookup", "6205"], tmp_path).returncode == 0
+    for pickled in (tmp_path / "pint").glob("*.pickle"):
+        pickled.write_bytes(pickled.read_bytes()[:100])  # cut short, as by a run killed while it wrote
+    damaged = _program(["lookup", "6205"], tmp_path)
+    assert (damaged.returncode, damaged.stderr) == (0, "")
+    assert "6205" in damaged.stdout and "C0" in damaged.stdout
+
+
+def test_the_definition_cache_leaves_a_registry_in_use_alone():
+    import pint
+    from bearingheat.units import use_definition_cache, ureg
+    ureg().parse_units("mm")  # the application registry, loaded
+    registry = pint.get_application_registry().get()
+    assert use_definition_cache() is False
+    assert pint.get_application_registry().get() is registry
