@@ -92,8 +92,10 @@ def _peak_lines(rows: int, folder: Path) -> dict[str, str]:
                                       f"bh.calc(demo_rows({rows}, heat_balance=True))",
         "bare read_csv + to_parquet": f"import pandas as pd; pd.read_csv({str(source)!r}, engine='pyarrow')"
                                       f".to_parquet({str(folder / 'bare.parquet')!r})",
-        "bearingheat calc -o .parquet": f"from bearingheat.cli import main; main(['calc', {str(source)!r}, '-o', "
-                                        f"{str(folder / 'out.parquet')!r}, '-q', '--force'])",
+        # the program's own entry point, as the shell runs it (sys.argv; pint's definition cache)
+        "bearingheat calc -o .parquet": f"import sys; sys.argv = ['bearingheat', 'calc', {str(source)!r}, '-o', "
+                                        f"{str(folder / 'out.parquet')!r}, '-q', '--force']; "
+                                        f"from bearingheat.cli import command_line; command_line()",
     }
 
 
