@@ -112,6 +112,8 @@ class ModelFit:
     bic: float
     cv_rmse: float  # [1/min], interleaved k-fold
     fitted: np.ndarray  # model n at the samples [1/min]
+    cut_at_bound: np.ndarray  # True where the interval's low end is the parameter's bound (M_c >= 0), not t·SE below
+
 
     def value(self, name: str) -> float:
         return float(self.values[self.parameters.index(name)]) if name in self.parameters else 0.0
@@ -122,6 +124,11 @@ class ModelFit:
             return (0.0, 0.0)
         k = self.parameters.index(name)
         return (float(self.ci_low[k]), float(self.ci_high[k]))
+
+    def interval_cut(self, name: str) -> bool:
+        """Whether the interval of ``name`` ends at the parameter's lower bound (e.g. M_c >= 0) rather than t·SE
+        below the value."""
+        return name in self.parameters and bool(self.cut_at_bound[self.parameters.index(name)])
 
 
 def _least_squares_fit(t: np.ndarray, n: np.ndarray, build_torque: TorqueBuilder, start: np.ndarray,
@@ -166,8 +173,11 @@ def _fit_model(name: str, t: np.ndarray, n: np.ndarray, build_torque: TorqueBuil
         held_out_sq += float(err @ err)
     cv_rmse = math.sqrt(held_out_sq / count)
     fitted = rundown_speed(t, float(t[0]), values[0], build_torque(values[1:]), I)
-    return ModelFit(name, ("n0",) + tuple(parameters), values, std_errors, values - half_width,
-                    values + half_width, math.sqrt(rss / count), bic, cv_rmse, fitted)
+    # a parameter bounded below (n0, M_c, f0, M1 >= 0) cannot lie below its bound, so the interval stops there: the
+    # same coverage, without negative torques
+    cut_at_bound = values - half_width < lower
+    return ModelFit(name, ("n0",) + tuple(parameters), values, std_errors, np.maximum(values - half_width, lower),
+                    values + half_width, math.sqrt(rss / count), bic, cv_rmse, fitted, cut_at_bound)
 
 
 def _plain_builder(components: tuple[str, ...]) -> TorqueBuilder:

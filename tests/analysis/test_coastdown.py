@@ -5,6 +5,7 @@ import math
 import re
 
 import numpy as np
+from scipy import stats
 import pytest
 from coastdown_helpers import integrate_rundown, spindle_torque
 from scipy.optimize import curve_fit
@@ -99,6 +100,26 @@ def test_summary_keys():
     assert summary["c_v_ci95 [N*m*s]"] is None and summary["c_a_ci95 [N*m*s^2]"] is None
     low, high = summary["M_c_ci95 [N*m]"]
     assert low < summary["M_c [N*m]"] < high
+
+
+def test_the_interval_of_a_torque_that_cannot_be_negative_stops_at_zero():
+    """A small Coulomb torque under much noise (M_c = 0.002 N·m, 49 samples, σ = 15 1/min): the Wald interval
+    M_c ± t·SE reaches below 0, where no friction torque lies; it stops at 0 and the report says so."""
+    from bearingheat.io.reports.coastdown import render_report
+    t, n, _ = integrate_rundown(plain_torque(0.002, 0.008), 2.6, 930.0, 20.0, 15.0, 1, fraction=0.5)
+    result = cd.coastdown_analysis(t, n, 2.6, 1100.0, 25.0)
+    fit = result.chosen
+    assert result.model == "coulomb_viscous"
+    k = fit.parameters.index("M_c")
+    half_width = stats.t.ppf(0.975, t.size - 3) * fit.std_errors[k]  # n0, M_c, c_v
+    assert fit.value("M_c") - half_width < 0
+    assert fit.interval("M_c") == (0.0, pytest.approx(fit.value("M_c") + half_width, rel=1e-12))
+    assert fit.interval_cut("M_c") and not fit.interval_cut("c_v") and not fit.interval_cut("c_a")
+    low, high = fit.interval("c_v")  # free in sign: symmetric about its value
+    assert fit.value("c_v") - low == pytest.approx(high - fit.value("c_v"), rel=1e-12)
+    assert result.summary()["M_c_ci95 [N*m]"][0] == 0.0
+    assert f"(95 % CI 0 to {fit.interval('M_c')[1]:.4g}, cut at 0: it is not negative)" in render_report(
+        result, "rundown.csv", None)
 
 
 # ----------------------------------------------------------------- bad input

@@ -60,7 +60,8 @@ def draw_coastdown(result: CoastdownResult):
 
 def _ci(fit, name, digits=4):
     low, high = fit.interval(name)
-    return f"{fit.value(name):.{digits}g} (95 % CI {low:.{digits}g} to {high:.{digits}g})"
+    cut = ", cut at 0: it is not negative" if fit.interval_cut(name) else ""
+    return f"{fit.value(name):.{digits}g} (95 % CI {low:.{digits}g} to {high:.{digits}g}{cut})"
 
 
 def render_report(result: CoastdownResult, source: str, png: str | None) -> str:
