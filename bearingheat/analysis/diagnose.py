@@ -44,7 +44,7 @@ from bearingheat.calc.messages import Labels
 from bearingheat.calc.fill import fill_from_catalogue
 from bearingheat.calc.models import DEFAULT_MODEL, compute_supports
 from bearingheat.calc.supports import SupportArrays, per_distinct
-from bearingheat.calc.conversion import (OTHER_UNIT_FORM, blank_cell, not_a_number, to_catalogue_units,
+from bearingheat.calc.conversion import (blank_cell, lookalike_column, not_a_number, to_catalogue_units,
                                          with_decimal_point)
 from bearingheat.errors import DiagnoseError, InputError, UnitError
 from bearingheat.kernels import friction
@@ -176,28 +176,15 @@ _UNREAD = {"M": "the table would have no measured torque",
            "group": "the rows would be grouped by operating point instead of by these labels"}
 
 
-def _refuse_lookalikes(headers: Any, names: list[str]) -> None:
+def _refuse_lookalikes(headers: Any) -> None:
     """:class:`DiagnoseError` for a header that is not read but looks like a measured column the table lacks
-    (M, T_oil, t, group): the unit written another way ('T_oil (degC)', 't(h)') or the name in other letter
-    case ('Group', 't_OIL [degC]'; names of two or more letters, as calc's rule for its own columns)."""
-    present = set(names)
-    wanted = [name for name in (*MEASURED_UNITS, "group") if name not in present]
-    by_case = {name.casefold(): name for name in wanted if len(name) > 1}
-    for header, name in zip(headers, names):
-        if name in MEASURED_UNITS or name == "group":
-            continue
-        unit = parse_header(header)[1]
-        other_form = OTHER_UNIT_FORM.match(name)  # ('T_oil (degC)', 't(h)': calc's forms)
-        base, typed = (other_form.group(1), next(g for g in other_form.groups()[1:] if g)) if other_form \
-            else (name, unit)
-        meant = base if base in wanted else by_case.get(base.casefold()) if len(base) > 1 else None
-        if meant is None:
-            continue
-        target = MEASURED_UNITS.get(meant)
-        written = f"{meant} [{(typed or target).strip()}]" if target else meant
-        raise DiagnoseError(f"column {header!r} looks like {meant!r}, which is not read from it: name it "
-                            f"{written!r} (headers are 'name [unit]', the name in its own letters); as it is, "
-                            f"{_UNREAD[meant]}")
+    (M, T_oil, t, group; :func:`~bearingheat.calc.conversion.lookalike_column`, calc's rule for its own columns):
+    the unit written another way ('T_oil (degC)', 't(h)') or the name in other letter case ('Group',
+    't_OIL [degC]'). Unlike calc's text columns, ``group`` written in the other-unit form ('group (run)') is refused
+    too: its rows would be grouped by operating point instead of by its labels."""
+    found = lookalike_column(headers, {**MEASURED_UNITS, "group": ""}, text_in_other_form=True)
+    if found is not None:
+        raise DiagnoseError(found.message("is not read", _UNREAD[found.meant]))
 
 
 def read_measurements(table: pd.DataFrame) -> MeasuredData:
@@ -215,7 +202,7 @@ def read_measurements(table: pd.DataFrame) -> MeasuredData:
         table = table[[h for h in table.columns if readable_header(h)]]
         table.attrs.update(attrs)
     names = [parse_header(h)[0] for h in table.columns]
-    _refuse_lookalikes(table.columns, names)
+    _refuse_lookalikes(table.columns)
     if "M" not in names:
         raise DiagnoseError("missing column: 'M [N*mm]' (the measured friction torque, any torque unit)")
     rows = row_numbers(table)

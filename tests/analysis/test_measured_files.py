@@ -17,6 +17,8 @@ from bearingheat.analysis.audit import audit_reference_speeds
 from bearingheat.analysis.diagnose import (DiagnoseError, diagnose, diagnose_measurements, diagnose_table,
                                            model_data, read_measurements)
 from bearingheat.analysis.lab import process_lab
+from bearingheat.calc.contract import LABEL_COLUMNS, input_units
+from bearingheat.calc.conversion import lookalike_column
 from bearingheat.cli import main
 from bearingheat.errors import AuditError, LabError
 from bearingheat.io.tables import calc_csv, read_table
@@ -154,6 +156,23 @@ def test_a_torque_header_with_its_unit_in_parentheses_is_refused():
             "column 'M (N*m)' looks like 'M', which is not read from it: name it 'M [N*m]' (headers are "
             "'name [unit]', the name in its own letters); as it is, the table would have no measured torque")):
         read_measurements(table)
+
+
+def test_one_matcher_finds_calcs_and_diagnoses_lookalikes_and_only_diagnose_refuses_a_text_column_in_unit_form():
+    """calc.conversion and diagnose had two copies of the lookalike matcher; one serves both now. A text column
+    written in the other-unit form is a note to calc ('lubrication (old)') but diagnose's group ('group (run)')."""
+    table = small_table(4)
+    table["group (run)"] = ["a", "a", "b", "b"]
+    with pytest.raises(DiagnoseError, match=_exactly(
+            "column 'group (run)' looks like 'group', which is not read from it: name it 'group' (headers are "
+            "'name [unit]', the name in its own letters); as it is, the rows would be grouped by operating point "
+            "instead of by these labels")):
+        read_measurements(table)
+    noted = small_table(4).drop(columns=["lubrication"])
+    noted["lubrication (old)"] = "grease"
+    noted["f0"] = 2.0
+    assert lookalike_column(noted.columns, input_units(), never_missed=LABEL_COLUMNS) is None
+    assert read_measurements(noted).frame["f0"].tolist() == [2.0] * 4
 
 
 def test_the_measured_column_itself_beside_a_lookalike_is_read():
