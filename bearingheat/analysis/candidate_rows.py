@@ -7,7 +7,7 @@ The candidates themselves are :mod:`bearingheat.analysis.effects`, which imports
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields, replace
 
 import numpy as np
 import pandas as pd
@@ -119,6 +119,12 @@ class ModelData:
 
     def __len__(self) -> int:
         return len(self.M)
+
+    def take(self, rows: np.ndarray) -> ModelData:
+        """The entries at positions ``rows`` (the bearing codes and names as they are)."""
+        per_row = {f.name: getattr(self, f.name)[rows] for f in fields(self)
+                   if isinstance(getattr(self, f.name), np.ndarray)}
+        return replace(self, **per_row, arrays=self.arrays.take(rows) if self.arrays is not None else None)
 
 
 @dataclass

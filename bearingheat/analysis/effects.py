@@ -350,15 +350,15 @@ class RunIn(Candidate):
 
     def fit(self, data: ModelData, rows: np.ndarray) -> Params:
         M, base, M0, t = data.M[rows], data.MR[rows], data.M0[rows], data.t[rows]
-        span = float(np.ptp(data.t)) or 1.0
+        span = float(np.ptp(t)) or 1.0
 
         def best_a(log_tau: float) -> tuple[float, float]:
             extra = M0 * np.exp(-t / math.exp(log_tau))
             a = _nonneg_scale(M, base, extra)
             return a, _weighted_sse(M, base + a * extra)
 
-        # τ between 1 % and 100 % of the observed time span: a decay slower than that is
-        # indistinguishable from a constant f0 scale within the data
+        # τ between 1 % and 100 % of the time span of the rows fitted (a training fold's own, not the held-out
+        # rows'): a decay slower than that is indistinguishable from a constant f0 scale within them
         bounds = (math.log(0.01 * span), math.log(span))
         def sse(log_tau: float) -> float:
             return best_a(log_tau)[1]
