@@ -383,12 +383,15 @@ class CandidateScore:
     significant: bool = False
     predicted: np.ndarray | None = None
     cv_predicted: np.ndarray | None = None
+    #: each fitted parameter -> 'lower' or 'upper' where its fit ended on that bound, else None (per bearing a dict)
+    at_bound: dict[str, Any] = field(default_factory=dict)
 
     def as_json(self) -> dict[str, Any]:
         def clean(x: float) -> float | None:
             return None if isinstance(x, float) and not math.isfinite(x) else x
         return {
             "applicable": self.applicable, "reason": self.reason, "parameters": self.public,
+            "at_bound": self.at_bound,
             "n_params": self.n_params, "rmse": clean(self.fit.get("rmse", math.nan)),
             "mape": clean(self.fit.get("mape", math.nan)), "cv_rmse": clean(self.cv.get("rmse", math.nan)),
             "cv_mape": clean(self.cv.get("mape", math.nan)), "cv_rel_rmse": clean(self.cv.get("rel_rmse", math.nan)),
@@ -437,6 +440,7 @@ class Diagnosis:
         return {
             "effect": self.effect,
             "parameters": chosen.public,
+            "at_bound": chosen.at_bound,
             "description": CANDIDATES[self.effect].description,
             "rmse_before": none.fit["rmse"], "rmse_after": chosen.fit["rmse"],
             "cv_rmse_before": none.cv["rmse"], "cv_rmse_after": chosen.cv["rmse"],
@@ -527,7 +531,8 @@ def diagnose(data: ModelData, *, k: int = 5, seed: int = 0, groups: np.ndarray |
         scores[name] = CandidateScore(
             name, True, "", params, candidate.public_parameters(data, params), n_params,
             error_metrics(data.M, predicted), error_metrics(data.M, cv_predicted),
-            _bic(data.M, predicted, n_params), predicted=predicted, cv_predicted=cv_predicted)
+            _bic(data.M, predicted, n_params), predicted=predicted, cv_predicted=cv_predicted,
+            at_bound=candidate.at_bound(data, params, all_rows))
     none = scores["none"]
     assert none.predicted is not None and none.cv_predicted is not None, "'none' applies to any data"
     none.delta_bic, none.cv_improvement = 0.0, 0.0

@@ -66,6 +66,8 @@ __all__ = [
     "evaluate_with_axial_load",
     "bearing_keys",
     "m1_load",
+    "bound_side",
+    "AT_BOUND_TOLERANCE",
 ]
 
 
@@ -135,6 +137,26 @@ class Candidate:
         """Parameters as written to summary.json (names with units)."""
         return dict(params)
 
+    def limits(self, data: ModelData, rows: np.ndarray) -> dict[str, tuple[Any, Any]]:
+        """The bounds (low, high) the fit of ``rows`` keeps each fitted parameter within: floats, or arrays per
+        bearing (NaN for a bearing whose parameter is not fitted); inf where a side is open."""
+        return {}
+
+    def at_bound(self, data: ModelData, params: Params, rows: np.ndarray) -> dict[str, Any]:
+        """Each fitted parameter as summary.json names it -> 'lower' or 'upper' where the fit of ``rows`` ended on
+        that bound (:func:`bound_side`), None inside them; a dict per bearing for a parameter per bearing."""
+        marks: dict[str, Any] = {}
+        for name, (low, high) in self.limits(data, rows).items():
+            public = next(p for p in self.required if p == name or p.startswith(f"{name} ["))
+            value = params[name]
+            if np.ndim(value):
+                lows, highs = np.broadcast_to(low, np.shape(value)), np.broadcast_to(high, np.shape(value))
+                marks[public] = {bearing: bound_side(v, lo, hi)
+                                 for bearing, v, lo, hi in zip(data.bearing_names, value, lows, highs)}
+            else:
+                marks[public] = bound_side(value, low, high)
+        return marks
+
     def apply(self, frame: pd.DataFrame, results: pd.DataFrame, parameters: dict[str, Any], note: str, *,
               refused: np.ndarray | None = None, domain: dict[str, Any] | None = None
               ) -> list[tuple[int, str, str]]:
@@ -175,6 +197,27 @@ class Candidate:
         raise NotImplementedError
 
 
+#: a fitted parameter within this share of its bound (0.5 %, of the bound's value) ends on it: a bounded 1-D
+#: search stops within its tolerance of a bound, not on it (a zero bound is met exactly: the fits clip to it)
+AT_BOUND_TOLERANCE = 5e-3
+
+
+def bound_side(value: float, low: float, high: float) -> str | None:
+    """'lower' or 'upper' where ``value`` ends on that bound (within :data:`AT_BOUND_TOLERANCE`), else None (also
+    for NaN bounds: a parameter not fitted).
+
+    >>> bound_side(1.0, 1.0, math.inf), bound_side(2.995, 0.9, 3.0), bound_side(2.0, 0.9, 3.0)
+    ('lower', 'upper', None)
+    """
+    if not (np.isfinite(value) and np.isfinite(low)):
+        return None
+    if value <= low + AT_BOUND_TOLERANCE * abs(low):
+        return "lower"
+    if np.isfinite(high) and value >= high - AT_BOUND_TOLERANCE * abs(high):
+        return "upper"
+    return None
+
+
 class NoEffect(Candidate):
     name = "none"
     description = "the catalogue model M0 + M1 (+ M2) as it stands"
@@ -213,6 +256,9 @@ class SealDrag(Candidate):
     def predict(self, data: ModelData, params: Params, rows: np.ndarray) -> np.ndarray:
         return data.MR[rows] + seal_drag_torque(params["M_seal"], data.bearing[rows])
 
+    def limits(self, data: ModelData, rows: np.ndarray) -> dict[str, tuple[Any, Any]]:
+        return {"M_seal": (0.0, math.inf)}
+
     def n_params(self, data: ModelData, params: Params) -> int:
         return int(np.count_nonzero(np.bincount(data.bearing, minlength=len(data.bearing_names))))
 
@@ -243,6 +289,9 @@ class F0Scale(Candidate):
     def predict(self, data: ModelData, params: Params, rows: np.ndarray) -> np.ndarray:
         return data.MR[rows] + (params["k"] - 1.0) * data.M0[rows]
 
+    def limits(self, data: ModelData, rows: np.ndarray) -> dict[str, tuple[Any, Any]]:
+        return {"k": (1.0, math.inf)}
+
     def public_parameters(self, data: ModelData, params: Params) -> dict[str, Any]:
         return {"k": float(params["k"])}
 
@@ -262,12 +311,16 @@ class ViscosityHeating(Candidate):
         return heated_total_torque(R_th, data.f0[rows], data.nu[rows], data.n[rows], data.dM[rows],
                                    data.M1[rows] + data.M2[rows]) if R_th > 0 else data.MR[rows]
 
-    def fit(self, data: ModelData, rows: np.ndarray) -> Params:
+    def limits(self, data: ModelData, rows: np.ndarray) -> dict[str, tuple[Any, Any]]:
         NR = data.NR[rows]
         top = float(np.nanmax(NR)) if len(NR) else 0.0
-        if not top > 0:
+        # ν down to e^-4 at the highest loss of the rows (no heating where there is no loss)
+        return {"R_th": (0.0, 4.0 / (VISCOSITY_TEMPERATURE_COEFFICIENT * top) if top > 0 else 0.0)}
+
+    def fit(self, data: ModelData, rows: np.ndarray) -> Params:
+        R_max = self.limits(data, rows)["R_th"][1]
+        if not R_max > 0:
             return {"R_th": 0.0}
-        R_max = 4.0 / (VISCOSITY_TEMPERATURE_COEFFICIENT * top)  # ν down to e^-4 at the highest loss
         M = data.M[rows]
 
         def sse(log_r: float) -> float:
@@ -323,6 +376,9 @@ class DragLosses(Candidate):
     def predict(self, data: ModelData, params: Params, rows: np.ndarray) -> np.ndarray:
         return data.MR[rows] + drag_loss_torque(params["c"], params["p"], data.dM[rows], data.n[rows])
 
+    def limits(self, data: ModelData, rows: np.ndarray) -> dict[str, tuple[Any, Any]]:
+        return {"c": (0.0, math.inf), "p": self.P_BOUNDS}
+
     def public_parameters(self, data: ModelData, params: Params) -> dict[str, Any]:
         return {"c": float(params["c"]), "p": float(params["p"])}
 
@@ -350,26 +406,29 @@ class RunIn(Candidate):
 
     def fit(self, data: ModelData, rows: np.ndarray) -> Params:
         M, base, M0, t = data.M[rows], data.MR[rows], data.M0[rows], data.t[rows]
-        span = float(np.ptp(t)) or 1.0
 
         def best_a(log_tau: float) -> tuple[float, float]:
             extra = M0 * np.exp(-t / math.exp(log_tau))
             a = _nonneg_scale(M, base, extra)
             return a, _weighted_sse(M, base + a * extra)
 
-        # τ between 1 % and 100 % of the time span of the rows fitted (a training fold's own, not the held-out
-        # rows'): a decay slower than that is indistinguishable from a constant f0 scale within them
-        bounds = (math.log(0.01 * span), math.log(span))
         def sse(log_tau: float) -> float:
             return best_a(log_tau)[1]
 
-        grid = np.linspace(*bounds, 21)
+        shortest, longest = self.limits(data, rows)["tau"]
+        grid = np.linspace(math.log(shortest), math.log(longest), 21)
         log_tau = _refine(sse, grid, *_grid_best(sse, grid), 1e-4)
         a, _ = best_a(log_tau)
         return {"a": a, "tau": math.exp(log_tau)}
 
     def predict(self, data: ModelData, params: Params, rows: np.ndarray) -> np.ndarray:
         return data.MR[rows] + params["a"] * data.M0[rows] * np.exp(-data.t[rows] / params["tau"])
+
+    def limits(self, data: ModelData, rows: np.ndarray) -> dict[str, tuple[Any, Any]]:
+        # τ between 1 % and 100 % of the time span of the rows fitted (a training fold's own, not the held-out
+        # rows'): a decay slower than that is indistinguishable from a constant f0 scale within them
+        span = float(np.ptp(data.t[rows])) or 1.0
+        return {"a": (0.0, math.inf), "tau": (0.01 * span, span)}
 
     def public_parameters(self, data: ModelData, params: Params) -> dict[str, Any]:
         return {"a": float(params["a"]), "tau [h]": float(params["tau"])}
@@ -413,6 +472,21 @@ class Preload(Candidate):
     def _m1(self, data: ModelData, rows: np.ndarray, F_pre: np.ndarray | float) -> np.ndarray:
         return evaluate_with_axial_load(self._arrays(data), rows, data.Fa[rows] + F_pre)
 
+    def _top(self, data: ModelData, mine: np.ndarray) -> float:
+        """The largest preload [N] searched for a bearing's rows ``mine``: its C0, else 10 times its largest load."""
+        arrays = self._arrays(data)
+        C0_rows = np.broadcast_to(arrays.C0, (arrays.size,))[mine]  # (one NaN where C0 is no column)
+        C0 = np.nanmax(C0_rows) if np.any(~np.isnan(C0_rows)) else np.nan
+        return C0 if C0 > 0 else 10.0 * max(float(np.max(data.Fr[mine] + data.Fa[mine])), 1.0)
+
+    def limits(self, data: ModelData, rows: np.ndarray) -> dict[str, tuple[Any, Any]]:
+        low, high = np.full(len(data.bearing_names), np.nan), np.full(len(data.bearing_names), np.nan)
+        for code in self._axial_bearings(data):
+            mine = rows[data.bearing[rows] == code]
+            if len(mine):
+                low[code], high[code] = 0.0, self._top(data, mine)
+        return {"F_pre": (low, high)}
+
     def fit(self, data: ModelData, rows: np.ndarray) -> Params:
         F_pre = np.zeros(len(data.bearing_names))
         for code in self._axial_bearings(data):
@@ -420,10 +494,7 @@ class Preload(Candidate):
             if len(mine) == 0:
                 continue
             M, M0 = data.M[mine], data.M0[mine]
-            arrays = self._arrays(data)
-            C0_rows = np.broadcast_to(arrays.C0, (arrays.size,))[mine]  # (one NaN where C0 is no column)
-            C0 = np.nanmax(C0_rows) if np.any(~np.isnan(C0_rows)) else np.nan
-            top = C0 if C0 > 0 else 10.0 * max(float(np.max(data.Fr[mine] + data.Fa[mine])), 1.0)
+            top = self._top(data, mine)
 
             def sse(force: float) -> float:
                 pred = M0 + self._m1(data, mine, force)

@@ -25,7 +25,7 @@ from bearingheat.io.json import json_safe
 from bearingheat.io.reports import FIGURE_DPI, matplotlib_figure
 
 __all__ = ["plot_residuals", "residuals_figure", "plot_measured_vs_predicted", "report_markdown", "write_outputs",
-           "summary_lines"]
+           "summary_lines", "bound_marks"]
 
 #: at most this many points are drawn (a seeded random subset of larger data sets)
 _PLOT_POINTS = 4000
@@ -45,6 +45,26 @@ def _predicted(score: CandidateScore) -> np.ndarray:
 
 #: bearings named in the legend of the residual plot (the ones with the most rows); the others share one entry
 _LEGEND_BEARINGS = 10
+
+
+def bound_marks(at_bound: dict[str, Any]) -> list[str]:
+    """The fitted parameters that ended on a bound of their fit, as text: 'k (lower)', 'M_seal [N*mm] 6205 (lower)'.
+
+    >>> bound_marks({"c": None, "p": "upper", "F_pre [N]": {"6205": "lower", "NU208-E": None}})
+    ['p (upper)', 'F_pre [N] 6205 (lower)']
+    """
+    marks = []
+    for name, side in at_bound.items():
+        if isinstance(side, dict):
+            marks += [f"{name} {bearing} ({each})" for bearing, each in side.items() if each]
+        elif side:
+            marks.append(f"{name} ({side})")
+    return marks
+
+
+#: what a parameter on a bound means, as the report says it
+_ON_A_BOUND = ("the data would push it past the bound its fit keeps it within, so its value is that bound, not an "
+               "estimate (at a lower bound of 0, or k = 1, the term is absent)")
 
 
 def _domain_lines(summary: dict[str, Any]) -> list[str]:
@@ -133,6 +153,8 @@ def report_markdown(diagnosis: Diagnosis, summary: dict[str, Any], key: str) -> 
         f"{summary['n_excluded']} row(s) excluded.", "",
         f"**Effect found: `{summary['effect']}`**: {summary['description']}.", "",
         f"Parameters: {format_value(summary['parameters']) or '(none)'}", "",
+        *([f"On a bound of its fit: {', '.join(bound_marks(summary['at_bound']))}: {_ON_A_BOUND}.", ""]
+          if bound_marks(summary["at_bound"]) else []),
         *_domain_lines(summary),
         "## Error before and after", "",
         "| | RMSE [N·mm] | MAPE [%] | bias, measured − model [N·mm] |", "|---|---|---|---|",
@@ -159,6 +181,8 @@ def report_markdown(diagnosis: Diagnosis, summary: dict[str, Any], key: str) -> 
             lines.append(f"| {name} | not applicable: {c['reason']} | | | | | | | no |")
             continue
         params = format_value(c["parameters"]) if len(json.dumps(c["parameters"])) < 160 else "(per bearing, see summary.json)"
+        if bound_marks(c["at_bound"]):
+            params += f"; on a bound: {', '.join(bound_marks(c['at_bound']))}"
         gain = f"{c['cv_improvement'] * 100:.1f} %" if c["cv_improvement"] is not None else "–"
         lines.append(f"| {name} | {params} | {format_value(c['rmse'])} | {format_value(c['cv_rmse'])} | {format_value(c['cv_rel_rmse'], 3)} "
                      f"| {format_value(c['delta_bic'], 4)} | {gain} | {format_value(c['p_value'], 2)} | "
@@ -195,10 +219,13 @@ def write_outputs(diagnosis: Diagnosis, out_dir: str | os.PathLike[str], *, forc
 
 def summary_lines(summary: dict[str, Any], out_dir: str | os.PathLike[str]) -> list[str]:
     """The outcome in a few lines for the console: the effect, the error before and after, where the report is."""
-    lines = [f"effect: {summary['effect']}  parameters: {format_value(summary['parameters']) or '(none)'}",
-             f"RMSE {summary['rmse_before']:.4g} -> {summary['rmse_after']:.4g} N*mm "
-             f"(held-out {summary['cv_rmse_before']:.4g} -> {summary['cv_rmse_after']:.4g}); "
-             f"MAPE {summary['mape_before']:.3g} -> {summary['mape_after']:.3g} %"]
+    lines = [f"effect: {summary['effect']}  parameters: {format_value(summary['parameters']) or '(none)'}"]
+    if bound_marks(summary["at_bound"]):
+        lines.append(f"on a bound of its fit (the value is the bound, not an estimate): "
+                     f"{', '.join(bound_marks(summary['at_bound']))}")
+    lines.append(f"RMSE {summary['rmse_before']:.4g} -> {summary['rmse_after']:.4g} N*mm "
+                 f"(held-out {summary['cv_rmse_before']:.4g} -> {summary['cv_rmse_after']:.4g}); "
+                 f"MAPE {summary['mape_before']:.3g} -> {summary['mape_after']:.3g} %")
     if summary["n_excluded"]:
         lines.append(f"{summary['n_excluded']} row(s) excluded; see {out_dir}/report.md")
     lines.append(f"report: {out_dir}/report.md")
