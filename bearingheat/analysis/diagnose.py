@@ -53,6 +53,7 @@ from bearingheat.units import convert_column, parse_unit
 __all__ = [
     "DiagnoseError",
     "SIGNIFICANCE_RULE",
+    "CHOICE_METRIC",
     "MEASURED_UNITS",
     "REGRESSOR_UNITS",
     "MeasuredData",
@@ -91,6 +92,12 @@ SIGNIFICANCE_RULE = (
     f"{CV_TIE:.0%} of the best, the lowest BIC wins; with no significant candidate the answer is 'none'."
 )
 MIN_ROWS = 20
+#: which error the choice is made on, as the report and the summary say it
+CHOICE_METRIC = (
+    "The choice uses the relative error (M measured − M model)/M measured: every candidate is fitted by least "
+    "squares on it, BIC and the held-out comparison (relative RMSE, paired t-test) are computed from it. RMSE, MAPE "
+    "and bias in N·mm are shown for scale; a relative error weighs a reading of small torque as much as one of large "
+    "torque, so a choice may improve the relative RMSE much more than the RMSE.")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -393,8 +400,9 @@ class CandidateScore:
             "applicable": self.applicable, "reason": self.reason, "parameters": self.public,
             "at_bound": self.at_bound,
             "n_params": self.n_params, "rmse": clean(self.fit.get("rmse", math.nan)),
-            "mape": clean(self.fit.get("mape", math.nan)), "cv_rmse": clean(self.cv.get("rmse", math.nan)),
-            "cv_mape": clean(self.cv.get("mape", math.nan)), "cv_rel_rmse": clean(self.cv.get("rel_rmse", math.nan)),
+            "mape": clean(self.fit.get("mape", math.nan)), "rel_rmse": clean(self.fit.get("rel_rmse", math.nan)),
+            "cv_rmse": clean(self.cv.get("rmse", math.nan)), "cv_mape": clean(self.cv.get("mape", math.nan)),
+            "cv_rel_rmse": clean(self.cv.get("rel_rmse", math.nan)),
             "bic": clean(self.bic), "delta_bic": clean(self.delta_bic),
             "cv_improvement": clean(self.cv_improvement), "p_value": clean(self.p_value),
             "significant": self.significant,
@@ -447,9 +455,13 @@ class Diagnosis:
             "mape_before": none.fit["mape"], "mape_after": chosen.fit["mape"],
             "cv_mape_before": none.cv["mape"], "cv_mape_after": chosen.cv["mape"],
             "bias_before": none.fit["bias"], "bias_after": chosen.fit["bias"],
+            # the error the choice is made on: the candidates are fitted, scored by BIC and compared held out on it
+            "rel_rmse_before": none.fit["rel_rmse"], "rel_rmse_after": chosen.fit["rel_rmse"],
+            "cv_rel_rmse_before": none.cv["rel_rmse"], "cv_rel_rmse_after": chosen.cv["rel_rmse"],
+            "choice_metric": "rel_rmse", "choice_metric_text": CHOICE_METRIC,
             # what calc --effects checks a row against: the model the effect extends, the fitted ranges
             "base_model": DEFAULT_MODEL, "domain": self.domain(),
-            "units": {"rmse": "N*mm", "bias": "N*mm", "mape": "%"},
+            "units": {"rmse": "N*mm", "bias": "N*mm", "mape": "%", "rel_rmse": "1"},
             "n_rows": len(self.data), "n_excluded": len(self.excluded), "excluded": self.excluded[:50],
             "bearings": list(self.data.bearing_names),
             "folds": self.k, "groups": int(len(np.unique(self.groups))),

@@ -71,3 +71,28 @@ def test_a_parameter_that_ends_on_its_bound_is_marked_in_the_summary_report_and_
     example = diagnose_table(pd.read_csv(EXAMPLE)).summary()
     assert example["at_bound"] == {"M_seal [N*mm]": {b: None for b in ("6205", "6208", "6210", "6305")}}
     assert not any(line.startswith("on a bound") for line in summary_lines(example, tmp_path))
+
+
+def test_the_report_shows_the_relative_error_the_choice_is_made_on_beside_the_rmse(tmp_path):
+    """The choice is made on the relative error, the headline was the RMSE in N·mm only. On the example, f0_scale
+    makes the RMSE worse (23.37 -> 24.75 N·mm) while it cuts the relative RMSE from 40.9 % to 26.8 %: the summary,
+    report.md and the console now give both, before and after, fitted and held out, and say which the choice uses."""
+    diagnosis = diagnose_table(pd.read_csv(EXAMPLE))
+    summary = write_outputs(diagnosis, tmp_path)
+    data = diagnosis.data
+    assert summary["rel_rmse_before"] == pytest.approx(float(np.sqrt(np.mean(((data.M - data.MR) / data.M) ** 2))),
+                                                       rel=1e-12)
+    assert summary["rel_rmse_before"] == pytest.approx(0.409, abs=5e-4)
+    assert summary["rel_rmse_after"] == pytest.approx(0.0419, abs=5e-5)
+    seal = summary["candidates"]["seal_drag"]
+    assert (summary["rel_rmse_after"], summary["cv_rel_rmse_after"]) == (seal["rel_rmse"], seal["cv_rel_rmse"])
+    assert summary["choice_metric"] == "rel_rmse" and summary["units"]["rel_rmse"] == "1"
+    f0_scale, none = summary["candidates"]["f0_scale"], summary["candidates"]["none"]
+    assert f0_scale["rmse"] > none["rmse"] and f0_scale["rel_rmse"] < none["rel_rmse"]
+    report = (tmp_path / "report.md").read_text()
+    assert "| with the effect, held-out folds | 3.823 | 4.267 | 3.44 |  |" in report
+    assert "| catalogue model, fitting data | 23.37 | 40.9 | 37.84 | 21.96 |" in report
+    assert ("The choice uses the relative error (M measured − M model)/M measured: every candidate is fitted by least "
+            "squares on it") in report
+    assert summary_lines(summary, tmp_path)[2] == (
+        "relative RMSE 40.9 -> 4.19 % (held-out 40.9 -> 4.27 %): the error the choice is made on")

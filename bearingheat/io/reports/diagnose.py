@@ -67,6 +67,11 @@ _ON_A_BOUND = ("the data would push it past the bound its fit keeps it within, s
                "estimate (at a lower bound of 0, or k = 1, the term is absent)")
 
 
+def _percent(fraction: float | None) -> float | None:
+    """A fraction in percent (None stays None: a score not computed)."""
+    return None if fraction is None else 100.0 * fraction
+
+
 def _domain_lines(summary: dict[str, Any]) -> list[str]:
     """What calc --effects checks, as the report states it: the base model and the fitted ranges."""
     if summary["effect"] == "none":
@@ -157,14 +162,14 @@ def report_markdown(diagnosis: Diagnosis, summary: dict[str, Any], key: str) -> 
           if bound_marks(summary["at_bound"]) else []),
         *_domain_lines(summary),
         "## Error before and after", "",
-        "| | RMSE [N·mm] | MAPE [%] | bias, measured − model [N·mm] |", "|---|---|---|---|",
-        f"| catalogue model, fitting data | {format_value(summary['rmse_before'])} | {format_value(summary['mape_before'])} "
-        f"| {format_value(summary['bias_before'])} |",
-        f"| with the effect, fitting data | {format_value(summary['rmse_after'])} | {format_value(summary['mape_after'])} "
-        f"| {format_value(summary['bias_after'])} |",
-        f"| catalogue model, held-out folds | {format_value(summary['cv_rmse_before'])} | {format_value(summary['cv_mape_before'])} | |",
-        f"| with the effect, held-out folds | {format_value(summary['cv_rmse_after'])} | {format_value(summary['cv_mape_after'])} | |",
-        "", "## Residual structure of the catalogue model", "",
+        "| | RMSE [N·mm] | relative RMSE [%] | MAPE [%] | bias, measured − model [N·mm] |", "|---|---|---|---|---|",
+        *[f"| {model}, {rows} | {format_value(summary[f'{cv}rmse_{when}'])} "
+          f"| {format_value(_percent(summary[f'{cv}rel_rmse_{when}']))} | {format_value(summary[f'{cv}mape_{when}'])} "
+          f"| {format_value(summary[f'bias_{when}']) if not cv else ''} |"
+          for cv, rows in (("", "fitting data"), ("cv_", "held-out folds"))
+          for model, when in (("catalogue model", "before"), ("with the effect", "after"))],
+        "", summary["choice_metric_text"], "",
+        "## Residual structure of the catalogue model", "",
         "Relative residual (M measured − M model)/M measured against each regressor.", "",
         "| regressor | statistic | value | p | note |", "|---|---|---|---|---|",
     ]
@@ -174,17 +179,19 @@ def report_markdown(diagnosis: Diagnosis, summary: dict[str, Any], key: str) -> 
     lines += ["", "## Candidates", "",
               f"Grouped {summary['folds']}-fold cross-validation over {summary['groups']} groups "
               "(operating points).", "",
-              "| candidate | parameters | RMSE [N·mm] | CV RMSE [N·mm] | CV rel. RMSE | ΔBIC | CV gain | p | significant |",
-              "|---|---|---|---|---|---|---|---|---|"]
+              "| candidate | parameters | RMSE [N·mm] | CV RMSE [N·mm] | rel. RMSE [%] | CV rel. RMSE [%] | ΔBIC | CV gain "
+              "| p | significant |",
+              "|---|---|---|---|---|---|---|---|---|---|"]
     for name, c in summary["candidates"].items():
         if not c["applicable"]:
-            lines.append(f"| {name} | not applicable: {c['reason']} | | | | | | | no |")
+            lines.append(f"| {name} | not applicable: {c['reason']} | | | | | | | | no |")
             continue
         params = format_value(c["parameters"]) if len(json.dumps(c["parameters"])) < 160 else "(per bearing, see summary.json)"
         if bound_marks(c["at_bound"]):
             params += f"; on a bound: {', '.join(bound_marks(c['at_bound']))}"
         gain = f"{c['cv_improvement'] * 100:.1f} %" if c["cv_improvement"] is not None else "–"
-        lines.append(f"| {name} | {params} | {format_value(c['rmse'])} | {format_value(c['cv_rmse'])} | {format_value(c['cv_rel_rmse'], 3)} "
+        lines.append(f"| {name} | {params} | {format_value(c['rmse'])} | {format_value(c['cv_rmse'])} "
+                     f"| {format_value(_percent(c['rel_rmse']), 3)} | {format_value(_percent(c['cv_rel_rmse']), 3)} "
                      f"| {format_value(c['delta_bic'], 4)} | {gain} | {format_value(c['p_value'], 2)} | "
                      f"{'yes' if c['significant'] else 'no'} |")
     lines += ["", "Selection rule: " + summary["selection_rule"], "", summary["selection"], "",
@@ -226,6 +233,9 @@ def summary_lines(summary: dict[str, Any], out_dir: str | os.PathLike[str]) -> l
     lines.append(f"RMSE {summary['rmse_before']:.4g} -> {summary['rmse_after']:.4g} N*mm "
                  f"(held-out {summary['cv_rmse_before']:.4g} -> {summary['cv_rmse_after']:.4g}); "
                  f"MAPE {summary['mape_before']:.3g} -> {summary['mape_after']:.3g} %")
+    lines.append(f"relative RMSE {_percent(summary['rel_rmse_before']):.3g} -> {_percent(summary['rel_rmse_after']):.3g} % "
+                 f"(held-out {_percent(summary['cv_rel_rmse_before']):.3g} -> "
+                 f"{_percent(summary['cv_rel_rmse_after']):.3g} %): the error the choice is made on")
     if summary["n_excluded"]:
         lines.append(f"{summary['n_excluded']} row(s) excluded; see {out_dir}/report.md")
     lines.append(f"report: {out_dir}/report.md")
