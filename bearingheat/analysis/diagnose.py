@@ -17,7 +17,10 @@ with the columns of ``calc`` plus ``M [N*mm]`` (any torque unit), optional
    the Bayesian information criterion, and applies the significance rule
    :data:`SIGNIFICANCE_RULE`; ``none`` wins when no candidate earns its
    parameters;
-5. reports the error before and after, on the fitting data and on the
+5. measures how much single readings weigh in the choice (studentised
+   residuals, leverage, Cook's distance; the choice again without the most
+   outlying flagged reading: :mod:`bearingheat.analysis.influence`);
+6. reports the error before and after, on the fitting data and on the
    held-out folds (:meth:`Diagnosis.summary`); ``summary.json``, ``report.md``
    and the PNG plots are written by :mod:`bearingheat.io.reports.diagnose`.
 
@@ -39,6 +42,7 @@ from scipy import stats
 from bearingheat.analysis.domain import domain_values, fitted_domain
 from bearingheat.analysis.effects import (CANDIDATES, EFFECT_NAMES, FittedEffect, ModelData, bearing_keys,
                                           catalogue_arrays, format_value, m1_load)
+from bearingheat.analysis.influence import Influence, influence
 from bearingheat.calc.contract import column, parse_header, readable_header
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.fill import fill_from_catalogue
@@ -421,6 +425,7 @@ class Diagnosis:
     k: int
     structure: list[dict[str, Any]]
     excluded: list[str] = field(default_factory=list)
+    influence: Influence | None = None
 
     @property
     def chosen(self) -> CandidateScore:
@@ -468,6 +473,8 @@ class Diagnosis:
             "selection_rule": SIGNIFICANCE_RULE.format(k=self.k),
             "selection": self.selection(),
             "residual_structure": self.structure,
+            "influence": self.influence.as_json() if self.influence is not None else None,
+            "warnings": [self.influence.warning] if self.influence is not None and self.influence.warning else [],
             "candidates": {name: score.as_json() for name, score in self.scores.items()},
         }
 
@@ -501,11 +508,14 @@ def _bic(M: np.ndarray, predicted: np.ndarray, n_params: int) -> float:
 
 
 def diagnose(data: ModelData, *, k: int = 5, seed: int = 0, groups: np.ndarray | None = None,
-             candidates: list[str] | None = None, excluded: list[str] | None = None) -> Diagnosis:
-    """Fit, cross-validate and rank every candidate effect; choose one by :data:`SIGNIFICANCE_RULE`.
+             candidates: list[str] | None = None, excluded: list[str] | None = None,
+             rows: np.ndarray | None = None) -> Diagnosis:
+    """Fit, cross-validate and rank every candidate effect; choose one by :data:`SIGNIFICANCE_RULE`; measure how
+    much single readings weigh in the choice (:func:`~bearingheat.analysis.influence.influence`).
 
     ``k`` (>= 2, at most the number of groups) is the number of folds, ``candidates`` names of
-    :data:`~bearingheat.analysis.effects.CANDIDATES` (all when None; 'none' is always scored).
+    :data:`~bearingheat.analysis.effects.CANDIDATES` (all when None; 'none' is always scored), ``rows`` the row
+    number messages cite for each reading (None: its position + 1).
     """
     if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or k < 2:
         raise DiagnoseError(f"k = {k!r}: the grouped cross-validation needs an integer number of folds >= 2")
@@ -521,10 +531,30 @@ def diagnose(data: ModelData, *, k: int = 5, seed: int = 0, groups: np.ndarray |
     if n_groups < k:
         raise DiagnoseError(f"{k}-fold cross-validation needs at least {k} operating points (groups); got {n_groups}")
     folds = assign_folds(groups, k, seed)
-    all_rows = np.arange(N)
     names = candidates or list(CANDIDATES)
     if "none" not in names:
         names = ["none"] + names
+    effect, scores = _choose(data, folds, groups, k, names)
+    none, chosen = scores["none"], scores[effect]
+    assert none.predicted is not None and chosen.predicted is not None, "'none' and the chosen effect apply"
+    row_names = [f"row {row_number(rows, i)}" for i in range(N)]
+
+    def choose_without(position: int) -> str:
+        keep = np.flatnonzero(np.arange(N) != position)
+        return _choose(data.take(keep), folds[keep], groups[keep], k, names)[0]
+
+    influential = influence(CANDIDATES[effect], data, chosen.params, chosen.predicted, row_names, choose_without,
+                            effect)
+    structure = residual_structure(data, none.predicted)
+    return Diagnosis(data, effect, scores, folds, groups, k, structure, list(excluded or []), influential)
+
+
+def _choose(data: ModelData, folds: np.ndarray, groups: np.ndarray, k: int, names: list[str]
+            ) -> tuple[str, dict[str, CandidateScore]]:
+    """The effect :data:`SIGNIFICANCE_RULE` chooses among the candidates ``names`` and the score of each, their
+    held-out errors from the ``k`` folds ``folds``, the paired test over ``groups``."""
+    N = len(data)
+    all_rows = np.arange(N)
     scores: dict[str, CandidateScore] = {}
     for name in names:
         candidate = CANDIDATES[name]
@@ -538,7 +568,8 @@ def diagnose(data: ModelData, *, k: int = 5, seed: int = 0, groups: np.ndarray |
         for fold in range(k):
             test = all_rows[folds == fold]
             train = all_rows[folds != fold]
-            cv_predicted[test] = candidate.predict(data, candidate.fit(data, train), test)
+            if len(test):  # (a fold left empty where a reading is left out to measure its influence)
+                cv_predicted[test] = candidate.predict(data, candidate.fit(data, train), test)
         n_params = candidate.n_params(data, params)
         scores[name] = CandidateScore(
             name, True, "", params, candidate.public_parameters(data, params), n_params,
@@ -568,8 +599,7 @@ def diagnose(data: ModelData, *, k: int = 5, seed: int = 0, groups: np.ndarray |
         best_cv = min(s.cv["rel_rmse"] for s in significant)
         tied = [s for s in significant if s.cv["rel_rmse"] <= best_cv * (1.0 + CV_TIE)]
         effect = min(tied, key=lambda s: s.bic).name
-    structure = residual_structure(data, none.predicted)
-    return Diagnosis(data, effect, scores, folds, groups, k, structure, list(excluded or []))
+    return effect, scores
 
 
 def diagnose_table(table: pd.DataFrame, *, k: int = 5, seed: int = 0,
@@ -583,7 +613,9 @@ def diagnose_measurements(measured: MeasuredData, *, k: int = 5, seed: int = 0,
     """Run the catalogue model on a measured table read by :func:`read_measurements` and :func:`diagnose` it."""
     data, rows, excluded = model_data(measured)
     user_groups = measured.group[rows] if measured.group is not None else None
-    return diagnose(data, k=k, seed=seed, groups=user_groups, candidates=candidates, excluded=excluded)
+    numbers = np.array([row_number(measured.rows, int(i)) for i in rows], dtype=np.int64)
+    return diagnose(data, k=k, seed=seed, groups=user_groups, candidates=candidates, excluded=excluded,
+                    rows=numbers)
 
 
 # ---------------------------------------------------------------------------------------------

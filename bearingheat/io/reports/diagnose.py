@@ -72,6 +72,32 @@ def _percent(fraction: float | None) -> float | None:
     return None if fraction is None else 100.0 * fraction
 
 
+def _influence_lines(influence: dict[str, Any] | None) -> list[str]:
+    """The section on single readings: the rule, the readings of the largest studentised residual, the choice
+    without the most outlying flagged one (a warning where it changes)."""
+    if influence is None:
+        return []
+    lines = ["## Influence of single readings", "", influence["rule"], "",
+             f"Readings of the largest studentised residual under the chosen effect ({influence['n_params']} "
+             "parameter(s) not on a bound):", "",
+             "| row | M [N·mm] | predicted [N·mm] | relative residual | leverage | studentised | Cook's distance "
+             "| Bonferroni p | flagged |", "|---|---|---|---|---|---|---|---|---|"]
+    for r in influence["readings"]:
+        lines.append(f"| {r['row']} | {format_value(r['M'])} | {format_value(r['predicted'])} "
+                     f"| {format_value(r['relative_residual'], 3)} | {format_value(r['leverage'], 3)} "
+                     f"| {format_value(r['studentised'], 3)} | {format_value(r['cooks_distance'], 3)} "
+                     f"| {format_value(r['p_value'], 2)} | {'yes' if r['flagged'] else 'no'} |")
+    lines.append("")
+    if influence["dropped"] is None:
+        lines.append("No reading is flagged: the choice was not made again.")
+    elif influence["warning"]:
+        lines.append(f"**Warning: {influence['warning']}.**")
+    else:
+        lines.append(f"{influence['flagged']} reading(s) flagged; without {influence['dropped']} the choice is the "
+                     f"same ('{influence['effect_without']}').")
+    return lines + [""]
+
+
 def _domain_lines(summary: dict[str, Any]) -> list[str]:
     """What calc --effects checks, as the report states it: the base model and the fitted ranges."""
     if summary["effect"] == "none":
@@ -194,8 +220,9 @@ def report_markdown(diagnosis: Diagnosis, summary: dict[str, Any], key: str) -> 
                      f"| {format_value(_percent(c['rel_rmse']), 3)} | {format_value(_percent(c['cv_rel_rmse']), 3)} "
                      f"| {format_value(c['delta_bic'], 4)} | {gain} | {format_value(c['p_value'], 2)} | "
                      f"{'yes' if c['significant'] else 'no'} |")
-    lines += ["", "Selection rule: " + summary["selection_rule"], "", summary["selection"], "",
-              "## Plots", "",
+    lines += ["", "Selection rule: " + summary["selection_rule"], "", summary["selection"], ""]
+    lines += _influence_lines(summary["influence"])
+    lines += ["## Plots", "",
               f"![residuals against {key}](residuals.png)", "",
               "![measured against predicted](measured_vs_predicted.png)", ""]
     if summary["n_excluded"]:
@@ -236,6 +263,12 @@ def summary_lines(summary: dict[str, Any], out_dir: str | os.PathLike[str]) -> l
     lines.append(f"relative RMSE {_percent(summary['rel_rmse_before']):.3g} -> {_percent(summary['rel_rmse_after']):.3g} % "
                  f"(held-out {_percent(summary['cv_rel_rmse_before']):.3g} -> "
                  f"{_percent(summary['cv_rel_rmse_after']):.3g} %): the error the choice is made on")
+    influence = summary["influence"]
+    if influence is not None and influence["flagged"]:
+        top = influence["readings"][0]
+        lines.append(f"{influence['flagged']} reading(s) flagged as outliers, the largest {top['row']} (studentised "
+                     f"residual {top['studentised']:.3g}); without it the effect chosen is "
+                     f"'{influence['effect_without']}'")
     if summary["n_excluded"]:
         lines.append(f"{summary['n_excluded']} row(s) excluded; see {out_dir}/report.md")
     lines.append(f"report: {out_dir}/report.md")
