@@ -17,7 +17,10 @@ with the columns of ``calc`` plus ``M [N*mm]`` (any torque unit), optional
    the Bayesian information criterion, and applies the significance rule
    :data:`SIGNIFICANCE_RULE`; ``none`` wins when no candidate earns its
    parameters;
-5. reports the error before and after, on the fitting data and on the
+5. measures how much single readings weigh in the choice (studentised
+   residuals, leverage, Cook's distance; the choice again without the most
+   outlying flagged reading: :mod:`bearingheat.analysis.influence`);
+6. reports the error before and after, on the fitting data and on the
    held-out folds (:meth:`Diagnosis.summary`); ``summary.json``, ``report.md``
    and the PNG plots are written by :mod:`bearingheat.io.reports.diagnose`.
 
@@ -39,12 +42,13 @@ from scipy import stats
 from bearingheat.analysis.domain import domain_values, fitted_domain
 from bearingheat.analysis.effects import (CANDIDATES, EFFECT_NAMES, FittedEffect, ModelData, bearing_keys,
                                           catalogue_arrays, format_value, m1_load)
+from bearingheat.analysis.influence import Influence, influence
 from bearingheat.calc.contract import column, parse_header, readable_header
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.fill import fill_from_catalogue
 from bearingheat.calc.models import DEFAULT_MODEL, compute_supports
 from bearingheat.calc.supports import SupportArrays, per_distinct
-from bearingheat.calc.conversion import (OTHER_UNIT_FORM, blank_cell, not_a_number, to_catalogue_units,
+from bearingheat.calc.conversion import (blank_cell, lookalike_column, not_a_number, to_catalogue_units,
                                          with_decimal_point)
 from bearingheat.errors import DiagnoseError, InputError, UnitError
 from bearingheat.kernels import friction
@@ -53,6 +57,7 @@ from bearingheat.units import convert_column, parse_unit
 __all__ = [
     "DiagnoseError",
     "SIGNIFICANCE_RULE",
+    "CHOICE_METRIC",
     "MEASURED_UNITS",
     "REGRESSOR_UNITS",
     "MeasuredData",
@@ -91,6 +96,12 @@ SIGNIFICANCE_RULE = (
     f"{CV_TIE:.0%} of the best, the lowest BIC wins; with no significant candidate the answer is 'none'."
 )
 MIN_ROWS = 20
+#: which error the choice is made on, as the report and the summary say it
+CHOICE_METRIC = (
+    "The choice uses the relative error (M measured − M model)/M measured: every candidate is fitted by least "
+    "squares on it, BIC and the held-out comparison (relative RMSE, paired t-test) are computed from it. RMSE, MAPE "
+    "and bias in N·mm are shown for scale; a relative error weighs a reading of small torque as much as one of large "
+    "torque, so a choice may improve the relative RMSE much more than the RMSE.")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -176,28 +187,15 @@ _UNREAD = {"M": "the table would have no measured torque",
            "group": "the rows would be grouped by operating point instead of by these labels"}
 
 
-def _refuse_lookalikes(headers: Any, names: list[str]) -> None:
+def _refuse_lookalikes(headers: Any) -> None:
     """:class:`DiagnoseError` for a header that is not read but looks like a measured column the table lacks
-    (M, T_oil, t, group): the unit written another way ('T_oil (degC)', 't(h)') or the name in other letter
-    case ('Group', 't_OIL [degC]'; names of two or more letters, as calc's rule for its own columns)."""
-    present = set(names)
-    wanted = [name for name in (*MEASURED_UNITS, "group") if name not in present]
-    by_case = {name.casefold(): name for name in wanted if len(name) > 1}
-    for header, name in zip(headers, names):
-        if name in MEASURED_UNITS or name == "group":
-            continue
-        unit = parse_header(header)[1]
-        other_form = OTHER_UNIT_FORM.match(name)  # ('T_oil (degC)', 't(h)': calc's forms)
-        base, typed = (other_form.group(1), next(g for g in other_form.groups()[1:] if g)) if other_form \
-            else (name, unit)
-        meant = base if base in wanted else by_case.get(base.casefold()) if len(base) > 1 else None
-        if meant is None:
-            continue
-        target = MEASURED_UNITS.get(meant)
-        written = f"{meant} [{(typed or target).strip()}]" if target else meant
-        raise DiagnoseError(f"column {header!r} looks like {meant!r}, which is not read from it: name it "
-                            f"{written!r} (headers are 'name [unit]', the name in its own letters); as it is, "
-                            f"{_UNREAD[meant]}")
+    (M, T_oil, t, group; :func:`~bearingheat.calc.conversion.lookalike_column`, calc's rule for its own columns):
+    the unit written another way ('T_oil (degC)', 't(h)') or the name in other letter case ('Group',
+    't_OIL [degC]'). Unlike calc's text columns, ``group`` written in the other-unit form ('group (run)') is refused
+    too: its rows would be grouped by operating point instead of by its labels."""
+    found = lookalike_column(headers, {**MEASURED_UNITS, "group": ""}, text_in_other_form=True)
+    if found is not None:
+        raise DiagnoseError(found.message("is not read", _UNREAD[found.meant]))
 
 
 def read_measurements(table: pd.DataFrame) -> MeasuredData:
@@ -215,7 +213,7 @@ def read_measurements(table: pd.DataFrame) -> MeasuredData:
         table = table[[h for h in table.columns if readable_header(h)]]
         table.attrs.update(attrs)
     names = [parse_header(h)[0] for h in table.columns]
-    _refuse_lookalikes(table.columns, names)
+    _refuse_lookalikes(table.columns)
     if "M" not in names:
         raise DiagnoseError("missing column: 'M [N*mm]' (the measured friction torque, any torque unit)")
     rows = row_numbers(table)
@@ -396,15 +394,19 @@ class CandidateScore:
     significant: bool = False
     predicted: np.ndarray | None = None
     cv_predicted: np.ndarray | None = None
+    #: each fitted parameter -> 'lower' or 'upper' where its fit ended on that bound, else None (per bearing a dict)
+    at_bound: dict[str, Any] = field(default_factory=dict)
 
     def as_json(self) -> dict[str, Any]:
         def clean(x: float) -> float | None:
             return None if isinstance(x, float) and not math.isfinite(x) else x
         return {
             "applicable": self.applicable, "reason": self.reason, "parameters": self.public,
+            "at_bound": self.at_bound,
             "n_params": self.n_params, "rmse": clean(self.fit.get("rmse", math.nan)),
-            "mape": clean(self.fit.get("mape", math.nan)), "cv_rmse": clean(self.cv.get("rmse", math.nan)),
-            "cv_mape": clean(self.cv.get("mape", math.nan)), "cv_rel_rmse": clean(self.cv.get("rel_rmse", math.nan)),
+            "mape": clean(self.fit.get("mape", math.nan)), "rel_rmse": clean(self.fit.get("rel_rmse", math.nan)),
+            "cv_rmse": clean(self.cv.get("rmse", math.nan)), "cv_mape": clean(self.cv.get("mape", math.nan)),
+            "cv_rel_rmse": clean(self.cv.get("rel_rmse", math.nan)),
             "bic": clean(self.bic), "delta_bic": clean(self.delta_bic),
             "cv_improvement": clean(self.cv_improvement), "p_value": clean(self.p_value),
             "significant": self.significant,
@@ -423,6 +425,7 @@ class Diagnosis:
     k: int
     structure: list[dict[str, Any]]
     excluded: list[str] = field(default_factory=list)
+    influence: Influence | None = None
 
     @property
     def chosen(self) -> CandidateScore:
@@ -450,21 +453,28 @@ class Diagnosis:
         return {
             "effect": self.effect,
             "parameters": chosen.public,
+            "at_bound": chosen.at_bound,
             "description": CANDIDATES[self.effect].description,
             "rmse_before": none.fit["rmse"], "rmse_after": chosen.fit["rmse"],
             "cv_rmse_before": none.cv["rmse"], "cv_rmse_after": chosen.cv["rmse"],
             "mape_before": none.fit["mape"], "mape_after": chosen.fit["mape"],
             "cv_mape_before": none.cv["mape"], "cv_mape_after": chosen.cv["mape"],
             "bias_before": none.fit["bias"], "bias_after": chosen.fit["bias"],
+            # the error the choice is made on: the candidates are fitted, scored by BIC and compared held out on it
+            "rel_rmse_before": none.fit["rel_rmse"], "rel_rmse_after": chosen.fit["rel_rmse"],
+            "cv_rel_rmse_before": none.cv["rel_rmse"], "cv_rel_rmse_after": chosen.cv["rel_rmse"],
+            "choice_metric": "rel_rmse", "choice_metric_text": CHOICE_METRIC,
             # what calc --effects checks a row against: the model the effect extends, the fitted ranges
             "base_model": DEFAULT_MODEL, "domain": self.domain(),
-            "units": {"rmse": "N*mm", "bias": "N*mm", "mape": "%"},
+            "units": {"rmse": "N*mm", "bias": "N*mm", "mape": "%", "rel_rmse": "1"},
             "n_rows": len(self.data), "n_excluded": len(self.excluded), "excluded": self.excluded[:50],
             "bearings": list(self.data.bearing_names),
             "folds": self.k, "groups": int(len(np.unique(self.groups))),
             "selection_rule": SIGNIFICANCE_RULE.format(k=self.k),
             "selection": self.selection(),
             "residual_structure": self.structure,
+            "influence": self.influence.as_json() if self.influence is not None else None,
+            "warnings": [self.influence.warning] if self.influence is not None and self.influence.warning else [],
             "candidates": {name: score.as_json() for name, score in self.scores.items()},
         }
 
@@ -498,11 +508,14 @@ def _bic(M: np.ndarray, predicted: np.ndarray, n_params: int) -> float:
 
 
 def diagnose(data: ModelData, *, k: int = 5, seed: int = 0, groups: np.ndarray | None = None,
-             candidates: list[str] | None = None, excluded: list[str] | None = None) -> Diagnosis:
-    """Fit, cross-validate and rank every candidate effect; choose one by :data:`SIGNIFICANCE_RULE`.
+             candidates: list[str] | None = None, excluded: list[str] | None = None,
+             rows: np.ndarray | None = None) -> Diagnosis:
+    """Fit, cross-validate and rank every candidate effect; choose one by :data:`SIGNIFICANCE_RULE`; measure how
+    much single readings weigh in the choice (:func:`~bearingheat.analysis.influence.influence`).
 
     ``k`` (>= 2, at most the number of groups) is the number of folds, ``candidates`` names of
-    :data:`~bearingheat.analysis.effects.CANDIDATES` (all when None; 'none' is always scored).
+    :data:`~bearingheat.analysis.effects.CANDIDATES` (all when None; 'none' is always scored), ``rows`` the row
+    number messages cite for each reading (None: its position + 1).
     """
     if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or k < 2:
         raise DiagnoseError(f"k = {k!r}: the grouped cross-validation needs an integer number of folds >= 2")
@@ -518,10 +531,30 @@ def diagnose(data: ModelData, *, k: int = 5, seed: int = 0, groups: np.ndarray |
     if n_groups < k:
         raise DiagnoseError(f"{k}-fold cross-validation needs at least {k} operating points (groups); got {n_groups}")
     folds = assign_folds(groups, k, seed)
-    all_rows = np.arange(N)
     names = candidates or list(CANDIDATES)
     if "none" not in names:
         names = ["none"] + names
+    effect, scores = _choose(data, folds, groups, k, names)
+    none, chosen = scores["none"], scores[effect]
+    assert none.predicted is not None and chosen.predicted is not None, "'none' and the chosen effect apply"
+    row_names = [f"row {row_number(rows, i)}" for i in range(N)]
+
+    def choose_without(position: int) -> str:
+        keep = np.flatnonzero(np.arange(N) != position)
+        return _choose(data.take(keep), folds[keep], groups[keep], k, names)[0]
+
+    influential = influence(CANDIDATES[effect], data, chosen.params, chosen.predicted, row_names, choose_without,
+                            effect)
+    structure = residual_structure(data, none.predicted)
+    return Diagnosis(data, effect, scores, folds, groups, k, structure, list(excluded or []), influential)
+
+
+def _choose(data: ModelData, folds: np.ndarray, groups: np.ndarray, k: int, names: list[str]
+            ) -> tuple[str, dict[str, CandidateScore]]:
+    """The effect :data:`SIGNIFICANCE_RULE` chooses among the candidates ``names`` and the score of each, their
+    held-out errors from the ``k`` folds ``folds``, the paired test over ``groups``."""
+    N = len(data)
+    all_rows = np.arange(N)
     scores: dict[str, CandidateScore] = {}
     for name in names:
         candidate = CANDIDATES[name]
@@ -535,12 +568,14 @@ def diagnose(data: ModelData, *, k: int = 5, seed: int = 0, groups: np.ndarray |
         for fold in range(k):
             test = all_rows[folds == fold]
             train = all_rows[folds != fold]
-            cv_predicted[test] = candidate.predict(data, candidate.fit(data, train), test)
+            if len(test):  # (a fold left empty where a reading is left out to measure its influence)
+                cv_predicted[test] = candidate.predict(data, candidate.fit(data, train), test)
         n_params = candidate.n_params(data, params)
         scores[name] = CandidateScore(
             name, True, "", params, candidate.public_parameters(data, params), n_params,
             error_metrics(data.M, predicted), error_metrics(data.M, cv_predicted),
-            _bic(data.M, predicted, n_params), predicted=predicted, cv_predicted=cv_predicted)
+            _bic(data.M, predicted, n_params), predicted=predicted, cv_predicted=cv_predicted,
+            at_bound=candidate.at_bound(data, params, all_rows))
     none = scores["none"]
     assert none.predicted is not None and none.cv_predicted is not None, "'none' applies to any data"
     none.delta_bic, none.cv_improvement = 0.0, 0.0
@@ -564,8 +599,7 @@ def diagnose(data: ModelData, *, k: int = 5, seed: int = 0, groups: np.ndarray |
         best_cv = min(s.cv["rel_rmse"] for s in significant)
         tied = [s for s in significant if s.cv["rel_rmse"] <= best_cv * (1.0 + CV_TIE)]
         effect = min(tied, key=lambda s: s.bic).name
-    structure = residual_structure(data, none.predicted)
-    return Diagnosis(data, effect, scores, folds, groups, k, structure, list(excluded or []))
+    return effect, scores
 
 
 def diagnose_table(table: pd.DataFrame, *, k: int = 5, seed: int = 0,
@@ -579,7 +613,9 @@ def diagnose_measurements(measured: MeasuredData, *, k: int = 5, seed: int = 0,
     """Run the catalogue model on a measured table read by :func:`read_measurements` and :func:`diagnose` it."""
     data, rows, excluded = model_data(measured)
     user_groups = measured.group[rows] if measured.group is not None else None
-    return diagnose(data, k=k, seed=seed, groups=user_groups, candidates=candidates, excluded=excluded)
+    numbers = np.array([row_number(measured.rows, int(i)) for i in rows], dtype=np.int64)
+    return diagnose(data, k=k, seed=seed, groups=user_groups, candidates=candidates, excluded=excluded,
+                    rows=numbers)
 
 
 # ---------------------------------------------------------------------------------------------

@@ -35,7 +35,7 @@ from __future__ import annotations
 import json
 import math
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -43,10 +43,11 @@ import numpy as np
 import pandas as pd
 from scipy import optimize
 
+from bearingheat.analysis.candidate_rows import (CalcRows, ModelData, bearing_keys, catalogue_arrays,
+                                                 evaluate_with_axial_load, m1_load)
 from bearingheat.analysis.domain import domain_values, outside, read_domain
-from bearingheat.calc.friction import evaluate_catalogue_model
-from bearingheat.calc.messages import Labels, with_texts
-from bearingheat.calc.models import DEFAULT_MODEL, failed_rows, get_model, row_model_names, support_arrays_of
+from bearingheat.calc.messages import with_texts
+from bearingheat.calc.models import DEFAULT_MODEL, failed_rows, get_model, row_model_names
 from bearingheat.calc.supports import SupportArrays
 from bearingheat.errors import DiagnoseError, ModelError
 from bearingheat.kernels import friction
@@ -65,136 +66,9 @@ __all__ = [
     "evaluate_with_axial_load",
     "bearing_keys",
     "m1_load",
+    "bound_side",
+    "AT_BOUND_TOLERANCE",
 ]
-
-
-# ---------------------------------------------------------------------------------------------
-# The catalogue model arrays (to re-evaluate M1 under a changed axial load)
-# ---------------------------------------------------------------------------------------------
-
-def catalogue_arrays(frame: pd.DataFrame) -> tuple[SupportArrays, np.ndarray]:
-    """The support arrays of a catalogue-unit frame, and the rows whose bearing did not resolve.
-
-    Built as calc builds them (:func:`bearingheat.calc.models.support_arrays_of`,
-    bearings resolved once per distinct key); a row whose designation,
-    lubrication or arrangement cannot be used is flagged in the mask.
-    """
-    supports = support_arrays_of(frame)
-    unresolved = ~np.broadcast_to(supports.resolved, (supports.size,)) | \
-        (np.broadcast_to(supports.error, (supports.size,)) != "")
-    return supports, unresolved
-
-
-def evaluate_with_axial_load(supports: SupportArrays, rows: np.ndarray, Fa: np.ndarray) -> np.ndarray:
-    """M1 + M2 [N·mm] of ``rows`` of the support arrays with the axial load replaced by ``Fa``."""
-    sub = supports.take(np.asarray(rows)).replace(Fa=np.asarray(Fa, dtype=float))
-    with np.errstate(all="ignore"):
-        results, _ = evaluate_catalogue_model(sub, Labels())
-    return results["M1"] + results["M2"]
-
-
-def m1_load(P1: np.ndarray, arrays: SupportArrays) -> np.ndarray:
-    """The load M1 works with [N]: P1, or F (Fr of radial, Fa of thrust bearings) where P1 is not given."""
-    return np.where(~np.isnan(P1), P1, np.where(arrays.m1_load == "Fa", arrays.Fa, arrays.Fr))
-
-
-def bearing_keys(frame: pd.DataFrame) -> np.ndarray:
-    """The name of each row's bearing: its designation, else 'type series dxD'.
-
-    The seal torque and preload of ``diagnose`` are fitted per key, and
-    ``calc --effects`` looks them up by the same key.
-    """
-    def text(col: str) -> list[str | None]:
-        if col not in frame.columns:
-            return [None] * len(frame)
-        return [None if v is None or (isinstance(v, float) and math.isnan(v)) or str(v).strip() == ""
-                else str(v).strip() for v in frame[col]]
-
-    def number(col: str) -> np.ndarray:
-        if col not in frame.columns:
-            return np.full(len(frame), np.nan)
-        return pd.to_numeric(frame[col], errors="coerce").to_numpy(dtype=float)
-
-    d, D = number("d"), number("D")
-    out: list[str] = []
-    for des, typ, ser, di, Di in zip(text("designation"), text("type"), text("series"), d, D):
-        if des:
-            out.append(des)
-        else:
-            size = f" {di:g}x{Di:g}" if not (np.isnan(di) or np.isnan(Di)) else ""
-            out.append(f"{typ} {ser}{size}")
-    return np.array(out, dtype=object)
-
-
-# ---------------------------------------------------------------------------------------------
-# Data the candidates work on
-# ---------------------------------------------------------------------------------------------
-
-@dataclass
-class ModelData:
-    """Measured torque with the catalogue model's kernel outputs, one entry per usable row.
-
-    All arrays share one length; ``bearing`` holds integer codes into
-    ``bearing_names``. ``arrays`` are the support arrays of the same rows
-    (for the preload candidate), ``t`` and ``T_oil`` are NaN when not measured.
-    """
-
-    M: np.ndarray
-    M0: np.ndarray
-    M1: np.ndarray
-    M2: np.ndarray
-    f0: np.ndarray
-    n: np.ndarray
-    nu: np.ndarray
-    dM: np.ndarray
-    Fr: np.ndarray
-    Fa: np.ndarray
-    load: np.ndarray
-    t: np.ndarray
-    T_oil: np.ndarray
-    bearing: np.ndarray
-    bearing_names: list[str]
-    arrays: SupportArrays | None = field(repr=False, default=None)
-
-    @property
-    def MR(self) -> np.ndarray:
-        return self.M0 + self.M1 + self.M2
-
-    @property
-    def NR(self) -> np.ndarray:
-        return friction.power_loss(self.MR, self.n)
-
-    def __len__(self) -> int:
-        return len(self.M)
-
-
-@dataclass
-class CalcRows:
-    """The results of ``calc`` as a fitted effect changes them (catalogue units, one entry per row).
-
-    ``ok`` marks the rows not in error, the only rows an effect changes.
-    ``MR`` starts as the catalogue model's torque and is changed in place;
-    ``notes`` maps a row position to the note its message gets (every ``ok``
-    row starts with the effect's description). ``keys`` are the rows'
-    :func:`bearing_keys`, ``arrays`` their support arrays (:func:`catalogue_arrays`),
-    ``results`` the calc results (read only).
-    """
-
-    frame: pd.DataFrame
-    results: pd.DataFrame
-    ok: np.ndarray
-    MR: np.ndarray
-    M0: np.ndarray
-    n: np.ndarray
-    nu: np.ndarray
-    dM: np.ndarray
-    keys: np.ndarray
-    arrays: SupportArrays = field(repr=False)
-    notes: dict[int, str] = field(default_factory=dict)
-
-    @property
-    def positions(self) -> np.ndarray:
-        return np.flatnonzero(self.ok)
 
 
 #: fitted parameters of a candidate, by name (a float, or an array per bearing)
@@ -263,6 +137,26 @@ class Candidate:
         """Parameters as written to summary.json (names with units)."""
         return dict(params)
 
+    def limits(self, data: ModelData, rows: np.ndarray) -> dict[str, tuple[Any, Any]]:
+        """The bounds (low, high) the fit of ``rows`` keeps each fitted parameter within: floats, or arrays per
+        bearing (NaN for a bearing whose parameter is not fitted); inf where a side is open."""
+        return {}
+
+    def at_bound(self, data: ModelData, params: Params, rows: np.ndarray) -> dict[str, Any]:
+        """Each fitted parameter as summary.json names it -> 'lower' or 'upper' where the fit of ``rows`` ended on
+        that bound (:func:`bound_side`), None inside them; a dict per bearing for a parameter per bearing."""
+        marks: dict[str, Any] = {}
+        for name, (low, high) in self.limits(data, rows).items():
+            public = next(p for p in self.required if p == name or p.startswith(f"{name} ["))
+            value = params[name]
+            if np.ndim(value):
+                lows, highs = np.broadcast_to(low, np.shape(value)), np.broadcast_to(high, np.shape(value))
+                marks[public] = {bearing: bound_side(v, lo, hi)
+                                 for bearing, v, lo, hi in zip(data.bearing_names, value, lows, highs)}
+            else:
+                marks[public] = bound_side(value, low, high)
+        return marks
+
     def apply(self, frame: pd.DataFrame, results: pd.DataFrame, parameters: dict[str, Any], note: str, *,
               refused: np.ndarray | None = None, domain: dict[str, Any] | None = None
               ) -> list[tuple[int, str, str]]:
@@ -303,6 +197,27 @@ class Candidate:
         raise NotImplementedError
 
 
+#: a fitted parameter within this share of its bound (0.5 %, of the bound's value) ends on it: a bounded 1-D
+#: search stops within its tolerance of a bound, not on it (a zero bound is met exactly: the fits clip to it)
+AT_BOUND_TOLERANCE = 5e-3
+
+
+def bound_side(value: float, low: float, high: float) -> str | None:
+    """'lower' or 'upper' where ``value`` ends on that bound (within :data:`AT_BOUND_TOLERANCE`), else None (also
+    for NaN bounds: a parameter not fitted).
+
+    >>> bound_side(1.0, 1.0, math.inf), bound_side(2.995, 0.9, 3.0), bound_side(2.0, 0.9, 3.0)
+    ('lower', 'upper', None)
+    """
+    if not (np.isfinite(value) and np.isfinite(low)):
+        return None
+    if value <= low + AT_BOUND_TOLERANCE * abs(low):
+        return "lower"
+    if np.isfinite(high) and value >= high - AT_BOUND_TOLERANCE * abs(high):
+        return "upper"
+    return None
+
+
 class NoEffect(Candidate):
     name = "none"
     description = "the catalogue model M0 + M1 (+ M2) as it stands"
@@ -341,6 +256,9 @@ class SealDrag(Candidate):
     def predict(self, data: ModelData, params: Params, rows: np.ndarray) -> np.ndarray:
         return data.MR[rows] + seal_drag_torque(params["M_seal"], data.bearing[rows])
 
+    def limits(self, data: ModelData, rows: np.ndarray) -> dict[str, tuple[Any, Any]]:
+        return {"M_seal": (0.0, math.inf)}
+
     def n_params(self, data: ModelData, params: Params) -> int:
         return int(np.count_nonzero(np.bincount(data.bearing, minlength=len(data.bearing_names))))
 
@@ -371,6 +289,9 @@ class F0Scale(Candidate):
     def predict(self, data: ModelData, params: Params, rows: np.ndarray) -> np.ndarray:
         return data.MR[rows] + (params["k"] - 1.0) * data.M0[rows]
 
+    def limits(self, data: ModelData, rows: np.ndarray) -> dict[str, tuple[Any, Any]]:
+        return {"k": (1.0, math.inf)}
+
     def public_parameters(self, data: ModelData, params: Params) -> dict[str, Any]:
         return {"k": float(params["k"])}
 
@@ -390,12 +311,16 @@ class ViscosityHeating(Candidate):
         return heated_total_torque(R_th, data.f0[rows], data.nu[rows], data.n[rows], data.dM[rows],
                                    data.M1[rows] + data.M2[rows]) if R_th > 0 else data.MR[rows]
 
-    def fit(self, data: ModelData, rows: np.ndarray) -> Params:
+    def limits(self, data: ModelData, rows: np.ndarray) -> dict[str, tuple[Any, Any]]:
         NR = data.NR[rows]
         top = float(np.nanmax(NR)) if len(NR) else 0.0
-        if not top > 0:
+        # ν down to e^-4 at the highest loss of the rows (no heating where there is no loss)
+        return {"R_th": (0.0, 4.0 / (VISCOSITY_TEMPERATURE_COEFFICIENT * top) if top > 0 else 0.0)}
+
+    def fit(self, data: ModelData, rows: np.ndarray) -> Params:
+        R_max = self.limits(data, rows)["R_th"][1]
+        if not R_max > 0:
             return {"R_th": 0.0}
-        R_max = 4.0 / (VISCOSITY_TEMPERATURE_COEFFICIENT * top)  # ν down to e^-4 at the highest loss
         M = data.M[rows]
 
         def sse(log_r: float) -> float:
@@ -451,6 +376,9 @@ class DragLosses(Candidate):
     def predict(self, data: ModelData, params: Params, rows: np.ndarray) -> np.ndarray:
         return data.MR[rows] + drag_loss_torque(params["c"], params["p"], data.dM[rows], data.n[rows])
 
+    def limits(self, data: ModelData, rows: np.ndarray) -> dict[str, tuple[Any, Any]]:
+        return {"c": (0.0, math.inf), "p": self.P_BOUNDS}
+
     def public_parameters(self, data: ModelData, params: Params) -> dict[str, Any]:
         return {"c": float(params["c"]), "p": float(params["p"])}
 
@@ -478,26 +406,29 @@ class RunIn(Candidate):
 
     def fit(self, data: ModelData, rows: np.ndarray) -> Params:
         M, base, M0, t = data.M[rows], data.MR[rows], data.M0[rows], data.t[rows]
-        span = float(np.ptp(data.t)) or 1.0
 
         def best_a(log_tau: float) -> tuple[float, float]:
             extra = M0 * np.exp(-t / math.exp(log_tau))
             a = _nonneg_scale(M, base, extra)
             return a, _weighted_sse(M, base + a * extra)
 
-        # τ between 1 % and 100 % of the observed time span: a decay slower than that is
-        # indistinguishable from a constant f0 scale within the data
-        bounds = (math.log(0.01 * span), math.log(span))
         def sse(log_tau: float) -> float:
             return best_a(log_tau)[1]
 
-        grid = np.linspace(*bounds, 21)
+        shortest, longest = self.limits(data, rows)["tau"]
+        grid = np.linspace(math.log(shortest), math.log(longest), 21)
         log_tau = _refine(sse, grid, *_grid_best(sse, grid), 1e-4)
         a, _ = best_a(log_tau)
         return {"a": a, "tau": math.exp(log_tau)}
 
     def predict(self, data: ModelData, params: Params, rows: np.ndarray) -> np.ndarray:
         return data.MR[rows] + params["a"] * data.M0[rows] * np.exp(-data.t[rows] / params["tau"])
+
+    def limits(self, data: ModelData, rows: np.ndarray) -> dict[str, tuple[Any, Any]]:
+        # τ between 1 % and 100 % of the time span of the rows fitted (a training fold's own, not the held-out
+        # rows'): a decay slower than that is indistinguishable from a constant f0 scale within them
+        span = float(np.ptp(data.t[rows])) or 1.0
+        return {"a": (0.0, math.inf), "tau": (0.01 * span, span)}
 
     def public_parameters(self, data: ModelData, params: Params) -> dict[str, Any]:
         return {"a": float(params["a"]), "tau [h]": float(params["tau"])}
@@ -541,6 +472,21 @@ class Preload(Candidate):
     def _m1(self, data: ModelData, rows: np.ndarray, F_pre: np.ndarray | float) -> np.ndarray:
         return evaluate_with_axial_load(self._arrays(data), rows, data.Fa[rows] + F_pre)
 
+    def _top(self, data: ModelData, mine: np.ndarray) -> float:
+        """The largest preload [N] searched for a bearing's rows ``mine``: its C0, else 10 times its largest load."""
+        arrays = self._arrays(data)
+        C0_rows = np.broadcast_to(arrays.C0, (arrays.size,))[mine]  # (one NaN where C0 is no column)
+        C0 = np.nanmax(C0_rows) if np.any(~np.isnan(C0_rows)) else np.nan
+        return C0 if C0 > 0 else 10.0 * max(float(np.max(data.Fr[mine] + data.Fa[mine])), 1.0)
+
+    def limits(self, data: ModelData, rows: np.ndarray) -> dict[str, tuple[Any, Any]]:
+        low, high = np.full(len(data.bearing_names), np.nan), np.full(len(data.bearing_names), np.nan)
+        for code in self._axial_bearings(data):
+            mine = rows[data.bearing[rows] == code]
+            if len(mine):
+                low[code], high[code] = 0.0, self._top(data, mine)
+        return {"F_pre": (low, high)}
+
     def fit(self, data: ModelData, rows: np.ndarray) -> Params:
         F_pre = np.zeros(len(data.bearing_names))
         for code in self._axial_bearings(data):
@@ -548,10 +494,7 @@ class Preload(Candidate):
             if len(mine) == 0:
                 continue
             M, M0 = data.M[mine], data.M0[mine]
-            arrays = self._arrays(data)
-            C0_rows = np.broadcast_to(arrays.C0, (arrays.size,))[mine]  # (one NaN where C0 is no column)
-            C0 = np.nanmax(C0_rows) if np.any(~np.isnan(C0_rows)) else np.nan
-            top = C0 if C0 > 0 else 10.0 * max(float(np.max(data.Fr[mine] + data.Fa[mine])), 1.0)
+            top = self._top(data, mine)
 
             def sse(force: float) -> float:
                 pred = M0 + self._m1(data, mine, force)

@@ -25,6 +25,7 @@ import numpy as np
 import pandas as pd
 
 from bearingheat.analysis.diagnose import numbers_of, row_number, row_numbers
+from bearingheat.analysis.passthrough import unread_columns
 from bearingheat.calc.contract import parse_header
 from bearingheat.calc.conversion import not_a_number
 from bearingheat.calc.table import calc
@@ -72,11 +73,7 @@ def read_lab_table(table: pd.DataFrame) -> pd.DataFrame:
     rows = row_numbers(table)
     decimal = str(table.attrs.get("decimal", "."))
     out = pd.DataFrame(index=range(len(table)))
-    seen = {}
-    for header in table.columns:  # (a header that is no 'name [unit]' names no reading: left alone, as calc does)
-        name, unit = parse_header(header, strict=False)
-        if name in LAB_UNITS:
-            seen[name] = (header, unit)
+    seen = _lab_headers(table)
     for name in ("bearing", "Q", "beta", "n", "T"):
         if name not in seen:
             unit = LAB_UNITS[name]
@@ -116,6 +113,17 @@ def read_lab_table(table: pd.DataFrame) -> pd.DataFrame:
     return out
 
 
+def _lab_headers(table: pd.DataFrame) -> dict[str, tuple[str, str | None]]:
+    """Lab column name -> (its header, the unit typed there) of the columns a table of readings has; a header that
+    is no 'name [unit]' names no reading (it is passed through, as calc passes it)."""
+    seen = {}
+    for header in table.columns:
+        name, unit = parse_header(header, strict=False)
+        if name in LAB_UNITS:
+            seen[name] = (header, unit)
+    return seen
+
+
 def _first(group: pd.DataFrame, column: str) -> float:
     """The value of a column that is the same on every reading of a group (a bearing's d, dm, C0)."""
     return float(group[column].to_numpy(dtype=float)[0])
@@ -125,7 +133,7 @@ def _first(group: pd.DataFrame, column: str) -> float:
 class LabResult:
     """Everything the lab report shows."""
 
-    readings: pd.DataFrame                      # with Fa, Fr, P0 [N], d, dm, C0, and catalogue columns
+    readings: pd.DataFrame                      # with Fa, Fr, P0 [N], d, dm, C0, catalogue columns, unread columns
     # (bearing, beta) -> mean T, rows Q, columns n; (bearing, Q) -> mean T, rows n, columns beta
     table4: dict[tuple[Hashable, Hashable], pd.DataFrame] = field(default_factory=dict)
     table5: dict[tuple[Hashable, Hashable], pd.DataFrame] = field(default_factory=dict)
@@ -213,6 +221,10 @@ def process_lab(table: pd.DataFrame, *, nu: float | None = None, lubrication: st
             entry["catalogue M0 share"] = float((g["M0_catalogue"] / g["MR_catalogue"]).median())
         comp.append(entry)
     result.comparison = pd.DataFrame(comp)
+    # the columns no reading is taken from (a remark, 'remark [see note]]'), kept in readings.csv as calc keeps them
+    kept = unread_columns(table, [header for header, _ in _lab_headers(table).values()], set(r.columns),
+                          "lab writes into readings.csv", LabError)
+    result.readings = pd.concat([r, kept], axis=1) if len(kept.columns) else r
     return result
 
 

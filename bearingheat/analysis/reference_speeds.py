@@ -25,7 +25,8 @@ import pandas as pd
 
 from bearingheat.analysis.deviations import (CONFIDENCE, change_point, consistent_scale, local_residuals,
                                              median_interval, robust_scale)
-from bearingheat.calc.contract import parse_header
+from bearingheat.analysis.passthrough import unread_columns
+from bearingheat.calc.contract import parse_header, readable_header
 from bearingheat.calc.thermal import thermal_reference_speed_details
 from bearingheat.catalogue.friction import resolve
 from bearingheat.catalogue.thermal import reference_conditions
@@ -255,12 +256,16 @@ def audit_reference_speeds(table: pd.DataFrame, *, speed_column: str | None = No
     CSV, else its position from 1). A cell that is text but no number, a
     published speed that is blank or not finite and > 0, and a d, D, B, T
     or C0 that is not finite and > 0 leave the row uncomputed, its reason
-    naming the column, the value and the expected range. Group the rows
-    with :func:`classify_reference_speeds`.
+    naming the column, the value and the expected range. The list's other
+    columns (a page, a remark, a header that is no ``name [unit]``) follow,
+    as typed, as calc passes them through. Group the rows with
+    :func:`classify_reference_speeds`.
     """
     columns: dict[str, str] = {}
     units: dict[str, str | None] = {}
     for header in table.columns:
+        if not readable_header(header):  # ('remark [see note]]': passed through, as calc passes it)
+            continue
         name, unit = parse_header(header)
         columns.setdefault(name, header)
         units.setdefault(name, unit)
@@ -317,7 +322,14 @@ def audit_reference_speeds(table: pd.DataFrame, *, speed_column: str | None = No
     reason = np.where(in_error, ["; ".join(p) for p in problems], details["reason"].to_numpy(dtype=object))
     named = _row_names(table, out["designation"].astype(str).to_numpy(dtype=object))
     out["reason"] = [f"{who}: {why}" if why else "" for who, why in zip(named, reason)]
-    return out
+    # the columns not read (a page, a remark), kept after the audit's own as calc keeps them
+    variant_column = next((name for name in VARIANT_COLUMNS if name in columns), None)
+    read = [columns[name] for name in (published_name, "designation", "series", "family", variant_column,
+                                       *_GEOMETRY_UNITS, *(() if "designation" in columns else ("type",)))
+            if name in columns]
+    kept = unread_columns(table, read, {*out.columns, *CLASSIFIED_COLUMNS},
+                          "the reference speed audit writes into reference_speeds.csv", AuditError)
+    return pd.concat([out, kept.set_axis(out.index)], axis=1) if len(kept.columns) else out
 
 
 # ---- groups: series, size classes, outliers, flags ------------------------------------------
@@ -356,6 +368,9 @@ class ReferenceSpeedAudit:
         """The bearings whose published speed is off their own series (misprints?)."""
         return self.bearings[self.bearings["outlier"]]
 
+
+#: the columns :func:`classify_reference_speeds` adds to each bearing
+CLASSIFIED_COLUMNS = ("group", "subgroup", "local_deviation", "outlier")
 
 #: columns of :attr:`ReferenceSpeedAudit.groups`
 GROUP_COLUMNS = (
@@ -463,10 +478,8 @@ def classify_reference_speeds(rows: pd.DataFrame, *, confidence: float = CONFIDE
                 label = _bore_range(bore[part])
                 subgroup[part] = label
                 group[part] = f"{key} {label}"
-    bearings["group"] = group
-    bearings["subgroup"] = subgroup
-    bearings["local_deviation"] = local
-    bearings["outlier"] = outlier
+    for name, values in zip(CLASSIFIED_COLUMNS, (group, subgroup, local, outlier)):
+        bearings[name] = values
     records = []
     for key in series_keys:
         in_series = keys == key

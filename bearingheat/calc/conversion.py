@@ -12,8 +12,9 @@ import datetime
 import math
 import re
 from collections import defaultdict
+from collections.abc import Collection, Mapping
 from dataclasses import dataclass, field
-from typing import Callable
+from typing import Any, Callable, NamedTuple
 
 import numpy as np
 import pandas as pd
@@ -26,7 +27,7 @@ from bearingheat.errors import InputError, UnitError
 from bearingheat.units import convert_column
 
 __all__ = ["to_catalogue_units", "ConvertedTable", "refuse_result_columns", "not_a_number", "with_decimal_point",
-           "blank_cell", "OTHER_UNIT_FORM"]
+           "blank_cell", "OTHER_UNIT_FORM", "lookalike_column", "Lookalike"]
 
 
 @dataclass
@@ -220,11 +221,37 @@ def to_catalogue_units(table: pd.DataFrame, *, units: dict[str, str] | None = No
 OTHER_UNIT_FORM = re.compile(r"^\s*(\w+)\s*(?:\((.+)\)|,\s*(.+)|/\s*(.+)|\s+in\s+(.+))\s*$")
 
 
-def _refuse_lookalikes(headers, known: dict[str, str]) -> None:
-    """:class:`InputError` for a header that is not read but looks like a column the table lacks: the unit written
-    another way ('Fr (kN)') or the name in other letter case ('FR', 'fr [kN]', 'Arrangement'; names of two or more
-    letters). Such a column would be passed through and its loads taken as 0, its values as absent, or a paired
-    arrangement computed as a single bearing."""
+class Lookalike(NamedTuple):
+    """A header that is not read but looks like a column the table lacks: the column ``meant`` and the header
+    ``written`` to name it with."""
+
+    header: Any
+    meant: str
+    written: str
+
+    def message(self, reading: str, consequence: str) -> str:
+        """The refusal: the header, the column it looks like, ``reading`` ('calc would not read': who does not read
+        it from the header), the header to write and ``consequence``, what becomes of the table as it is."""
+        return (f"column {self.header!r} looks like {self.meant!r}, which {reading} from it: name it "
+                f"{self.written!r} (headers are 'name [unit]', the name in its own letters); as it is, {consequence}")
+
+
+def lookalike_column(headers, known: Mapping[str, str], *, never_missed: Collection[str] = (),
+                     text_in_other_form: bool = False) -> Lookalike | None:
+    """The first header that is not read but looks like a column of ``known`` (name -> unit, '' for a text column)
+    the table lacks, or None: the unit written another way ('Fr (kN)', :data:`OTHER_UNIT_FORM`) or the name in
+    other letter case ('FR', 'fr [kN]', 'Arrangement'; names of two or more letters).
+
+    A column of ``never_missed`` (a label, only passed through) is not looked for. A text column written in the
+    other-unit form ('Model (old)') is a note, not a lookalike, unless ``text_in_other_form`` (diagnose's
+    ``group``: 'group (run)' would leave the rows grouped by operating point instead of by the labels).
+
+    >>> lookalike_column(["Fr (kN)", "n [1/min]"], {"Fr": "N", "n": "1/min"})
+    Lookalike(header='Fr (kN)', meant='Fr', written='Fr [kN]')
+    >>> lookalike_column(["Group (run)"], {"group": ""}) is None, lookalike_column(["Group (run)"], {"group": ""},
+    ...                                                                            text_in_other_form=True)
+    (True, Lookalike(header='Group (run)', meant='group', written='group'))
+    """
     names = {}
     for header in headers:
         try:
@@ -232,9 +259,9 @@ def _refuse_lookalikes(headers, known: dict[str, str]) -> None:
         except InputError:
             names[header] = (str(header), None)
     present = {name for name, _ in names.values()}
-    # (a label column is only passed through: 'ID' beside it loses nothing)
-    missing = {name: unit for name, unit in known.items() if name not in present and name not in LABEL_COLUMNS}
+    missing = {name: unit for name, unit in known.items() if name not in present and name not in never_missed}
     numeric = {name: unit for name, unit in missing.items() if unit != ""}
+    exact = missing if text_in_other_form else numeric
     by_case = {name.casefold(): name for name in missing if len(name) > 1}
     for header, (name, unit) in names.items():
         if name in known:
@@ -242,13 +269,23 @@ def _refuse_lookalikes(headers, known: dict[str, str]) -> None:
         other_form = OTHER_UNIT_FORM.match(name)
         base, typed = (other_form.group(1), next(g for g in other_form.groups()[1:] if g)) if other_form \
             else (name, unit)
-        meant = base if base in numeric else by_case.get(base.casefold()) if len(base) > 1 else None
-        if meant is None or (other_form and meant not in numeric):  # ('Model (old)' is a note, not a unit)
+        meant = base if base in exact else by_case.get(base.casefold()) if len(base) > 1 else None
+        if meant is None or (other_form and meant not in exact):  # ('Model (old)' is a note, not a unit)
             continue
         written = f"{meant} [{(typed or numeric[meant]).strip()}]" if meant in numeric else meant
-        raise InputError(f"column {header!r} looks like {meant!r}, which calc would not read from it: name it "
-                         f"{written!r} (headers are 'name [unit]', the name in its own letters); as it is, the table "
-                         f"would be computed as if {meant} were not given")
+        return Lookalike(header, meant, written)
+    return None
+
+
+def _refuse_lookalikes(headers, known: dict[str, str]) -> None:
+    """:class:`InputError` for a header that is not read but looks like a column the table lacks
+    (:func:`lookalike_column`). Such a column would be passed through and its loads taken as 0, its values as
+    absent, or a paired arrangement computed as a single bearing. (A label column is only passed through: 'ID'
+    beside it loses nothing.)"""
+    found = lookalike_column(headers, known, never_missed=LABEL_COLUMNS)
+    if found is not None:
+        raise InputError(found.message("calc would not read",
+                                       f"the table would be computed as if {found.meant} were not given"))
 
 
 #: the status values calc writes

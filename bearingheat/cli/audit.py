@@ -102,7 +102,7 @@ def run(args: argparse.Namespace) -> int:
     jobs = []
     if args.input is not None:
         table = read_table(args.input, args.sheet, sep=args.sep, decimal=args.decimal)
-        names = {parse_header(h)[0] for h in table.columns}
+        names = {parse_header(h, strict=False)[0] for h in table.columns}  # ('remark [see note]]': passed through)
         if "M" in names:
             if DEFAULT_MODEL in models:
                 jobs.append(("coefficients", table))

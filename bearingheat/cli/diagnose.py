@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import sys
 
 from bearingheat.analysis.comparison import ALL_MODELS, compare_models, model_names
 from bearingheat.analysis.diagnose import diagnose_measurements, read_measurements
@@ -45,8 +46,14 @@ residuals.png, measured_vs_predicted.png. Use the fitted effect in predictions
 with 'bearingheat calc INPUT --effects DIR/summary.json'. Existing files in DIR
 are replaced only with --force; each file is written atomically.
 
+The report also lists the readings of the largest studentised residual under
+the chosen effect, flags outliers (Bonferroni test), and makes the choice again
+without the most outlying flagged reading: where that changes the effect, a
+warning says so (on stderr, in summary.json 'warnings' and report.md).
+
 Exit codes: 0 done; 1 done, but some rows were excluded (errors listed in the
-report); 2 unusable input (file, columns, units, too few rows) or a file fault.
+report) or one reading decides the choice (the warning); 2 unusable input
+(file, columns, units, too few rows) or a file fault.
 """
 
 
@@ -78,7 +85,7 @@ def run(args: argparse.Namespace) -> int:
     files = (_FILES if search else ()) + (COMPARISON_FILES if compare else ())
     check_outputs(args.out_dir, files, force=args.force, inputs=(args.input,), create=False)
     table = read_table(args.input, args.sheet, sep=args.sep, decimal=args.decimal)
-    excluded = 0
+    flagged = 0  # rows excluded, or a warning: exit 1
     try:
         measured = read_measurements(table)
         comparison = compare_models(measured, models, k=args.folds, seed=args.seed) if compare else None
@@ -88,18 +95,21 @@ def run(args: argparse.Namespace) -> int:
     printed: dict = {}
     if comparison is not None:
         write_comparison(comparison, args.out_dir, force=args.force, inputs=(args.input,))
-        excluded = len(comparison.excluded)
+        flagged = len(comparison.excluded)
         printed["model_comparison"] = comparison.summary()
         if not args.quiet and not args.json:
             for line in comparison_lines(comparison):
                 print(line)
     if diagnosis is not None:
         summary = write_outputs(diagnosis, args.out_dir, force=args.force, inputs=(args.input,))
-        excluded = summary["n_excluded"]
+        flagged = summary["n_excluded"] + len(summary["warnings"])
         printed["diagnosis"] = summary
         if not args.quiet and not args.json:
             for line in summary_lines(summary, args.out_dir):
                 print(line)
+        if not args.quiet:
+            for warning in summary["warnings"]:
+                print(f"bearingheat diagnose: warning: {warning}", file=sys.stderr)
     if args.json:
         print(json.dumps(json_safe(printed), ensure_ascii=False))
-    return 1 if excluded else 0
+    return 1 if flagged else 0

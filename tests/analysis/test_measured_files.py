@@ -1,7 +1,9 @@
 """Measured files as diagnose and lab read them: the decimal mark, the rows messages cite, headers that look like
-a measured column, blank group labels, why too few rows were left, the arguments of diagnose."""
+a measured column, blank group labels, why too few rows were left, the arguments of diagnose, the columns they
+pass through."""
 from __future__ import annotations
 
+import json
 import re
 from pathlib import Path
 
@@ -9,11 +11,16 @@ import numpy as np
 import pandas as pd
 import pytest
 from diagnose_cases import small_table
+from synthetic_catalogue import synthetic_catalogue
 
+from bearingheat.analysis.audit import audit_reference_speeds
 from bearingheat.analysis.diagnose import (DiagnoseError, diagnose, diagnose_measurements, diagnose_table,
                                            model_data, read_measurements)
 from bearingheat.analysis.lab import process_lab
-from bearingheat.errors import LabError
+from bearingheat.calc.contract import LABEL_COLUMNS, input_units
+from bearingheat.calc.conversion import lookalike_column
+from bearingheat.cli import main
+from bearingheat.errors import AuditError, LabError
 from bearingheat.io.tables import calc_csv, read_table
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
@@ -151,6 +158,23 @@ def test_a_torque_header_with_its_unit_in_parentheses_is_refused():
         read_measurements(table)
 
 
+def test_one_matcher_finds_calcs_and_diagnoses_lookalikes_and_only_diagnose_refuses_a_text_column_in_unit_form():
+    """calc.conversion and diagnose had two copies of the lookalike matcher; one serves both now. A text column
+    written in the other-unit form is a note to calc ('lubrication (old)') but diagnose's group ('group (run)')."""
+    table = small_table(4)
+    table["group (run)"] = ["a", "a", "b", "b"]
+    with pytest.raises(DiagnoseError, match=_exactly(
+            "column 'group (run)' looks like 'group', which is not read from it: name it 'group' (headers are "
+            "'name [unit]', the name in its own letters); as it is, the rows would be grouped by operating point "
+            "instead of by these labels")):
+        read_measurements(table)
+    noted = small_table(4).drop(columns=["lubrication"])
+    noted["lubrication (old)"] = "grease"
+    noted["f0"] = 2.0
+    assert lookalike_column(noted.columns, input_units(), never_missed=LABEL_COLUMNS) is None
+    assert read_measurements(noted).frame["f0"].tolist() == [2.0] * 4
+
+
 def test_the_measured_column_itself_beside_a_lookalike_is_read():
     table = small_table(4)
     table["T_oil [degC]"] = 60.0
@@ -213,3 +237,69 @@ def test_a_header_that_is_no_name_and_unit_is_left_alone_as_calc_leaves_it(tmp_p
     lab_noted = tmp_path / "lab_noted.csv"
     readings.to_csv(lab_noted, index=False)
     pd.testing.assert_frame_equal(process_lab(read_table(lab_noted)).task1, process_lab(read_table(READINGS)).task1)
+
+
+def test_audit_lab_and_diagnose_pass_a_remark_through_and_keep_it_where_they_write_the_rows_back(tmp_path):
+    """audit (measured torque and a catalogue list) still refused 'remark [see note]]' ('cannot read the header');
+    lab and the reference speed audit dropped a remark from the rows they write back. Now every command reads the
+    rest as before, and readings.csv and reference_speeds.csv keep the columns they do not read, as calc does."""
+    measured = pd.read_csv(MEASURED)
+    noted = measured.copy()
+    noted.insert(2, "remark [see note]]", [f"r{i}" for i in range(len(noted))])
+    noted["comment"] = "bench 2"
+    noted_path = tmp_path / "noted.csv"
+    noted.to_csv(noted_path, index=False)
+    plain_dir, noted_dir = tmp_path / "plain", tmp_path / "noted"
+    for out in (plain_dir, noted_dir):
+        out.mkdir()
+    # (exit 1: the example's seal drag puts the table f0 and f1 outside their intervals)
+    assert main(["audit", str(MEASURED), "--out-dir", str(plain_dir), "-q"]) == \
+        main(["audit", str(noted_path), "--out-dir", str(noted_dir), "-q"]) == 1
+    pd.testing.assert_frame_equal(pd.read_csv(noted_dir / "coefficients.csv"),
+                                  pd.read_csv(plain_dir / "coefficients.csv"))
+    assert main(["diagnose", str(noted_path), "--out-dir", str(noted_dir), "-q"]) == 0
+    assert json.loads((noted_dir / "summary.json").read_text())["effect"] == "seal_drag"
+    # lab: the readings written back end with the columns no reading is taken from, as typed
+    readings = pd.read_csv(READINGS)
+    readings.insert(1, "remark [see note]]", [f"r{i}" for i in range(len(readings))])
+    readings["comment"] = "rig 2"
+    lab_noted = tmp_path / "lab_noted.csv"
+    readings.to_csv(lab_noted, index=False)
+    lab = process_lab(read_table(lab_noted), nu=20.0)
+    assert list(lab.readings.columns[-2:]) == ["remark [see note]]", "comment"]
+    assert lab.readings["remark [see note]]"].tolist() == [f"r{i}" for i in range(len(readings))]
+    assert set(lab.readings["comment"]) == {"rig 2"}
+    pd.testing.assert_frame_equal(lab.readings.iloc[:, :-2], process_lab(read_table(READINGS), nu=20.0).readings)
+    # the reference speed audit: each bearing's row keeps its page and remark
+    catalogue = synthetic_catalogue()
+    catalogue.insert(1, "remark [see note]]", [f"r{i}" for i in range(len(catalogue))])
+    catalogue["page"] = np.arange(len(catalogue)) + 100
+    listed = tmp_path / "catalogue.csv"
+    catalogue.to_csv(listed, index=False)
+    speeds = audit_reference_speeds(read_table(listed))
+    assert list(speeds.columns[-2:]) == ["remark [see note]]", "page"]
+    assert speeds["remark [see note]]"].tolist() == [f"r{i}" for i in range(len(catalogue))]
+    pd.testing.assert_frame_equal(speeds.iloc[:, :-2], audit_reference_speeds(
+        catalogue.drop(columns=["remark [see note]]", "page"])))
+    speeds_dir = tmp_path / "speeds"
+    speeds_dir.mkdir()
+    main(["audit", "--reference-speeds", str(listed), "--out-dir", str(speeds_dir), "-q"])
+    written = pd.read_csv(speeds_dir / "reference_speeds.csv")
+    assert written["page"].tolist() == list(range(100, 100 + len(catalogue)))
+    assert written["remark [see note]]"].tolist() == [f"r{i}" for i in range(len(catalogue))]
+
+
+def test_a_column_kept_under_a_header_the_command_writes_is_refused():
+    """Kept, a user's 'Fa' beside lab's own Fa (or a 'group' beside the audit's) would give the file two columns of
+    one header: refused, as calc refuses an input column named like one of its results."""
+    readings = pd.read_csv(READINGS)
+    readings["Fa"] = 1.0
+    with pytest.raises(LabError, match=_exactly(
+            "column 'Fa' is a column lab writes into readings.csv; rename it (e.g. 'Fa (own)')")):
+        process_lab(readings)
+    catalogue = synthetic_catalogue()
+    catalogue["group"] = "A"
+    with pytest.raises(AuditError, match=_exactly(
+            "column 'group' is a column the reference speed audit writes into reference_speeds.csv; rename it "
+            "(e.g. 'group (own)')")):
+        audit_reference_speeds(catalogue)

@@ -25,7 +25,7 @@ from bearingheat.io.json import json_safe
 from bearingheat.io.reports import FIGURE_DPI, matplotlib_figure
 
 __all__ = ["plot_residuals", "residuals_figure", "plot_measured_vs_predicted", "report_markdown", "write_outputs",
-           "summary_lines"]
+           "summary_lines", "bound_marks"]
 
 #: at most this many points are drawn (a seeded random subset of larger data sets)
 _PLOT_POINTS = 4000
@@ -45,6 +45,57 @@ def _predicted(score: CandidateScore) -> np.ndarray:
 
 #: bearings named in the legend of the residual plot (the ones with the most rows); the others share one entry
 _LEGEND_BEARINGS = 10
+
+
+def bound_marks(at_bound: dict[str, Any]) -> list[str]:
+    """The fitted parameters that ended on a bound of their fit, as text: 'k (lower)', 'M_seal [N*mm] 6205 (lower)'.
+
+    >>> bound_marks({"c": None, "p": "upper", "F_pre [N]": {"6205": "lower", "NU208-E": None}})
+    ['p (upper)', 'F_pre [N] 6205 (lower)']
+    """
+    marks = []
+    for name, side in at_bound.items():
+        if isinstance(side, dict):
+            marks += [f"{name} {bearing} ({each})" for bearing, each in side.items() if each]
+        elif side:
+            marks.append(f"{name} ({side})")
+    return marks
+
+
+#: what a parameter on a bound means, as the report says it
+_ON_A_BOUND = ("the data would push it past the bound its fit keeps it within, so its value is that bound, not an "
+               "estimate (at a lower bound of 0, or k = 1, the term is absent)")
+
+
+def _percent(fraction: float | None) -> float | None:
+    """A fraction in percent (None stays None: a score not computed)."""
+    return None if fraction is None else 100.0 * fraction
+
+
+def _influence_lines(influence: dict[str, Any] | None) -> list[str]:
+    """The section on single readings: the rule, the readings of the largest studentised residual, the choice
+    without the most outlying flagged one (a warning where it changes)."""
+    if influence is None:
+        return []
+    lines = ["## Influence of single readings", "", influence["rule"], "",
+             f"Readings of the largest studentised residual under the chosen effect ({influence['n_params']} "
+             "parameter(s) not on a bound):", "",
+             "| row | M [N·mm] | predicted [N·mm] | relative residual | leverage | studentised | Cook's distance "
+             "| Bonferroni p | flagged |", "|---|---|---|---|---|---|---|---|---|"]
+    for r in influence["readings"]:
+        lines.append(f"| {r['row']} | {format_value(r['M'])} | {format_value(r['predicted'])} "
+                     f"| {format_value(r['relative_residual'], 3)} | {format_value(r['leverage'], 3)} "
+                     f"| {format_value(r['studentised'], 3)} | {format_value(r['cooks_distance'], 3)} "
+                     f"| {format_value(r['p_value'], 2)} | {'yes' if r['flagged'] else 'no'} |")
+    lines.append("")
+    if influence["dropped"] is None:
+        lines.append("No reading is flagged: the choice was not made again.")
+    elif influence["warning"]:
+        lines.append(f"**Warning: {influence['warning']}.**")
+    else:
+        lines.append(f"{influence['flagged']} reading(s) flagged; without {influence['dropped']} the choice is the "
+                     f"same ('{influence['effect_without']}').")
+    return lines + [""]
 
 
 def _domain_lines(summary: dict[str, Any]) -> list[str]:
@@ -133,16 +184,18 @@ def report_markdown(diagnosis: Diagnosis, summary: dict[str, Any], key: str) -> 
         f"{summary['n_excluded']} row(s) excluded.", "",
         f"**Effect found: `{summary['effect']}`**: {summary['description']}.", "",
         f"Parameters: {format_value(summary['parameters']) or '(none)'}", "",
+        *([f"On a bound of its fit: {', '.join(bound_marks(summary['at_bound']))}: {_ON_A_BOUND}.", ""]
+          if bound_marks(summary["at_bound"]) else []),
         *_domain_lines(summary),
         "## Error before and after", "",
-        "| | RMSE [N·mm] | MAPE [%] | bias, measured − model [N·mm] |", "|---|---|---|---|",
-        f"| catalogue model, fitting data | {format_value(summary['rmse_before'])} | {format_value(summary['mape_before'])} "
-        f"| {format_value(summary['bias_before'])} |",
-        f"| with the effect, fitting data | {format_value(summary['rmse_after'])} | {format_value(summary['mape_after'])} "
-        f"| {format_value(summary['bias_after'])} |",
-        f"| catalogue model, held-out folds | {format_value(summary['cv_rmse_before'])} | {format_value(summary['cv_mape_before'])} | |",
-        f"| with the effect, held-out folds | {format_value(summary['cv_rmse_after'])} | {format_value(summary['cv_mape_after'])} | |",
-        "", "## Residual structure of the catalogue model", "",
+        "| | RMSE [N·mm] | relative RMSE [%] | MAPE [%] | bias, measured − model [N·mm] |", "|---|---|---|---|---|",
+        *[f"| {model}, {rows} | {format_value(summary[f'{cv}rmse_{when}'])} "
+          f"| {format_value(_percent(summary[f'{cv}rel_rmse_{when}']))} | {format_value(summary[f'{cv}mape_{when}'])} "
+          f"| {format_value(summary[f'bias_{when}']) if not cv else ''} |"
+          for cv, rows in (("", "fitting data"), ("cv_", "held-out folds"))
+          for model, when in (("catalogue model", "before"), ("with the effect", "after"))],
+        "", summary["choice_metric_text"], "",
+        "## Residual structure of the catalogue model", "",
         "Relative residual (M measured − M model)/M measured against each regressor.", "",
         "| regressor | statistic | value | p | note |", "|---|---|---|---|---|",
     ]
@@ -152,19 +205,24 @@ def report_markdown(diagnosis: Diagnosis, summary: dict[str, Any], key: str) -> 
     lines += ["", "## Candidates", "",
               f"Grouped {summary['folds']}-fold cross-validation over {summary['groups']} groups "
               "(operating points).", "",
-              "| candidate | parameters | RMSE [N·mm] | CV RMSE [N·mm] | CV rel. RMSE | ΔBIC | CV gain | p | significant |",
-              "|---|---|---|---|---|---|---|---|---|"]
+              "| candidate | parameters | RMSE [N·mm] | CV RMSE [N·mm] | rel. RMSE [%] | CV rel. RMSE [%] | ΔBIC | CV gain "
+              "| p | significant |",
+              "|---|---|---|---|---|---|---|---|---|---|"]
     for name, c in summary["candidates"].items():
         if not c["applicable"]:
-            lines.append(f"| {name} | not applicable: {c['reason']} | | | | | | | no |")
+            lines.append(f"| {name} | not applicable: {c['reason']} | | | | | | | | no |")
             continue
         params = format_value(c["parameters"]) if len(json.dumps(c["parameters"])) < 160 else "(per bearing, see summary.json)"
+        if bound_marks(c["at_bound"]):
+            params += f"; on a bound: {', '.join(bound_marks(c['at_bound']))}"
         gain = f"{c['cv_improvement'] * 100:.1f} %" if c["cv_improvement"] is not None else "–"
-        lines.append(f"| {name} | {params} | {format_value(c['rmse'])} | {format_value(c['cv_rmse'])} | {format_value(c['cv_rel_rmse'], 3)} "
+        lines.append(f"| {name} | {params} | {format_value(c['rmse'])} | {format_value(c['cv_rmse'])} "
+                     f"| {format_value(_percent(c['rel_rmse']), 3)} | {format_value(_percent(c['cv_rel_rmse']), 3)} "
                      f"| {format_value(c['delta_bic'], 4)} | {gain} | {format_value(c['p_value'], 2)} | "
                      f"{'yes' if c['significant'] else 'no'} |")
-    lines += ["", "Selection rule: " + summary["selection_rule"], "", summary["selection"], "",
-              "## Plots", "",
+    lines += ["", "Selection rule: " + summary["selection_rule"], "", summary["selection"], ""]
+    lines += _influence_lines(summary["influence"])
+    lines += ["## Plots", "",
               f"![residuals against {key}](residuals.png)", "",
               "![measured against predicted](measured_vs_predicted.png)", ""]
     if summary["n_excluded"]:
@@ -195,10 +253,22 @@ def write_outputs(diagnosis: Diagnosis, out_dir: str | os.PathLike[str], *, forc
 
 def summary_lines(summary: dict[str, Any], out_dir: str | os.PathLike[str]) -> list[str]:
     """The outcome in a few lines for the console: the effect, the error before and after, where the report is."""
-    lines = [f"effect: {summary['effect']}  parameters: {format_value(summary['parameters']) or '(none)'}",
-             f"RMSE {summary['rmse_before']:.4g} -> {summary['rmse_after']:.4g} N*mm "
-             f"(held-out {summary['cv_rmse_before']:.4g} -> {summary['cv_rmse_after']:.4g}); "
-             f"MAPE {summary['mape_before']:.3g} -> {summary['mape_after']:.3g} %"]
+    lines = [f"effect: {summary['effect']}  parameters: {format_value(summary['parameters']) or '(none)'}"]
+    if bound_marks(summary["at_bound"]):
+        lines.append(f"on a bound of its fit (the value is the bound, not an estimate): "
+                     f"{', '.join(bound_marks(summary['at_bound']))}")
+    lines.append(f"RMSE {summary['rmse_before']:.4g} -> {summary['rmse_after']:.4g} N*mm "
+                 f"(held-out {summary['cv_rmse_before']:.4g} -> {summary['cv_rmse_after']:.4g}); "
+                 f"MAPE {summary['mape_before']:.3g} -> {summary['mape_after']:.3g} %")
+    lines.append(f"relative RMSE {_percent(summary['rel_rmse_before']):.3g} -> {_percent(summary['rel_rmse_after']):.3g} % "
+                 f"(held-out {_percent(summary['cv_rel_rmse_before']):.3g} -> "
+                 f"{_percent(summary['cv_rel_rmse_after']):.3g} %): the error the choice is made on")
+    influence = summary["influence"]
+    if influence is not None and influence["flagged"]:
+        top = influence["readings"][0]
+        lines.append(f"{influence['flagged']} reading(s) flagged as outliers, the largest {top['row']} (studentised "
+                     f"residual {top['studentised']:.3g}); without it the effect chosen is "
+                     f"'{influence['effect_without']}'")
     if summary["n_excluded"]:
         lines.append(f"{summary['n_excluded']} row(s) excluded; see {out_dir}/report.md")
     lines.append(f"report: {out_dir}/report.md")
