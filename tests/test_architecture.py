@@ -22,6 +22,7 @@ DEFERRED = {
     "bearingheat.io.excel": "openpyxl (the Excel bridge: workbooks only)",
     "bearingheat.analysis.effects": "scipy.optimize (calc --effects only)",
     "bearingheat.kernels.contact": "scipy.optimize (tables with ball geometry only)",
+    "bearingheat.units": "pint, pandas and numpy (the program's own entry point: --help and --version load none)",
 }
 MAX_LINES = 700
 
