@@ -121,6 +121,13 @@ def _check_alpha0(alpha0):
             "alpha0 = {a:g} deg must lie in [0, 90) deg", a=alpha0)
 
 
+def _check_working_angle(alpha, alpha0):
+    """α0 ≤ α < 90°: the working angle under an axial load (Zaitsev & Voronkin, p. 2) is turned up from α0."""
+    _check_alpha0(alpha0)
+    _refuse((alpha < alpha0) | (alpha >= 90),
+            "alpha = {a:g} deg must lie in [alpha0, 90) deg = [{a0:g}, 90) deg", a=alpha, a0=alpha0)
+
+
 def _balls_refusal(z):
     return (z < 1) | (z != np.round(z)), "z = {z:g}: the number of balls must be a whole number of at least 1", {"z": z}
 

@@ -49,7 +49,8 @@ from bearingheat.kernels._contact_refusals import (SERIES_ALPHA0_MIN, SERIES_LOA
                                                    SERIES_TOLERANCE_RAD, _ball_refusal, _balls_refusal, _broadcast,
                                                    _check_alpha0, _check_ball, _check_balls,
                                                    _check_deflection_coefficients, _check_grooves, _check_load,
-                                                   _check_outer_groove, _check_pitch, _check_series_range, _kernel,
+                                                   _check_outer_groove, _check_pitch, _check_series_range,
+                                                   _check_working_angle, _kernel,
                                                    _pitch_refusal, _refuse)
 from bearingheat.kernels._series import series_aware
 
@@ -326,9 +327,7 @@ def axial_load_at_angle(alpha, alpha0, C_star):
     1.999
     """
     alpha, alpha0, C_star = _broadcast(alpha, alpha0, C_star)
-    _check_alpha0(alpha0)
-    _refuse((alpha < alpha0) | (alpha >= 90),
-            "alpha = {a:g} deg must lie in [alpha0, 90) deg = [{a0:g}, 90) deg", a=alpha, a0=alpha0)
+    _check_working_angle(alpha, alpha0)
     return _load_at_increment(C_star, alpha0, (alpha - alpha0) * _DEG)
 
 
@@ -346,12 +345,15 @@ def axial_displacement_ratio(alpha, alpha0):
     """Dimensionless axial displacement ξ_a of the rings [1] (Zaitsev & Voronkin, p. 2).
 
     tg α = tg α0 + ξ_a / cos α0, so ξ_a = (tg α − tg α0)·cos α0. The axial
-    displacement is δ_a = ξ_a·(r_i + r_o − d_w). Angles in degrees.
+    displacement is δ_a = ξ_a·(r_i + r_o − d_w). Angles in degrees, valid for
+    0 ≤ α0 ≤ α < 90° (the axial load turns the angle up from α0; ξ_a grows
+    without bound towards 90°).
 
     >>> round(axial_displacement_ratio(14.4670, 12.0), 5)
     0.04445
     """
     alpha, alpha0 = _broadcast(alpha, alpha0)
+    _check_working_angle(alpha, alpha0)
     a, a0 = alpha * _DEG, alpha0 * _DEG
     return (np.tan(a) - np.tan(a0)) * np.cos(a0)
 

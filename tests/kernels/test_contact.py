@@ -285,6 +285,24 @@ def test_working_angle_is_the_inverse_of_the_load_equation():
     assert ct.working_contact_angle(loads, 7792.0, ALPHA0) == pytest.approx(alphas, abs=1e-10)
 
 
+def test_axial_displacement_ratio_over_its_range():
+    """ξ_a = (tan α − tan α0)·cos α0 by hand: 0 at α = α0, (0.257997 − 0.212557)·0.978148 = 0.044447 at the paper's
+    14°28′, (57.28996 − 0.212557)·0.978148 = 55.8301 at 89°; NaN (a row without geometry) stays NaN."""
+    assert ct.axial_displacement_ratio(12.0, 12.0) == 0.0
+    assert ct.axial_displacement_ratio(dms(14, 28), 12.0) == pytest.approx(0.044447, abs=1e-6)
+    assert ct.axial_displacement_ratio(89.0, 12.0) == pytest.approx(55.8301, abs=1e-4)
+    assert math.isnan(ct.axial_displacement_ratio(np.nan, 12.0))
+
+
+def test_working_angle_is_never_below_alpha0():
+    """α = α0 + x: a load so small that x is below the spacing of floats at α0 gives α0 itself, which ξ_a accepts
+    (7.5° does not survive a round trip through radians, 7.499999999999999: α from the radians was below α0)."""
+    assert np.degrees(7.5 * math.pi / 180) < 7.5
+    for load in (0.0, 1e-40, 1e-20):
+        alpha = ct.working_contact_angle(load, 7792.0, 7.5)
+        assert alpha >= 7.5 and ct.axial_displacement_ratio(alpha, 7.5) >= 0.0
+
+
 def test_working_angle_from_zero_initial_angle():
     """alpha0 = 0 (no clearance): the bracketing solver works where the series does not."""
     alpha = ct.working_contact_angle(1e-3, 1.0, 0.0)
@@ -362,6 +380,13 @@ def test_scalar_array_and_series_agree():
      "impossible geometry: pitch diameter D0 = 2 mm must exceed d_w = 2 mm"),
     (lambda: ct.axial_load_at_angle(11.0, 12.0, 7792.0),
      "alpha = 11 deg must lie in [alpha0, 90) deg = [12, 90) deg"),
+    # tan(90 deg) in floating point is 1.6e16: the ratio used to come back as 1.6e16, and as a negative
+    # displacement below alpha0
+    (lambda: ct.axial_displacement_ratio(90.0, 12.0), "alpha = 90 deg must lie in [alpha0, 90) deg = [12, 90) deg"),
+    (lambda: ct.axial_displacement_ratio(11.0, 12.0), "alpha = 11 deg must lie in [alpha0, 90) deg = [12, 90) deg"),
+    (lambda: ct.axial_displacement_ratio(np.array([14.0, 95.0]), 12.0),
+     "alpha = 95 deg must lie in [alpha0, 90) deg = [12, 90) deg (element 1)"),
+    (lambda: ct.axial_displacement_ratio(14.0, -1.0), "alpha0 = -1 deg must lie in [0, 90) deg"),
     # non-finite and far-out inputs: refused by the package, not by scipy's bracket or as inf/nan out
     (lambda: ct.working_contact_angle(np.inf, 7792.0, 12.0), "Fa = inf N: the axial load must be finite"),
     (lambda: ct.working_contact_angle(2.0, np.inf, 12.0), "C_star = inf N: the stiffness characteristic must be finite"),
