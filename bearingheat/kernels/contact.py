@@ -643,11 +643,14 @@ def _minimum_axial_load(z, d_w, d_pitch, n, alpha):
 
 # --------------------------------------------------------------------------- display
 def degrees_to_dms(alpha_deg: float) -> str:
-    """An angle in degrees as ``D°M′S″``, seconds rounded.
+    """An angle in degrees as ``D°M′S″``, seconds rounded; NaN and infinite angles are refused.
 
     >>> degrees_to_dms(14.4670)
     '14°28′01″'
     """
+    if not math.isfinite(float(alpha_deg)):
+        raise ContactInputError(f"alpha = {float(alpha_deg):g} deg: only a finite angle can be written in degrees, "
+                                "minutes and seconds")
     total = round(abs(float(alpha_deg)) * 3600.0)
     deg, rest = divmod(total, 3600)
     minutes, seconds = divmod(rest, 60)

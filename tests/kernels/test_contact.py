@@ -431,6 +431,25 @@ def test_series_method_refuses_what_its_cap_of_newton_steps_does_not_reach(monke
                                "did not come below 1e-12 rad in 2 steps; use working_contact_angle (row b)")
 
 
+@pytest.mark.parametrize("angle, message", [
+    (math.nan, "alpha = nan deg: only a finite angle can be written in degrees, minutes and seconds"),
+    (np.float64(np.inf), "alpha = inf deg: only a finite angle can be written in degrees, minutes and seconds"),
+    (-math.inf, "alpha = -inf deg: only a finite angle can be written in degrees, minutes and seconds"),
+])
+def test_degrees_to_dms_refuses_what_is_not_a_finite_angle(angle, message):
+    """Python's own 'cannot convert float NaN to integer' (and OverflowError for inf) used to come out."""
+    with pytest.raises(ContactInputError) as info:
+        ct.degrees_to_dms(angle)
+    assert str(info.value) == message
+
+
+def test_degrees_to_dms_by_hand():
+    """14.4670° = 14° 28′ 1.2″; −0.5° = −0°30′00″; 59.99999° rounds up to 60°00′00″ (not 59°59′60″)."""
+    assert ct.degrees_to_dms(14.4670) == "14°28′01″"
+    assert ct.degrees_to_dms(-0.5) == "-0°30′00″"
+    assert ct.degrees_to_dms(59.99999) == "60°00′00″"
+
+
 def test_error_names_the_row_of_a_series():
     clearance = pd.Series([0.01, -0.002], index=["bearing A", "bearing B"])
     with pytest.raises(ContactInputError) as info:
