@@ -667,3 +667,40 @@ def test_the_duty_summary_follows_its_dataset(tmp_path, monkeypatch):
     heavier.iloc[0:0].to_parquet(tmp_path / "fleet" / "a.parquet", index=False)
     assert calc_fleet(tmp_path / "fleet", out, overwrite=True).num_rows == 0
     assert not summary.exists()
+
+
+def test_the_scheduler_is_checked_and_the_target_recovered_once(tmp_path, capsys, monkeypatch):
+    """The command checked the scheduler's address, and dask_client checked it again; it put right what a stopped
+    run had left, and plan_dataset did it again. Each runs once now (counted on a scheduler of this process, with one
+    worker thread); a malformed address given to dask_client directly is still named by check_scheduler."""
+    from distributed import LocalCluster
+
+    import bearingheat.cli.calc as command
+    import bearingheat.io.dataset as dataset
+
+    calls: list[str] = []
+
+    def counted(name, real):
+        def wrapper(value):
+            calls.append(name)
+            return real(value)
+        return wrapper
+
+    for name in ("check_scheduler", "recover_target"):
+        wrapper = counted(name, getattr(dataset, name))
+        monkeypatch.setattr(command, name, wrapper)
+        monkeypatch.setattr(dataset, name, wrapper)
+    fleet(tmp_path / "fleet")
+    out = tmp_path / "results"
+    with LocalCluster(n_workers=1, threads_per_worker=1, processes=False, protocol="tcp://",
+                      dashboard_address=None) as cluster:
+        assert main(["calc", str(tmp_path / "fleet"), "--dask", "--scheduler", cluster.scheduler_address,
+                     "-o", str(out), "-q"]) == 1
+    assert sorted(calls) == ["check_scheduler", "recover_target"]
+    assert len(pd.read_parquet(out)) == 60
+    capsys.readouterr()
+    with pytest.raises(bh.errors.InputError) as info:
+        with dataset.dask_client("notanaddress"):
+            pass
+    assert str(info.value) == ("--scheduler notanaddress: not the address of a Dask scheduler (missing port number in "
+                               "address 'notanaddress'); give it as tcp://HOST:PORT, such as tcp://scheduler:8786")
