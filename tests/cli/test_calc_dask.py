@@ -704,3 +704,34 @@ def test_the_scheduler_is_checked_and_the_target_recovered_once(tmp_path, capsys
             pass
     assert str(info.value) == ("--scheduler notanaddress: not the address of a Dask scheduler (missing port number in "
                                "address 'notanaddress'); give it as tcp://HOST:PORT, such as tcp://scheduler:8786")
+
+
+def test_text_columns_of_a_dictionary_are_text_in_the_fleet_as_plain_strings_are(tmp_path):
+    """A fleet whose designation, lubrication and id are dictionaries (pandas categories; in one file of two, the
+    other plain strings, as well as in both) gives the results of the fleet in plain strings, and every text column
+    of the parts is dictionary encoded: the parts' writer took a dictionary for no text (io.arrow) where io.fleet
+    took it for text."""
+    from bearingheat.io.arrow import is_text_type
+    demo = pd.read_csv(DEMO)
+    categorical = demo.astype({c: "category" for c in ("id", "designation", "lubrication")})
+    for name, halves in (("plain", (demo, demo)), ("dictionary", (categorical, categorical)),
+                         ("mixed", (categorical, demo))):
+        (tmp_path / name).mkdir()
+        for i, frame in enumerate(halves):
+            frame.iloc[3 * i:3 * i + 3].to_parquet(tmp_path / name / f"part{i}.parquet", index=False)
+    plain = calc_fleet(tmp_path / "plain", tmp_path / "out_plain")
+    for name in ("dictionary", "mixed"):
+        got = calc_fleet(tmp_path / name, tmp_path / f"out_{name}")
+        assert got.column_names == plain.column_names
+        for column in plain.column_names:
+            assert got.column(column).to_pylist() == plain.column(column).to_pylist(), (name, column)
+        for part in sorted((tmp_path / f"out_{name}").glob("*.parquet")):
+            file = parquet.ParquetFile(part)
+            group = file.metadata.row_group(0)
+            for i, field in enumerate(file.schema_arrow):
+                if is_text_type(field.type):
+                    assert "RLE_DICTIONARY" in group.column(i).encodings, (name, part.name, field.name)
+    assert pa.types.is_dictionary(parquet.read_schema(tmp_path / "out_dictionary" / "part.0.parquet")
+                                  .field("designation").type)
+    assert pa.types.is_large_string(parquet.read_schema(tmp_path / "out_mixed" / "part.0.parquet")
+                                    .field("designation").type)
