@@ -294,16 +294,17 @@ _DUTY_NAMES = frozenset({"support", "case", "time_share", "duration", "designati
 
 
 def _duty_summary(plan: DatasetPlan, parts: Path) -> pd.DataFrame | None:
-    """The duty-cycle summary of the parts in the folder ``parts`` (None for a fleet without rows): the columns it
-    reads, without the results the layout adds where pandas calc writes none (a column missing in every row), so
-    that it is the summary of the same rows in one file."""
+    """The duty-cycle summary of the parts in the folder ``parts`` (None for a fleet without rows, or whose support
+    column is blank in every row): the columns it reads, without the results the layout adds where pandas calc
+    writes none (a column missing in every row), so that it is the summary of the same rows in one file."""
     wanted = [name for name in plan.schema.names if parse_header(name, strict=False)[0] in _DUTY_NAMES]
     table = parquet.read_table(parts, columns=wanted)
     if table.num_rows == 0:
         return None
     kept = [name for name in wanted if name in plan.columns.names or name not in plan.layout
             or table.column(name).null_count < table.num_rows]
-    return duty_cycle(table.select(kept).to_pandas())
+    results = table.select(kept).to_pandas()
+    return duty_cycle(results) if has_duty_cycle(results) else None  # (a support column all blank: no duty cycle)
 
 
 def compute_dataset(plan: DatasetPlan) -> DatasetRun:

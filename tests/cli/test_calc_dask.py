@@ -735,3 +735,15 @@ def test_text_columns_of_a_dictionary_are_text_in_the_fleet_as_plain_strings_are
                                   .field("designation").type)
     assert pa.types.is_large_string(parquet.read_schema(tmp_path / "out_mixed" / "part.0.parquet")
                                     .field("designation").type)
+
+
+def test_a_fleet_whose_support_column_is_blank_in_every_row_has_no_duty_cycle(tmp_path):
+    """The fleet of a CSV written from the example workbook: its support, case and time_share columns are blank in
+    every row. As calc FILE does, the fleet gets no duty-cycle summary (it stopped at 'row 1: support is blank')."""
+    demo = pd.read_csv(DEMO).assign(support=None, case=None, time_share=np.nan)
+    (tmp_path / "fleet").mkdir()
+    demo.to_parquet(tmp_path / "fleet" / "a.parquet", index=False)
+    got = calc_fleet(tmp_path / "fleet", tmp_path / "out")
+    assert got.num_rows == len(demo) and got.column("support").null_count == len(demo)
+    assert got.column("MR [N*mm]").to_pylist() == bh.calc(demo)["MR [N*mm]"].tolist()
+    assert not (tmp_path / "out.duty.parquet").exists()
