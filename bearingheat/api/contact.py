@@ -72,7 +72,8 @@ class BallContact(Result):
         without n.
     status, messages : list of str
         Per point (flattened): 'warning' where a given Fa is below Fa_min
-        (the balls slide under gyroscopic moments), else 'ok'.
+        (the balls slide under gyroscopic moments) or below the stricter
+        Fa_min_at_alpha, else 'ok'.
 
     See Also
     --------
@@ -333,10 +334,11 @@ def ball_bearing_contact(*, z: float, d_w: Quantity, d_m: Quantity, r_i: Quantit
     if rpm is not None:
         speed = quantity(rpm, "1/min")
         minimum = minimum_axial_load(count, dw, dm, rpm, angle0)
+        minimum_working = minimum_axial_load(count, dw, dm, rpm, angle)
         fa_min = quantity(minimum, "N")
-        fa_min_working = quantity(minimum_axial_load(count, dw, dm, rpm, angle), "N")
+        fa_min_working = quantity(minimum_working, "N")
         if Fa is not None:
-            for i, low in enumerate(_below_minimum_load(load, minimum, rpm)):
+            for i, low in enumerate(_below_minimum_load(load, minimum, minimum_working, rpm, angle0, angle)):
                 if low:
                     status[i] = "warning"
                     messages[i] = f"{messages[i]}; {low}" if messages[i] else low
@@ -361,9 +363,26 @@ def ball_bearing_contact(*, z: float, d_w: Quantity, d_m: Quantity, r_i: Quantit
     )
 
 
-def _below_minimum_load(load: float | np.ndarray, minimum: float | np.ndarray, rpm: float | np.ndarray) -> list[str]:
-    """Per point: the message where Fa < Fa_min (at α0, the source's rule), else ''."""
-    Fa, Fa_min, speed = (np.ravel(a) for a in np.broadcast_arrays(load, minimum, rpm))
-    return [f"Fa = {fa:.4g} N is below the minimum axial load Fa_min = {fa_min:.4g} N at n = {n:.6g} 1/min "
-            "(gyroscopic sliding of the balls, Zaitsev & Voronkin)" if fa < fa_min else ""
-            for fa, fa_min, n in zip(Fa.tolist(), Fa_min.tolist(), speed.tolist())]
+def _below_minimum_load(load: float | np.ndarray, minimum: float | np.ndarray, minimum_working: float | np.ndarray,
+                        rpm: float | np.ndarray, angle0: float | np.ndarray, angle: float | np.ndarray) -> list[str]:
+    """Per point: the message where Fa < Fa_min at α0 (the source's rule), or where Fa lies between it and the
+    stricter Fa_min at the working angle α under Fa; else ''.
+
+    Zaitsev & Voronkin, p. 1: "as a rule" the initial angle α0 from the clearance is taken as the contact angle of
+    the minimum load, but on test stands "the real working contact angle α at the actual axial load" must be
+    computed; the minimum grows with the angle (sin²α), so at α it is the larger of the two.
+    """
+    arrays = np.broadcast_arrays(load, minimum, minimum_working, rpm, angle0, angle)
+    messages = []
+    for fa, low, high, n, a0, a in zip(*(np.ravel(values).tolist() for values in arrays)):
+        if fa < low:
+            messages.append(f"Fa = {fa:.4g} N is below the minimum axial load Fa_min = {low:.4g} N at n = {n:.6g} "
+                            "1/min (gyroscopic sliding of the balls, Zaitsev & Voronkin)")
+        elif fa < high:
+            messages.append(f"Fa = {fa:.4g} N meets the minimum axial load at the initial angle alpha0 = {a0:.4g} deg, "
+                            f"Fa_min = {low:.4g} N (Zaitsev & Voronkin's rule), but not the stricter one at the working "
+                            f"angle alpha = {a:.4g} deg under this load, Fa_min at alpha = {high:.4g} N, at n = "
+                            f"{n:.6g} 1/min: the balls may slide under their gyroscopic moment")
+        else:
+            messages.append("")
+    return messages

@@ -27,7 +27,7 @@ from bearingheat.errors import InputError, UnitError
 from bearingheat.units import convert_column
 
 __all__ = ["to_catalogue_units", "ConvertedTable", "refuse_result_columns", "not_a_number", "with_decimal_point",
-           "blank_cell", "OTHER_UNIT_FORM", "lookalike_column", "Lookalike"]
+           "blank_cell", "OTHER_UNIT_FORM", "lookalike_column", "Lookalike", "results_spelled_otherwise"]
 
 
 @dataclass
@@ -310,3 +310,25 @@ def refuse_result_columns(table: pd.DataFrame) -> None:
     if clashes and not _calc_results(table):
         header, written = clashes[0]
         raise InputError(f"column {header!r} is a column calc writes; rename it (e.g. '{written} (design)')")
+
+
+def results_spelled_otherwise(inputs, results) -> dict:
+    """Input header -> result header, for an input column that is a result column of calc (among the headers
+    ``results``) with its unit written another way: ``f0 [1]`` or ``f0 [-]`` for f0, which the contract names bare
+    as every dimensionless column (the template's units row writes 1 for them, :func:`to_catalogue_units` reads
+    both), or ``MR [N*m]`` of a results table computed again. calc writes the result once, in that column's place
+    and under its own header; an input headed as the result is replaced in place already.
+
+    >>> results_spelled_otherwise(["designation", "f0 [1]", "f1", "MR [N*m]"], ["f0", "f1", "MR [N*mm]"])
+    {'f0 [1]': 'f0', 'MR [N*m]': 'MR [N*mm]'}
+    """
+    by_name: dict[str, str] = {}
+    for header in results:
+        by_name.setdefault(parse_header(header, strict=False)[0], header)
+    given = set(inputs)
+    found: dict = {}
+    for header in inputs:
+        written = by_name.get(parse_header(header, strict=False)[0])
+        if written is not None and written not in given and written not in found.values():
+            found[header] = written
+    return found

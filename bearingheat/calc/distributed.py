@@ -19,6 +19,7 @@ import numpy as np
 import pandas as pd
 
 from bearingheat.calc.contract import CONTRACT, TEXT_DTYPE, output_header
+from bearingheat.calc.conversion import results_spelled_otherwise
 
 __all__ = ["is_dask_frame", "result_layout", "calc_partition", "calc_dask"]
 
@@ -41,10 +42,15 @@ def result_layout(input_columns) -> dict[str, Any]:
 
 
 def calc_partition(part: pd.DataFrame, calc: Callable, layout: dict[str, Any], options: dict) -> pd.DataFrame:
-    """``calc`` of one partition, its results reindexed to ``layout`` (after the partition's own columns), in
-    one new frame of calc's own arrays (no copy of the partition, no column inserted one by one)."""
+    """``calc`` of one partition, its results reindexed to ``layout`` (after the partition's own columns; an input
+    column that is a result headed another way, ``f0 [1]``, in its place under the result's header as calc writes
+    it), in one new frame of calc's own arrays (no copy of the partition, no column inserted one by one)."""
     out = calc(part, **options) if len(part) else part
-    columns: dict[str, Any] = {header: out[header] for header in part.columns}
+    spelled = results_spelled_otherwise(part.columns, layout)
+    columns: dict[str, Any] = {}
+    for header in part.columns:
+        written = spelled.get(header, header)
+        columns[written] = out[written] if written in out.columns else out[header]  # (an empty partition: as is)
     for header, dtype in layout.items():
         if header not in out.columns:  # a column pandas calc leaves out of this partition: NaN or missing text
             columns[header] = pd.Series(np.nan if dtype == np.float64 else None, index=out.index, dtype=dtype)

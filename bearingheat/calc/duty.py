@@ -28,7 +28,7 @@ import pandas as pd
 
 from bearingheat.calc.contract import output_header
 from bearingheat.calc.supports import number_column, text_column
-from bearingheat.calc.conversion import to_catalogue_units
+from bearingheat.calc.conversion import blank_cell, to_catalogue_units
 from bearingheat.errors import DutyCycleError
 
 __all__ = ["SHARE_TOLERANCE", "DUTY_UNITS", "has_duty_cycle", "duty_cycle"]
@@ -42,12 +42,19 @@ DUTY_UNITS = {"support": "", "designation": "", "cases": "1", "MR_mean": "N*mm",
 
 
 def has_duty_cycle(table: pd.DataFrame) -> bool:
-    """True when the table (calc input or output) has a ``support`` column.
+    """True when the table (calc input or output) has a ``support`` column that names a support in some row. A
+    column left entirely blank (the template's unused one, or a CSV written from a workbook) is no duty cycle, in
+    a CSV as in a workbook; a table without rows (its headers only) is judged by its headers.
 
     >>> has_duty_cycle(pd.DataFrame({"support": ["A"], "n [rpm]": [1000]}))
     True
+    >>> has_duty_cycle(pd.DataFrame({"support": [None, " "], "n [rpm]": [1000, 2000]}))
+    False
     """
-    return "support" in {str(h).split("[")[0].strip() for h in table.columns}
+    headers = [h for h in table.columns if str(h).split("[")[0].strip() == "support"]
+    if not headers or len(table) == 0:
+        return bool(headers)
+    return any(not all(blank_cell(value) for value in pd.unique(table[h].to_numpy(dtype=object))) for h in headers)
 
 
 def _shares(frame: pd.DataFrame, supports: np.ndarray, cases: list[str]) -> tuple[np.ndarray, np.ndarray | None]:

@@ -34,7 +34,7 @@ from bearingheat.calc.contract import PLAIN_TYPES, TEXT_DTYPE, input_units, outp
 from bearingheat.calc.messages import ERROR, WARNING, Labels, status_codes, status_column, with_texts
 from bearingheat.calc.supports import blanks_filled, number_column, per_distinct, text_column, with_bearing_groups
 from bearingheat.calc.distributed import calc_dask, is_dask_frame
-from bearingheat.calc.conversion import refuse_result_columns, to_catalogue_units
+from bearingheat.calc.conversion import refuse_result_columns, results_spelled_otherwise, to_catalogue_units
 from bearingheat.calc.fill import fill_from_catalogue
 from bearingheat.calc.uncertainty import fill_from_coefficients, has_uncertainty, uncertainty_bands
 from bearingheat.catalogue.bearings import CATALOGUE
@@ -387,7 +387,8 @@ def _joined(now: str, message: str, first: bool) -> str:
 
 def _assemble(table: pd.DataFrame, results: pd.DataFrame, extension_columns) -> pd.DataFrame:
     """The input columns followed by the result columns (a result header the input has replaces its values in
-    place); the columns are collected first and joined in one step."""
+    place, as does a result whose input column is headed another way, ``f0 [1]``, under the result's header:
+    :func:`results_spelled_otherwise`); the columns are collected first and joined in one step."""
     written: dict[str, np.ndarray] = {}
     for name, unit in RESULT_UNITS.items():
         written[output_header(name, unit)] = results[name].to_numpy()
@@ -411,6 +412,9 @@ def _assemble(table: pd.DataFrame, results: pd.DataFrame, extension_columns) -> 
     # internal frames is copied, so that the caller can change the cells
     columns_out = {header: _text(values) if isinstance(values, pd.Categorical) or values.dtype == object
                    else values if values.flags.writeable else values.copy() for header, values in written.items()}
+    spelled = results_spelled_otherwise(table.columns, columns_out)
+    if spelled:
+        table = table.rename(columns=spelled)
     fresh = {header: values for header, values in columns_out.items() if header not in table.columns}
     out = pd.concat([table, pd.DataFrame(fresh, index=table.index, copy=False)], axis=1)
     for header in columns_out.keys() - fresh.keys():

@@ -253,8 +253,8 @@ def _stand_in_f2(frame, results, pending, labels, model, f2_chart):
     provisional viscosity is off it, and perhaps more) evaluated again with a stand-in f2: the heat balance reads
     M2 off the chart at ν(T)·n·dM itself and needs only f0, M1 and Fa/A. A row refused for another reason stays
     refused: one that the stand-in lets through but whose Fa/A is not on the chart's curves (no kB, or an Fa/A
-    beyond them) keeps its refusal. Every pending row is evaluated again at ν(T_op) with the chart
-    (:func:`settle_viscosity`)."""
+    beyond them) keeps its refusal: its results are put back as they were, so that each row is evaluated once
+    here. Every pending row is evaluated again at ν(T_op) with the chart (:func:`settle_viscosity`)."""
     f2 = number_column(frame, "f2")
     retry = pending & failed_rows(results) & np.isnan(f2) & (number_column(frame, "Fa") > 0)
     if not retry.any():
@@ -262,13 +262,32 @@ def _stand_in_f2(frame, results, pending, labels, model, f2_chart):
     # (results_at_viscosity replaces rows in the frame it is given: the trial works on a copy)
     trial = results_at_viscosity(frame.assign(f2=np.where(retry, 1.0, f2)), results.copy(), retry, labels=labels,
                                  model=model)
-    on_curves = ~np.isnan(f2_chart.x_range(trial["Fa_over_A"].to_numpy(dtype=float))[0])
-    if not (retry & ~on_curves).any():
+    off_curves = retry & np.isnan(f2_chart.x_range(trial["Fa_over_A"].to_numpy(dtype=float))[0])
+    if not off_curves.any():
         return trial
-    retry &= on_curves
-    if not retry.any():
+    if not (retry & ~off_curves).any():
         return results
-    return results_at_viscosity(frame.assign(f2=np.where(retry, 1.0, f2)), results, retry, labels=labels, model=model)
+    return _rows_put_back(trial, results, off_curves)
+
+
+def _rows_put_back(trial: pd.DataFrame, results: pd.DataFrame, rows: np.ndarray) -> pd.DataFrame:
+    """``trial`` (:func:`~bearingheat.calc.models.results_at_viscosity` of a copy of ``results``) with the rows
+    ``rows`` as they are in ``results``: its numbers (NaN in a column only the trial has: a row with one of those
+    is on the chart's curves, so it is never put back, and the column stays), status and message; the model,
+    bearing type and series are the trial's own (it leaves them as they were)."""
+    positions = np.flatnonzero(rows)
+    columns = {}
+    for name in trial.columns:
+        if name in ("status", "message"):
+            columns[name] = pd.Series(with_texts(trial[name], positions.tolist(), results[name].iloc[positions]),
+                                      index=trial.index, copy=False)
+        elif trial[name].dtype == np.float64:
+            before = results[name].to_numpy(dtype=float) if name in results.columns else np.nan
+            columns[name] = pd.Series(np.where(rows, before, trial[name].to_numpy(dtype=float)), index=trial.index,
+                                      copy=False)
+        else:
+            columns[name] = trial[name]
+    return pd.DataFrame(columns, index=trial.index, copy=False)
 
 
 def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str = "exact",

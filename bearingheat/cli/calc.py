@@ -243,9 +243,9 @@ def run_table(args: argparse.Namespace, source: Path, target: Path | None) -> in
     try:
         results = calc_file(source, sep=args.sep, decimal=args.decimal, progress=Progress(enabled=not args.quiet),
                             **_calc_options(args))
-        has_duty = has_duty_cycle(pd.DataFrame(columns=results.column_names))
+        has_duty = has_duty_cycle(pd.DataFrame(columns=results.column_names))  # (its headers: a support column)
         result = results.to_pandas() if args.json or has_duty else None
-        duty = duty_cycle(result) if result is not None and has_duty else None
+        duty = duty_cycle(result) if result is not None and has_duty_cycle(result) else None
         if duty is not None and target is not None:
             _write_duty_beside(duty, target, source, args)
         if target is not None:

@@ -48,9 +48,9 @@ Output: 'key: value' lines (one bearing) or CSV (a TABLE); --json prints one JSO
 object (one bearing) or a list of objects (a TABLE). Keys: alpha0 [deg], Fa [N],
 alpha [deg], xi_a, delta_a [mm], C_star [N], sum_rho_i [1/mm], sum_rho_o [1/mm],
 cos_tau_i, cos_tau_o, 2K/(mu*pi)_i, 2K/(mu*pi)_o, and with n: n [1/min], Fa_min [N]
-(at alpha0, Zaitsev & Voronkin's rule) and Fa_min at alpha [N] (at the working angle).
-A warning goes to stderr when a given Fa is below Fa_min. With -q nothing is printed but
-errors (--json still prints its JSON).
+(at alpha0, Zaitsev & Voronkin's rule) and Fa_min at alpha [N] (at the working angle, the
+stricter). A warning goes to stderr when a given Fa is below Fa_min or below Fa_min at alpha.
+With -q nothing is printed but errors (--json still prints its JSON).
 
 Exit codes: 0 ok (warnings included), 1 some CSV rows in error (reported in the
 'error' column / key and on stderr), 2 unusable input (bad argument, impossible
@@ -125,7 +125,7 @@ def _parse_argument(option: str, text: str) -> Any:
 
 def _evaluate(inputs: dict[str, Any]) -> tuple[dict[str, Any], str | None]:
     """Run ball_bearing_contact on one bearing; return the output record and its warning (or None): a given Fa
-    below the minimum axial load Fa_min, the result's status."""
+    below the minimum axial load Fa_min at alpha0 or at alpha, the result's status."""
     result = ball_bearing_contact(**inputs)
     return result.to_dict(), result.messages[0] or None
 

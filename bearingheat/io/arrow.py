@@ -36,10 +36,19 @@ from bearingheat.io.csv_reader import refuse_duplicate_columns
 from bearingheat.io.files import atomic_write
 
 __all__ = ["ARROW_SUFFIXES", "read_arrow", "read_arrow_table", "write_arrow", "arrow_table", "arrow_column",
-           "column_units", "unit_of", "parquet_writer", "without_index", "with_unit", "user_metadata"]
+           "column_units", "unit_of", "parquet_writer", "without_index", "with_unit", "user_metadata",
+           "is_text_type"]
+
+
+def is_text_type(kind: pa.DataType) -> bool:
+    """True for an Arrow type of text: string, large_string, or a dictionary of them (a pandas category of text,
+    a Parquet column read with its dictionary)."""
+    return pa.types.is_string(kind) or pa.types.is_large_string(kind) or (
+        pa.types.is_dictionary(kind) and is_text_type(kind.value_type))
+
 
 def _text_fields(schema: pa.Schema) -> list[str]:
-    return [field.name for field in schema if pa.types.is_string(field.type) or pa.types.is_large_string(field.type)]
+    return [field.name for field in schema if is_text_type(field.type)]
 
 
 def _write_parquet(table: pa.Table, path) -> None:

@@ -25,7 +25,7 @@ import os
 import re
 import shutil
 import warnings
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 
 import pandas as pd
@@ -50,15 +50,18 @@ __all__ = ["check_dataset_target", "check_scheduler", "recover_target", "calc_da
 @contextlib.contextmanager
 def dask_client(scheduler: str | None = None, workers: int | None = None):
     """A :class:`distributed.Client` of the cluster at ``scheduler``, or of a new local cluster of ``workers``
-    worker processes with one thread each (default: one per CPU core), closed on exit."""
+    worker processes with one thread each (default: one per CPU core), closed on exit. An address that is none
+    is refused by :func:`check_scheduler` (which a caller may run before any other work, as the command does)."""
     try:
         from distributed import Client
     except ImportError as exc:
         raise InputError("--dask needs Dask: pip install 'bearingheat[dask]'") from exc
     if scheduler is not None:
-        check_scheduler(scheduler)
         try:
             client = Client(scheduler, timeout="10s")
+        except ValueError:  # no address ('missing port number ...'): named as check_scheduler names it
+            check_scheduler(scheduler)
+            raise
         except (OSError, TimeoutError) as exc:
             raise InputError(f"--scheduler {scheduler}: no Dask scheduler answers there ({exc})") from exc
         with client:
@@ -243,9 +246,8 @@ def _run(tasks: list) -> None:
 class DatasetPlan:
     """A fleet's computation as :func:`plan_dataset` checked it: the files and their pieces, the target folder,
     the fleet's input columns (:func:`bearingheat.io.fleet.fleet_schema`), calc's options with their files read,
-    the layout of the results, the schema of every part, the file of the duty-cycle summary (a fleet with a
-    ``support`` column: ``<folder>.duty.parquet`` beside the folder) or None, and notes on what an earlier run
-    that was stopped had left (:func:`recover_target`)."""
+    the layout of the results, the schema of every part, and the file of the duty-cycle summary (a fleet with a
+    ``support`` column: ``<folder>.duty.parquet`` beside the folder) or None."""
 
     files: list[str]
     target: Path
@@ -256,7 +258,6 @@ class DatasetPlan:
     schema: pa.Schema
     pieces: list[tuple[str, list[int]]]
     duty: Path | None = None
-    notes: list[str] = field(default_factory=list)
 
 
 @dataclass(frozen=True)
@@ -269,13 +270,12 @@ class DatasetRun:
 
 def plan_dataset(files: list[str], target, *, overwrite: bool = False, **options) -> DatasetPlan:
     """Everything a fleet's computation checks before any work, on the client and without a cluster: the target
-    folder (:func:`check_dataset_target`, after :func:`recover_target`), the files' columns and types
+    folder (:func:`check_dataset_target`; run :func:`recover_target` on it first), the files' columns and types
     (:func:`bearingheat.io.fleet.fleet_schema`), calc's options with the charts they name read once
     (:func:`bearingheat.io.pipeline.load_options`), and the schema of the parts; where the files hold a duty
     cycle (a ``support`` column), the summary's file beside the folder, checked as any output file
     (:func:`bearingheat.io.files.safe_output`). :class:`InputError` (or the chart's own error) says what is
     wrong."""
-    notes = recover_target(target)
     target = check_dataset_target(target, files, force=overwrite)
     columns = fleet_schema(files)
     options = load_options(options)  # the charts read here, once: a worker need not see the client's files
@@ -285,7 +285,7 @@ def plan_dataset(files: list[str], target, *, overwrite: bool = False, **options
     duty = None
     if has_duty_cycle(pd.DataFrame(columns=columns.names)):
         duty = safe_output(target.with_name(f"{target.name}.duty.parquet"), force=overwrite, inputs=files)
-    return DatasetPlan(files, target, overwrite, columns, options, layout, schema, pieces, duty, notes)
+    return DatasetPlan(files, target, overwrite, columns, options, layout, schema, pieces, duty)
 
 
 #: the results a duty-cycle summary reads (:func:`bearingheat.calc.duty.duty_cycle`)
@@ -294,16 +294,17 @@ _DUTY_NAMES = frozenset({"support", "case", "time_share", "duration", "designati
 
 
 def _duty_summary(plan: DatasetPlan, parts: Path) -> pd.DataFrame | None:
-    """The duty-cycle summary of the parts in the folder ``parts`` (None for a fleet without rows): the columns it
-    reads, without the results the layout adds where pandas calc writes none (a column missing in every row), so
-    that it is the summary of the same rows in one file."""
+    """The duty-cycle summary of the parts in the folder ``parts`` (None for a fleet without rows, or whose support
+    column is blank in every row): the columns it reads, without the results the layout adds where pandas calc
+    writes none (a column missing in every row), so that it is the summary of the same rows in one file."""
     wanted = [name for name in plan.schema.names if parse_header(name, strict=False)[0] in _DUTY_NAMES]
     table = parquet.read_table(parts, columns=wanted)
     if table.num_rows == 0:
         return None
     kept = [name for name in wanted if name in plan.columns.names or name not in plan.layout
             or table.column(name).null_count < table.num_rows]
-    return duty_cycle(table.select(kept).to_pandas())
+    results = table.select(kept).to_pandas()
+    return duty_cycle(results) if has_duty_cycle(results) else None  # (a support column all blank: no duty cycle)
 
 
 def compute_dataset(plan: DatasetPlan) -> DatasetRun:
@@ -342,8 +343,8 @@ def compute_dataset(plan: DatasetPlan) -> DatasetRun:
 
 def calc_dataset(files: list[str], target, *, overwrite: bool = False, **options) -> Path:
     """calc of every row of the Parquet ``files`` on the current Dask scheduler, written as the Parquet dataset
-    folder ``target``; ``options`` go to calc. Returns the folder (:func:`plan_dataset`, then
-    :func:`compute_dataset`).
+    folder ``target``; ``options`` go to calc. Returns the folder (:func:`recover_target`, :func:`plan_dataset`,
+    then :func:`compute_dataset`).
 
     Each file is computed in pieces of its row groups (one piece per file up to
     :data:`bearingheat.io.fleet.PIECE_BYTES`), a block of rows at a time as the single-file path computes it, and
@@ -353,6 +354,7 @@ def calc_dataset(files: list[str], target, *, overwrite: bool = False, **options
     its summary per support beside the folder, ``<folder>.duty.parquet``, as ``calc FILE -o OUT.parquet`` writes
     ``OUT.duty.parquet``.
     """
+    recover_target(target)
     return compute_dataset(plan_dataset(files, target, overwrite=overwrite, **options)).target
 
 

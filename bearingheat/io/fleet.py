@@ -21,7 +21,7 @@ import pyarrow as pa
 import pyarrow.parquet as parquet
 
 from bearingheat.errors import InputError
-from bearingheat.io.arrow import without_index
+from bearingheat.io.arrow import is_text_type, without_index
 
 __all__ = ["is_dataset", "dataset_files", "fleet_schema", "common_type", "fleet_pieces", "read_piece",
            "PIECE_BYTES"]
@@ -112,11 +112,6 @@ def _file_schema(path: str) -> pa.Schema:
         raise InputError(f"{path}: not a readable .parquet table ({exc})") from exc
 
 
-def _text(kind: pa.DataType) -> bool:
-    return pa.types.is_string(kind) or pa.types.is_large_string(kind) or (
-        pa.types.is_dictionary(kind) and _text(kind.value_type))
-
-
 def _holds(source: pa.DataType, target: pa.DataType) -> bool:
     """True when every value of ``source`` is a value of ``target`` (whole numbers as floats up to 2**53: the
     cast of each piece refuses a larger one)."""
@@ -147,7 +142,7 @@ def common_type(a: pa.DataType, b: pa.DataType) -> pa.DataType | None:
     logical values and numbers, times with and without a time zone ...)."""
     if a == b:
         return a
-    if _text(a) and _text(b) and not (pa.types.is_dictionary(a) and pa.types.is_dictionary(b)):
+    if is_text_type(a) and is_text_type(b) and not (pa.types.is_dictionary(a) and pa.types.is_dictionary(b)):
         return pa.large_string()
     try:
         common = pa.unify_schemas([pa.schema([pa.field("x", a)]), pa.schema([pa.field("x", b)])],
@@ -163,7 +158,7 @@ def _described(kind: pa.DataType) -> str:
     """An Arrow type in words, with its name: 'text (large_string)', 'whole numbers (int64)'."""
     types = pa.types
     words = next((word for test, word in (
-        (_text, "text"), (types.is_integer, "whole numbers"), (types.is_floating, "numbers"),
+        (is_text_type, "text"), (types.is_integer, "whole numbers"), (types.is_floating, "numbers"),
         (types.is_decimal, "decimal numbers"), (types.is_boolean, "logical values"), (types.is_timestamp, "times"),
         (types.is_date, "dates"), (types.is_duration, "durations")) if test(kind)), None)
     return f"{words} ({kind})" if words else str(kind)

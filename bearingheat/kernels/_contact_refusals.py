@@ -121,6 +121,13 @@ def _check_alpha0(alpha0):
             "alpha0 = {a:g} deg must lie in [0, 90) deg", a=alpha0)
 
 
+def _check_working_angle(alpha, alpha0):
+    """α0 ≤ α < 90°: the working angle under an axial load (Zaitsev & Voronkin, p. 2) is turned up from α0."""
+    _check_alpha0(alpha0)
+    _refuse((alpha < alpha0) | (alpha >= 90),
+            "alpha = {a:g} deg must lie in [alpha0, 90) deg = [{a0:g}, 90) deg", a=alpha, a0=alpha0)
+
+
 def _balls_refusal(z):
     return (z < 1) | (z != np.round(z)), "z = {z:g}: the number of balls must be a whole number of at least 1", {"z": z}
 
@@ -168,3 +175,32 @@ def _check_deflection_coefficients(inner, outer):
         _refuse(~((value > 0) & (value <= 1)) & ~np.isnan(value),
                 "deflection_coefficients: " + side + " 2K/(mu*pi) = {c:g} must lie in (0, 1] "
                 "(1 for a circular contact, falling towards 0 as the contact ellipse lengthens)", c=value)
+
+
+SERIES_ALPHA0_MIN = 0.5
+"""Smallest initial angle α0 [deg] of the series method
+(:func:`~bearingheat.kernels.contact.working_contact_angle_series`)."""
+
+SERIES_LOAD_RATIO_MAX = 0.01
+"""Largest Fa/C* of the series method: x = α − α0 is the paper's small parameter; up to here its Newton steps
+converge from α0 = 0.5° on (tests), beyond it they can leave [α0, 90°)."""
+
+SERIES_TOLERANCE_RAD = 1e-12
+"""The series method stops when a Newton step of x is at most this [rad] (2e-7 arc seconds)."""
+
+SERIES_MAX_NEWTON_STEPS = 20
+"""Cap of the Newton steps of the series method (its range needs at most eight)."""
+
+
+def _check_series_range(Fa, C_star, alpha0):
+    """The range of the series method of :mod:`bearingheat.kernels.contact` (α0 = 0 is refused before)."""
+    _refuse(alpha0 < SERIES_ALPHA0_MIN,
+            "alpha0 = {a:g} deg: the series method of Zaitsev & Voronkin is used from alpha0 = "
+            f"{SERIES_ALPHA0_MIN:g}" + " deg on (below it its Newton steps can leave [alpha0, 90) deg); "
+            "use working_contact_angle", a=alpha0)
+    with np.errstate(invalid="ignore"):
+        ratio = Fa / C_star
+    _refuse(ratio > SERIES_LOAD_RATIO_MAX,
+            "Fa = {Fa:g} N with C_star = {C:g} N: Fa/C_star = {ratio:g}; the series method of Zaitsev & Voronkin "
+            f"(a small x = alpha - alpha0) is used up to Fa/C_star = {SERIES_LOAD_RATIO_MAX:g} (beyond it its "
+            "Newton steps can leave [alpha0, 90) deg); use working_contact_angle", Fa=Fa, C=C_star, ratio=ratio)

@@ -45,11 +45,13 @@ from scipy.optimize import brentq
 from scipy.special import ellipe, ellipk
 
 from bearingheat.errors import ContactInputError
-from bearingheat.kernels._contact_refusals import (_ball_refusal, _balls_refusal, _broadcast, _check_alpha0,
-                                                   _check_ball, _check_balls, _check_deflection_coefficients,
-                                                   _check_grooves, _check_load,
-                                                   _check_outer_groove, _check_pitch, _kernel, _pitch_refusal,
-                                                   _refuse)
+from bearingheat.kernels._contact_refusals import (SERIES_ALPHA0_MIN, SERIES_LOAD_RATIO_MAX, SERIES_MAX_NEWTON_STEPS,
+                                                   SERIES_TOLERANCE_RAD, _ball_refusal, _balls_refusal, _broadcast,
+                                                   _check_alpha0, _check_ball, _check_balls,
+                                                   _check_deflection_coefficients, _check_grooves, _check_load,
+                                                   _check_outer_groove, _check_pitch, _check_series_range,
+                                                   _check_working_angle, _kernel,
+                                                   _pitch_refusal, _refuse)
 from bearingheat.kernels._series import series_aware
 
 __all__ = [
@@ -75,6 +77,10 @@ __all__ = [
     "newton_increment",
     "SeriesIterate",
     "series_iterates",
+    "SERIES_ALPHA0_MIN",
+    "SERIES_LOAD_RATIO_MAX",
+    "SERIES_TOLERANCE_RAD",
+    "SERIES_MAX_NEWTON_STEPS",
     "working_contact_angle_series",
     "minimum_axial_load",
     "degrees_to_dms",
@@ -300,9 +306,15 @@ def stiffness_characteristic(z, d_w, d_m, alpha0, r_i, r_o, *, deflection_coeffi
 
 
 # --------------------------------------------------------------------------- working contact angle
-def _deformation_term(alpha_rad, alpha0_rad):
-    """cos α0 / cos α − 1 without cancellation near α = α0."""
-    return 2.0 * np.sin((alpha_rad + alpha0_rad) / 2.0) * np.sin((alpha_rad - alpha0_rad) / 2.0) / np.cos(alpha_rad)
+def _deformation_term(alpha0_rad, x_rad):
+    """cos α0 / cos(α0 + x) − 1 = 2·sin(α0 + x/2)·sin(x/2) / cos(α0 + x), x = α − α0 [rad]: from the increment itself,
+    without the cancellation of cos α0 − cos α, and exact for an x below the spacing of floats at α0."""
+    return 2.0 * np.sin(alpha0_rad + x_rad / 2.0) * np.sin(x_rad / 2.0) / np.cos(alpha0_rad + x_rad)
+
+
+def _angle_function(alpha0_rad, x_rad):
+    """(cos α0 / cos(α0 + x) − 1)·sin^(2/3)(α0 + x) = (Fa/C*)^(2/3) at the angle α0 + x (Zaitsev & Voronkin, p. 2)."""
+    return _deformation_term(alpha0_rad, x_rad) * np.sin(alpha0_rad + x_rad) ** (2.0 / 3.0)
 
 
 @_kernel
@@ -315,11 +327,17 @@ def axial_load_at_angle(alpha, alpha0, C_star):
     1.999
     """
     alpha, alpha0, C_star = _broadcast(alpha, alpha0, C_star)
-    _check_alpha0(alpha0)
-    _refuse((alpha < alpha0) | (alpha >= 90),
-            "alpha = {a:g} deg must lie in [alpha0, 90) deg = [{a0:g}, 90) deg", a=alpha, a0=alpha0)
-    a, a0 = alpha * _DEG, alpha0 * _DEG
-    return C_star * _deformation_term(a, a0) ** 1.5 * np.sin(a)
+    _check_working_angle(alpha, alpha0)
+    return _load_at_increment(C_star, alpha0, (alpha - alpha0) * _DEG)
+
+
+@series_aware
+def _load_at_increment(C_star, alpha0, x):
+    """Fa = C*·(cos α0/cos(α0 + x) − 1)^(3/2)·sin(α0 + x) [force of C*] from x = α − α0 [rad], α0 [deg]: the load of an
+    iterate x_k of the series method, exact also where α0 + x rounds to α0 in degrees."""
+    C_star, alpha0, x = _broadcast(C_star, alpha0, x)
+    a0r = alpha0 * _DEG
+    return C_star * _deformation_term(a0r, x) ** 1.5 * np.sin(a0r + x)
 
 
 @_kernel
@@ -327,12 +345,15 @@ def axial_displacement_ratio(alpha, alpha0):
     """Dimensionless axial displacement ξ_a of the rings [1] (Zaitsev & Voronkin, p. 2).
 
     tg α = tg α0 + ξ_a / cos α0, so ξ_a = (tg α − tg α0)·cos α0. The axial
-    displacement is δ_a = ξ_a·(r_i + r_o − d_w). Angles in degrees.
+    displacement is δ_a = ξ_a·(r_i + r_o − d_w). Angles in degrees, valid for
+    0 ≤ α0 ≤ α < 90° (the axial load turns the angle up from α0; ξ_a grows
+    without bound towards 90°).
 
     >>> round(axial_displacement_ratio(14.4670, 12.0), 5)
     0.04445
     """
     alpha, alpha0 = _broadcast(alpha, alpha0)
+    _check_working_angle(alpha, alpha0)
     a, a0 = alpha * _DEG, alpha0 * _DEG
     return (np.tan(a) - np.tan(a0)) * np.cos(a0)
 
@@ -351,18 +372,18 @@ def axial_displacement(xi_a, r_i, r_o, d_w):
     xi_a, r_i, r_o, d_w = _broadcast(xi_a, r_i, r_o, d_w)
     return xi_a * (r_i + r_o - d_w)
 
-def _solve_angle(load_ratio_23: float, alpha0_rad: float) -> float:
+def _solve_increment(load_ratio_23: float, alpha0_rad: float) -> float:
+    """x = α − α0 [rad] of the working angle (so that α = α0 + x is never below α0 in floating point)."""
     if math.isnan(load_ratio_23) or math.isnan(alpha0_rad):
         return math.nan
     if load_ratio_23 == 0.0:
-        return alpha0_rad
+        return 0.0
 
     def residual(x):
-        a = alpha0_rad + x
-        return _deformation_term(a, alpha0_rad) * math.sin(a) ** (2.0 / 3.0) - load_ratio_23
+        return _angle_function(alpha0_rad, x) - load_ratio_23
 
     # residual(0) < 0 and residual -> +inf as alpha -> 90 deg; it increases in between.
-    return alpha0_rad + brentq(residual, 0.0, math.pi / 2.0 - alpha0_rad, xtol=1e-15, maxiter=200)
+    return brentq(residual, 0.0, math.pi / 2.0 - alpha0_rad, xtol=1e-15, maxiter=200)
 
 
 @_kernel
@@ -382,8 +403,8 @@ def working_contact_angle(Fa, C_star, alpha0):
     _check_load(Fa, C_star)
     _check_alpha0(alpha0)
     ratio = (Fa / C_star) ** (2.0 / 3.0)
-    alpha = np.vectorize(_solve_angle, otypes=[float])(ratio, alpha0 * _DEG)
-    return np.where(Fa == 0, alpha0, np.degrees(alpha))
+    x = np.vectorize(_solve_increment, otypes=[float])(ratio, alpha0 * _DEG)
+    return alpha0 + np.degrees(x)
 
 
 def _check_series_alpha0(alpha0):
@@ -391,6 +412,7 @@ def _check_series_alpha0(alpha0):
     _refuse(alpha0 == 0,
             "alpha0 = {a:g} deg: the series method of Zaitsev & Voronkin needs alpha0 > 0 "
             "(no expansion in powers of x at alpha0 = 0); use working_contact_angle", a=alpha0)
+
 
 
 @_kernel
@@ -442,7 +464,9 @@ def series_start(Fa, C_star, alpha0):
     a0r = alpha0 * _DEG
     sin2, cos2 = np.sin(a0r) ** 2, np.cos(a0r) ** 2
     load = (Fa / (C_star * np.sin(a0r))) ** (2.0 / 3.0)
-    x0 = 1.5 * np.sin(2.0 * a0r) / (6.0 + cos2) * (np.sqrt(1.0 + 2.0 / 3.0 * (6.0 + cos2) / sin2 * load) - 1.0)
+    root_argument = 2.0 / 3.0 * (6.0 + cos2) / sin2 * load
+    # √(1 + u) − 1 written u/(√(1 + u) + 1): the same number without the cancellation that gave x0 = 0 for u < 1e-16
+    x0 = 1.5 * np.sin(2.0 * a0r) / (6.0 + cos2) * root_argument / (np.sqrt(1.0 + root_argument) + 1.0)
     return x0
 
 
@@ -465,9 +489,11 @@ def newton_increment(Fa, C_star, alpha0, x):
     a0r = alpha0 * _DEG
     ak = a0r + x
     with np.errstate(divide="ignore", invalid="ignore"):
-        load_k = C_star * _deformation_term(ak, a0r) ** 1.5 * np.sin(ak)
-        slope = np.tan(ak) + 2.0 / 3.0 / np.tan(ak) + np.sin(ak) / (np.cos(a0r) - np.cos(ak))
-        step = ((Fa / load_k) ** (2.0 / 3.0) - 1.0) / slope
+        # (Fa/Fa_k)^(2/3) as (Fa/C*)^(2/3) over the angle function: Fa_k itself underflows at a tiny load
+        load_ratio_23 = (Fa / C_star) ** (2.0 / 3.0) / _angle_function(a0r, x)
+        # cos α0 − cos α_k = 2·sin(α0 + x/2)·sin(x/2), without the cancellation of a small x (0 below x ≈ 1e-16)
+        slope = np.tan(ak) + 2.0 / 3.0 / np.tan(ak) + np.sin(ak) / (2.0 * np.sin(a0r + x / 2.0) * np.sin(x / 2.0))
+        step = (load_ratio_23 - 1.0) / slope
     return np.where(Fa == 0, 0.0, step)
 
 
@@ -487,7 +513,7 @@ def series_iterates(Fa, C_star, alpha0, newton_steps: int = 1) -> list[SeriesIte
 
     Row k holds x_k, α = α0 + x_k [deg], ξ_a at α, the load Fa_k at α and
     Δ_k = (Fa_k − Fa)/Fa·100 [%] (Zaitsev & Voronkin, p. 3). Fa, C* in one force unit. Fa = 0 gives
-    x = 0, α = α0 and Δ = 0 in every row.
+    x = 0, α = α0 and Δ = 0 in every row. The range of :func:`working_contact_angle_series`.
 
     >>> rows = series_iterates(2.0, 7792.0, 12.0, newton_steps=1)
     >>> [(round(r.x, 7), round(r.load, 3)) for r in rows]    # paper: (0.0433985, 2.029), (0.0430573, 2.001)
@@ -495,16 +521,26 @@ def series_iterates(Fa, C_star, alpha0, newton_steps: int = 1) -> list[SeriesIte
     """
     if int(newton_steps) != newton_steps or newton_steps < 0:
         raise ContactInputError(f"newton_steps = {newton_steps!r} must be a whole number >= 0")
-    x = series_start(Fa, C_star, alpha0)
+    x = _series_start_in_range(Fa, C_star, alpha0)
     rows = []
     for k in range(int(newton_steps) + 1):
         if k:
             x = x + newton_increment(Fa, C_star, alpha0, x)
         alpha = alpha0 + x * (180.0 / math.pi)
-        load = axial_load_at_angle(alpha, alpha0, C_star)
+        load = _load_at_increment(C_star, alpha0, x)
         rows.append(SeriesIterate(k, x, alpha, axial_displacement_ratio(alpha, alpha0), load,
                                   _deviation_percent(load, Fa)))
     return rows
+
+
+@_kernel
+def _series_start_in_range(Fa, C_star, alpha0):
+    """:func:`series_start` where the series method converges, refused (naming the row of a Series) outside its range."""
+    Fa, C_star, alpha0 = _broadcast(Fa, C_star, alpha0)
+    _check_load(Fa, C_star)
+    _check_series_alpha0(alpha0)
+    _check_series_range(Fa, C_star, alpha0)
+    return series_start(Fa, C_star, alpha0)
 
 
 @series_aware
@@ -516,18 +552,37 @@ def _deviation_percent(load, Fa):
         return np.where(Fa == 0, 0.0, (load - Fa) / Fa * 100.0)
 
 
-def working_contact_angle_series(Fa, C_star, alpha0, newton_steps: int = 2):
+@_kernel
+def working_contact_angle_series(Fa, C_star, alpha0):
     """Working contact angle by the paper's series start and Newton steps [deg] (Zaitsev & Voronkin, p. 2).
 
-    Same equation as :func:`working_contact_angle`; α0 > 0 required. The step
-    is Newton's method on Fa^(2/3), so it converges quadratically: two steps
-    give a fraction of an arc second for the paper's loads (x small against α0);
-    α0 = 2° with Fa/C* = 0.01 (α ≈ 23°) needs six.
+    Same equation as :func:`working_contact_angle`. The step is Newton's method on Fa^(2/3): from the quadratic
+    start x_0 it is repeated until a step is at most :data:`SERIES_TOLERANCE_RAD` = 1e-12 rad (2e-7″), at most
+    :data:`SERIES_MAX_NEWTON_STEPS` = 20 steps. Two steps, the paper's "k = 2", give a fraction of an arc second at
+    its loads (Fa/C* = 2.6e-4 at α0 = 12°: 2e-7″), but 0.60° too much at α0 = 2°, Fa/C* = 0.01 (α = 23.11°),
+    which takes six.
+
+    Range: α0 from :data:`SERIES_ALPHA0_MIN` = 0.5° to 90°, Fa/C* from 0 to :data:`SERIES_LOAD_RATIO_MAX` = 0.01,
+    where the steps come below the tolerance within eight; outside it the series method is refused (at α0 = 0.1°,
+    Fa/C* = 0.009 or at α0 = 5°, Fa/C* = 0.4 its Newton steps leave [α0, 90°) and give NaN), and
+    :func:`working_contact_angle` solves any load. Fa, C* in one force unit, α0 in degrees.
 
     >>> round(working_contact_angle_series(2.0, 7792.0, 12.0), 6) == round(working_contact_angle(2.0, 7792.0, 12.0), 6)
     True
     """
-    return series_iterates(Fa, C_star, alpha0, newton_steps)[-1].alpha
+    Fa, C_star, alpha0 = _broadcast(Fa, C_star, alpha0)
+    x = _series_start_in_range(Fa, C_star, alpha0)
+    for _ in range(SERIES_MAX_NEWTON_STEPS):
+        step = newton_increment(Fa, C_star, alpha0, x)
+        x = x + step
+        if not (np.abs(step) > SERIES_TOLERANCE_RAD).any():  # (NaN rows, without geometry, count as converged)
+            break
+    else:
+        _refuse(np.abs(step) > SERIES_TOLERANCE_RAD,
+                "Fa = {Fa:g} N with C_star = {C:g} N, alpha0 = {a0:g} deg: the Newton steps of the series method did "
+                f"not come below {SERIES_TOLERANCE_RAD:g} rad in {SERIES_MAX_NEWTON_STEPS} steps; use "
+                "working_contact_angle", Fa=Fa, C=C_star, a0=alpha0)
+    return alpha0 + np.degrees(x)
 
 
 # --------------------------------------------------------------------------- minimum axial load
@@ -588,11 +643,14 @@ def _minimum_axial_load(z, d_w, d_pitch, n, alpha):
 
 # --------------------------------------------------------------------------- display
 def degrees_to_dms(alpha_deg: float) -> str:
-    """An angle in degrees as ``D°M′S″``, seconds rounded.
+    """An angle in degrees as ``D°M′S″``, seconds rounded; NaN and infinite angles are refused.
 
     >>> degrees_to_dms(14.4670)
     '14°28′01″'
     """
+    if not math.isfinite(float(alpha_deg)):
+        raise ContactInputError(f"alpha = {float(alpha_deg):g} deg: only a finite angle can be written in degrees, "
+                                "minutes and seconds")
     total = round(abs(float(alpha_deg)) * 3600.0)
     deg, rest = divmod(total, 3600)
     minutes, seconds = divmod(rest, 60)

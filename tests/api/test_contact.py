@@ -77,6 +77,52 @@ def test_ball_contact_is_a_result_with_a_warning_below_the_minimum_axial_load():
     assert without_speed.status == ["ok"]  # no speed: no minimum load to compare with
 
 
+def _minimum_axial_load_by_hand(alpha_deg, n=30000.0, z=7, dw=2.0, d0=8.7355):
+    """Zaitsev & Voronkin, p. 1: 5.75e-12·z·d_w³·D0·n²·sin²α·[1 − (d_w/D0)²·cos²α] kgf, in N."""
+    a = math.radians(alpha_deg)
+    return 5.75e-12 * z * dw**3 * d0 * n**2 * math.sin(a) ** 2 * (1 - (dw / d0) ** 2 * math.cos(a) ** 2) * KGF
+
+
+def test_a_load_between_the_minimum_at_alpha0_and_at_the_working_angle_is_a_warning():
+    """30 000 1/min, Fa = 1.05 N: Fa_min = 1.019 N at α0 = 12° (the paper's rule) is met, but Fa turns the angle to
+    12.42° (by bisection of Fa = C*·(cos α0/cos α − 1)^1.5·sin α with the result's C*), where the minimum is 1.091 N:
+    a warning (it used to be 'ok'). 1.0 N is below both (the old warning), 1.1 N above both."""
+    u = ureg()
+    r = ct.ball_bearing_contact(z=Z, d_w=DW * u.mm, d_m=DM * u.mm, r_i=RI * u.mm, r_o=RO * u.mm, alpha0=ALPHA0 * u.deg,
+                                Fa=np.array([1.0, 1.05, 1.1]) * u.N, n=30000 * u.rpm)
+    c_star = r.C_star.to("N").magnitude
+    a0, low, high = math.radians(ALPHA0), math.radians(ALPHA0), math.radians(30.0)
+    for _ in range(100):
+        mid = 0.5 * (low + high)
+        load = c_star * (math.cos(a0) / math.cos(mid) - 1) ** 1.5 * math.sin(mid)
+        low, high = (mid, high) if load < 1.05 else (low, mid)
+    working = math.degrees(low)
+    assert working == pytest.approx(12.4223, abs=1e-4)
+    assert r.Fa_min.to("N").magnitude == pytest.approx(_minimum_axial_load_by_hand(ALPHA0), rel=1e-9)
+    assert r.Fa_min.to("N").magnitude == pytest.approx(1.019, abs=5e-4)
+    assert r.Fa_min_at_alpha.to("N").magnitude[1] == pytest.approx(_minimum_axial_load_by_hand(working), rel=1e-9)
+    assert r.Fa_min_at_alpha.to("N").magnitude[1] == pytest.approx(1.091, abs=5e-4)
+    assert r.status == ["warning", "warning", "ok"]
+    assert r.messages[0] == ("Fa = 1 N is below the minimum axial load Fa_min = 1.019 N at n = 30000 1/min "
+                             "(gyroscopic sliding of the balls, Zaitsev & Voronkin)")
+    assert r.messages[1] == ("Fa = 1.05 N meets the minimum axial load at the initial angle alpha0 = 12 deg, "
+                             "Fa_min = 1.019 N (Zaitsev & Voronkin's rule), but not the stricter one at the working "
+                             "angle alpha = 12.42 deg under this load, Fa_min at alpha = 1.091 N, at n = 30000 1/min: "
+                             "the balls may slide under their gyroscopic moment")
+    assert r.messages[2] == ""
+
+
+def test_a_load_above_the_stands_20_percent_is_no_warning():
+    """Zaitsev & Voronkin, p. 3: the stand load may exceed the computed nominal one by at most 20 %; that chooses the
+    load of a vibration test, it does not bound the contact formulas: 1.5 N at 30 000 1/min (1.47 times Fa_min =
+    1.019 N at α0, 1.35 times the 1.110 N at its working angle) and the paper's 2 kgf at 3000 1/min are 'ok'."""
+    u = ureg()
+    r = ct.ball_bearing_contact(z=Z, d_w=DW * u.mm, d_m=DM * u.mm, r_i=RI * u.mm, r_o=RO * u.mm, alpha0=ALPHA0 * u.deg,
+                                Fa=np.array([1.5, FA_SEED]) * u.N, n=np.array([30000, 3000]) * u.rpm)
+    assert r.Fa.to("N").magnitude[0] > 1.2 * r.Fa_min_at_alpha.to("N").magnitude[0]
+    assert r.status == ["ok", "ok"] and r.messages == ["", ""]
+
+
 def test_plausibility_warnings_of_fa_and_n_are_per_point():
     """Fa above 1e8 N or n above 2e5 1/min are kept with a warning (the contract's plausible ranges), on the points
     that have them, before the minimum-load warning of the same point."""

@@ -120,3 +120,32 @@ def test_range_problems_finds_one_number_among_many_inside():
     values[500] = np.inf
     assert range_problems("T_amb", values, lambda i: "T_amb: inf")[0] == [(500, "T_amb: inf is not a finite number")]
     assert range_problems("T_amb", np.full(4, np.nan), str) == ([], [])
+
+
+def test_a_dimensionless_input_headed_with_1_or_dash_is_that_column_written_once():
+    """The contract names a dimensionless column bare (f0), the template's units row writes 1 for it, and calc
+    reads 'f0 [1]' and 'f1 [-]' as f0 and f1. Their results used to come out beside them ('f0 [1]' and 'f0'): now
+    the result takes the input column's place under its own header, as with a bare 'f0'. By hand (the Schaeffler
+    catalogue, p. 66): M0 = f0·(ν·n)^(2/3)·dM³·1e-7 = 2.5·36000^(2/3)·38.5³·1e-7, M1 = f1·P1·dM = 5e-4·2000·38.5."""
+    base = {"designation": ["6205"], "d [mm]": [25], "D [mm]": [52], "C0 [kN]": [7.8], "lubrication": ["oil_bath"],
+            "n [rpm]": [3000], "Fr [kN]": [2], "nu [mm^2/s]": [12]}
+    bare = calc(pd.DataFrame({**base, "f0": [2.5], "f1": [5e-4], "Y0": [0.5]}))
+    for f0, f1, y0 in (("f0 [1]", "f1 [-]", "Y0 [1]"), ("f0 [-]", "f1 [1]", "Y0 [-]")):
+        out = calc(pd.DataFrame({**base, f0: [2.5], f1: [5e-4], y0: [0.5]}))
+        assert list(out.columns) == [*base, "f0", "f1", y0] + list(bare.columns[len(base) + 3:])
+        assert (out["f0"].iat[0], out["f1"].iat[0]) == (2.5, 5e-4)
+        assert out["M0 [N*mm]"].iat[0] == pytest.approx(2.5 * 36000 ** (2 / 3) * 38.5**3 * 1e-7, rel=1e-12)
+        assert out["M1 [N*mm]"].iat[0] == pytest.approx(38.5, rel=1e-12)
+        pd.testing.assert_frame_equal(out.rename(columns={y0: "Y0"}), bare)
+
+
+def test_a_result_of_a_results_table_headed_in_another_unit_is_written_once_in_its_place():
+    """A results table computed again whose MR the user turned into N*m ('MR [N*m]'): calc writes MR [N*mm] in that
+    column's place, once, with the new values (it used to keep the old column and add MR [N*mm] at the end)."""
+    rows = pd.DataFrame({"designation": ["6205"], "d [mm]": [25], "D [mm]": [52], "C0 [kN]": [7.8],
+                         "lubrication": ["oil_bath"], "n [rpm]": [3000], "Fr [kN]": [2], "nu [mm^2/s]": [12]})
+    first = calc(rows)
+    earlier = first.assign(**{"MR [N*mm]": first["MR [N*mm]"] / 1000}).rename(columns={"MR [N*mm]": "MR [N*m]"})
+    again = calc(earlier)
+    assert list(again.columns) == list(first.columns)
+    assert again["MR [N*mm]"].iat[0] == first["MR [N*mm]"].iat[0]

@@ -92,3 +92,23 @@ def test_a_partition_that_holds_result_columns_gets_them_once():
     assert list(out.columns[:len(earlier.columns)]) == list(earlier.columns)
     np.testing.assert_allclose(out["MR [N*mm]"].to_numpy(dtype=float),
                                bh.calc(table)["MR [N*mm]"].to_numpy(dtype=float), rtol=1e-15)
+
+
+def test_a_partition_with_f0_headed_with_its_unit_gets_f0_once():
+    """'f0 [1]' (the contract's bare f0 with the template's unit 1) gets the result f0 in its place, as pandas calc
+    writes it; an empty partition (the meta of the Dask frame) has the same columns."""
+    from bearingheat.calc.distributed import calc_partition, result_layout
+    from bearingheat.calc.table import calc
+
+    table = pd.read_csv(DEMO).assign(**{"f0 [1]": 2.5})
+    layout = result_layout(table.columns)
+    out = calc_partition(table, calc, layout, {})
+    empty = calc_partition(table.iloc[:0], calc, layout, {})
+    assert not out.columns.duplicated().any()
+    assert list(out.columns) == list(empty.columns)
+    assert list(out.columns[:len(table.columns)]) == [*table.columns[:-1], "f0"]
+    assert out["f0"].tolist() == [2.5] * len(table)
+    expected = bh.calc(table)
+    np.testing.assert_allclose(out["MR [N*mm]"].to_numpy(dtype=float), expected["MR [N*mm]"].to_numpy(dtype=float),
+                               rtol=1e-15)
+    assert "f0 [1]" not in expected.columns

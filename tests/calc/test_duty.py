@@ -90,3 +90,15 @@ def test_refusals(results, change, message):
 
 def test_has_duty_cycle():
     assert has_duty_cycle(pd.read_csv(EXAMPLE)) and not has_duty_cycle(pd.DataFrame({"id": ["a"]}))
+
+
+def test_a_support_column_blank_in_every_row_is_no_duty_cycle():
+    """An entirely blank support column (a CSV written from the template or example workbook, whose unused duty
+    columns a workbook already skipped) is no duty cycle; one support named in one row is; a table of headers
+    only (the columns a fleet's files hold) is judged by its headers."""
+    blank = pd.DataFrame({"support": [None, "", "  ", np.nan], "n [rpm]": [1000, 2000, 3000, 4000]})
+    assert not has_duty_cycle(blank)
+    assert not has_duty_cycle(pd.DataFrame({"support": [np.nan, np.nan], "time_share": [np.nan, np.nan]}))
+    assert has_duty_cycle(blank.assign(support=[None, "A", None, None]))
+    assert has_duty_cycle(pd.DataFrame(columns=["support", "n [rpm]"]))
+    assert not has_duty_cycle(pd.DataFrame(columns=["id", "n [rpm]"]))

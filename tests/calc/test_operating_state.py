@@ -298,6 +298,41 @@ def test_a_row_refused_for_its_own_chart_reading_keeps_that_refusal():
         "extrapolating the chart"]
 
 
+def test_rows_off_the_chart_beside_one_on_it_are_evaluated_once_with_the_stand_in(monkeypatch):
+    """The NJ206-E at 2000 1/min whose chart is off at the provisional viscosity (solved at T_op = 100.53 degC, see
+    above) between the NJ1010 (no kB) and the NJ206-E at an Fa/A of 4.297 (beyond the curves): the stand-in f2 was
+    tried on the three rows, then the solved one was evaluated again alone. The refused rows' results are now put
+    back from before the trial: three rows evaluated once, then the solved row at its T_op; every row as alone."""
+    import importlib
+    thermal = importlib.import_module("bearingheat.calc.thermal")
+    row = {"d [mm]": 50, "D [mm]": 80, "B [mm]": 16, "C0 [kN]": 50, "lubrication": "oil_bath", "n [rpm]": 1000,
+           "Fr [kN]": 5.0, "Fa [kN]": 0.2, "nu40 [mm^2/s]": 68, "nu100 [mm^2/s]": 8.6, "T_amb [degC]": 20}
+    solved = _axially_loaded(**{"n [rpm]": 2000, "Q_E [W]": 100}).drop(columns=["T_bearing [degC]"])
+    rows = pd.concat([pd.DataFrame([{**row, "designation": "NJ1010"}]), solved,
+                      pd.DataFrame([{**row, "designation": "NJ206-E-XL", "d [mm]": 30, "D [mm]": 62, "C0 [kN]": 36,
+                                     "n [rpm]": 100}])], ignore_index=True)
+    evaluated = []
+    real = thermal.results_at_viscosity
+
+    def counted(frame, results, changed, **options):
+        evaluated.append(np.flatnonzero(changed).tolist())
+        return real(frame, results, changed, **options)
+
+    monkeypatch.setattr(thermal, "results_at_viscosity", counted)
+    out = bh.calc(rows, f2_chart="docs/f2_chart_example.csv")
+    assert evaluated == [[0, 1, 2], [1]]
+    assert out["status"].tolist() == ["error", "ok", "error"]
+    assert out["message"].tolist() == [
+        "kB: missing; cylindrical roller bearing with cage series 10 has no kB in the Schaeffler catalogue p. 70, "
+        "so Fa/A for the f2 chart is unknown; give f2",
+        "",
+        "f2: Fa/A = 4.297 is outside the f2 chart's curves (0.5 to 2); the Schaeffler catalogue forbids "
+        "extrapolating the chart"]
+    assert round(out["T_op [degC]"].iat[1], 2) == 100.53
+    alone = bh.calc(solved, f2_chart="docs/f2_chart_example.csv")
+    pd.testing.assert_frame_equal(out.iloc[[1]].reset_index(drop=True)[alone.columns], alone, check_dtype=False)
+
+
 def test_a_viscosity_below_astm_d341_at_T_bearing_is_told():
     """nu(T_bearing) is the viscosity of n_per, and of the friction results with viscosity_at 'bearing': below
     2 mm^2/s it is an extrapolation of ASTM D341 and is said so, as nu_op is (it was used silently)."""

@@ -667,3 +667,83 @@ def test_the_duty_summary_follows_its_dataset(tmp_path, monkeypatch):
     heavier.iloc[0:0].to_parquet(tmp_path / "fleet" / "a.parquet", index=False)
     assert calc_fleet(tmp_path / "fleet", out, overwrite=True).num_rows == 0
     assert not summary.exists()
+
+
+def test_the_scheduler_is_checked_and_the_target_recovered_once(tmp_path, capsys, monkeypatch):
+    """The command checked the scheduler's address, and dask_client checked it again; it put right what a stopped
+    run had left, and plan_dataset did it again. Each runs once now (counted on a scheduler of this process, with one
+    worker thread); a malformed address given to dask_client directly is still named by check_scheduler."""
+    from distributed import LocalCluster
+
+    import bearingheat.cli.calc as command
+    import bearingheat.io.dataset as dataset
+
+    calls: list[str] = []
+
+    def counted(name, real):
+        def wrapper(value):
+            calls.append(name)
+            return real(value)
+        return wrapper
+
+    for name in ("check_scheduler", "recover_target"):
+        wrapper = counted(name, getattr(dataset, name))
+        monkeypatch.setattr(command, name, wrapper)
+        monkeypatch.setattr(dataset, name, wrapper)
+    fleet(tmp_path / "fleet")
+    out = tmp_path / "results"
+    with LocalCluster(n_workers=1, threads_per_worker=1, processes=False, protocol="tcp://",
+                      dashboard_address=None) as cluster:
+        assert main(["calc", str(tmp_path / "fleet"), "--dask", "--scheduler", cluster.scheduler_address,
+                     "-o", str(out), "-q"]) == 1
+    assert sorted(calls) == ["check_scheduler", "recover_target"]
+    assert len(pd.read_parquet(out)) == 60
+    capsys.readouterr()
+    with pytest.raises(bh.errors.InputError) as info:
+        with dataset.dask_client("notanaddress"):
+            pass
+    assert str(info.value) == ("--scheduler notanaddress: not the address of a Dask scheduler (missing port number in "
+                               "address 'notanaddress'); give it as tcp://HOST:PORT, such as tcp://scheduler:8786")
+
+
+def test_text_columns_of_a_dictionary_are_text_in_the_fleet_as_plain_strings_are(tmp_path):
+    """A fleet whose designation, lubrication and id are dictionaries (pandas categories; in one file of two, the
+    other plain strings, as well as in both) gives the results of the fleet in plain strings, and every text column
+    of the parts is dictionary encoded: the parts' writer took a dictionary for no text (io.arrow) where io.fleet
+    took it for text."""
+    from bearingheat.io.arrow import is_text_type
+    demo = pd.read_csv(DEMO)
+    categorical = demo.astype({c: "category" for c in ("id", "designation", "lubrication")})
+    for name, halves in (("plain", (demo, demo)), ("dictionary", (categorical, categorical)),
+                         ("mixed", (categorical, demo))):
+        (tmp_path / name).mkdir()
+        for i, frame in enumerate(halves):
+            frame.iloc[3 * i:3 * i + 3].to_parquet(tmp_path / name / f"part{i}.parquet", index=False)
+    plain = calc_fleet(tmp_path / "plain", tmp_path / "out_plain")
+    for name in ("dictionary", "mixed"):
+        got = calc_fleet(tmp_path / name, tmp_path / f"out_{name}")
+        assert got.column_names == plain.column_names
+        for column in plain.column_names:
+            assert got.column(column).to_pylist() == plain.column(column).to_pylist(), (name, column)
+        for part in sorted((tmp_path / f"out_{name}").glob("*.parquet")):
+            file = parquet.ParquetFile(part)
+            group = file.metadata.row_group(0)
+            for i, field in enumerate(file.schema_arrow):
+                if is_text_type(field.type):
+                    assert "RLE_DICTIONARY" in group.column(i).encodings, (name, part.name, field.name)
+    assert pa.types.is_dictionary(parquet.read_schema(tmp_path / "out_dictionary" / "part.0.parquet")
+                                  .field("designation").type)
+    assert pa.types.is_large_string(parquet.read_schema(tmp_path / "out_mixed" / "part.0.parquet")
+                                    .field("designation").type)
+
+
+def test_a_fleet_whose_support_column_is_blank_in_every_row_has_no_duty_cycle(tmp_path):
+    """The fleet of a CSV written from the example workbook: its support, case and time_share columns are blank in
+    every row. As calc FILE does, the fleet gets no duty-cycle summary (it stopped at 'row 1: support is blank')."""
+    demo = pd.read_csv(DEMO).assign(support=None, case=None, time_share=np.nan)
+    (tmp_path / "fleet").mkdir()
+    demo.to_parquet(tmp_path / "fleet" / "a.parquet", index=False)
+    got = calc_fleet(tmp_path / "fleet", tmp_path / "out")
+    assert got.num_rows == len(demo) and got.column("support").null_count == len(demo)
+    assert got.column("MR [N*mm]").to_pylist() == bh.calc(demo)["MR [N*mm]"].tolist()
+    assert not (tmp_path / "out.duty.parquet").exists()

@@ -177,3 +177,25 @@ def test_formulas_usage_errors(tmp_path, capsys, extra, message):
     extra = [str(tmp_path / e) if e.startswith("OUT") else e for e in extra]
     assert main(["calc", str(EXAMPLE_XLSX), *extra]) == 2
     assert capsys.readouterr().err == f"bearingheat calc: error: {message}\n"
+
+
+def test_the_csv_of_the_example_workbook_is_computed_again_as_the_workbook_was(tmp_path, capsys):
+    """calc spreadsheets/gearbox_shaft_example.xlsx -o x.csv, then calc x.csv: the CSV holds the workbook's unused
+    duty-cycle columns (support, case, time_share, duration [h]) blank in every row, which a workbook skips and a
+    CSV took for a duty cycle ('row 1: support is blank', exit 2). Now both read them alike: the CSV run gives the
+    workbook run's columns and values, its one message cited with the CSV's row as a CSV cites its rows."""
+    first, again = tmp_path / "x.csv", tmp_path / "again.csv"
+    assert main(["calc", str(EXAMPLE_XLSX), "-o", str(first), "-q"]) == 0
+    assert main(["calc", str(first), "-o", str(again), "-q"]) == 0
+    assert not (tmp_path / "again.duty.csv").exists()
+    capsys.readouterr()
+    workbook, csv = pd.read_csv(first), pd.read_csv(again)
+    for name in ("support", "case", "time_share", "duration [h]"):
+        assert workbook[name].isna().all()
+    assert list(csv.columns) == list(workbook.columns)
+    pd.testing.assert_frame_equal(csv.drop(columns="message"), workbook.drop(columns="message"))
+    said = workbook["message"].fillna("").tolist()
+    assert [i for i, text in enumerate(said) if text] == [4]
+    assert csv["message"].fillna("").tolist() == [
+        f'row 6 (id "spindle front (pair)"): {text}' if text else "" for text in said]
+

@@ -59,6 +59,19 @@ def test_warning_below_minimum_axial_load(capsys):
     assert record["warning"] == message
 
 
+def test_warning_between_the_minimum_at_alpha0_and_at_the_working_angle(capsys):
+    """Both minimum loads are printed; Fa = 1.05 N at 30 000 1/min meets 1.019 N (at α0) but not 1.091 N (at α)."""
+    code, record, err = run_json(capsys, "--alpha0", "12deg", "--Fa", "1.05N", "--n", "30000rpm")
+    assert code == 0
+    assert (round(record["Fa_min [N]"], 3), round(record["Fa_min at alpha [N]"], 3)) == (1.019, 1.091)
+    message = ("Fa = 1.05 N meets the minimum axial load at the initial angle alpha0 = 12 deg, Fa_min = 1.019 N "
+               "(Zaitsev & Voronkin's rule), but not the stricter one at the working angle alpha = 12.42 deg under "
+               "this load, Fa_min at alpha = 1.091 N, at n = 30000 1/min: the balls may slide under their "
+               "gyroscopic moment")
+    assert err == f"bearingheat contact: warning: {message}\n"
+    assert record["warning"] == message
+
+
 @pytest.mark.parametrize("argv, message", [
     ([*GEOMETRY, "--alpha0", "12deg", "--clearance", "0.01mm"],
      "give exactly one of --alpha0 (e.g. 12deg) or --clearance (e.g. 0.01mm)"),

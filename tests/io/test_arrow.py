@@ -151,3 +151,40 @@ def test_the_users_own_metadata_is_kept_beside_the_units(tmp_path):
     assert schema.metadata == {b"source": b"plant A"}
     assert schema.field("id").metadata == {b"description": b"support label", b"unit": b""}
     assert schema.field("MR [N*mm]").metadata == {b"unit": b"N*mm"}
+
+
+def _dictionary_encoded(path: Path) -> dict[str, bool]:
+    """Column -> whether the Parquet file stores it dictionary encoded (first row group)."""
+    file = parquet.ParquetFile(path)
+    group = file.metadata.row_group(0)
+    return {group.column(i).path_in_schema: "RLE_DICTIONARY" in group.column(i).encodings
+            for i in range(group.num_columns)}
+
+
+def test_text_columns_of_a_dictionary_are_text_as_plain_strings_are(tmp_path):
+    """A Parquet input whose designation, lubrication and id are dictionaries (pandas categories) gives the results
+    of the same input in plain strings, every text column dictionary encoded in the output as the plain strings
+    are: io.arrow took a dictionary for no text (its columns were written without a dictionary) where io.fleet
+    took it for text; both use is_text_type now."""
+    import pyarrow as pa
+
+    from bearingheat.io.arrow import is_text_type
+    demo = pd.read_csv(DEMO)
+    categorical = demo.astype({c: "category" for c in ("id", "designation", "lubrication")})
+    assert [is_text_type(t) for t in (pa.string(), pa.large_string(), pa.dictionary(pa.int8(), pa.string()),
+                                      pa.dictionary(pa.int8(), pa.int64()), pa.float64())] == [
+        True, True, True, False, False]
+    for name, frame in (("plain", demo), ("dictionary", categorical)):
+        frame.to_parquet(tmp_path / f"{name}.parquet", index=False)
+        assert main(["calc", str(tmp_path / f"{name}.parquet"), "-o", str(tmp_path / f"out_{name}.parquet"),
+                     "-q"]) == 0
+    plain, dictionary = (parquet.read_table(tmp_path / f"out_{name}.parquet") for name in ("plain", "dictionary"))
+    assert dictionary.schema.field("designation").type == pa.dictionary(pa.int8(), pa.string())  # kept a category
+    assert dictionary.column_names == plain.column_names
+    for name in plain.column_names:
+        assert dictionary.column(name).to_pylist() == plain.column(name).to_pylist(), name
+    texts = [f.name for f in plain.schema if is_text_type(f.type)]
+    assert {"id", "designation", "lubrication", "status", "message"} <= set(texts)
+    encoded = _dictionary_encoded(tmp_path / "out_dictionary.parquet")
+    assert all(encoded[name] for name in texts)
+    assert not encoded["MR [N*mm]"]  # numbers without a dictionary, as before

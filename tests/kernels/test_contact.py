@@ -130,11 +130,55 @@ def test_series_coefficients_match_a_taylor_fit(alpha0):
 
 
 @settings(max_examples=60, deadline=None)
-@given(alpha0=st.floats(2.0, 40.0), load_ratio=st.floats(1e-7, 1e-2))
+@given(alpha0=st.floats(0.5, 89.99), load_ratio=st.floats(0.0, 1e-2))
 def test_series_with_newton_converges_to_the_bracketed_root(alpha0, load_ratio):
     exact = ct.working_contact_angle(load_ratio, 1.0, alpha0)
-    series = ct.working_contact_angle_series(load_ratio, 1.0, alpha0, newton_steps=8)
+    series = ct.working_contact_angle_series(load_ratio, 1.0, alpha0)
     assert series == pytest.approx(exact, abs=1e-9)
+
+
+def _exact_angle_by_bisection(load_ratio, alpha0):
+    """α of Fa/C* = (cos α0/cos α − 1)^(3/2)·sin α by 200 bisections of [α0, 90°), independent of the kernels."""
+    a0 = math.radians(alpha0)
+    low, high = a0, math.pi / 2
+    for _ in range(200):
+        mid = 0.5 * (low + high)
+        load = (math.cos(a0) / math.cos(mid) - 1.0) ** 1.5 * math.sin(mid)
+        low, high = (mid, high) if load < load_ratio else (low, mid)
+    return math.degrees(low)
+
+
+def test_series_method_is_right_where_two_newton_steps_are_not():
+    """α0 = 2°, Fa/C* = 0.01: the exact root is 23.1099°; the paper's two Newton steps stop 0.60° above it (they
+    used to be the result); iterated to 1e-12 rad the series method gives the root."""
+    exact = _exact_angle_by_bisection(0.01, 2.0)
+    assert exact == pytest.approx(23.109882, abs=1e-6)
+    two_steps = ct.series_iterates(0.01, 1.0, 2.0, newton_steps=2)[-1].alpha
+    assert two_steps - exact == pytest.approx(0.6018, abs=1e-4)
+    assert ct.working_contact_angle_series(0.01, 1.0, 2.0) == pytest.approx(exact, abs=1e-10)
+    assert ct.working_contact_angle_series(2.0, 7792.0, 12.0) == pytest.approx(
+        _exact_angle_by_bisection(2.0 / 7792.0, 12.0), abs=1e-10)
+
+
+def test_series_method_over_its_whole_range():
+    """α0 from 0.5° to 89.99°, Fa/C* from 0 (and 1e-300) to 0.01: every angle within 1e-9° of the bracketed root,
+    none NaN (the quadratic start and the Newton denominator used to cancel to 0 at small loads)."""
+    alpha0, load_ratio = np.meshgrid(np.linspace(0.5, 89.99, 60),
+                                     np.concatenate([[0.0, 1e-300, 1e-30], np.logspace(-20, -2, 40)]))
+    series = ct.working_contact_angle_series(load_ratio, 1.0, alpha0)
+    exact = ct.working_contact_angle(load_ratio, 1.0, alpha0)
+    assert np.isfinite(series).all()
+    assert np.abs(series - exact).max() < 1e-9
+
+
+def test_series_at_tiny_loads_keeps_the_start_and_the_iterate_loads():
+    """Fa/C* = 1e-26 at α0 = 89.99°: the quadratic start is the linear root (Fa/C*)^(2/3)/a_1 = 8.10e-19 rad (it was
+    0, √(1 + u) − 1 rounding to 0); Fa/C* = 1e-30 at α0 = 12°: the iterates' load is Fa (Δ = 0 %), though α0 + x
+    rounds to α0 in degrees (it was 0, Δ = −100 %)."""
+    a1 = math.sin(math.radians(89.99)) ** (2 / 3) * math.tan(math.radians(89.99))
+    assert ct.series_start(1e-26, 1.0, 89.99) == pytest.approx(1e-26 ** (2 / 3) / a1, rel=1e-9)
+    last = ct.series_iterates(1e-30, 1.0, 12.0, newton_steps=2)[-1]
+    assert last.alpha == 12.0 and last.deviation_percent == pytest.approx(0.0, abs=1e-9)
 
 
 def test_series_newton_steps_shrink_the_error():
@@ -241,6 +285,24 @@ def test_working_angle_is_the_inverse_of_the_load_equation():
     assert ct.working_contact_angle(loads, 7792.0, ALPHA0) == pytest.approx(alphas, abs=1e-10)
 
 
+def test_axial_displacement_ratio_over_its_range():
+    """ξ_a = (tan α − tan α0)·cos α0 by hand: 0 at α = α0, (0.257997 − 0.212557)·0.978148 = 0.044447 at the paper's
+    14°28′, (57.28996 − 0.212557)·0.978148 = 55.8301 at 89°; NaN (a row without geometry) stays NaN."""
+    assert ct.axial_displacement_ratio(12.0, 12.0) == 0.0
+    assert ct.axial_displacement_ratio(dms(14, 28), 12.0) == pytest.approx(0.044447, abs=1e-6)
+    assert ct.axial_displacement_ratio(89.0, 12.0) == pytest.approx(55.8301, abs=1e-4)
+    assert math.isnan(ct.axial_displacement_ratio(np.nan, 12.0))
+
+
+def test_working_angle_is_never_below_alpha0():
+    """α = α0 + x: a load so small that x is below the spacing of floats at α0 gives α0 itself, which ξ_a accepts
+    (7.5° does not survive a round trip through radians, 7.499999999999999: α from the radians was below α0)."""
+    assert np.degrees(7.5 * math.pi / 180) < 7.5
+    for load in (0.0, 1e-40, 1e-20):
+        alpha = ct.working_contact_angle(load, 7792.0, 7.5)
+        assert alpha >= 7.5 and ct.axial_displacement_ratio(alpha, 7.5) >= 0.0
+
+
 def test_working_angle_from_zero_initial_angle():
     """alpha0 = 0 (no clearance): the bracketing solver works where the series does not."""
     alpha = ct.working_contact_angle(1e-3, 1.0, 0.0)
@@ -318,6 +380,13 @@ def test_scalar_array_and_series_agree():
      "impossible geometry: pitch diameter D0 = 2 mm must exceed d_w = 2 mm"),
     (lambda: ct.axial_load_at_angle(11.0, 12.0, 7792.0),
      "alpha = 11 deg must lie in [alpha0, 90) deg = [12, 90) deg"),
+    # tan(90 deg) in floating point is 1.6e16: the ratio used to come back as 1.6e16, and as a negative
+    # displacement below alpha0
+    (lambda: ct.axial_displacement_ratio(90.0, 12.0), "alpha = 90 deg must lie in [alpha0, 90) deg = [12, 90) deg"),
+    (lambda: ct.axial_displacement_ratio(11.0, 12.0), "alpha = 11 deg must lie in [alpha0, 90) deg = [12, 90) deg"),
+    (lambda: ct.axial_displacement_ratio(np.array([14.0, 95.0]), 12.0),
+     "alpha = 95 deg must lie in [alpha0, 90) deg = [12, 90) deg (element 1)"),
+    (lambda: ct.axial_displacement_ratio(14.0, -1.0), "alpha0 = -1 deg must lie in [0, 90) deg"),
     # non-finite and far-out inputs: refused by the package, not by scipy's bracket or as inf/nan out
     (lambda: ct.working_contact_angle(np.inf, 7792.0, 12.0), "Fa = inf N: the axial load must be finite"),
     (lambda: ct.working_contact_angle(2.0, np.inf, 12.0), "C_star = inf N: the stiffness characteristic must be finite"),
@@ -327,6 +396,13 @@ def test_scalar_array_and_series_agree():
     (lambda: ct.working_contact_angle_series(2e7, 2.0, 12.0),
      "Fa = 2e+07 N with C_star = 2 N: Fa/C_star = 1e+07 must lie in [0, 1e+06] "
      "(the working angle is then within 0.01 deg of 90 deg)"),
+    (lambda: ct.working_contact_angle_series(0.02, 1.0, 12.0),
+     "Fa = 0.02 N with C_star = 1 N: Fa/C_star = 0.02; the series method of Zaitsev & Voronkin (a small "
+     "x = alpha - alpha0) is used up to Fa/C_star = 0.01 (beyond it its Newton steps can leave [alpha0, 90) deg); "
+     "use working_contact_angle"),
+    (lambda: ct.series_iterates(2.0, 7792.0, 0.3),
+     "alpha0 = 0.3 deg: the series method of Zaitsev & Voronkin is used from alpha0 = 0.5 deg on (below it its "
+     "Newton steps can leave [alpha0, 90) deg); use working_contact_angle"),
     (lambda: ct.minimum_axial_load(7, 2, 8.7, np.inf, 12), "n = inf 1/min: the speed must be finite"),
     (lambda: ct.stiffness_characteristic(7, 2.0, 8.7355, 12.0, 1.05, 1.16, deflection_coefficients=(-0.63, -0.852)),
      "deflection_coefficients: inner 2K/(mu*pi) = -0.63 must lie in (0, 1] "
@@ -344,6 +420,34 @@ def test_errors_exact_messages(call, message):
     with pytest.raises(ContactInputError) as info:
         call()
     assert str(info.value) == message
+
+
+def test_series_method_refuses_what_its_cap_of_newton_steps_does_not_reach(monkeypatch):
+    """α0 = 2°, Fa/C* = 0.01 takes six steps to 1e-12 rad; with the cap lowered to two it is refused, not returned."""
+    monkeypatch.setattr(ct, "SERIES_MAX_NEWTON_STEPS", 2)
+    with pytest.raises(ContactInputError) as info:
+        ct.working_contact_angle_series(pd.Series([0.0, 0.01], index=["a", "b"]), 1.0, 2.0)
+    assert str(info.value) == ("Fa = 0.01 N with C_star = 1 N, alpha0 = 2 deg: the Newton steps of the series method "
+                               "did not come below 1e-12 rad in 2 steps; use working_contact_angle (row b)")
+
+
+@pytest.mark.parametrize("angle, message", [
+    (math.nan, "alpha = nan deg: only a finite angle can be written in degrees, minutes and seconds"),
+    (np.float64(np.inf), "alpha = inf deg: only a finite angle can be written in degrees, minutes and seconds"),
+    (-math.inf, "alpha = -inf deg: only a finite angle can be written in degrees, minutes and seconds"),
+])
+def test_degrees_to_dms_refuses_what_is_not_a_finite_angle(angle, message):
+    """Python's own 'cannot convert float NaN to integer' (and OverflowError for inf) used to come out."""
+    with pytest.raises(ContactInputError) as info:
+        ct.degrees_to_dms(angle)
+    assert str(info.value) == message
+
+
+def test_degrees_to_dms_by_hand():
+    """14.4670° = 14° 28′ 1.2″; −0.5° = −0°30′00″; 59.99999° rounds up to 60°00′00″ (not 59°59′60″)."""
+    assert ct.degrees_to_dms(14.4670) == "14°28′01″"
+    assert ct.degrees_to_dms(-0.5) == "-0°30′00″"
+    assert ct.degrees_to_dms(59.99999) == "60°00′00″"
 
 
 def test_error_names_the_row_of_a_series():
