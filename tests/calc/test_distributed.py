@@ -1,6 +1,7 @@
 """bh.calc on a Dask DataFrame: a LocalCluster of two worker processes gives the pandas result row for row."""
 from __future__ import annotations
 
+import logging
 from pathlib import Path
 
 import numpy as np
@@ -40,7 +41,10 @@ def same_as_pandas(distributed_result: pd.DataFrame, table: pd.DataFrame) -> Non
 
 @pytest.fixture(scope="module")
 def client():
-    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None)
+    # silence_logs: a worker that outlives the closed scheduler for a moment logs a failed heartbeat to the test
+    # process's stderr (its file descriptor), where a later test that captures it would read it as its own output
+    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None,
+                                       silence_logs=logging.CRITICAL)
     with distributed.Client(cluster) as connected:
         yield connected
     cluster.close()
