@@ -116,10 +116,12 @@ def read_lab_table(table: pd.DataFrame) -> pd.DataFrame:
 def _lab_headers(table: pd.DataFrame) -> dict[str, tuple[str, str | None]]:
     """Lab column name -> (its header, the unit typed there) of the columns a table of readings has; a header that
     is no 'name [unit]' names no reading (it is passed through, as calc passes it)."""
-    seen = {}
+    seen: dict[str, tuple[str, str | None]] = {}
     for header in table.columns:
         name, unit = parse_header(header, strict=False)
         if name in LAB_UNITS:
+            if name in seen:  # ('T [degC]' and 'T [K]': which one is the reading? as calc and diagnose refuse it)
+                raise LabError(f"column {header!r}: {name} appears twice")
             seen[name] = (header, unit)
     return seen
 

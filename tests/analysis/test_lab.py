@@ -96,6 +96,14 @@ def test_missing_column_and_bad_angle():
                                   "n [1/min]": [3000.0], "T [N*mm]": [0.1]}))
 
 
+def test_a_reading_in_two_columns_is_refused():
+    """T in N·mm and T in N·m: the last was taken, silently."""
+    table = pd.DataFrame({"bearing": ["101"], "Q [kg]": [1.0], "beta [deg]": [0.0], "n [1/min]": [3000.0],
+                          "T [N*mm]": [0.1], "T [N*m]": [0.0001]})
+    with pytest.raises(LabError, match=re.escape("column 'T [N*m]': T appears twice")):
+        process_lab(table)
+
+
 def test_weight_as_force_is_refused():
     with pytest.raises(LabError, match=re.escape("column 'Q [N]': unit N cannot be converted to kg")):
         process_lab(pd.DataFrame({"bearing": ["101"], "Q [N]": [1.0], "beta [deg]": [0.0],
