@@ -82,7 +82,7 @@ def use_definition_cache() -> bool:
     if not isinstance(pint.get_application_registry().get(), pint.registry.LazyRegistry):
         return False  # set by the caller, or already loaded: Quantities of it may exist
     try:
-        registry = pint.UnitRegistry(cache_folder=":auto:")
+        registry: pint.UnitRegistry = pint.UnitRegistry(cache_folder=":auto:")
     except Exception:  # a damaged or unreadable cache: only the start is slower, so the default registry stays
         return False
     pint.set_application_registry(registry)
