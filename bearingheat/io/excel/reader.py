@@ -44,7 +44,7 @@ from openpyxl.worksheet.worksheet import Worksheet
 
 from bearingheat.calc.contract import input_units, parse_header, result_column
 from bearingheat.errors import ExcelError, InputError, UnitError
-from bearingheat.io.excel.opc import MAIN, PKG_REL, parse_part, resolve_target
+from bearingheat.io.excel.opc import MAIN, office_document, parse_part
 from bearingheat.io.excel.ownership import read_marks
 from bearingheat.io.files import EXCEL_SUFFIXES
 from bearingheat.units import convert_column, parse_unit, quantity
@@ -470,15 +470,14 @@ def _refuse_header_clashes(sheet: str, header_row: int, columns: list[tuple[int,
 
 
 def _workbook_part(archive: zipfile.ZipFile) -> str:
-    """The workbook part of a package (xl/workbook.xml unless its relationships say otherwise)."""
+    """The workbook part of a package (xl/workbook.xml unless its relationships say otherwise:
+    :func:`bearingheat.io.excel.opc.office_document`)."""
     try:
-        rels = parse_part(archive.read("_rels/.rels"), "_rels/.rels", str(archive.filename))
+        package_rels: bytes | None = archive.read("_rels/.rels")
     except KeyError:
-        return "xl/workbook.xml"
-    for rel in rels.iter(f"{{{PKG_REL}}}Relationship"):
-        if rel.get("Type", "").endswith("/officeDocument"):
-            return resolve_target("", rel.get("Target", ""))
-    return "xl/workbook.xml"
+        package_rels = None
+    office = office_document(package_rels, str(archive.filename))
+    return "xl/workbook.xml" if office is None else office[1]
 
 
 def _recalculates_on_load(path: Path) -> bool:

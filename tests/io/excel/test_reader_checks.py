@@ -16,6 +16,7 @@ from workbook_corpus import edit_package
 from bearingheat.calc.table import calc
 from bearingheat.errors import ExcelError
 from bearingheat.io.excel.libreoffice import convert
+from bearingheat.io.excel.opc import office_document, open_package
 from bearingheat.io.excel.reader import read_supports
 from bearingheat.io.excel.workbook import calc_workbook
 from bearingheat.io.tables import calc_csv
@@ -70,6 +71,28 @@ def test_a_formula_cached_as_0_by_xlsxwriter_has_no_saved_value(tmp_path):
     expected = csv_of(rows, tmp_path)  # the value a script gave (6.2 for =2*3.1) is read
     np.testing.assert_allclose(result["MR [N*mm]"].iloc[2:], expected["MR [N*mm]"].iloc[2:], rtol=1e-12)
     assert (result["status"].iloc[2:] == expected["status"].iloc[2:]).all()
+
+
+def test_a_workbook_part_of_another_name_is_found_by_the_reader_and_the_package_edit(tmp_path):
+    """The workbook part is where _rels/.rels says (xl/book.xml here): the reader finds its recalculation flag
+    there (F3's cached 0 has no saved value), and the package edit edits it."""
+    path = xlsxwriter_book(tmp_path / "moved.xlsx", gearbox_rows(), {"F3": ("=1.6*2", None)})
+    with zipfile.ZipFile(path) as archive:
+        workbook, workbook_rels = archive.read("xl/workbook.xml"), archive.read("xl/_rels/workbook.xml.rels")
+    edit_package(path, {"_rels/.rels": lambda data: data.replace(b'Target="xl/workbook.xml"', b'Target="xl/book.xml"'),
+                        "[Content_Types].xml": lambda data: data.replace(b"/xl/workbook.xml", b"/xl/book.xml")},
+                 add={"xl/book.xml": workbook, "xl/_rels/book.xml.rels": workbook_rels},
+                 remove=("xl/workbook.xml", "xl/_rels/workbook.xml.rels"))
+    rels = zipped(path, "_rels/.rels")
+    office = "http://schemas.openxmlformats.org/officeDocument/2006/relationships/officeDocument"
+    assert office_document(rels, path) == (office, "xl/book.xml")
+    assert office_document(rels.replace(b"/officeDocument", b"/extended-properties"), path) is None
+    assert office_document(None, path) is None
+    assert open_package(path).workbook == "xl/book.xml"
+    assert calc_workbook(path).result["message"].iat[0] == UNSAVED.format(cell="Supports!F3", formula="=1.6*2")
+    calc_workbook(path, in_place=True)
+    assert b'name="Results"' in zipped(path, "xl/book.xml")
+    assert "xl/workbook.xml" not in zipfile.ZipFile(path).namelist()
 
 
 def test_a_cached_0_is_read_where_no_recalculation_is_asked_for(tmp_path):
