@@ -45,7 +45,7 @@ from openpyxl.worksheet.worksheet import Worksheet
 from bearingheat.calc.contract import input_units, parse_header, result_column
 from bearingheat.errors import ExcelError, InputError, UnitError
 from bearingheat.io.excel.opc import MAIN, office_document, parse_part
-from bearingheat.io.excel.ownership import read_marks
+from bearingheat.io.excel.ownership import read_marks, sheet_ref
 from bearingheat.io.files import EXCEL_SUFFIXES
 from bearingheat.units import convert_column, parse_unit, quantity
 
@@ -102,7 +102,8 @@ class SheetInfo:
 
     @property
     def sheet_ref(self) -> str:
-        return _ref(self.sheet)
+        """The sheet's name as formulas and messages write it (:func:`bearingheat.io.excel.ownership.sheet_ref`)."""
+        return sheet_ref(self.sheet)
 
     def cell(self, column: str, position: int) -> str:
         """``cell('Fr', 4)`` -> ``'Supports!F7'``: the cell of a column (header or contract name) in row ``position``."""
@@ -311,8 +312,8 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
         if not text:
             continue
         if text in seen:
-            raise ExcelError(f"{_ref(ws.title)}!{get_column_letter(col)}{header_row}: column {text!r} appears twice "
-                             f"(also in column {seen[text]})")
+            raise ExcelError(f"{sheet_ref(ws.title)}!{get_column_letter(col)}{header_row}: column {text!r} appears "
+                             f"twice (also in column {seen[text]})")
         seen[text] = get_column_letter(col)
         columns.append((col, text))
     names = [contract_name(text) for _, text in columns]
@@ -331,8 +332,8 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
     is_units, unknown = _looks_like_units_row(raw_units, names)
     if unknown:
         position, why = unknown[0]
-        raise ExcelError(f"{_ref(ws.title)}!{get_column_letter(columns[position][0])}{candidate}: {why} in the units "
-                         "row; write a unit such as kN, N, rpm, mm^2/s (docs/excel.md lists them)")
+        raise ExcelError(f"{sheet_ref(ws.title)}!{get_column_letter(columns[position][0])}{candidate}: {why} in the "
+                         "units row; write a unit such as kN, N, rpm, mm^2/s (docs/excel.md lists them)")
     if is_units:
         units_row = candidate
         for (col, header), value in zip(columns, raw_units):
@@ -455,7 +456,7 @@ def _refuse_header_clashes(sheet: str, header_row: int, columns: list[tuple[int,
     catalogue's D used instead)."""
     present = {name for name in names if name is not None}
     for (col, header), name in zip(columns, names):
-        where = f"{_ref(sheet)}!{get_column_letter(col)}{header_row}"
+        where = f"{sheet_ref(sheet)}!{get_column_letter(col)}{header_row}"
         written = result_column(header)
         if written is not None:
             raise ExcelError(f"{where}: {header!r} is a column calc writes; rename it (e.g. "
@@ -523,8 +524,8 @@ def _refuse_merged_data(ws: Worksheet, columns: list[int], first_data: int) -> N
         cells = (merged.max_row - top + 1) * inside
         first_inside = merged.min_row >= first_data and merged.min_col in wanted
         if cells - first_inside > 0:
-            raise ExcelError(f"{_ref(ws.title)}!{merged.coord}: merged cells among the rows of supports; the sheet "
-                             f"shows their value on every row, but only {get_column_letter(merged.min_col)}"
+            raise ExcelError(f"{sheet_ref(ws.title)}!{merged.coord}: merged cells among the rows of supports; the "
+                             f"sheet shows their value on every row, but only {get_column_letter(merged.min_col)}"
                              f"{merged.min_row} holds it, so the other rows would read as blank. Unmerge them and "
                              "give each row its own value")
 
@@ -553,13 +554,6 @@ def _used_rows(ws: Worksheet, columns: dict[int, int], first: int) -> dict[int, 
         if row >= first and col in columns and cell.value is not None:
             rows.setdefault(row, []).append((columns[col], cell))
     return dict(sorted(rows.items()))
-
-
-def _ref(sheet: str) -> str:
-    """A sheet name as Excel writes it in a reference: Supports, 'Shaft 1', 'Q1''s loads'."""
-    if re.fullmatch(r"[A-Za-z_][A-Za-z0-9_.]*", sheet) and not re.fullmatch(r"[A-Za-z]{1,3}[0-9]+", sheet):
-        return sheet
-    return "'" + sheet.replace("'", "''") + "'"
 
 
 def contract_name(header: str) -> str | None:
@@ -595,8 +589,8 @@ def _check_units(sheet: str, header_row: int, units_row: int, columns: Iterable[
         except UnitError:
             same = False
         if not same:
-            raise ExcelError(f"{_ref(sheet)}!{get_column_letter(col)}{units_row}: unit {units[header]!r} contradicts "
-                             f"the header {header!r}; keep one of them")
+            raise ExcelError(f"{sheet_ref(sheet)}!{get_column_letter(col)}{units_row}: unit {units[header]!r} "
+                             f"contradicts the header {header!r}; keep one of them")
 
 
 def _numeric_if_possible(values: list[Any]) -> pd.Series:
