@@ -64,6 +64,7 @@ __all__ = [
     "RESULTS_SHEET",
     "EXCEL_SUFFIXES",
     "stored_cells",
+    "ambiguous_text_message",
 ]
 
 #: the input sheet of the template; its results go to RESULTS_SHEET
@@ -97,6 +98,8 @@ class SheetInfo:
     headers: dict[str, str] = field(default_factory=dict)
     formula_cells: dict[tuple[str, int], str] = field(default_factory=dict)
     uncached: list[tuple[int, str, str]] = field(default_factory=list)
+    #: number cells holding text that reads two ways ('3.000': 3 or 3000), (position, header, text): read as blank
+    ambiguous: list[tuple[int, str, str]] = field(default_factory=list)
     #: worksheet rows of supports that are hidden on the sheet (by hand or by a filter): computed like the others
     hidden_rows: list[int] = field(default_factory=list)
 
@@ -283,7 +286,9 @@ def read_supports(path: str | os.PathLike[str], sheet: str | None = None, *,
     (``Fr [kN]``). Text columns of the contract hold strings, numeric
     columns floats where every value is a number (else the raw values, so
     that calc can name the cell that is not a number). A formula cell with
-    no value saved by a spreadsheet program is listed in ``info.uncached``.
+    no value saved by a spreadsheet program is listed in ``info.uncached``,
+    a number cell holding text that reads two ways ('3.000': 3 or 3000) in
+    ``info.ambiguous``; both are read as blank.
     """
     path = Path(path)
     if not path.is_file():
@@ -405,6 +410,7 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
                 uncached.append((position_of_row[row], header, formula))
 
     known = input_units()
+    ambiguous = _take_ambiguous_texts(columns, names, data)
     frame_columns: dict[str, pd.Series] = {}
     for (col, header), contract, values in zip(columns, names, data):
         if contract is not None and known[contract] in _TEXT_UNITS:
@@ -418,8 +424,39 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
     hidden = [row for row in rows if row in dimensions and dimensions[row].hidden]
     info = SheetInfo(path=path, sheet=ws.title, header_row=header_row, units_row=units_row, units=units,
                      letters=letters, rows=rows, headers=contract_headers, formula_cells=formula_cells,
-                     uncached=uncached, hidden_rows=hidden)
+                     uncached=uncached, ambiguous=ambiguous, hidden_rows=hidden)
     return table, info
+
+
+#: a number typed as text with groups of three digits after '.' or ',' ('3.000', '12,500', '1.234.567'): a
+#: decimal mark or a thousands separator of another locale, which a workbook cell does not tell ('0.500' is 0.5
+#: either way: no thousands group begins with 0)
+_GROUPED = re.compile(r"[+-]?[1-9][0-9]{0,2}(?:[.,][0-9]{3})+")
+
+
+def _take_ambiguous_texts(columns: list[tuple[int, str]], names: list[str | None], data: list[list]
+                          ) -> list[tuple[int, str, str]]:
+    """The text cells of the number columns that read two ways ('3.000': 3 with a decimal point, 3000 with a
+    thousands separator), as (row position, header, text); each is blanked in ``data`` (calc would read '3.000'
+    as 3, while a workbook has no decimal mark of its own to say which was meant, as a CSV file has)."""
+    known = input_units()
+    found = []
+    for (_, header), contract, values in zip(columns, names, data):
+        if contract is None or known[contract] in _TEXT_UNITS:
+            continue
+        for position, value in enumerate(values):
+            if isinstance(value, str) and _GROUPED.fullmatch(value.strip()):
+                found.append((position, header, value))
+                values[position] = None
+    return sorted(found)
+
+
+def ambiguous_text_message(cell: str, text: str) -> str:
+    """The message of a number cell holding text such as '3.000' (:func:`_take_ambiguous_texts`)."""
+    marks = sorted(set(re.findall(r"[.,]", text)))
+    which = (f"its {marks[0]!r} may be a decimal mark or a thousands separator" if len(marks) == 1 else
+             f"its {marks[0]!r} and {marks[1]!r} may be decimal marks or thousands separators")
+    return f"{cell}: {text!r} is a number stored as text, and {which}; type the number into the cell as a number"
 
 
 #: Excel renames a table header that repeats another one without regard to letter case: 'd' and 'D' -> 'D2'

@@ -286,3 +286,49 @@ def test_a_csv_of_a_workbook_has_the_units_in_its_headers_and_reads_back(tmp_pat
     np.testing.assert_allclose(again["MR [N*mm]"], run.result["MR [N*mm]"], rtol=1e-12)
     assert again["status"].tolist() == run.result["status"].tolist()
     np.testing.assert_allclose(again["MR [N*mm]"], calc(pd.read_csv(out))["MR [N*mm]"], rtol=1e-12)
+
+
+# ---- 7. numbers typed as text with groups of three digits ----------------------------------------------------------
+
+AMBIGUOUS = ("{cell}: {text!r} is a number stored as text, and its {mark!r} may be a decimal mark or a thousands "
+             "separator; type the number into the cell as a number")
+
+
+def test_a_number_as_text_that_reads_two_ways_is_refused_in_a_workbook(tmp_path):
+    """'3.000' in Fr was read as 3 kN (status ok), while '3,000' and '3 000' were refused: a workbook cell has no
+    decimal mark of its own to say whether 3 or 3000 was meant. Text that reads one way is read as before."""
+    rows = gearbox_rows()
+    texts = {0: ("F", "3.000"), 1: ("F", "12,500"), 2: ("E", "1.234.567"), 3: ("F", " +3.000 ")}
+    for position, (letter, text) in texts.items():
+        rows[position][HEADER.index({"F": "Fr", "E": "n"}[letter])] = text
+    rows[4][HEADER.index("Fr")] = "0.500"  # 0.5 whichever the mark: no thousands group begins with 0
+    rows[5][HEADER.index("Fr")] = "3.0000"  # four decimals: no thousands separator
+    result = calc_workbook(make_workbook(tmp_path / "text.xlsx", rows=rows)).result
+    for position, (letter, text) in texts.items():
+        mark = "." if "." in text else ","
+        expected = AMBIGUOUS.format(cell=f"Supports!{letter}{position + 3}", text=text, mark=mark)
+        assert result["status"].iat[position] == "error"
+        assert result["message"].iat[position].split("; ")[:2] == expected.split("; "), position
+    assert result["MR [N*mm]"].iloc[:4].isna().all()
+    numbers = gearbox_rows()
+    numbers[4][HEADER.index("Fr")], numbers[5][HEADER.index("Fr")] = 0.5, 3.0
+    expected = csv_of(numbers, tmp_path)
+    np.testing.assert_allclose(result["MR [N*mm]"].iloc[4:], expected["MR [N*mm]"].iloc[4:], rtol=1e-12)
+    assert result["status"].iloc[4:].tolist() == expected["status"].iloc[4:].tolist()
+    # two different marks: both named
+    rows = gearbox_rows()
+    rows[0][HEADER.index("Fr")] = "1,234.500"
+    message = calc_workbook(make_workbook(tmp_path / "mixed.xlsx", rows=rows)).result["message"].iat[0]
+    assert message.startswith("Supports!F3: '1,234.500' is a number stored as text, and its ',' and '.' may be "
+                              "decimal marks or thousands separators; type the number into the cell as a number")
+
+
+def test_a_csv_reads_3_000_with_its_decimal_mark_as_before(tmp_path):
+    """In a CSV '3.000' is read with the file's decimal mark (the point): 3 kN, as the number 3."""
+    rows = gearbox_rows()
+    rows[0][HEADER.index("Fr")] = "3.000"
+    as_text = csv_of(rows, tmp_path, name="text.csv")
+    rows[0][HEADER.index("Fr")] = 3.0
+    as_number = csv_of(rows, tmp_path, name="number.csv")
+    assert as_text["status"].iat[0] == "ok"
+    assert as_text["MR [N*mm]"].iat[0] == as_number["MR [N*mm]"].iat[0]
