@@ -37,7 +37,7 @@ import numpy as np
 import pandas as pd
 from lxml import etree
 from openpyxl import load_workbook
-from openpyxl.utils import column_index_from_string, get_column_letter
+from openpyxl.utils import column_index_from_string, get_column_letter, range_boundaries
 from openpyxl.utils.exceptions import InvalidFileException
 from openpyxl.workbook import Workbook
 from openpyxl.worksheet.worksheet import Worksheet
@@ -102,6 +102,8 @@ class SheetInfo:
     ambiguous: list[tuple[int, str, str]] = field(default_factory=list)
     #: worksheet rows of supports that are hidden on the sheet (by hand or by a filter): computed like the others
     hidden_rows: list[int] = field(default_factory=list)
+    #: the totals rows of Excel tables among the rows (row, table name): no supports, so not read
+    totals_rows: list[tuple[int, str]] = field(default_factory=list)
 
     @property
     def sheet_ref(self) -> str:
@@ -363,6 +365,9 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
     formula_cells: dict[tuple[str, int], str] = {}
     positions = {col: i for i, col in enumerate(wanted)}
     used = _used_rows(ws, positions, first_data)
+    totals = _totals_rows(ws, set(wanted), first_data)
+    skipped = [(row, totals[row]) for row in used if row in totals]
+    used = {row: row_cells for row, row_cells in used.items() if row not in totals}
     if progress is not None:
         progress.start(len(used), f"reading {ws.title}")
     for count, (row, row_cells) in enumerate(used.items(), start=1):
@@ -424,7 +429,7 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
     hidden = [row for row in rows if row in dimensions and dimensions[row].hidden]
     info = SheetInfo(path=path, sheet=ws.title, header_row=header_row, units_row=units_row, units=units,
                      letters=letters, rows=rows, headers=contract_headers, formula_cells=formula_cells,
-                     uncached=uncached, ambiguous=ambiguous, hidden_rows=hidden)
+                     uncached=uncached, ambiguous=ambiguous, hidden_rows=hidden, totals_rows=skipped)
     return table, info
 
 
@@ -546,6 +551,19 @@ def _unsaved_zeros(path: Path, workbook: Workbook, cached: dict[tuple[str, int],
     if read_marks(defined_name_values(workbook)) and len(zeros) < len(cached):
         return set()
     return zeros
+
+
+def _totals_rows(ws: Worksheet, columns: set[int], first_data: int) -> dict[int, str]:
+    """{row: table name} of the totals rows of the sheet's Excel tables (Insert > Table; Table Design > Total Row)
+    that lie among the rows of supports in ``columns``: the last ``totalsRowCount`` rows of the table's range
+    (ECMA-376 Part 1, 18.5.1.2; ``totalsRowShown`` only tells whether the row was ever shown)."""
+    rows: dict[int, str] = {}
+    for table in ws.tables.values():
+        count = table.totalsRowCount or 0
+        min_col, _, max_col, max_row = range_boundaries(table.ref)
+        if count and any(min_col <= col <= max_col for col in columns):
+            rows.update((row, table.displayName) for row in range(max(max_row - count + 1, first_data), max_row + 1))
+    return rows
 
 
 def _refuse_merged_data(ws: Worksheet, columns: list[int], first_data: int) -> None:

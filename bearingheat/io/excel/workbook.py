@@ -340,6 +340,8 @@ def _run(source: Path, target: Path | None, edit: tuple[Package, WorkbookLock] |
             atomic_save(workbook, target)
     if info.hidden_rows:  # not silently: a hidden row is a support like the others to calc
         notes.insert(0, _hidden_note(info))
+    notes[:0] = [f"row {row} of sheet {info.sheet!r} is the totals row of the Excel table {table!r}, not a "
+                 "support: it was left out" for row, table in info.totals_rows]
     return WorkbookRun(result, info, target, results_sheet, dropped, notes, companions, duty)
 
 

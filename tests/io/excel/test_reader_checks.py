@@ -4,13 +4,15 @@ from __future__ import annotations
 
 import re
 import zipfile
+from pathlib import Path
 
 import numpy as np
 import openpyxl
 import pandas as pd
 import pytest
 import xlsxwriter
-from excel_helpers import HEADER, UNITS, gearbox_rows, make_workbook, require_soffice
+from excel_helpers import HEADER, UNITS, gearbox_rows, make_workbook, require_soffice, set_cached_value
+from openpyxl.worksheet.table import Table, TableColumn
 from workbook_corpus import edit_package
 
 from bearingheat.calc.table import calc
@@ -332,3 +334,44 @@ def test_a_csv_reads_3_000_with_its_decimal_mark_as_before(tmp_path):
     as_number = csv_of(rows, tmp_path, name="number.csv")
     assert as_text["status"].iat[0] == "ok"
     assert as_text["MR [N*mm]"].iat[0] == as_number["MR [N*mm]"].iat[0]
+
+
+# ---- 8. the totals row of an Excel table --------------------------------------------------------------------------
+
+def table_with_totals(path, cached: dict[str, str]) -> Path:
+    """The gearbox supports as an Excel table 'Loads' (units row inside it) with its totals row shown: 'Total'
+    under id, SUBTOTAL of Fr and Fa; ``cached``: the values Excel saved for those formulas ({cell: value})."""
+    header = [h if h != "D" else "D [mm]" for h in HEADER]  # (Excel renames 'D' beside 'd' in a table: 'D2')
+    make_workbook(path, header)
+    workbook = openpyxl.load_workbook(path)
+    ws = workbook["Supports"]
+    last = 3 + len(gearbox_rows())
+    ws[f"A{last}"], ws[f"F{last}"], ws[f"G{last}"] = "Total", "=SUBTOTAL(109,Loads[Fr])", "=SUBTOTAL(109,Loads[Fa])"
+    table = Table(displayName="Loads", ref=f"A1:M{last}", totalsRowCount=1)
+    table.tableColumns = [TableColumn(id=i, name=name) for i, name in enumerate(header, start=1)]
+    table.tableColumns[0].totalsRowLabel = "Total"
+    table.tableColumns[5].totalsRowFunction = table.tableColumns[6].totalsRowFunction = "sum"
+    ws.add_table(table)
+    workbook.save(path)
+    for cell, value in cached.items():
+        set_cached_value(path, 1, cell, value)
+    return Path(path)
+
+
+@pytest.mark.parametrize("cached", [{"F9": "20.8", "G9": "5.3"}, {}])
+def test_the_totals_row_of_an_excel_table_is_no_support(tmp_path, cached):
+    """Row 9, the table's totals row (totalsRowCount="1"), was read as a seventh support 'Total' (an error row,
+    or with saved values one of Fr 20.8 kN); it is left out with a note. Saved or not, its formulas are not read."""
+    path = table_with_totals(tmp_path / "table.xlsx", cached)
+    part = zipped(path, "xl/tables/table1.xml").decode()
+    assert re.search(r'<table [^>]*ref="A1:M9"[^>]*totalsRowCount="1"', part)
+    assert '<tableColumn id="6" name="Fr" totalsRowFunction="sum"/>' in part
+    run = calc_workbook(path, tmp_path / "out.xlsx")
+    assert run.info.rows == [3, 4, 5, 6, 7, 8] and run.info.totals_rows == [(9, "Loads")]
+    assert run.notes == ["row 9 of sheet 'Supports' is the totals row of the Excel table 'Loads', not a support: "
+                         "it was left out"]
+    plain = calc_workbook(make_workbook(tmp_path / "plain.xlsx")).result
+    np.testing.assert_allclose(run.result["MR [N*mm]"], plain["MR [N*mm]"], rtol=1e-12)
+    assert run.result["status"].tolist() == plain["status"].tolist() == ["ok"] * 4 + ["warning", "ok"]
+    results = openpyxl.load_workbook(tmp_path / "out.xlsx")["Results"]
+    assert [row[0] for row in results.iter_rows(min_row=3, values_only=True)] == [3, 4, 5, 6, 7, 8]
