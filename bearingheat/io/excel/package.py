@@ -498,14 +498,13 @@ def write_results_in_place(package: Package, input_sheet: str, table: pd.DataFra
             part = edit.add_sheet(companion_name, hidden=companion.hidden, reserved=[sheet.part])
         edit.changes[part.part] = companion.render(edit.styles)
     cell_formulas = formulas(names) if callable(formulas) else formulas
+    written_cells = record.WrittenCells()  # the record, as the cells are written (not read back)
     edit.changes[sheet.part] = results_sheet_xml(table, edit.styles.index, units=units, formulas=cell_formulas,
                                                  kept=kept, print_setup=print_setup, rules=rules,
                                                  dxf_index=edit.styles.dxf, progress=progress, title=name,
-                                                 hidden_columns=hidden_columns, epoch=edit.epoch)
-    written_cells = record.read_cells(edit.changes[sheet.part])
-    extent = written_cells.extent
-    workbook.set_marks(k, name, input_sheet, [j for j in stale if j != k], names,
-                       record.record_value(extent, written_cells.digest(extent)))
+                                                 hidden_columns=hidden_columns, epoch=edit.epoch,
+                                                 written=written_cells)
+    workbook.set_marks(k, name, input_sheet, [j for j in stale if j != k], names, written_cells.record())
     if print_setup is not None:
         workbook.print_titles(sheet, print_setup.print_titles(sheet_ref(name)))
     notes = ([note] if note else []) + notes_before
