@@ -422,8 +422,8 @@ def write_results_in_place(package: Package, input_sheet: str, table: pd.DataFra
                            formulas: CellFormulas | Callable[[dict[str, str]], CellFormulas] | None = None,
                            progress: Progress | None = None, placeholders: Collection[str] = (),
                            rules: Sequence[ConditionalRule] = (), print_setup: PrintSetup | None = None,
-                           companions: Sequence[Companion] = (), hidden_columns: Sequence[str] = ()
-                           ) -> InPlaceResult:
+                           companions: Sequence[Companion] = (), hidden_columns: Sequence[str] = (),
+                           footer: dict[str, str] | None = None) -> InPlaceResult:
     """Write ``table`` as the results sheet of ``input_sheet`` into the workbook of ``package``.
 
     The results sheet that bearingheat marked for ``input_sheet`` is replaced
@@ -442,7 +442,8 @@ def write_results_in_place(package: Package, input_sheet: str, table: pd.DataFra
     callable that gives it from the companions' names by role (the status
     formulas name the inputs' copy). ``rules`` are conditional formats,
     ``print_setup`` a :class:`bearingheat.io.excel.printing.PrintSetup`,
-    ``hidden_columns`` the results sheet's collapsed columns.
+    ``hidden_columns`` the results sheet's collapsed columns, ``footer`` the
+    formulas of cells below its table by address.
     ``lock`` (:func:`bearingheat.io.files.workbook_lock`) is checked just
     before the file is replaced. ``target``: the edited package is written
     there instead of over the workbook (``calc -o``: a copy that keeps every
@@ -503,7 +504,7 @@ def write_results_in_place(package: Package, input_sheet: str, table: pd.DataFra
                                                  kept=kept, print_setup=print_setup, rules=rules,
                                                  dxf_index=edit.styles.dxf, progress=progress, title=name,
                                                  hidden_columns=hidden_columns, epoch=edit.epoch,
-                                                 written=written_cells)
+                                                 written=written_cells, footer=footer)
     workbook.set_marks(k, name, input_sheet, [j for j in stale if j != k], names, written_cells.record())
     if print_setup is not None:
         workbook.print_titles(sheet, print_setup.print_titles(sheet_ref(name)))

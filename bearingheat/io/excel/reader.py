@@ -37,7 +37,7 @@ import numpy as np
 import pandas as pd
 from lxml import etree
 from openpyxl import load_workbook
-from openpyxl.utils import column_index_from_string, get_column_letter, range_boundaries
+from openpyxl.utils import column_index_from_string, get_column_letter
 from openpyxl.utils.exceptions import InvalidFileException
 from openpyxl.workbook import Workbook
 from openpyxl.worksheet.worksheet import Worksheet
@@ -46,6 +46,7 @@ from bearingheat.calc.contract import input_units, parse_header, result_column
 from bearingheat.errors import ExcelError, InputError, UnitError
 from bearingheat.io.excel.opc import MAIN, office_document, parse_part
 from bearingheat.io.excel.ownership import read_marks, sheet_ref
+from bearingheat.io.excel.rows import filled_rows, take_ambiguous_texts, totals_rows
 from bearingheat.io.files import EXCEL_SUFFIXES
 from bearingheat.units import convert_column, parse_unit, quantity
 
@@ -64,7 +65,6 @@ __all__ = [
     "RESULTS_SHEET",
     "EXCEL_SUFFIXES",
     "stored_cells",
-    "ambiguous_text_message",
 ]
 
 #: the input sheet of the template; its results go to RESULTS_SHEET
@@ -98,12 +98,17 @@ class SheetInfo:
     headers: dict[str, str] = field(default_factory=dict)
     formula_cells: dict[tuple[str, int], str] = field(default_factory=dict)
     uncached: list[tuple[int, str, str]] = field(default_factory=list)
-    #: number cells holding text that reads two ways ('3.000': 3 or 3000), (position, header, text): read as blank
+    #: number cells holding text that reads two ways ('3.000': 3 or 3000; :mod:`.rows`), (position, header, text):
+    #: read as blank
     ambiguous: list[tuple[int, str, str]] = field(default_factory=list)
     #: worksheet rows of supports that are hidden on the sheet (by hand or by a filter): computed like the others
     hidden_rows: list[int] = field(default_factory=list)
-    #: the totals rows of Excel tables among the rows (row, table name): no supports, so not read
+    #: the totals rows of Excel tables among the rows (row, table name): no supports, so not read (:mod:`.rows`)
     totals_rows: list[tuple[int, str]] = field(default_factory=list)
+    #: the rows from the units row (the header row without one) down with something in a column of ``headers``,
+    #: as Excel's COUNTIFS(range, "") tells them from blank rows (a cell of spaces is something, a formula that
+    #: shows "" is not): the count the check of --formulas compares with (:func:`.freshness.unread_rows_check`, :func:`.rows.filled_rows`)
+    filled_rows: int = 0
 
     @property
     def sheet_ref(self) -> str:
@@ -365,7 +370,8 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
     formula_cells: dict[tuple[str, int], str] = {}
     positions = {col: i for i, col in enumerate(wanted)}
     used = _used_rows(ws, positions, first_data)
-    totals = _totals_rows(ws, set(wanted), first_data)
+    every_row = used
+    totals = totals_rows(ws, set(wanted), first_data)
     skipped = [(row, totals[row]) for row in used if row in totals]
     used = {row: row_cells for row, row_cells in used.items() if row not in totals}
     if progress is not None:
@@ -391,6 +397,7 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
         progress.finish()
 
     uncached: list[tuple[int, str, str]] = []
+    cached: dict[tuple[str, int], Any] = {}
     if formula_cells:
         cached = _cached_values(path, ws.title, formula_cells, letters)
         for key in _unsaved_zeros(path, workbook, cached):
@@ -414,8 +421,11 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
             if data[col_index[header]][position_of_row[row]] is None:
                 uncached.append((position_of_row[row], header, formula))
 
+    read = {col for col, header in columns if header in contract_headers.values()}
+    filled = filled_rows(stored_cells(ws), every_row, [col in read for col, _ in columns], cached, columns,
+                         units_row or header_row)
     known = input_units()
-    ambiguous = _take_ambiguous_texts(columns, names, data)
+    ambiguous = take_ambiguous_texts(columns, [n is not None and known[n] not in _TEXT_UNITS for n in names], data)
     frame_columns: dict[str, pd.Series] = {}
     for (col, header), contract, values in zip(columns, names, data):
         if contract is not None and known[contract] in _TEXT_UNITS:
@@ -429,39 +439,9 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
     hidden = [row for row in rows if row in dimensions and dimensions[row].hidden]
     info = SheetInfo(path=path, sheet=ws.title, header_row=header_row, units_row=units_row, units=units,
                      letters=letters, rows=rows, headers=contract_headers, formula_cells=formula_cells,
-                     uncached=uncached, ambiguous=ambiguous, hidden_rows=hidden, totals_rows=skipped)
+                     uncached=uncached, ambiguous=ambiguous, hidden_rows=hidden, totals_rows=skipped,
+                     filled_rows=filled)
     return table, info
-
-
-#: a number typed as text with groups of three digits after '.' or ',' ('3.000', '12,500', '1.234.567'): a
-#: decimal mark or a thousands separator of another locale, which a workbook cell does not tell ('0.500' is 0.5
-#: either way: no thousands group begins with 0)
-_GROUPED = re.compile(r"[+-]?[1-9][0-9]{0,2}(?:[.,][0-9]{3})+")
-
-
-def _take_ambiguous_texts(columns: list[tuple[int, str]], names: list[str | None], data: list[list]
-                          ) -> list[tuple[int, str, str]]:
-    """The text cells of the number columns that read two ways ('3.000': 3 with a decimal point, 3000 with a
-    thousands separator), as (row position, header, text); each is blanked in ``data`` (calc would read '3.000'
-    as 3, while a workbook has no decimal mark of its own to say which was meant, as a CSV file has)."""
-    known = input_units()
-    found = []
-    for (_, header), contract, values in zip(columns, names, data):
-        if contract is None or known[contract] in _TEXT_UNITS:
-            continue
-        for position, value in enumerate(values):
-            if isinstance(value, str) and _GROUPED.fullmatch(value.strip()):
-                found.append((position, header, value))
-                values[position] = None
-    return sorted(found)
-
-
-def ambiguous_text_message(cell: str, text: str) -> str:
-    """The message of a number cell holding text such as '3.000' (:func:`_take_ambiguous_texts`)."""
-    marks = sorted(set(re.findall(r"[.,]", text)))
-    which = (f"its {marks[0]!r} may be a decimal mark or a thousands separator" if len(marks) == 1 else
-             f"its {marks[0]!r} and {marks[1]!r} may be decimal marks or thousands separators")
-    return f"{cell}: {text!r} is a number stored as text, and {which}; type the number into the cell as a number"
 
 
 #: Excel renames a table header that repeats another one without regard to letter case: 'd' and 'D' -> 'D2'
@@ -551,19 +531,6 @@ def _unsaved_zeros(path: Path, workbook: Workbook, cached: dict[tuple[str, int],
     if read_marks(defined_name_values(workbook)) and len(zeros) < len(cached):
         return set()
     return zeros
-
-
-def _totals_rows(ws: Worksheet, columns: set[int], first_data: int) -> dict[int, str]:
-    """{row: table name} of the totals rows of the sheet's Excel tables (Insert > Table; Table Design > Total Row)
-    that lie among the rows of supports in ``columns``: the last ``totalsRowCount`` rows of the table's range
-    (ECMA-376 Part 1, 18.5.1.2; ``totalsRowShown`` only tells whether the row was ever shown)."""
-    rows: dict[int, str] = {}
-    for table in ws.tables.values():
-        count = table.totalsRowCount or 0
-        min_col, _, max_col, max_row = range_boundaries(table.ref)
-        if count and any(min_col <= col <= max_col for col in columns):
-            rows.update((row, table.displayName) for row in range(max(max_row - count + 1, first_data), max_row + 1))
-    return rows
 
 
 def _refuse_merged_data(ws: Worksheet, columns: list[int], first_data: int) -> None:

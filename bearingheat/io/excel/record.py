@@ -35,6 +35,7 @@ import html
 import re
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
+from typing import SupportsFloat
 
 from openpyxl.utils import column_index_from_string, get_column_letter, range_boundaries
 
@@ -136,7 +137,7 @@ def _digest(extras: str, lines: Iterable[str]) -> str:
     return sha.hexdigest()[:16]
 
 
-def number_text(value: float) -> str:
+def number_text(value: SupportsFloat) -> str:
     """A number as the record holds it: 6 significant digits (:func:`_number`).
 
     >>> number_text(138.47817095928783), number_text(3), number_text(1e-07)

@@ -26,7 +26,7 @@ from xml.sax.saxutils import escape
 
 import numpy as np
 import pandas as pd
-from openpyxl.utils import get_column_letter
+from openpyxl.utils import coordinate_to_tuple, get_column_letter
 from openpyxl.utils.datetime import CALENDAR_WINDOWS_1900, to_excel
 
 from bearingheat.io.excel import style as st
@@ -122,7 +122,8 @@ def results_sheet_xml(table: pd.DataFrame, style_index: Callable[..., int], *, u
                       print_setup=None, rules=(), dxf_index: Callable[[str], int] | None = None,
                       progress=None, title: str = "Results", hidden_columns=(),
                       input_columns: AbstractSet[str] = frozenset(), tab_color: str | None = TAB_COLOR,
-                      epoch: datetime.datetime = CALENDAR_WINDOWS_1900, written: WrittenCells | None = None) -> bytes:
+                      epoch: datetime.datetime = CALENDAR_WINDOWS_1900, written: WrittenCells | None = None,
+                      footer: dict[str, str] | None = None) -> bytes:
     """The worksheet part of a results sheet.
 
     ``style_index(name, quote=False, number_format=None)`` gives the cellXfs
@@ -144,7 +145,9 @@ def results_sheet_xml(table: pd.DataFrame, style_index: Callable[..., int], *, u
     date cells. ``progress``: an object with start, update, finish.
     ``written`` (a :class:`bearingheat.io.excel.record.WrittenCells`) is
     given every cell with a value as it is written: the sheet's record,
-    without reading the part back.
+    without reading the part back. ``footer`` maps the addresses of cells
+    below the table to formulas ('A10': the check of
+    :func:`bearingheat.io.excel.freshness.unread_rows_check`).
     """
     formulas = formulas or {}
     kept = dict(kept or {})
@@ -170,7 +173,9 @@ def results_sheet_xml(table: pd.DataFrame, style_index: Callable[..., int], *, u
     columns = list(table.columns)
     status_col = columns.index("status") if "status" in columns else None
     formula_cols = {columns.index(header): header for header in {header for header, _ in formulas}}
-    last = f"{letters[-1]}{n_rows + 2}" if n_cols else "A1"
+    below = sorted(((coordinate_to_tuple(address), text) for address, text in (footer or {}).items()))
+    last_row = max([n_rows + 2] + [row for (row, _), _ in below])
+    last = f"{letters[-1]}{last_row}" if n_cols else "A1"
     setup = dict(print_setup.xml()) if print_setup is not None else {}
     if "pageSetup" in kept:  # the designer's page setup: fit to pages only where it says so
         setup["pageSetUpPr"] = ""
@@ -234,6 +239,13 @@ def results_sheet_xml(table: pd.DataFrame, style_index: Callable[..., int], *, u
             progress.update(position)
     if progress is not None:
         progress.finish()
+    for row in sorted({row for (row, _), _ in below}):
+        cells = []
+        for (_, col), text in (item for item in below if item[0][0] == row):
+            cells.append(f'<c r="{get_column_letter(col)}{row}"><f>{escape(text.removeprefix("="))}</f></c>')
+            if record is not None:
+                record(col, row, "f", "")
+        parts.append(f'<row r="{row}">{"".join(cells)}</row>')
     parts.append("</sheetData>")
     if rules:
         if dxf_index is None:

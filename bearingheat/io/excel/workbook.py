@@ -41,8 +41,9 @@ from bearingheat.io.excel.ownership import (COMPANION_MARKS, INPUT_MARK, RESULTS
                                             choose_results_sheet, mark_value, read_companions, read_marks)
 from bearingheat.io.excel.opc import Package, open_package
 from bearingheat.io.excel.package import InPlaceResult, write_results_in_place
-from bearingheat.io.excel.reader import (EXCEL_SUFFIXES, SheetInfo, ambiguous_text_message, contract_name,
-                                         defined_name_values, open_workbook, read_sheet)
+from bearingheat.io.excel.reader import (EXCEL_SUFFIXES, SheetInfo, contract_name, defined_name_values,
+                                         open_workbook, read_sheet)
+from bearingheat.io.excel.rows import ambiguous_text_message
 from bearingheat.io.excel.safety import unsupported_content
 from bearingheat.io.excel.template import is_placeholder
 from bearingheat.io.excel.sheets import ResultsSheets, results_sheets
@@ -279,7 +280,8 @@ def _package_edit(source: Path, target: Path, edit: tuple[Package, WorkbookLock]
                                       target=None if edit is not None else target, units={"row": "-"},
                                       formulas=sheets.formulas, progress=progress, placeholders=placeholders,
                                       rules=sheets.rules, print_setup=sheets.print_setup,
-                                      companions=sheets.companions, hidden_columns=sheets.hidden_columns)
+                                      companions=sheets.companions, hidden_columns=sheets.hidden_columns,
+                                      footer=sheets.footer)
     except WorkbookContentError as exc:
         if edit is not None:
             raise
@@ -331,7 +333,8 @@ def _run(source: Path, target: Path | None, edit: tuple[Package, WorkbookLock] |
             notes = [note] if note else []
             ws = install_sheet(workbook, results_sheet, after=info.sheet)
             fill_sheet(ws, sheets.table, units={"row": "-"}, formulas=sheets.formulas(companions), progress=progress,
-                       rules=sheets.rules, print_setup=sheets.print_setup, hidden_columns=sheets.hidden_columns)
+                       rules=sheets.rules, print_setup=sheets.print_setup, hidden_columns=sheets.hidden_columns,
+                       footer=sheets.footer)
             ws.sheet_properties.tabColor = "44546A"
             after = results_sheet
             for companion in sheets.companions:

@@ -58,7 +58,8 @@ def results_by_header(path) -> tuple[list, list[list]]:
     header = [c.value for c in ws[1]]
     units = [c.value for c in ws[2]]
     names = [f"{h} [{u}]" if u not in ("-", "1") else h for h, u in zip(header, units)]
-    return names, [list(r) for r in ws.iter_rows(min_row=3, values_only=True)]
+    rows = [list(r) for r in ws.iter_rows(min_row=3, values_only=True)]
+    return names, rows[:[r[0] for r in rows].index(None)]  # (below a blank row: the check for unread supports)
 
 
 def assert_formulas_equal_python(recalculated, result):
