@@ -5,9 +5,10 @@ Every file bearingheat writes goes through this module:
 - :func:`safe_output` checks a target before any work is done: it resolves
   symbolic links (the write goes through the link to the real file), and
   refuses (:class:`~bearingheat.errors.OutputFileError`) an output that is an
-  input (also through a link or a hard link), an existing file without
-  ``force``, a read-only file, a file with other hard links, and a folder that
-  is missing or not writable.
+  input (also through a link or a hard link), an existing file that Excel or
+  LibreOffice has open (their lock files; also with ``force``), an existing
+  file without ``force``, a read-only file, a file with other hard links, and
+  a folder that is missing or not writable.
 - :func:`atomic_write` writes to a temporary file beside the target
   (``.<name>.bearingheat-<pid>-<random>.tmp``), flushes it to disk, gives it
   the target's permission bits and renames it over the target, so the target
@@ -96,7 +97,9 @@ def safe_output(path, *, force: bool, inputs: Iterable = ()) -> Path:
     a write replaces the real file and keeps the link. Refused, with a
     message naming the file and the cause: an output that is one of
     ``inputs`` (compared by device and inode, so links and hard links count),
-    an existing file without ``force`` (``... exists; give --force to replace
+    an existing file that Excel or LibreOffice has open, also with ``force``
+    (:class:`WorkbookLockedError` naming their lock file beside it), an
+    existing file without ``force`` (``... exists; give --force to replace
     it``), a read-only file, a file with other hard links (an atomic rename
     would leave them with the old content), a folder, and a folder that is
     missing or not writable.
@@ -124,6 +127,7 @@ def safe_output(path, *, force: bool, inputs: Iterable = ()) -> Path:
             raise OutputFileError(f"{given} is a folder, not a file")
         if not stat_module.S_ISREG(stat.st_mode):  # /dev/null, a pipe: a rename would replace the device itself
             raise OutputFileError(f"{given} is not a regular file; write to a file")
+        _office_locks(given, real)  # (--force too: the program would save its copy over the new file)
         if not force:
             raise OutputFileError(f"{given} exists; give --force to replace it")
         if not stat.st_mode & 0o222 or not os.access(real, os.W_OK):
@@ -168,14 +172,17 @@ def atomic_write(target, write: Callable[[Path], object]) -> Path:
     Temporary files of earlier killed runs are removed first
     (:func:`remove_stale_temps`). The temporary file is flushed to disk and
     given the target's permission bits before :func:`os.replace`, so the
-    target is always the old file or the new complete one. Symbolic links are
+    target is always the old file or the new complete one; an existing target
+    that Excel or LibreOffice has open by then is not replaced
+    (:class:`WorkbookLockedError`, the temporary file removed). Symbolic links are
     followed (the real file is replaced, the link kept). On any failure the
     temporary file is removed and the exception re-raised; an :class:`OSError`
     (a full disk, a folder that is not writable) becomes
     :class:`OutputFileError` ``cannot write TARGET: CAUSE``. Returns the file
     written.
     """
-    target = _real(Path(target))
+    given = Path(target)
+    target = _real(given)
     remove_stale_temps(target.parent, target.name)
     temp = temp_name(target)
     try:
@@ -183,6 +190,8 @@ def atomic_write(target, write: Callable[[Path], object]) -> Path:
         _fsync_file(temp)
         with contextlib.suppress(FileNotFoundError):
             os.chmod(temp, os.stat(target).st_mode & 0o7777)
+        if os.path.lexists(target):  # Excel or LibreOffice opened it during the work: its save would undo ours
+            _office_locks(given, target)
         os.replace(temp, target)
     except BaseException as exc:
         with contextlib.suppress(OSError):
@@ -295,6 +304,13 @@ def _office_lock(path: Path) -> None:
             raise WorkbookLockedError(f"{path} is open in {program} (lock file {lock.name}); close it and run again")
 
 
+def _office_locks(given: Path, real: Path) -> None:
+    """:func:`_office_lock` beside the path given and beside the real file a link of it leads to."""
+    _office_lock(given)
+    if real != given:
+        _office_lock(real)
+
+
 class WorkbookLock:
     """What :func:`workbook_lock` yields: the workbook, its fingerprint on entry, and :meth:`check_unchanged`."""
 
@@ -335,9 +351,7 @@ def workbook_lock(path) -> Iterator[WorkbookLock]:
     """
     given = Path(path)
     real = _real(given)
-    _office_lock(given)
-    if real != given:
-        _office_lock(real)
+    _office_locks(given, real)
     if real in _HELD:  # this process holds it already (the command line around the Excel bridge): re-enter
         _HELD[real] += 1
         try:

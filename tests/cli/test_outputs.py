@@ -250,6 +250,25 @@ def test_in_place_honours_office_lock_files(tmp_path, capsys, lock, program):
     assert digest(book) == before
 
 
+@pytest.mark.parametrize("lock, program", [("~$out.xlsx", "Excel"), (".~lock.out.xlsx#", "LibreOffice")])
+def test_output_open_in_another_program_is_not_replaced_even_with_force(tmp_path, capsys, lock, program):
+    """-o OUT.xlsx --force over a workbook Excel or LibreOffice has open: their later save would throw the results
+    away (and ours their edits), so it is refused, before any work, whether the input is a workbook or a CSV."""
+    book = make_workbook(tmp_path / "book.xlsx")
+    out = tmp_path / "out.xlsx"
+    out.write_bytes(b"the designer's open workbook")
+    (tmp_path / lock).write_text("designer")
+    for source in (book, EXAMPLE_CSV):
+        for force in ([], ["--force"]):
+            assert main(["calc", str(source), "-o", str(out), "-q", *force]) == 2
+            assert _err(capsys) == (f"bearingheat calc: error: {out} is open in {program} (lock file {lock}); "
+                                    "close it and run again")
+    assert out.read_bytes() == b"the designer's open workbook" and _temps(tmp_path) == []
+    (tmp_path / lock).unlink()
+    assert main(["calc", str(book), "-o", str(out), "-q", "--force"]) == 0
+    assert _has_results(out, "Supports")
+
+
 _HOLD = """
 import sys, time
 from bearingheat.io.files import workbook_lock

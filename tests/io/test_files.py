@@ -203,6 +203,37 @@ def test_office_lock_files_refuse(tmp_path, lock, program):
     assert str(exc.value) == f"{book} is open in {program} (lock file {lock}); close it and run again"
 
 
+@pytest.mark.parametrize("lock, program", [("~$out.xlsx", "Excel"), (".~lock.out.xlsx#", "LibreOffice")])
+def test_an_output_open_in_another_program_is_refused_also_with_force(tmp_path, lock, program):
+    out = tmp_path / "out.xlsx"
+    out.write_bytes(b"PK designer")
+    link = tmp_path / "link.xlsx"
+    link.symlink_to(out)
+    (tmp_path / lock).write_text("someone")
+    for target in (out, link):  # through a link: the lock file beside the real file
+        for force in (False, True):
+            with pytest.raises(WorkbookLockedError) as exc:
+                safe_output(target, force=force)
+            assert str(exc.value) == f"{out} is open in {program} (lock file {lock}); close it and run again"
+    assert safe_output(tmp_path / "new.xlsx", force=False) == tmp_path / "new.xlsx"  # nothing there to replace
+
+
+def test_atomic_write_does_not_replace_a_file_opened_meanwhile(tmp_path):
+    """The lock file appears while the new file is written (LibreOffice opened the target): the target stays."""
+    out = tmp_path / "out.xlsx"
+    out.write_bytes(b"PK old")
+
+    def write(temp):
+        Path(temp).write_bytes(b"PK new")
+        (tmp_path / ".~lock.out.xlsx#").write_text("someone")
+
+    with pytest.raises(WorkbookLockedError) as exc:
+        atomic_write(out, write)
+    assert str(exc.value) == f"{out} is open in LibreOffice (lock file .~lock.out.xlsx#); close it and run again"
+    assert out.read_bytes() == b"PK old"
+    assert sorted(p.name for p in tmp_path.iterdir()) == [".~lock.out.xlsx#", "out.xlsx"]
+
+
 _HOLD = """
 import sys, time
 from bearingheat.io.files import workbook_lock

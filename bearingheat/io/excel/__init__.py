@@ -1,6 +1,7 @@
 """The Excel bridge: read supports from a workbook, write results, live formulas, the template.
 
-- :mod:`.reader`: :func:`read_supports` -> (DataFrame, :class:`SheetInfo`), :func:`with_units`
+- :mod:`.reader`: :func:`read_supports` -> (DataFrame, :class:`SheetInfo`), :func:`with_units`; :mod:`.rows`:
+  the rows and cells it does not take at face value (a table's totals row, '3.000' typed as text)
 - :mod:`.writer`: :func:`write_results`, :func:`write_results_workbook`, :func:`atomic_save`
 - :mod:`.workbook`: :func:`calc_workbook` (read -> calc -> write) -> :class:`WorkbookRun`
 - :mod:`.package`: ``--in-place`` (and ``write_results`` on an existing workbook) as a surgical edit

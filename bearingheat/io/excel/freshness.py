@@ -24,6 +24,11 @@ is a formula that compares the row's input cells with that copy:
   row, as calc would read the column anew (another unit, another quantity)
   and the live formulas have the unit's factor built in (``*1000`` of kN).
 
+A support typed on the input sheet after the run has no results row, so no
+status can speak for it: a cell under the results counts the filled rows of
+the input sheet against calc's count and says how many supports have no
+results (:func:`unread_rows_check`).
+
 Running calc again writes a new copy, so the marks go. The values of the
 label column ``id`` are not compared (its header is). Text is compared without case, as Excel's ``<>``
 does (calc reads the lubrication as typed, so a change of case alone
@@ -42,13 +47,16 @@ from dataclasses import dataclass
 
 from openpyxl.utils import get_column_letter
 
+from bearingheat.errors import ExcelError
 from bearingheat.io.excel import style as st
 from bearingheat.io.excel.ownership import sheet_ref
 
 __all__ = ["NOTE", "NOTE_EVERY", "FreshnessCheck", "ConditionalRule", "snapshot_base", "freshness_check",
-           "conditional_rules"]
+           "conditional_rules", "unread_rows_check"]
 
 NOTE = "recalculate with bearingheat"
+#: the most characters a formula may have in Excel (Excel specifications and limits)
+EXCEL_FORMULA_LENGTH = 8192
 NOTE_EVERY = "recalculate with bearingheat (every result)"
 #: columns of a results sheet that are never struck through: the row, the label, the status and its message
 _NOT_RESULTS = ("row", "id", "status", "message")
@@ -147,6 +155,49 @@ def freshness_check(ws, table, info, statuses, every) -> FreshnessCheck:
                 snapshot.append((row, col, value))
     return FreshnessCheck(info.sheet, list(info.rows), letters, [str(s) for s in statuses], list(every), snapshot,
                           titles)
+
+
+def unread_rows_check(info, results: int) -> tuple[str, str, ConditionalRule] | None:
+    r'''The check that the input sheet has no supports without results: (address, formula, conditional format) of
+    a cell in column A under the ``results`` rows of the results sheet, after one blank row (so that Excel's sort
+    and filter do not take it for a row of the table); None for a sheet without contract columns.
+
+    The formula counts the rows of the input sheet with something in a column calc read, from the units row
+    (the header row without one: a support inserted above the first stays inside the ranges) to the last row,
+    as ROWS less the rows that COUNTIFS finds blank in every such column, and compares the count with the same
+    count when calc ran (:attr:`bearingheat.io.excel.reader.SheetInfo.filled_rows`: a totals row, a row of
+    spaces counted alike). More rows: "sheet 'Supports' has 2 supports without results: recalculate with
+    bearingheat" (bold orange); else empty text. The words of 1 or more come from TEXT's conditional number
+    format, so the long count is written twice, not three times (a formula has at most 8192 characters).
+
+    >>> from types import SimpleNamespace
+    >>> info = SimpleNamespace(sheet="C", units_row=2, header_row=1, headers={"Fr": "Fr", "designation": "B"},
+    ...                        letters={"Fr": "F", "B": "B"}, filled_rows=7)
+    >>> address, formula, rule = unread_rows_check(info, 6)
+    >>> address, rule.sqref, rule.formula
+    ('A10', 'A10', 'LEN($A$10)>0')
+    >>> print(formula.replace(">7,", ">7,\n").replace("-7,", "-7,\n"))
+    =IF(ROWS('C'!B2:B1048576)-COUNTIFS('C'!B2:B1048576,"",'C'!F2:F1048576,"")>7,
+    "sheet 'C' has "&TEXT(ROWS('C'!B2:B1048576)-COUNTIFS('C'!B2:B1048576,"",'C'!F2:F1048576,"")-7,
+    "[=1]""1 support"";0"" supports""")&" without results: recalculate with bearingheat","")
+    '''
+    letters = sorted({info.letters[header] for header in info.headers.values()}, key=lambda c: (len(c), c))
+    if not letters:
+        return None
+    here = sheet_ref(info.sheet)
+    first = info.units_row if info.units_row is not None else info.header_row
+    ranges = [f"{here}!{letter}{first}:{letter}1048576" for letter in letters]
+    count = f'ROWS({ranges[0]})-COUNTIFS({",".join(r + "," + chr(34) * 2 for r in ranges)})'
+    sheet = repr(info.sheet).replace('"', '""')
+    supports = '"[=1]""1 support"";0"" supports"""'
+    formula = (f'=IF({count}>{info.filled_rows},"sheet {sheet} has "&TEXT({count}-{info.filled_rows},{supports})'
+               f'&" without results: {NOTE}","")')
+    if len(formula) > EXCEL_FORMULA_LENGTH:  # (only a sheet name of many apostrophes comes near)
+        raise ExcelError(f"--formulas: the check of sheet {info.sheet!r} for supports without results would be a "
+                         f"formula of {len(formula)} characters, more than Excel's {EXCEL_FORMULA_LENGTH}; give the "
+                         "sheet a shorter name")
+    address = f"A{results + 4}"
+    return address, formula, ConditionalRule(address, f"LEN($A${results + 4})>0", st.RECALCULATE)
 
 
 def _column_index(letter: str) -> int:

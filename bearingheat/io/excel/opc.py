@@ -27,7 +27,7 @@ from bearingheat.errors import ExcelError, WorkbookContentError
 from bearingheat.io.files import WorkbookLock, atomic_write
 
 __all__ = ["Package", "open_package", "write_package", "refusal", "parse_part", "xml_bytes", "rels_part",
-           "resolve_target", "MAIN", "REL", "PKG_REL", "CT", "WORKSHEET_TYPE", "STYLES_TYPE"]
+           "resolve_target", "office_document", "MAIN", "REL", "PKG_REL", "CT", "WORKSHEET_TYPE", "STYLES_TYPE"]
 
 MAIN = "http://schemas.openxmlformats.org/spreadsheetml/2006/main"
 REL = "http://schemas.openxmlformats.org/officeDocument/2006/relationships"
@@ -67,6 +67,19 @@ def resolve_target(source: str, target: str) -> str:
     if target.startswith("/"):
         return posixpath.normpath(target.lstrip("/"))
     return posixpath.normpath(posixpath.join(posixpath.dirname(source), target))
+
+
+def office_document(package_rels: bytes | None, path: str | os.PathLike[str]) -> tuple[str, str] | None:
+    """(relationship type, workbook part) of the officeDocument relationship in a package's relationships
+    (the bytes of ``_rels/.rels``; ECMA-376 Part 2, 8.3): xl/workbook.xml unless the package names another
+    part; None where there is no such relationship (or no ``_rels/.rels``)."""
+    if package_rels is None:
+        return None
+    for relationship in parse_part(package_rels, "_rels/.rels", path).iter(_P + "Relationship"):
+        kind = relationship.get("Type", "")
+        if kind.endswith("/officeDocument"):
+            return kind, resolve_target("", relationship.get("Target", ""))
+    return None
 
 
 @dataclass
@@ -152,13 +165,13 @@ def open_package(path: str | os.PathLike[str], action: str = "--in-place") -> Pa
     package = Package(path, data, infos, "", action)
     if package.find("[Content_Types].xml") is None or package.find("_rels/.rels") is None:
         raise ExcelError(f"{path}: not a readable Excel workbook (no [Content_Types].xml or _rels/.rels)")
-    office = [r for r in package.relationships("") if r.get("Type", "").endswith("/officeDocument")]
-    if not office:
+    office = office_document(package.read(rels_part("")), path)
+    if office is None:
         raise ExcelError(f"{path}: not a readable Excel workbook (no workbook part)")
-    if office[0].get("Type", "").startswith(STRICT):
+    if office[0].startswith(STRICT):
         raise refusal(path, "the workbook is saved as Strict Open XML, which bearingheat does not edit (save it "
                             "in Excel as 'Excel Workbook (*.xlsx)')", action)
-    package.workbook = resolve_target("", office[0].get("Target", ""))
+    package.workbook = office[1]
     workbook_data = package.read(package.workbook)
     if workbook_data is None:
         raise ExcelError(f"{path}: not a readable Excel workbook (its workbook part {package.workbook} is missing)")

@@ -53,15 +53,23 @@ TABLE_MARK = "_bearingheat_table_"
 _TABLE_NAME = re.compile(rf"^{TABLE_MARK}(\d+)$", re.IGNORECASE)
 
 
-def sheet_ref(sheet: str) -> str:
-    """A sheet name as a reference prefix: Supports, 'Shaft 1', 'Q1''s loads', 'R2C3' (quoted unless plain).
+#: a name Excel would read as a cell reference: A1 form (A1, XFD1) or R1C1 form (R, C, RC, R1C1, R2C, C3)
+_LOOKS_LIKE_A_CELL = re.compile(r"[A-Za-z]{1,3}[0-9]+|[Rr][0-9]*[Cc]?[0-9]*|[Cc][0-9]*")
 
-    >>> [sheet_ref(s) for s in ("Supports", "Shaft 1", "AB12", "R2C3", "C", "Cases")]
-    ['Supports', "'Shaft 1'", "'AB12'", "'R2C3'", "'C'", 'Cases']
+
+def sheet_ref(sheet: str) -> str:
+    """A sheet name as every formula, defined name and message of bearingheat writes it before '!': as it is
+    where Excel reads it so (letters, digits, underscore and dot, not starting with a digit or dot), else in
+    apostrophes with an apostrophe doubled: a name Excel would read as a cell reference in A1 or R1C1 form
+    ('C', 'R1C1', 'XFD1'), a logical value, and any other name ('Shaft 1', "Q1's loads", '2024').
+
+    >>> [sheet_ref(s) for s in ("Supports", "Cases", "Shaft_1.2", "C", "R", "RC", "R1C1", "A1", "XFD1", "TRUE")]
+    ['Supports', 'Cases', 'Shaft_1.2', "'C'", "'R'", "'RC'", "'R1C1'", "'A1'", "'XFD1'", "'TRUE'"]
+    >>> [sheet_ref(s) for s in ("Shaft 1", "Q1's loads", "2024", "G-17", "Опоры")]
+    ["'Shaft 1'", "'Q1''s loads'", "'2024'", "'G-17'", "'Опоры'"]
     """
-    looks_like_a_reference = (re.fullmatch(r"[A-Za-z]{1,3}[0-9]+|[Rr][0-9]*[Cc]?[0-9]*|[Cc][0-9]*", sheet)
-                              or sheet.upper() in ("TRUE", "FALSE"))
-    if re.fullmatch(r"[A-Za-z_][A-Za-z0-9_.]*", sheet) and not looks_like_a_reference:
+    plain = re.fullmatch(r"[A-Za-z_][A-Za-z0-9_.]*", sheet) is not None
+    if plain and not _LOOKS_LIKE_A_CELL.fullmatch(sheet) and sheet.upper() not in ("TRUE", "FALSE"):
         return sheet
     return "'" + sheet.replace("'", "''") + "'"
 

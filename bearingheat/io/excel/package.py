@@ -422,8 +422,8 @@ def write_results_in_place(package: Package, input_sheet: str, table: pd.DataFra
                            formulas: CellFormulas | Callable[[dict[str, str]], CellFormulas] | None = None,
                            progress: Progress | None = None, placeholders: Collection[str] = (),
                            rules: Sequence[ConditionalRule] = (), print_setup: PrintSetup | None = None,
-                           companions: Sequence[Companion] = (), hidden_columns: Sequence[str] = ()
-                           ) -> InPlaceResult:
+                           companions: Sequence[Companion] = (), hidden_columns: Sequence[str] = (),
+                           footer: dict[str, str] | None = None) -> InPlaceResult:
     """Write ``table`` as the results sheet of ``input_sheet`` into the workbook of ``package``.
 
     The results sheet that bearingheat marked for ``input_sheet`` is replaced
@@ -442,7 +442,8 @@ def write_results_in_place(package: Package, input_sheet: str, table: pd.DataFra
     callable that gives it from the companions' names by role (the status
     formulas name the inputs' copy). ``rules`` are conditional formats,
     ``print_setup`` a :class:`bearingheat.io.excel.printing.PrintSetup`,
-    ``hidden_columns`` the results sheet's collapsed columns.
+    ``hidden_columns`` the results sheet's collapsed columns, ``footer`` the
+    formulas of cells below its table by address.
     ``lock`` (:func:`bearingheat.io.files.workbook_lock`) is checked just
     before the file is replaced. ``target``: the edited package is written
     there instead of over the workbook (``calc -o``: a copy that keeps every
@@ -498,14 +499,13 @@ def write_results_in_place(package: Package, input_sheet: str, table: pd.DataFra
             part = edit.add_sheet(companion_name, hidden=companion.hidden, reserved=[sheet.part])
         edit.changes[part.part] = companion.render(edit.styles)
     cell_formulas = formulas(names) if callable(formulas) else formulas
+    written_cells = record.WrittenCells()  # the record, as the cells are written (not read back)
     edit.changes[sheet.part] = results_sheet_xml(table, edit.styles.index, units=units, formulas=cell_formulas,
                                                  kept=kept, print_setup=print_setup, rules=rules,
                                                  dxf_index=edit.styles.dxf, progress=progress, title=name,
-                                                 hidden_columns=hidden_columns, epoch=edit.epoch)
-    written_cells = record.read_cells(edit.changes[sheet.part])
-    extent = written_cells.extent
-    workbook.set_marks(k, name, input_sheet, [j for j in stale if j != k], names,
-                       record.record_value(extent, written_cells.digest(extent)))
+                                                 hidden_columns=hidden_columns, epoch=edit.epoch,
+                                                 written=written_cells, footer=footer)
+    workbook.set_marks(k, name, input_sheet, [j for j in stale if j != k], names, written_cells.record())
     if print_setup is not None:
         workbook.print_titles(sheet, print_setup.print_titles(sheet_ref(name)))
     notes = ([note] if note else []) + notes_before

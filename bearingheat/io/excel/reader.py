@@ -44,8 +44,9 @@ from openpyxl.worksheet.worksheet import Worksheet
 
 from bearingheat.calc.contract import input_units, parse_header, result_column
 from bearingheat.errors import ExcelError, InputError, UnitError
-from bearingheat.io.excel.opc import MAIN, PKG_REL, parse_part, resolve_target
-from bearingheat.io.excel.ownership import read_marks
+from bearingheat.io.excel.opc import MAIN, office_document, parse_part
+from bearingheat.io.excel.ownership import read_marks, sheet_ref
+from bearingheat.io.excel.rows import filled_rows, take_ambiguous_texts, totals_rows
 from bearingheat.io.files import EXCEL_SUFFIXES
 from bearingheat.units import convert_column, parse_unit, quantity
 
@@ -97,12 +98,22 @@ class SheetInfo:
     headers: dict[str, str] = field(default_factory=dict)
     formula_cells: dict[tuple[str, int], str] = field(default_factory=dict)
     uncached: list[tuple[int, str, str]] = field(default_factory=list)
+    #: number cells holding text that reads two ways ('3.000': 3 or 3000; :mod:`.rows`), (position, header, text):
+    #: read as blank
+    ambiguous: list[tuple[int, str, str]] = field(default_factory=list)
     #: worksheet rows of supports that are hidden on the sheet (by hand or by a filter): computed like the others
     hidden_rows: list[int] = field(default_factory=list)
+    #: the totals rows of Excel tables among the rows (row, table name): no supports, so not read (:mod:`.rows`)
+    totals_rows: list[tuple[int, str]] = field(default_factory=list)
+    #: the rows from the units row (the header row without one) down with something in a column of ``headers``,
+    #: as Excel's COUNTIFS(range, "") tells them from blank rows (a cell of spaces is something, a formula that
+    #: shows "" is not): the count the check of --formulas compares with (:func:`.freshness.unread_rows_check`, :func:`.rows.filled_rows`)
+    filled_rows: int = 0
 
     @property
     def sheet_ref(self) -> str:
-        return _ref(self.sheet)
+        """The sheet's name as formulas and messages write it (:func:`bearingheat.io.excel.ownership.sheet_ref`)."""
+        return sheet_ref(self.sheet)
 
     def cell(self, column: str, position: int) -> str:
         """``cell('Fr', 4)`` -> ``'Supports!F7'``: the cell of a column (header or contract name) in row ``position``."""
@@ -282,7 +293,9 @@ def read_supports(path: str | os.PathLike[str], sheet: str | None = None, *,
     (``Fr [kN]``). Text columns of the contract hold strings, numeric
     columns floats where every value is a number (else the raw values, so
     that calc can name the cell that is not a number). A formula cell with
-    no value saved by a spreadsheet program is listed in ``info.uncached``.
+    no value saved by a spreadsheet program is listed in ``info.uncached``,
+    a number cell holding text that reads two ways ('3.000': 3 or 3000) in
+    ``info.ambiguous``; both are read as blank.
     """
     path = Path(path)
     if not path.is_file():
@@ -311,8 +324,8 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
         if not text:
             continue
         if text in seen:
-            raise ExcelError(f"{_ref(ws.title)}!{get_column_letter(col)}{header_row}: column {text!r} appears twice "
-                             f"(also in column {seen[text]})")
+            raise ExcelError(f"{sheet_ref(ws.title)}!{get_column_letter(col)}{header_row}: column {text!r} appears "
+                             f"twice (also in column {seen[text]})")
         seen[text] = get_column_letter(col)
         columns.append((col, text))
     names = [contract_name(text) for _, text in columns]
@@ -331,8 +344,8 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
     is_units, unknown = _looks_like_units_row(raw_units, names)
     if unknown:
         position, why = unknown[0]
-        raise ExcelError(f"{_ref(ws.title)}!{get_column_letter(columns[position][0])}{candidate}: {why} in the units "
-                         "row; write a unit such as kN, N, rpm, mm^2/s (docs/excel.md lists them)")
+        raise ExcelError(f"{sheet_ref(ws.title)}!{get_column_letter(columns[position][0])}{candidate}: {why} in the "
+                         "units row; write a unit such as kN, N, rpm, mm^2/s (docs/excel.md lists them)")
     if is_units:
         units_row = candidate
         for (col, header), value in zip(columns, raw_units):
@@ -357,6 +370,10 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
     formula_cells: dict[tuple[str, int], str] = {}
     positions = {col: i for i, col in enumerate(wanted)}
     used = _used_rows(ws, positions, first_data)
+    every_row = used
+    totals = totals_rows(ws, set(wanted), first_data)
+    skipped = [(row, totals[row]) for row in used if row in totals]
+    used = {row: row_cells for row, row_cells in used.items() if row not in totals}
     if progress is not None:
         progress.start(len(used), f"reading {ws.title}")
     for count, (row, row_cells) in enumerate(used.items(), start=1):
@@ -380,6 +397,7 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
         progress.finish()
 
     uncached: list[tuple[int, str, str]] = []
+    cached: dict[tuple[str, int], Any] = {}
     if formula_cells:
         cached = _cached_values(path, ws.title, formula_cells, letters)
         for key in _unsaved_zeros(path, workbook, cached):
@@ -403,7 +421,11 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
             if data[col_index[header]][position_of_row[row]] is None:
                 uncached.append((position_of_row[row], header, formula))
 
+    read = {col for col, header in columns if header in contract_headers.values()}
+    filled = filled_rows(stored_cells(ws), every_row, [col in read for col, _ in columns], cached, columns,
+                         units_row or header_row)
     known = input_units()
+    ambiguous = take_ambiguous_texts(columns, [n is not None and known[n] not in _TEXT_UNITS for n in names], data)
     frame_columns: dict[str, pd.Series] = {}
     for (col, header), contract, values in zip(columns, names, data):
         if contract is not None and known[contract] in _TEXT_UNITS:
@@ -417,7 +439,8 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
     hidden = [row for row in rows if row in dimensions and dimensions[row].hidden]
     info = SheetInfo(path=path, sheet=ws.title, header_row=header_row, units_row=units_row, units=units,
                      letters=letters, rows=rows, headers=contract_headers, formula_cells=formula_cells,
-                     uncached=uncached, hidden_rows=hidden)
+                     uncached=uncached, ambiguous=ambiguous, hidden_rows=hidden, totals_rows=skipped,
+                     filled_rows=filled)
     return table, info
 
 
@@ -455,7 +478,7 @@ def _refuse_header_clashes(sheet: str, header_row: int, columns: list[tuple[int,
     catalogue's D used instead)."""
     present = {name for name in names if name is not None}
     for (col, header), name in zip(columns, names):
-        where = f"{_ref(sheet)}!{get_column_letter(col)}{header_row}"
+        where = f"{sheet_ref(sheet)}!{get_column_letter(col)}{header_row}"
         written = result_column(header)
         if written is not None:
             raise ExcelError(f"{where}: {header!r} is a column calc writes; rename it (e.g. "
@@ -470,15 +493,14 @@ def _refuse_header_clashes(sheet: str, header_row: int, columns: list[tuple[int,
 
 
 def _workbook_part(archive: zipfile.ZipFile) -> str:
-    """The workbook part of a package (xl/workbook.xml unless its relationships say otherwise)."""
+    """The workbook part of a package (xl/workbook.xml unless its relationships say otherwise:
+    :func:`bearingheat.io.excel.opc.office_document`)."""
     try:
-        rels = parse_part(archive.read("_rels/.rels"), "_rels/.rels", str(archive.filename))
+        package_rels: bytes | None = archive.read("_rels/.rels")
     except KeyError:
-        return "xl/workbook.xml"
-    for rel in rels.iter(f"{{{PKG_REL}}}Relationship"):
-        if rel.get("Type", "").endswith("/officeDocument"):
-            return resolve_target("", rel.get("Target", ""))
-    return "xl/workbook.xml"
+        package_rels = None
+    office = office_document(package_rels, str(archive.filename))
+    return "xl/workbook.xml" if office is None else office[1]
 
 
 def _recalculates_on_load(path: Path) -> bool:
@@ -524,8 +546,8 @@ def _refuse_merged_data(ws: Worksheet, columns: list[int], first_data: int) -> N
         cells = (merged.max_row - top + 1) * inside
         first_inside = merged.min_row >= first_data and merged.min_col in wanted
         if cells - first_inside > 0:
-            raise ExcelError(f"{_ref(ws.title)}!{merged.coord}: merged cells among the rows of supports; the sheet "
-                             f"shows their value on every row, but only {get_column_letter(merged.min_col)}"
+            raise ExcelError(f"{sheet_ref(ws.title)}!{merged.coord}: merged cells among the rows of supports; the "
+                             f"sheet shows their value on every row, but only {get_column_letter(merged.min_col)}"
                              f"{merged.min_row} holds it, so the other rows would read as blank. Unmerge them and "
                              "give each row its own value")
 
@@ -554,13 +576,6 @@ def _used_rows(ws: Worksheet, columns: dict[int, int], first: int) -> dict[int, 
         if row >= first and col in columns and cell.value is not None:
             rows.setdefault(row, []).append((columns[col], cell))
     return dict(sorted(rows.items()))
-
-
-def _ref(sheet: str) -> str:
-    """A sheet name as Excel writes it in a reference: Supports, 'Shaft 1', 'Q1''s loads'."""
-    if re.fullmatch(r"[A-Za-z_][A-Za-z0-9_.]*", sheet) and not re.fullmatch(r"[A-Za-z]{1,3}[0-9]+", sheet):
-        return sheet
-    return "'" + sheet.replace("'", "''") + "'"
 
 
 def contract_name(header: str) -> str | None:
@@ -596,8 +611,8 @@ def _check_units(sheet: str, header_row: int, units_row: int, columns: Iterable[
         except UnitError:
             same = False
         if not same:
-            raise ExcelError(f"{_ref(sheet)}!{get_column_letter(col)}{units_row}: unit {units[header]!r} contradicts "
-                             f"the header {header!r}; keep one of them")
+            raise ExcelError(f"{sheet_ref(sheet)}!{get_column_letter(col)}{units_row}: unit {units[header]!r} "
+                             f"contradicts the header {header!r}; keep one of them")
 
 
 def _numeric_if_possible(values: list[Any]) -> pd.Series:

@@ -4,8 +4,10 @@
 table (:func:`bearingheat.io.excel.writer.result_table`), its formulas (the
 live formulas of :mod:`.formulas` and the status formulas of the live check
 of :mod:`.freshness`, which name the inputs' copy and so are made once its
-name is known), its conditional formats and its print setup
-(:mod:`.printing`), and the companion sheets: the hidden copy of the inputs
+name is known), the check below the table that the input sheet has no
+support without results (:func:`.freshness.unread_rows_check`), its
+conditional formats and its print setup (:mod:`.printing`), and the
+companion sheets: the hidden copy of the inputs
 (``--formulas``) and the duty cycle summary (a table that has one). Each
 companion can fill an openpyxl worksheet (the ``-o`` copy) or render its
 worksheet part (``--in-place``, :func:`bearingheat.io.excel.package.write_results_in_place`).
@@ -20,7 +22,8 @@ import pandas as pd
 
 from bearingheat.io.excel import style as st
 from bearingheat.io.excel.formulas import live_formulas
-from bearingheat.io.excel.freshness import ConditionalRule, conditional_rules, freshness_check, snapshot_base
+from bearingheat.io.excel.freshness import (ConditionalRule, conditional_rules, freshness_check, snapshot_base,
+                                            unread_rows_check)
 from bearingheat.io.excel.ownership import read_companions, read_marks
 from bearingheat.io.excel.printing import PrintSetup
 from bearingheat.io.excel.reader import defined_name_values
@@ -88,6 +91,8 @@ class ResultsSheets:
     cell_formulas: dict[tuple[str, int], str] = field(default_factory=dict)
     status_formulas: Callable[[str], list[str]] | None = None
     hidden_columns: list[str] = field(default_factory=list)
+    #: formulas of cells below the table by address: the check that no support lacks results
+    footer: dict[str, str] = field(default_factory=dict)
 
     def formulas(self, names: dict[str, str]) -> dict[tuple[str, int], str]:
         """The formulas of the results sheet, the companions named by role as ``names`` says."""
@@ -112,6 +117,11 @@ def results_sheets(source: Path, workbook, table: pd.DataFrame, info, result: pd
         sheets.hidden_columns = live.collapsed
         sheets.rules = conditional_rules(list(live.table.columns), live.live_columns, len(live.table))
         sheets.companions.append(CellsSheet("snapshot", snapshot_base(info.sheet), check.snapshot))
+        unread = unread_rows_check(info, len(live.table))
+        if unread is not None:
+            address, formula, rule = unread
+            sheets.footer[address] = formula
+            sheets.rules.append(rule)
     if duty is not None:
         sheets.companions.append(TableSheet("duty", duty_base(info.sheet), duty))
     sheets.companions += _emptied_companions(workbook, info.sheet, {c.role for c in sheets.companions})

@@ -26,11 +26,12 @@ from xml.sax.saxutils import escape
 
 import numpy as np
 import pandas as pd
-from openpyxl.utils import get_column_letter
+from openpyxl.utils import coordinate_to_tuple, get_column_letter
 from openpyxl.utils.datetime import CALENDAR_WINDOWS_1900, to_excel
 
 from bearingheat.io.excel import style as st
 from bearingheat.io.excel.layout import sheet_layout
+from bearingheat.io.excel.record import WrittenCells, number_text, sheet_extras
 
 __all__ = ["results_sheet_xml", "cells_sheet_xml", "xstring", "TAB_COLOR", "DEFAULT_MARGINS"]
 
@@ -47,6 +48,15 @@ DEFAULT_MARGINS = '<pageMargins left="0.7" right="0.7" top="0.75" bottom="0.75" 
 
 
 @functools.lru_cache(maxsize=1 << 16)  # a sheet repeats its texts (designations, statuses, messages)
+def _st_xstring(text: str) -> str:
+    """Text as an ST_Xstring: '_xHHHH_' look-alikes and characters XML 1.0 cannot hold escaped (what a reader of
+    the part, :func:`bearingheat.io.excel.record.read_cells`, finds in it)."""
+    text = _ESCAPE_LOOKALIKE.sub(r"_x005F_\1", text)
+    text = _INVALID.sub(lambda m: f"_x{ord(m.group()):04X}_", text)
+    return _SURROGATE.sub("\ufffd", text)  # a lone surrogate cannot be written as UTF-8
+
+
+@functools.lru_cache(maxsize=1 << 16)
 def xstring(text: str) -> str:
     """Text as an ST_Xstring in XML: '_xHHHH_' look-alikes and characters XML 1.0 cannot hold escaped, then &<>.
 
@@ -55,9 +65,7 @@ def xstring(text: str) -> str:
     >>> xstring("lone \\ud800 surrogate") == "lone \\N{REPLACEMENT CHARACTER} surrogate"
     True
     """
-    text = _ESCAPE_LOOKALIKE.sub(r"_x005F_\1", text)
-    text = _INVALID.sub(lambda m: f"_x{ord(m.group()):04X}_", text)
-    return escape(_SURROGATE.sub("\ufffd", text))  # a lone surrogate cannot be written as UTF-8
+    return escape(_st_xstring(text))
 
 
 def _number(value) -> str | None:
@@ -72,28 +80,36 @@ def _number(value) -> str | None:
     return text[:-2] if text.endswith(".0") else text
 
 
+#: what a cell holds for the record of the sheet (:class:`bearingheat.io.excel.record.WrittenCells`): (kind, value),
+#: None for a cell without a value
+Recorded = tuple[str, str] | None
+
+
 def _cell(ref: str, value, style: int, quote_style: Callable[[], int], epoch: datetime.datetime = CALENDAR_WINDOWS_1900
-          ) -> str:
+          ) -> tuple[str, Recorded]:
     """One <c> element: number, boolean, date (its serial number of the workbook's ``epoch``, as Excel stores
-    dates), inline text or an empty styled cell (also for empty text, as openpyxl writes it)."""
+    dates), inline text or an empty styled cell (also for empty text, as openpyxl writes it); and what it holds
+    for the record."""
     if value is None or value is pd.NA or value is pd.NaT or (isinstance(value, str) and value == ""):
-        return f'<c r="{ref}" s="{style}"/>'
+        return f'<c r="{ref}" s="{style}"/>', None
     if isinstance(value, datetime.date):  # (a datetime and a pd.Timestamp are dates)
         if isinstance(value, datetime.datetime) and value.tzinfo is not None:
             value = value.replace(tzinfo=None)  # Excel has no time zones: the wall-clock time, as openpyxl writes
-        return f'<c r="{ref}" s="{style}"><v>{_number(to_excel(value, epoch))}</v></c>'
+        serial = to_excel(value, epoch)
+        return f'<c r="{ref}" s="{style}"><v>{_number(serial)}</v></c>', ("n", number_text(serial))
     if isinstance(value, (bool, np.bool_)):
-        return f'<c r="{ref}" s="{style}" t="b"><v>{int(bool(value))}</v></c>'
+        return f'<c r="{ref}" s="{style}" t="b"><v>{int(bool(value))}</v></c>', ("b", str(int(bool(value))))
     if isinstance(value, (int, float, np.integer, np.floating)):
         number = _number(value)
         if number is None:
-            return f'<c r="{ref}" s="{style}"/>'
-        return f'<c r="{ref}" s="{style}"><v>{number}</v></c>'
+            return f'<c r="{ref}" s="{style}"/>', None
+        return f'<c r="{ref}" s="{style}"><v>{number}</v></c>', ("n", number_text(value))
     text = str(value)
     if text.startswith(_FORMULA_START) and len(text) > 1:
         style = quote_style()
     space = ' xml:space="preserve"' if text != text.strip() or "\n" in text else ""
-    return f'<c r="{ref}" s="{style}" t="inlineStr"><is><t{space}>{xstring(text)}</t></is></c>'
+    return (f'<c r="{ref}" s="{style}" t="inlineStr"><is><t{space}>{xstring(text)}</t></is></c>',
+            ("t", _st_xstring(text)))
 
 
 #: the worksheet elements after sheetData that a results sheet may have, in CT_Worksheet order
@@ -106,7 +122,8 @@ def results_sheet_xml(table: pd.DataFrame, style_index: Callable[..., int], *, u
                       print_setup=None, rules=(), dxf_index: Callable[[str], int] | None = None,
                       progress=None, title: str = "Results", hidden_columns=(),
                       input_columns: AbstractSet[str] = frozenset(), tab_color: str | None = TAB_COLOR,
-                      epoch: datetime.datetime = CALENDAR_WINDOWS_1900) -> bytes:
+                      epoch: datetime.datetime = CALENDAR_WINDOWS_1900, written: WrittenCells | None = None,
+                      footer: dict[str, str] | None = None) -> bytes:
     """The worksheet part of a results sheet.
 
     ``style_index(name, quote=False, number_format=None)`` gives the cellXfs
@@ -126,6 +143,11 @@ def results_sheet_xml(table: pd.DataFrame, style_index: Callable[..., int], *, u
     is the tab's colour (ARGB; None: the workbook's default), ``epoch`` the
     workbook's date system (1900, or 1904 of a workbook so saved) for its
     date cells. ``progress``: an object with start, update, finish.
+    ``written`` (a :class:`bearingheat.io.excel.record.WrittenCells`) is
+    given every cell with a value as it is written: the sheet's record,
+    without reading the part back. ``footer`` maps the addresses of cells
+    below the table to formulas ('A10': the check of
+    :func:`bearingheat.io.excel.freshness.unread_rows_check`).
     """
     formulas = formulas or {}
     kept = dict(kept or {})
@@ -151,7 +173,9 @@ def results_sheet_xml(table: pd.DataFrame, style_index: Callable[..., int], *, u
     columns = list(table.columns)
     status_col = columns.index("status") if "status" in columns else None
     formula_cols = {columns.index(header): header for header in {header for header, _ in formulas}}
-    last = f"{letters[-1]}{n_rows + 2}" if n_cols else "A1"
+    below = sorted(((coordinate_to_tuple(address), text) for address, text in (footer or {}).items()))
+    last_row = max([n_rows + 2] + [row for (row, _), _ in below])
+    last = f"{letters[-1]}{last_row}" if n_cols else "A1"
     setup = dict(print_setup.xml()) if print_setup is not None else {}
     if "pageSetup" in kept:  # the designer's page setup: fit to pages only where it says so
         setup["pageSetUpPr"] = ""
@@ -170,11 +194,18 @@ def results_sheet_xml(table: pd.DataFrame, style_index: Callable[..., int], *, u
                                         + (' hidden="1" outlineLevel="1"/>' if c in hidden else "/>")
                                         for c, w in enumerate(layout.widths, start=1)) + "</cols>")
     parts.append("<sheetData>")
+    record = written.add if written is not None else None
+    if written is not None:
+        written.extras = sheet_extras(f'rgb="{tab_color}"' if tab_color else "", len(rules))
     for row, texts in ((1, layout.headers), (2, layout.units)):
         names = [pair[row - 1] for pair in title_styles]
-        title_cells = "".join(_cell(f"{letters[c]}{row}", texts[c], style_index(names[c]), quote_of(names[c]))
-                              for c in range(n_cols))
-        parts.append(f'<row r="{row}">{title_cells}</row>')
+        title_cells = []
+        for c in range(n_cols):
+            xml, entry = _cell(f"{letters[c]}{row}", texts[c], style_index(names[c]), quote_of(names[c]))
+            title_cells.append(xml)
+            if entry is not None and record is not None:
+                record(c + 1, row, *entry)
+        parts.append(f'<row r="{row}">{"".join(title_cells)}</row>')
     if progress is not None:
         progress.start(n_rows, f"writing {title}")
     column_quotes = [quote_of(name) for name in layout.styles]
@@ -190,12 +221,17 @@ def results_sheet_xml(table: pd.DataFrame, style_index: Callable[..., int], *, u
                 text = formulas[(formula_cols[c], position)].removeprefix("=")
                 style = styles[st.STATUS.get(str(value), st.RESULT)] if c == status_col else formula_styles[c]
                 cells.append(f'<c r="{ref}" s="{style}"><f>{escape(text)}</f></c>')
+                if record is not None:
+                    record(c + 1, row, "f", "")
                 continue
             if c == status_col:
                 name = st.STATUS.get(str(value), st.RESULT)
-                cells.append(_cell(ref, value, styles[name], quote_of(name)))
+                xml, entry = _cell(ref, value, styles[name], quote_of(name))
             else:
-                cells.append(_cell(ref, value, column_styles[c], column_quotes[c], epoch))
+                xml, entry = _cell(ref, value, column_styles[c], column_quotes[c], epoch)
+            cells.append(xml)
+            if entry is not None and record is not None:
+                record(c + 1, row, *entry)
         height = layout.heights.get(position)
         size = f' ht="{height:g}" customHeight="1"' if height else ""
         parts.append(f'<row r="{row}"{size}>{"".join(cells)}</row>')
@@ -203,6 +239,13 @@ def results_sheet_xml(table: pd.DataFrame, style_index: Callable[..., int], *, u
             progress.update(position)
     if progress is not None:
         progress.finish()
+    for row in sorted({row for (row, _), _ in below}):
+        cells = []
+        for (_, col), text in (item for item in below if item[0][0] == row):
+            cells.append(f'<c r="{get_column_letter(col)}{row}"><f>{escape(text.removeprefix("="))}</f></c>')
+            if record is not None:
+                record(col, row, "f", "")
+        parts.append(f'<row r="{row}">{"".join(cells)}</row>')
     parts.append("</sheetData>")
     if rules:
         if dxf_index is None:
@@ -225,7 +268,7 @@ def cells_sheet_xml(cells: list[tuple[int, int, object]], style: int, quote_styl
         by_row.setdefault(row, []).append((col, value))
     parts = [_HEAD, '<sheetData>']
     for row in sorted(by_row):
-        entries = "".join(_cell(f"{get_column_letter(col)}{row}", value, style, quote_style)
+        entries = "".join(_cell(f"{get_column_letter(col)}{row}", value, style, quote_style)[0]
                           for col, value in sorted(by_row[row], key=lambda item: item[0]))
         parts.append(f'<row r="{row}">{entries}</row>')
     parts.append("</sheetData>")

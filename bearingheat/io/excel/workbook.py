@@ -43,6 +43,7 @@ from bearingheat.io.excel.opc import Package, open_package
 from bearingheat.io.excel.package import InPlaceResult, write_results_in_place
 from bearingheat.io.excel.reader import (EXCEL_SUFFIXES, SheetInfo, contract_name, defined_name_values,
                                          open_workbook, read_sheet)
+from bearingheat.io.excel.rows import ambiguous_text_message
 from bearingheat.io.excel.safety import unsupported_content
 from bearingheat.io.excel.template import is_placeholder
 from bearingheat.io.excel.sheets import ResultsSheets, results_sheets
@@ -62,14 +63,21 @@ __all__ = ["calc_workbook", "WorkbookRun"]
 DUTY_COLUMNS = columns(owner="duty")
 
 
-def _mark_uncached(result: pd.DataFrame, info: SheetInfo) -> None:
-    """Rows with a formula cell that has no saved value fail with a message naming the cell."""
+def _mark_unread(result: pd.DataFrame, info: SheetInfo) -> None:
+    """Rows with a cell the reader could not take fail with a message naming the cell: a formula cell that has no
+    saved value, a number typed as text that reads two ways ('3.000', :func:`.reader.ambiguous_text_message`)."""
     numeric = [c for c in result.columns if c not in ("status", "message")
                and c not in info.letters and pd.api.types.is_float_dtype(result[c].dtype)]
+    unread: dict[int, list[tuple[str, str]]] = {}
     for position, header, formula in info.uncached:
-        where = f"{info.sheet_ref}!{info.letters[header]}{info.rows[position]}"
-        text = (f"{where}: formula {formula} has no saved value (the file was never opened and saved in a "
-                "spreadsheet program); open it in Excel or LibreOffice, save it, and run again")
+        unread.setdefault(position, []).append((info.letters[header], (
+            f"{info.cell(header, position)}: formula {formula} has no saved value (the file was never opened and "
+            "saved in a spreadsheet program); open it in Excel or LibreOffice, save it, and run again")))
+    for position, header, text in info.ambiguous:
+        unread.setdefault(position, []).append((info.letters[header],
+                                                ambiguous_text_message(info.cell(header, position), text)))
+    for position, found in unread.items():
+        text = "; ".join(message for _, message in sorted(found, key=lambda item: (len(item[0]), item[0])))
         row = result.index[position]
         current = str(result.at[row, "message"] or "")
         result.at[row, "message"] = f"{text}; {current}" if current else text
@@ -272,7 +280,8 @@ def _package_edit(source: Path, target: Path, edit: tuple[Package, WorkbookLock]
                                       target=None if edit is not None else target, units={"row": "-"},
                                       formulas=sheets.formulas, progress=progress, placeholders=placeholders,
                                       rules=sheets.rules, print_setup=sheets.print_setup,
-                                      companions=sheets.companions, hidden_columns=sheets.hidden_columns)
+                                      companions=sheets.companions, hidden_columns=sheets.hidden_columns,
+                                      footer=sheets.footer)
     except WorkbookContentError as exc:
         if edit is not None:
             raise
@@ -303,7 +312,7 @@ def _run(source: Path, target: Path | None, edit: tuple[Package, WorkbookLock] |
         raise ExcelError(str(exc)) from exc
     except InputError as exc:
         raise _input_error(exc, info) from exc
-    _mark_uncached(result, info)
+    _mark_unread(result, info)
     duty = _duty_cycle(result, info)
     dropped: list[str] = []
     notes: list[str] = []
@@ -324,7 +333,8 @@ def _run(source: Path, target: Path | None, edit: tuple[Package, WorkbookLock] |
             notes = [note] if note else []
             ws = install_sheet(workbook, results_sheet, after=info.sheet)
             fill_sheet(ws, sheets.table, units={"row": "-"}, formulas=sheets.formulas(companions), progress=progress,
-                       rules=sheets.rules, print_setup=sheets.print_setup, hidden_columns=sheets.hidden_columns)
+                       rules=sheets.rules, print_setup=sheets.print_setup, hidden_columns=sheets.hidden_columns,
+                       footer=sheets.footer)
             ws.sheet_properties.tabColor = "44546A"
             after = results_sheet
             for companion in sheets.companions:
@@ -333,6 +343,8 @@ def _run(source: Path, target: Path | None, edit: tuple[Package, WorkbookLock] |
             atomic_save(workbook, target)
     if info.hidden_rows:  # not silently: a hidden row is a support like the others to calc
         notes.insert(0, _hidden_note(info))
+    notes[:0] = [f"row {row} of sheet {info.sheet!r} is the totals row of the Excel table {table!r}, not a "
+                 "support: it was left out" for row, table in info.totals_rows]
     return WorkbookRun(result, info, target, results_sheet, dropped, notes, companions, duty)
 
 

@@ -81,7 +81,8 @@ def _cell_value(value: object) -> object:
 def fill_sheet(ws: Worksheet, table: pd.DataFrame, *, units: dict[str, str] | None = None,
                input_columns: AbstractSet[str] = frozenset(), formulas: dict[tuple[str, int], str] | None = None,
                progress: Progress | None = None, rules: Sequence[ConditionalRule] = (),
-               print_setup: PrintSetup | None = None, hidden_columns: Sequence[str] = ()) -> None:
+               print_setup: PrintSetup | None = None, hidden_columns: Sequence[str] = (),
+               footer: dict[str, str] | None = None) -> None:
     """Header row, units row, one row per table row; named styles; frozen panes and widths.
 
     Text values are written as text, also when they begin with '=' (they
@@ -90,7 +91,9 @@ def fill_sheet(ws: Worksheet, table: pd.DataFrame, *, units: dict[str, str] | No
     (:class:`bearingheat.io.excel.freshness.ConditionalRule`),
     ``print_setup`` a :class:`bearingheat.io.excel.printing.PrintSetup`;
     ``hidden_columns`` are grouped and collapsed (the helper columns of the
-    formulas: a designer opens them with the outline's + button).
+    formulas: a designer opens them with the outline's + button). ``footer``
+    maps the addresses of cells below the table to formulas (the check of
+    :func:`bearingheat.io.excel.freshness.unread_rows_check`).
     ``progress`` is an object with start, update and finish
     (:class:`bearingheat.io.console.Progress`), or None.
     """
@@ -140,6 +143,8 @@ def fill_sheet(ws: Worksheet, table: pd.DataFrame, *, units: dict[str, str] | No
             progress.update(position)
     if progress is not None:
         progress.finish()
+    for address, text in (footer or {}).items():
+        ws[address] = text
     ws.freeze_panes = "A3"
     for position, height in layout.heights.items():
         ws.row_dimensions[position + 3].height = height

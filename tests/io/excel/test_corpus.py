@@ -115,9 +115,14 @@ def assert_results_sheet(path, run, formulas: bool) -> None:
     ws = workbook[run.results_sheet]
     header = [c.value for c in ws[1]]
     assert header[0] == "row" and header[-2:] == ["status", "message"]
-    assert ws.max_row == 2 + len(run.result)
-    assert [ws.cell(r, 1).value for r in range(3, ws.max_row + 1)] == run.info.rows
-    status = [ws.cell(r, header.index("status") + 1).value for r in range(3, ws.max_row + 1)]
+    last = 2 + len(run.result)
+    # with formulas: a blank row, then the check that the input sheet has no support without results
+    assert ws.max_row == last + 2 * formulas
+    if formulas:
+        assert [c.value for c in ws[last + 1]] == [None] * len(header)
+        assert ws.cell(last + 2, 1).value.startswith("=IF(ROWS(") and ws.cell(last + 2, 2).value is None
+    assert [ws.cell(r, 1).value for r in range(3, last + 1)] == run.info.rows
+    status = [ws.cell(r, header.index("status") + 1).value for r in range(3, last + 1)]
     if formulas:  # the live check: calc's status while the inputs are as computed
         assert all(text.startswith("=IF(OR(") and text.endswith(f',"{state}"))') or text.endswith(f',"{state}")')
                    for text, state in zip(status, run.result["status"])), status
@@ -125,7 +130,7 @@ def assert_results_sheet(path, run, formulas: bool) -> None:
         assert workbook[run.companions["snapshot"]].sheet_state == "hidden"
     else:
         assert status == list(run.result["status"])
-    mr = [ws.cell(r, header.index("MR") + 1) for r in range(3, ws.max_row + 1)]
+    mr = [ws.cell(r, header.index("MR") + 1) for r in range(3, last + 1)]
     for cell, expected, state in zip(mr, run.result["MR [N*mm]"], run.result["status"]):
         if formulas and state != "error":
             assert cell.data_type == "f" and cell.value.startswith("="), cell.value
@@ -135,12 +140,12 @@ def assert_results_sheet(path, run, formulas: bool) -> None:
             assert cell.value == pytest.approx(expected, rel=1e-15)
     text_columns = [i for i, h in enumerate(header) if h in ("id", "designation", "message")
                     or (h == "status" and not formulas)]
-    for row in ws.iter_rows(min_row=3):
+    for row in ws.iter_rows(min_row=3, max_row=last):
         for i in text_columns:
             assert row[i].data_type != "f", (row[i].coordinate, row[i].value)
     if "id" in header:
         # openpyxl does not undo the ST_Xstring escape of inline strings ('_x005F_x0041_' is the text '_x0041_')
-        ids = [ws.cell(r, header.index("id") + 1).value for r in range(3, ws.max_row + 1)]
+        ids = [ws.cell(r, header.index("id") + 1).value for r in range(3, last + 1)]
         ids = [v.replace("_x005F_", "_") if isinstance(v, str) else v for v in ids]
         assert ids == [None if v is None or v != v else str(v) for v in run.result["id"]]
     assert ws.freeze_panes == "A3"
@@ -219,7 +224,8 @@ def test_a_copy_is_what_in_place_writes_into_the_workbook(name, tmp_path):
         assert not copy.exists()
     else:
         assert case.refused or done.results_sheet == case.results[0]
-        assert openpyxl.load_workbook(copy, read_only=True)[done.results_sheet].max_row == len(done.result) + 2
+        results = openpyxl.load_workbook(copy, read_only=True)[done.results_sheet]
+        assert results.max_row == len(done.result) + (4 if case.formulas else 2)  # (formulas: the check below)
     assert case.path.read_bytes() == data
     if case.refused:
         return

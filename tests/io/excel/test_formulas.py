@@ -7,6 +7,7 @@ the reason.
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 import openpyxl
@@ -57,7 +58,8 @@ def results_by_header(path) -> tuple[list, list[list]]:
     header = [c.value for c in ws[1]]
     units = [c.value for c in ws[2]]
     names = [f"{h} [{u}]" if u not in ("-", "1") else h for h, u in zip(header, units)]
-    return names, [list(r) for r in ws.iter_rows(min_row=3, values_only=True)]
+    rows = [list(r) for r in ws.iter_rows(min_row=3, values_only=True)]
+    return names, rows[:[r[0] for r in rows].index(None)]  # (below a blank row: the check for unread supports)
 
 
 def assert_formulas_equal_python(recalculated, result):
@@ -206,3 +208,52 @@ def test_a_cell_of_spaces_is_blank_to_the_formulas_as_to_calc(tmp_path):
     assert run.result["status"].tolist() == ["ok", "ok", "ok"]
     (recalculated,) = convert([tmp_path / "live.xlsx"], "xlsx", tmp_path / "lo")
     assert assert_formulas_equal_python(recalculated, run.result) == run.result[LIVE].notna().sum().sum()
+
+
+#: sheet names Excel reads as a cell reference unquoted (A1 and R1C1 forms), or that need quotes anyway
+NAMES_TO_QUOTE = ["C", "R", "RC", "R1C1", "A1", "XFD1", "2024", "Shaft 1", "Q1's loads"]
+
+
+@pytest.mark.parametrize("sheet", NAMES_TO_QUOTE)
+def test_every_formula_quotes_the_sheet_name_alike(tmp_path, sheet):
+    """The live formulas, the status formulas and the marks name the input sheet the same way: 'C'!I3, not C!I3
+    (Excel would read C as the column C of R1C1 notation)."""
+    source = make_workbook(tmp_path / "book.xlsx", sheet=sheet)
+    out = tmp_path / "live.xlsx"
+    run = calc_workbook(source, out, formulas=True)
+    workbook = openpyxl.load_workbook(out)
+    quoted = "'" + sheet.replace("'", "''") + "'"
+    formulas = [cell.value for row in workbook[run.results_sheet].iter_rows() for cell in row
+                if isinstance(cell.value, str) and cell.value.startswith("=")]
+    references = [ref for formula in formulas for ref in re.findall(r"((?:'(?:[^']|'')+'|[A-Za-z0-9_.]+)!)\$?[A-Z]",
+                                                                     formula)]
+    copy = "'" + run.companions["snapshot"].replace("'", "''") + "'!"
+    assert {quoted + "!", copy} == set(references), set(references)  # the input sheet and the copy of its inputs
+    header = [c.value for c in workbook[run.results_sheet][1]]
+    dm = workbook[run.results_sheet].cell(3, header.index("dM") + 1).value
+    assert dm == f'=(IF(TRIM({quoted}!C3&"")="",40,{quoted}!C3)+IF(TRIM({quoted}!D3&"")="",80,{quoted}!D3))/2'
+    assert workbook.defined_names["_bearingheat_input_1"].attr_text == f"{quoted}!$1:$1048576"
+
+
+@pytest.mark.integration
+def test_sheets_named_like_references_recalculate_in_libreoffice(tmp_path):
+    """Input sheets named C and R1C1 (in one workbook, each with its results written in place): LibreOffice
+    recalculates the live formulas to calc's numbers and the status formulas to calc's statuses."""
+    require_soffice()
+    book = make_workbook(tmp_path / "named.xlsx", sheet="C")
+    workbook = openpyxl.load_workbook(book)
+    workbook.copy_worksheet(workbook["C"]).title = "R1C1"
+    workbook["R1C1"]["E4"] = 2 * workbook["R1C1"]["E4"].value  # another speed: the sheets' results differ
+    workbook.save(book)
+    runs = {sheet: calc_workbook(book, in_place=True, sheet=sheet, formulas=True) for sheet in ("C", "R1C1")}
+    (recalculated,) = convert([book], "xlsx", tmp_path / "lo")
+    values = openpyxl.load_workbook(recalculated, data_only=True)
+    for sheet, run in runs.items():
+        assert run.results_sheet == f"{sheet} results"
+        ws = values[run.results_sheet]
+        rows = list(ws.iter_rows(min_row=3, max_row=2 + len(run.result), values_only=True))
+        header = [c.value for c in ws[1]]
+        statuses = [r[header.index("status")] for r in rows]
+        assert statuses == run.result["status"].tolist() == ["ok"] * 4 + ["warning", "ok"]
+        np.testing.assert_allclose([r[header.index("MR")] for r in rows], run.result["MR [N*mm]"], rtol=1e-9)
+    assert runs["R1C1"].result["MR [N*mm]"][1] != pytest.approx(runs["C"].result["MR [N*mm]"][1], rel=1e-3)

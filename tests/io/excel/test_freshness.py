@@ -26,9 +26,13 @@ ROOT_BASED = ["n_thr", "n_per", "T_op", "nu_op", "Q_S", "Q_L"]
 
 
 def results(path, sheet="Results") -> pd.DataFrame:
+    """The rows of supports of a results sheet (down to the blank row above the check of a --formulas sheet)."""
     ws = openpyxl.load_workbook(path, data_only=True)[sheet]
     rows = list(ws.iter_rows(values_only=True))
-    return pd.DataFrame(rows[2:], columns=rows[0])
+    supports = rows[2:]
+    if None in [row[0] for row in supports]:
+        supports = supports[:[row[0] for row in supports].index(None)]
+    return pd.DataFrame(supports, columns=rows[0])
 
 
 def example_table() -> pd.DataFrame:
@@ -43,7 +47,7 @@ def probe_rules(path, sheet="Results") -> pd.DataFrame:
     ws = workbook[sheet]
     probe = workbook.create_sheet("Probe")
     rules = [(str(cf.sqref), rule.formula[0], rule.dxf.font.strike) for cf in ws.conditional_formatting
-             for rule in cf.rules]
+             for rule in cf.rules if re.match(r"[A-Z]+3:", str(cf.sqref))]  # (not the check below the table)
     for col, (_sqref, formula, _strike) in enumerate(rules, start=1):
         for row in range(3, ws.max_row + 1):
             text = re.sub(r"\$([A-Z]+)3\b", lambda m: f"{sheet}!${m.group(1)}{row}", formula)
@@ -267,3 +271,66 @@ def test_a_changed_unit_marks_every_result_of_every_row(tmp_path):
     assert by_tag["unit"] == [NOTE_EVERY] * n_rows
     assert by_tag["unit_and_loads"] == [NOTE_EVERY] * n_rows
     assert by_tag["unchanged"] == run.result["status"].tolist()
+
+
+UNREAD = "sheet 'Supports' has {count} without results: recalculate with bearingheat"
+
+
+def test_the_check_for_supports_without_results_sits_below_the_table(tmp_path):
+    """With --formulas the results sheet ends with a blank row and a cell that counts the rows of the input sheet
+    calc read against those it had; bold orange when it has something to say."""
+    out = tmp_path / "live.xlsx"
+    run = calc_workbook(EXAMPLE_XLSX, out, formulas=True)
+    ws = openpyxl.load_workbook(out)["Results"]
+    assert len(run.result) == 6 and run.info.filled_rows == 7  # the units row and six supports
+    assert [c.value for c in ws[9]] == [None] * ws.max_column and ws.max_row == 10
+    check = ws["A10"].value
+    assert check.startswith("=IF(ROWS(Supports!A2:A1048576)-COUNTIFS(Supports!A2:A1048576,\"\",Supports!B2:B1048576")
+    count = check[4:check.index(">7,")]  # the rows counted now, written twice
+    assert check == (f'=IF({count}>7,"sheet \'Supports\' has "&TEXT({count}-7,"[=1]""1 support"";0"" supports""")'
+                     '&" without results: recalculate with bearingheat","")')
+    assert check.count("COUNTIFS(") == 2 and check.count('1048576,""') == 2 * 52  # every column calc read
+    rules = {str(cf.sqref): (rule.formula[0], rule.dxf.font.b, rule.dxf.font.color.rgb)
+             for cf in ws.conditional_formatting for rule in cf.rules}
+    assert rules["A10"] == ("LEN($A$10)>0", True, "FFC65911")  # bold orange, as the status asking for a run
+
+
+@pytest.mark.integration
+@pytest.mark.parametrize("where", ["copy", "in_place"])
+def test_supports_typed_below_the_others_are_counted_on_the_results_sheet(tmp_path, where):
+    """A support added under the others on the input sheet after a --formulas run got no results and nothing said
+    so; now the cell under the results says how many supports have none, and is empty while there are none (an
+    input changed in a row of its own is the status's business)."""
+    require_soffice()
+    live = tmp_path / "live.xlsx"
+    if where == "copy":
+        run = calc_workbook(EXAMPLE_XLSX, live, formulas=True)
+    else:
+        shutil.copyfile(EXAMPLE_XLSX, live)
+        run = calc_workbook(live, in_place=True, formulas=True)
+    edits = {"unchanged": [], "one": [9], "two": [9, 14], "changed": []}
+    for tag, rows in edits.items():
+        workbook = openpyxl.load_workbook(live)
+        ws = workbook["Supports"]
+        header = {c.value: c.column_letter for c in ws[1]}
+        for row in rows:  # a support like the last, typed below it (with a gap: row 14)
+            for column in ("id", "designation", "d", "D", "n", "Fr", "Fa", "nu", "lubrication"):
+                ws[f"{header[column]}{row}"] = ws[f"{header[column]}8"].value
+            ws[f"{header['id']}{row}"] = f"added in row {row}"
+        if tag == "changed":
+            ws[f"{header['Fr']}3"] = 2 * ws[f"{header['Fr']}3"].value
+        workbook.save(tmp_path / f"{tag}.xlsx")
+    recalculated = convert([tmp_path / f"{tag}.xlsx" for tag in edits], "xlsx", tmp_path / "recalculated")
+    checks = {path.stem: openpyxl.load_workbook(path, data_only=True)["Results"]["A10"].value for path in recalculated}
+    assert checks == {"unchanged": None, "one": UNREAD.format(count="1 support"),
+                      "two": UNREAD.format(count="2 supports"), "changed": None}
+    statuses = {path.stem: results(path)["status"].tolist() for path in recalculated}
+    assert statuses["one"] == statuses["unchanged"] == run.result["status"].tolist()
+    assert statuses["changed"][0] == NOTE
+    # calc again reads the added supports: their results, and the check is empty
+    again = tmp_path / "again.xlsx"
+    rerun = calc_workbook(tmp_path / "two.xlsx", again, formulas=True)
+    assert rerun.info.rows == [3, 4, 5, 6, 7, 8, 9, 14] and rerun.info.filled_rows == 9
+    (cleared,) = convert([again], "xlsx", tmp_path / "cleared")
+    assert openpyxl.load_workbook(cleared, data_only=True)["Results"]["A12"].value is None
+    assert results(cleared)["id"].tolist()[-2:] == ["added in row 9", "added in row 14"]

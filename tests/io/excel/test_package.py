@@ -7,7 +7,9 @@ import re
 import shutil
 import zipfile
 
+import numpy as np
 import openpyxl
+import pandas as pd
 import pytest
 from excel_helpers import EXAMPLE_XLSX, gearbox_rows, make_workbook
 from excel_helpers import HEADER as HEADER_PLAIN, UNITS as UNITS_PLAIN
@@ -18,6 +20,7 @@ from bearingheat.errors import ExcelError
 from bearingheat.io.console import Progress
 from bearingheat.io.excel.libreoffice import convert, soffice
 from bearingheat.io.excel.ownership import choose_results_sheet, read_marks, sheet_of_mark
+from bearingheat.io.excel import record, sheetxml
 from bearingheat.io.excel.sheetxml import xstring
 from bearingheat.io.excel.workbook import calc_workbook
 
@@ -341,3 +344,46 @@ def test_a_results_sheet_without_a_record_is_checked_beyond_its_table(tmp_path):
         "found beyond its table, and it was replaced; edits inside the table cannot be told from bearingheat's own "
         "cells. From now on any edit of it is found"]
     assert calc_workbook(path, in_place=True).notes == []
+
+
+def _as_others_write(part: bytes) -> bytes:
+    """A worksheet part as other programs write it: the main namespace with a prefix (x:c), the attributes of a
+    cell in another order (t and s before r), an empty cell with an end tag instead of self-closing."""
+    text = part.decode()
+    text = text.replace('<worksheet xmlns="', '<x:worksheet xmlns:x="').replace("</worksheet>", "</x:worksheet>")
+    text = re.sub(r"<(/?)(?!x:)([A-Za-z]+)(?=[\s>/])", r"<\1x:\2", text)
+    text = re.sub(r'<x:c r="([A-Z]+\d+)" s="(\d+)"( t="\w+")?', r'<x:c\3 s="\2" r="\1"', text)
+    return re.sub(r'<x:c ([^>]*?)/>', r"<x:c \1></x:c>", text).encode()
+
+
+def test_the_record_made_while_writing_equals_the_sheet_read_back(tmp_path):
+    """The record's range and digest are made as the cells are written (WrittenCells); read back from the part
+    written, on the sheet of values and on the --formulas sheet (live and status formulas, a conditional format), and
+    on the same part as other programs write it, the cells give the same range and digest."""
+    path = make_workbook(tmp_path / "book.xlsx")
+    for formulas in (False, True):
+        out = tmp_path / f"out_{formulas}.xlsx"
+        calc_workbook(path, out, formulas=formulas)
+        recorded = record.parse_record(openpyxl.load_workbook(out).defined_names["_bearingheat_record_1"].attr_text)
+        written = part(out, results_part(out, "Results"))
+        for data in (written, _as_others_write(written)):
+            cells = record.read_cells(data)
+            assert (cells.extent, cells.digest(cells.extent)) == recorded
+        assert recorded[0] == ("A1:V10" if formulas else "A1:O8")  # (--formulas: the check in A10)
+        assert (b"<f>" in written) == formulas and (b"cfRule" in written) == formulas
+    # every kind of cell: text to escape, look-alikes of _xHHHH_, spaces, a formula-like text, booleans, dates,
+    # integers, NaN and infinity (no value), a number with 17 digits, empty text
+    table = pd.DataFrame({"id": ["a<b & c", "_x0041_ \x01", "  padded  ", "two\nlines", "=HYPERLINK(1)", ""],
+                          "flag": [True, False, None, True, False, True],
+                          "when": pd.to_datetime(["2024-05-01 00:00", "2024-05-02 13:30", None, "1900-03-01 00:00",
+                                                  "2024-01-01 00:00", "2024-01-01 00:00"]),
+                          "n [1/min]": [1480, 0, -3, 7, 2**60, 12],
+                          "MR [N*mm]": [0.1 + 0.2, np.nan, np.inf, 1e-300, 138.47817095928783, -0.0]})
+    written_cells = record.WrittenCells()
+    data = sheetxml.results_sheet_xml(table, lambda *args, **kwargs: 0, formulas={("MR [N*mm]", 5): "=1+1"},
+                                      written=written_cells, tab_color=None)
+    for form in (data, _as_others_write(data)):
+        cells = record.read_cells(form)
+        assert (cells.extent, cells.digest(cells.extent)) == (written_cells.extent, written_cells.digest())
+    assert written_cells.extent == "A1:E8"
+    assert written_cells.record() == record.record_value("A1:E8", written_cells.digest())

@@ -4,18 +4,21 @@ from __future__ import annotations
 
 import re
 import zipfile
+from pathlib import Path
 
 import numpy as np
 import openpyxl
 import pandas as pd
 import pytest
 import xlsxwriter
-from excel_helpers import HEADER, UNITS, gearbox_rows, make_workbook, require_soffice
+from excel_helpers import HEADER, UNITS, gearbox_rows, make_workbook, require_soffice, set_cached_value
+from openpyxl.worksheet.table import Table, TableColumn
 from workbook_corpus import edit_package
 
 from bearingheat.calc.table import calc
 from bearingheat.errors import ExcelError
 from bearingheat.io.excel.libreoffice import convert
+from bearingheat.io.excel.opc import office_document, open_package
 from bearingheat.io.excel.reader import read_supports
 from bearingheat.io.excel.workbook import calc_workbook
 from bearingheat.io.tables import calc_csv
@@ -70,6 +73,28 @@ def test_a_formula_cached_as_0_by_xlsxwriter_has_no_saved_value(tmp_path):
     expected = csv_of(rows, tmp_path)  # the value a script gave (6.2 for =2*3.1) is read
     np.testing.assert_allclose(result["MR [N*mm]"].iloc[2:], expected["MR [N*mm]"].iloc[2:], rtol=1e-12)
     assert (result["status"].iloc[2:] == expected["status"].iloc[2:]).all()
+
+
+def test_a_workbook_part_of_another_name_is_found_by_the_reader_and_the_package_edit(tmp_path):
+    """The workbook part is where _rels/.rels says (xl/book.xml here): the reader finds its recalculation flag
+    there (F3's cached 0 has no saved value), and the package edit edits it."""
+    path = xlsxwriter_book(tmp_path / "moved.xlsx", gearbox_rows(), {"F3": ("=1.6*2", None)})
+    with zipfile.ZipFile(path) as archive:
+        workbook, workbook_rels = archive.read("xl/workbook.xml"), archive.read("xl/_rels/workbook.xml.rels")
+    edit_package(path, {"_rels/.rels": lambda data: data.replace(b'Target="xl/workbook.xml"', b'Target="xl/book.xml"'),
+                        "[Content_Types].xml": lambda data: data.replace(b"/xl/workbook.xml", b"/xl/book.xml")},
+                 add={"xl/book.xml": workbook, "xl/_rels/book.xml.rels": workbook_rels},
+                 remove=("xl/workbook.xml", "xl/_rels/workbook.xml.rels"))
+    rels = zipped(path, "_rels/.rels")
+    office = "http://schemas.openxmlformats.org/officeDocument/2006/relationships/officeDocument"
+    assert office_document(rels, path) == (office, "xl/book.xml")
+    assert office_document(rels.replace(b"/officeDocument", b"/extended-properties"), path) is None
+    assert office_document(None, path) is None
+    assert open_package(path).workbook == "xl/book.xml"
+    assert calc_workbook(path).result["message"].iat[0] == UNSAVED.format(cell="Supports!F3", formula="=1.6*2")
+    calc_workbook(path, in_place=True)
+    assert b'name="Results"' in zipped(path, "xl/book.xml")
+    assert "xl/workbook.xml" not in zipfile.ZipFile(path).namelist()
 
 
 def test_a_cached_0_is_read_where_no_recalculation_is_asked_for(tmp_path):
@@ -263,3 +288,90 @@ def test_a_csv_of_a_workbook_has_the_units_in_its_headers_and_reads_back(tmp_pat
     np.testing.assert_allclose(again["MR [N*mm]"], run.result["MR [N*mm]"], rtol=1e-12)
     assert again["status"].tolist() == run.result["status"].tolist()
     np.testing.assert_allclose(again["MR [N*mm]"], calc(pd.read_csv(out))["MR [N*mm]"], rtol=1e-12)
+
+
+# ---- 7. numbers typed as text with groups of three digits ----------------------------------------------------------
+
+AMBIGUOUS = ("{cell}: {text!r} is a number stored as text, and its {mark!r} may be a decimal mark or a thousands "
+             "separator; type the number into the cell as a number")
+
+
+def test_a_number_as_text_that_reads_two_ways_is_refused_in_a_workbook(tmp_path):
+    """'3.000' in Fr was read as 3 kN (status ok), while '3,000' and '3 000' were refused: a workbook cell has no
+    decimal mark of its own to say whether 3 or 3000 was meant. Text that reads one way is read as before."""
+    rows = gearbox_rows()
+    texts = {0: ("F", "3.000"), 1: ("F", "12,500"), 2: ("E", "1.234.567"), 3: ("F", " +3.000 ")}
+    for position, (letter, text) in texts.items():
+        rows[position][HEADER.index({"F": "Fr", "E": "n"}[letter])] = text
+    rows[4][HEADER.index("Fr")] = "0.500"  # 0.5 whichever the mark: no thousands group begins with 0
+    rows[5][HEADER.index("Fr")] = "3.0000"  # four decimals: no thousands separator
+    result = calc_workbook(make_workbook(tmp_path / "text.xlsx", rows=rows)).result
+    for position, (letter, text) in texts.items():
+        mark = "." if "." in text else ","
+        expected = AMBIGUOUS.format(cell=f"Supports!{letter}{position + 3}", text=text, mark=mark)
+        assert result["status"].iat[position] == "error"
+        assert result["message"].iat[position].split("; ")[:2] == expected.split("; "), position
+    assert result["MR [N*mm]"].iloc[:4].isna().all()
+    numbers = gearbox_rows()
+    numbers[4][HEADER.index("Fr")], numbers[5][HEADER.index("Fr")] = 0.5, 3.0
+    expected = csv_of(numbers, tmp_path)
+    np.testing.assert_allclose(result["MR [N*mm]"].iloc[4:], expected["MR [N*mm]"].iloc[4:], rtol=1e-12)
+    assert result["status"].iloc[4:].tolist() == expected["status"].iloc[4:].tolist()
+    # two different marks: both named
+    rows = gearbox_rows()
+    rows[0][HEADER.index("Fr")] = "1,234.500"
+    message = calc_workbook(make_workbook(tmp_path / "mixed.xlsx", rows=rows)).result["message"].iat[0]
+    assert message.startswith("Supports!F3: '1,234.500' is a number stored as text, and its ',' and '.' may be "
+                              "decimal marks or thousands separators; type the number into the cell as a number")
+
+
+def test_a_csv_reads_3_000_with_its_decimal_mark_as_before(tmp_path):
+    """In a CSV '3.000' is read with the file's decimal mark (the point): 3 kN, as the number 3."""
+    rows = gearbox_rows()
+    rows[0][HEADER.index("Fr")] = "3.000"
+    as_text = csv_of(rows, tmp_path, name="text.csv")
+    rows[0][HEADER.index("Fr")] = 3.0
+    as_number = csv_of(rows, tmp_path, name="number.csv")
+    assert as_text["status"].iat[0] == "ok"
+    assert as_text["MR [N*mm]"].iat[0] == as_number["MR [N*mm]"].iat[0]
+
+
+# ---- 8. the totals row of an Excel table --------------------------------------------------------------------------
+
+def table_with_totals(path, cached: dict[str, str]) -> Path:
+    """The gearbox supports as an Excel table 'Loads' (units row inside it) with its totals row shown: 'Total'
+    under id, SUBTOTAL of Fr and Fa; ``cached``: the values Excel saved for those formulas ({cell: value})."""
+    header = [h if h != "D" else "D [mm]" for h in HEADER]  # (Excel renames 'D' beside 'd' in a table: 'D2')
+    make_workbook(path, header)
+    workbook = openpyxl.load_workbook(path)
+    ws = workbook["Supports"]
+    last = 3 + len(gearbox_rows())
+    ws[f"A{last}"], ws[f"F{last}"], ws[f"G{last}"] = "Total", "=SUBTOTAL(109,Loads[Fr])", "=SUBTOTAL(109,Loads[Fa])"
+    table = Table(displayName="Loads", ref=f"A1:M{last}", totalsRowCount=1)
+    table.tableColumns = [TableColumn(id=i, name=name) for i, name in enumerate(header, start=1)]
+    table.tableColumns[0].totalsRowLabel = "Total"
+    table.tableColumns[5].totalsRowFunction = table.tableColumns[6].totalsRowFunction = "sum"
+    ws.add_table(table)
+    workbook.save(path)
+    for cell, value in cached.items():
+        set_cached_value(path, 1, cell, value)
+    return Path(path)
+
+
+@pytest.mark.parametrize("cached", [{"F9": "20.8", "G9": "5.3"}, {}])
+def test_the_totals_row_of_an_excel_table_is_no_support(tmp_path, cached):
+    """Row 9, the table's totals row (totalsRowCount="1"), was read as a seventh support 'Total' (an error row,
+    or with saved values one of Fr 20.8 kN); it is left out with a note. Saved or not, its formulas are not read."""
+    path = table_with_totals(tmp_path / "table.xlsx", cached)
+    part = zipped(path, "xl/tables/table1.xml").decode()
+    assert re.search(r'<table [^>]*ref="A1:M9"[^>]*totalsRowCount="1"', part)
+    assert '<tableColumn id="6" name="Fr" totalsRowFunction="sum"/>' in part
+    run = calc_workbook(path, tmp_path / "out.xlsx")
+    assert run.info.rows == [3, 4, 5, 6, 7, 8] and run.info.totals_rows == [(9, "Loads")]
+    assert run.notes == ["row 9 of sheet 'Supports' is the totals row of the Excel table 'Loads', not a support: "
+                         "it was left out"]
+    plain = calc_workbook(make_workbook(tmp_path / "plain.xlsx")).result
+    np.testing.assert_allclose(run.result["MR [N*mm]"], plain["MR [N*mm]"], rtol=1e-12)
+    assert run.result["status"].tolist() == plain["status"].tolist() == ["ok"] * 4 + ["warning", "ok"]
+    results = openpyxl.load_workbook(tmp_path / "out.xlsx")["Results"]
+    assert [row[0] for row in results.iter_rows(min_row=3, values_only=True)] == [3, 4, 5, 6, 7, 8]
