@@ -103,8 +103,10 @@ _INSTRUCTIONS = [
      "text"),
     ("A change the formulas cannot follow (designation, type, series, arrangement, model, contact angle; any "
      "change of a row whose viscosity calc took from the oil's curve or whose f2 it read off the chart) "
-     "strikes every result of the row: 'recalculate with bearingheat (every result)'. Running calc again "
-     "clears the marks.", "text"),
+     "strikes every result of the row: 'recalculate with bearingheat (every result)'. A support added on "
+     "'Supports' after the run has no results: the line below the results counts such rows ('sheet 'Supports' "
+     "has 1 support without results: recalculate with bearingheat'). Running calc again clears the marks.",
+     "text"),
     ("Columns", "title"),
 ]
 _AFTER_COLUMNS = [
