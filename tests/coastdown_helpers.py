@@ -6,7 +6,7 @@ import math
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from bearingheat.kernels.coastdown import rolling_bearing_M0_seed002
+from bearingheat.kernels.coastdown import rolling_bearing_M0_schaeffler
 
 
 def integrate_rundown(torque, I, n0, dt, sigma, seed, fraction=0.95):
@@ -23,4 +23,4 @@ def integrate_rundown(torque, I, n0, dt, sigma, seed, fraction=0.95):
 
 
 def spindle_torque(f0, M1, nu, dM, z):
-    return lambda w: z * (rolling_bearing_M0_seed002(w * 30 / math.pi, nu, dM, f0) + M1) / 1000.0
+    return lambda w: z * (rolling_bearing_M0_schaeffler(w * 30 / math.pi, nu, dM, f0) + M1) / 1000.0

@@ -41,8 +41,8 @@ from bearingheat.errors import CoastdownError
 from bearingheat.kernels.coastdown import (
     RPM_TO_RAD_S,
     plain_torque,
-    reduced_friction_coefficient_seed003_formula2,
-    rolling_bearing_M0_seed002,
+    reduced_friction_coefficient_tmm7m_formula2,
+    rolling_bearing_M0_schaeffler,
     rundown_speed,
     savitzky_golay_irregular,
 )
@@ -238,7 +238,7 @@ def interval_friction_table(t: npt.ArrayLike, n_smooth: npt.ArrayLike, I: float,
         t_from, t_to = float(edges_t[k]), float(edges_t[k + 1])
         duration = t_to - t_from
         torque = I * RPM_TO_RAD_S * (n_from - n_to) / duration
-        f = (reduced_friction_coefficient_seed003_formula2(n_from - n_to, duration, I, G, r)
+        f = (reduced_friction_coefficient_tmm7m_formula2(n_from - n_to, duration, I, G, r)
              if G is not None and r is not None else float("nan"))
         rows.append({"n_from [1/min]": n_from, "n_to [1/min]": n_to, "n_mean [1/min]": 0.5 * (n_from + n_to),
                      "t_from [s]": t_from, "t_to [s]": t_to, "dt [s]": duration, "M [N*m]": torque, "f": f})
@@ -289,7 +289,7 @@ class SpindleFit:
 
     def summary(self) -> dict[str, Any]:
         out = {
-            "model": "rolling_M0_M1_seed002",
+            "model": "rolling_M0_M1_schaeffler",
             "bearings": self.bearings,
             "nu [mm^2/s]": self.nu,
             "dM [mm]": self.dM,
@@ -537,7 +537,7 @@ def spindle_coastdown_fit(t: npt.ArrayLike, n: npt.ArrayLike, I: float, nu: floa
     """Fit f0 and M1 of the Schaeffler catalogue form to a run-down of a shaft on rolling bearings.
 
     M(n) = bearings·(M0(n; ν, dM, f0) + M1) [N·mm], M0 from
-    :func:`rolling_bearing_M0_seed002`, M1 = f1·P·dM constant during the
+    :func:`rolling_bearing_M0_schaeffler`, M1 = f1·P·dM constant during the
     run-down (the load does not change). ν [mm²/s] is taken as constant
     (steady temperature). f1 = M1/(P·dM) is reported when P [N] is given;
     the fitted f0 is compared with ``f0_catalogue`` when given (finite, > 0).
@@ -563,7 +563,7 @@ def spindle_coastdown_fit(t: npt.ArrayLike, n: npt.ArrayLike, I: float, nu: floa
     n_smooth, dn_dt = savitzky_golay_irregular(t, n, _default_window(t.size))
     usable = _usable_derivative_mask(n_smooth, n_max)
     torque_nmm = -I * RPM_TO_RAD_S * dn_dt[usable] * 1000.0 / bearings
-    shape = rolling_bearing_M0_seed002(n_smooth[usable], nu, dM, 1.0)
+    shape = rolling_bearing_M0_schaeffler(n_smooth[usable], nu, dM, 1.0)
     design = np.stack([shape, np.ones_like(shape)], axis=1)
     guess, *_ = np.linalg.lstsq(design, torque_nmm, rcond=None)
     mean_torque_nmm = I * n_max * RPM_TO_RAD_S / (t[-1] - t[0]) * 1000.0 / bearings
@@ -571,10 +571,10 @@ def spindle_coastdown_fit(t: npt.ArrayLike, n: npt.ArrayLike, I: float, nu: floa
 
     def build(params: np.ndarray) -> Callable[[np.ndarray], np.ndarray]:
         f0, m1 = params
-        return lambda omega: bearings * (rolling_bearing_M0_seed002(omega / RPM_TO_RAD_S, nu, dM, f0) + m1) / 1000.0
+        return lambda omega: bearings * (rolling_bearing_M0_schaeffler(omega / RPM_TO_RAD_S, nu, dM, f0) + m1) / 1000.0
 
     start = np.concatenate(([n[0]], guess))
     scale = np.array([n_max, mean_torque_nmm / float(np.max(shape)), mean_torque_nmm])
-    fit = _fit_model("rolling_M0_M1_seed002", t, n, build, start, np.zeros(3), np.full(3, np.inf), scale, I,
+    fit = _fit_model("rolling_M0_M1_schaeffler", t, n, build, start, np.zeros(3), np.full(3, np.inf), scale, I,
                      ("f0", "M1"))
     return SpindleFit(fit=fit, nu=float(nu), dM=float(dM), bearings=int(bearings), P=P, f0_catalogue=f0_catalogue)

@@ -15,9 +15,9 @@ from typing import Any, ClassVar, TypeVar
 import numpy as np
 
 from bearingheat.api.results import Result
-from bearingheat.catalogue.bushing import pressure_limit_seed004, pv_limit_seed004_table25
+from bearingheat.catalogue.bushing import pressure_limit_du_dp, pv_limit_du_dp_table25
 from bearingheat.errors import BushingInputError
-from bearingheat.kernels.bushing import size_bushing_kernel, size_thrust_washer_kernel, temperature_factor_seed004
+from bearingheat.kernels.bushing import size_bushing_kernel, size_thrust_washer_kernel, temperature_factor_du_dp
 from bearingheat.units import Quantity, magnitude, quantity
 
 __all__ = ["size_bushing", "size_thrust_washer", "BushingSize", "ThrustWasherSize"]
@@ -179,12 +179,12 @@ def _admissible(application: str, shaft: str | None, life: Quantity | None, load
     if K is None:
         if shaft is None or life is None:
             raise BushingInputError("give either K, or shaft and life to read K from the DU/DP bushing handbook table 25")
-        K_table = pv_limit_seed004_table25(application, shaft, float(magnitude(life, "h", "life")))
+        K_table = pv_limit_du_dp_table25(application, shaft, float(magnitude(life, "h", "life")))
     else:
         K_table = float(magnitude(K, "N/mm^2*m/s", "K"))
     T_c = None if T is None else float(magnitude(T, "degC", "T"))
-    factor = 1.0 if T_c is None else temperature_factor_seed004(T_c)
-    p_table = pressure_limit_seed004(load_type)  # (an unknown load type is refused whether or not p_adm is given)
+    factor = 1.0 if T_c is None else temperature_factor_du_dp(T_c)
+    p_table = pressure_limit_du_dp(load_type)  # (an unknown load type is refused whether or not p_adm is given)
     p = p_table if p_adm is None else float(magnitude(p_adm, "N/mm^2", "p_adm"))
     return K_table, factor, T_c, p
 

@@ -190,11 +190,11 @@ def analyse_spindle_coastdown(t: Quantity, n: Quantity, *, I: Quantity, nu: Quan
     M1 = 30 N·mm each:
 
     >>> import numpy as np
-    >>> from bearingheat.kernels.coastdown import rolling_bearing_M0_seed002, rundown_speed
+    >>> from bearingheat.kernels.coastdown import rolling_bearing_M0_schaeffler, rundown_speed
     >>> from bearingheat.units import ureg
     >>> u = ureg()
     >>> def torque(omega):  # N*m of both bearings at omega [rad/s]
-    ...     return 2 * (rolling_bearing_M0_seed002(omega * 30 / np.pi, 20.0, 50.0, 2.0) + 30.0) / 1000
+    ...     return 2 * (rolling_bearing_M0_schaeffler(omega * 30 / np.pi, 20.0, 50.0, 2.0) + 30.0) / 1000
     >>> t = np.linspace(0.0, 20.0, 41)
     >>> n = rundown_speed(t, 0.0, 6000.0, torque, 0.01)
     >>> fit = analyse_spindle_coastdown(t * u.s, n * u.rpm, I=0.01 * u("kg*m^2"), nu=20 * u("mm^2/s"),

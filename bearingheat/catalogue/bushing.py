@@ -16,13 +16,13 @@ import math
 from bearingheat.catalogue.tables import load_table
 from bearingheat.errors import BushingInputError
 
-__all__ = ["KGF_PER_CM2", "pv_limit_seed004_table25", "pressure_limit_seed004"]
+__all__ = ["KGF_PER_CM2", "pv_limit_du_dp_table25", "pressure_limit_du_dp"]
 
 #: 1 kgf/cm² in N/mm² (9.80665 N per 100 mm²).
 KGF_PER_CM2 = 9.80665 / 100.0
 
 
-def pv_limit_seed004_table25(application: str, shaft: str, life: float) -> float:
+def pv_limit_du_dp_table25(application: str, shaft: str, life: float) -> float:
     """Admissible K = pV [N/mm²·m/s] from the DU/DP bushing handbook table 25 (stored in kgf/cm²·m/s).
 
     application: thrust_washer, guide, bushing_constant_load,
@@ -30,7 +30,7 @@ def pv_limit_seed004_table25(application: str, shaft: str, life: float) -> float
     cast iron, austenitic stainless, anodised aluminium, chromium-plated mild
     steel) or hardened (HB 540); life: 1000 or 10000 h.
 
-    >>> round(pv_limit_seed004_table25("bushing_constant_load", "soft", 1000), 4)
+    >>> round(pv_limit_du_dp_table25("bushing_constant_load", "soft", 1000), 4)
     0.5541
     """
     table = load_table("bushing_pv_limits")
@@ -51,10 +51,10 @@ def pv_limit_seed004_table25(application: str, shaft: str, life: float) -> float
     return K * KGF_PER_CM2
 
 
-def pressure_limit_seed004(load_type: str) -> float:
+def pressure_limit_du_dp(load_type: str) -> float:
     """Admissible specific load [p] [N/mm²] for a load type, the DU/DP bushing handbook p. 167 (stored in kgf/cm²).
 
-    >>> round(pressure_limit_seed004("rotating_fixed_load_point"), 3)
+    >>> round(pressure_limit_du_dp("rotating_fixed_load_point"), 3)
     55.408
     """
     table = load_table("bushing_pressure_limits")

@@ -14,7 +14,7 @@ from bearingheat.cli import UsageError
 from bearingheat.cli.options import add_json, add_quiet
 from bearingheat.io.json import json_safe
 from bearingheat.errors import BearingheatError, OutsideMethodError, UnitError
-from bearingheat.kernels.bushing import oscillating_speed_seed004
+from bearingheat.kernels.bushing import oscillating_speed_du_dp
 from bearingheat.units import magnitude, parse_quantity, quantity, speed_rpm
 
 
@@ -109,7 +109,7 @@ def _speed(args):
         amplitude_rev = magnitude(_quantity(args.amplitude, "--amplitude"), "turn", "--amplitude")
     except UnitError as exc:
         raise UsageError(str(exc)) from exc
-    return quantity(oscillating_speed_seed004(cycles, amplitude_rev), "1/min")
+    return quantity(oscillating_speed_du_dp(cycles, amplitude_rev), "1/min")
 
 
 def run(args: argparse.Namespace) -> int:

@@ -23,7 +23,7 @@ and :func:`~bearingheat.api.bushing.size_thrust_washer` are in :mod:`bearingheat
 
 >>> round(KGF_PER_CM2, 7)
 0.0980665
->>> round(bushing_length_pV_seed004(F=1000.0, n=300.0, K=0.5), 3)
+>>> round(bushing_length_pV_du_dp(F=1000.0, n=300.0, K=0.5), 3)
 31.416
 """
 from __future__ import annotations
@@ -43,15 +43,15 @@ __all__ = [
     "N_MAX",
     "sliding_speed",
     "bearing_pressure",
-    "bushing_length_pV_seed004",
-    "bushing_length_pressure_seed004",
-    "thrust_washer_width_pV_seed004",
-    "thrust_washer_outer_diameter_pressure_seed004",
-    "oscillating_speed_seed004",
-    "life_hours_seed004_fig86",
-    "pV_for_life_seed004_fig86",
-    "temperature_factor_seed004",
-    "friction_coefficient_range_seed004",
+    "bushing_length_pV_du_dp",
+    "bushing_length_pressure_du_dp",
+    "thrust_washer_width_pV_du_dp",
+    "thrust_washer_outer_diameter_pressure_du_dp",
+    "oscillating_speed_du_dp",
+    "life_hours_du_dp_fig86",
+    "pV_for_life_du_dp_fig86",
+    "temperature_factor_du_dp",
+    "friction_coefficient_range_du_dp",
     "PlainBushingLoss",
     "plain_bushing_power_loss",
     "size_bushing_kernel",
@@ -100,60 +100,60 @@ def bearing_pressure(F, d, l):
     return F / (d * l)
 
 
-def bushing_length_pV_seed004(F, n, K):
+def bushing_length_pV_du_dp(F, n, K):
     """Bushing length from the admissible pV, the DU/DP bushing handbook step 2: l = π·n·F / (60 000·K) [mm].
 
     F [N] radial load, n [1/min], K [N/mm²·m/s]. From K = p·V with
     p = F/(d·l) and V = π·d·n/60 000; d cancels. Seed units: l = π·n·F/(600·K)
     with F [kgf] and K [kgf/cm²·m/s].
 
-    >>> round(bushing_length_pV_seed004(1000.0, 300.0, 0.5), 3)
+    >>> round(bushing_length_pV_du_dp(1000.0, 300.0, 0.5), 3)
     31.416
     """
     return math.pi * n * F / (60000.0 * K)
 
 
-def bushing_length_pressure_seed004(F, d, p_adm):
+def bushing_length_pressure_du_dp(F, d, p_adm):
     """Bushing length from the admissible pressure, the DU/DP bushing handbook step 3: l = F / ([p]·d) [mm].
 
-    >>> round(bushing_length_pressure_seed004(20000.0, 20.0, 27.65), 2)
+    >>> round(bushing_length_pressure_du_dp(20000.0, 20.0, 27.65), 2)
     36.17
     """
     return F / (p_adm * d)
 
 
-def thrust_washer_width_pV_seed004(F, n, K):
+def thrust_washer_width_pV_du_dp(F, n, K):
     """Radial width b = (D − d)/2 of a thrust washer from pV, the DU/DP bushing handbook: b = n·F / (60 000·K) [mm].
 
     F [N] axial load, n [1/min], K [N/mm²·m/s]. p = F/(π(D² − d²)/4) on the
     ring and V = π·n·(D + d)/2/60 000 at the mean diameter give
     p·V = n·F/(60 000·b). Seed units: (D − d)/2 = n·F/(600·K).
 
-    >>> round(thrust_washer_width_pV_seed004(1000.0, 300.0, 0.5), 3)
+    >>> round(thrust_washer_width_pV_du_dp(1000.0, 300.0, 0.5), 3)
     10.0
     """
     return n * F / (60000.0 * K)
 
 
-def thrust_washer_outer_diameter_pressure_seed004(F, d, p_adm):
+def thrust_washer_outer_diameter_pressure_du_dp(F, d, p_adm):
     """Outer diameter of a thrust washer from [p], the DU/DP bushing handbook: D = sqrt(d² + 4·F/(π·[p])) [mm].
 
     Seed units: D = sqrt(d² + 400·F/(π·[p])) with F [kgf], [p] [kgf/cm²].
 
-    >>> round(float(thrust_washer_outer_diameter_pressure_seed004(5000.0, 20.0, 5.0)), 2)
+    >>> round(float(thrust_washer_outer_diameter_pressure_du_dp(5000.0, 20.0, 5.0)), 2)
     40.91
     """
     return np.sqrt(np.square(d) + 4.0 * F / (math.pi * p_adm))
 
 
-def oscillating_speed_seed004(cycles_per_min, amplitude_rev):
+def oscillating_speed_du_dp(cycles_per_min, amplitude_rev):
     """Equivalent speed n [1/min] of an oscillating shaft, the DU/DP bushing handbook step 2.
 
     n = cycles per minute × amplitude in fractions of one revolution (as the
     handbook says; whether its 'amplitude' is the half or the full swing is not
     stated — give the angle swept in one direction per cycle).
 
-    >>> oscillating_speed_seed004(60.0, 0.25)
+    >>> oscillating_speed_du_dp(60.0, 0.25)
     15.0
     """
     return cycles_per_min * amplitude_rev
@@ -165,7 +165,7 @@ def _outside(values, low, high):
     return bool(np.any(~((values >= low) & (values <= high))))
 
 
-def life_hours_seed004_fig86(pV, extrapolate=False):
+def life_hours_du_dp_fig86(pV, extrapolate=False):
     """Life [h] of a DU bushing against pV [N/mm²·m/s], the DU/DP bushing handbook fig. 86.
 
     A straight line in log-log coordinates through the handbook's two points
@@ -175,9 +175,9 @@ def life_hours_seed004_fig86(pV, extrapolate=False):
     :class:`OutsideMethodError` is raised unless ``extrapolate=True``.
     Test bushing: DU, bore 15.9 mm, unhardened steel shaft.
 
-    >>> round(life_hours_seed004_fig86(3.6 * KGF_PER_CM2), 6)
+    >>> round(life_hours_du_dp_fig86(3.6 * KGF_PER_CM2), 6)
     1000.0
-    >>> round(life_hours_seed004_fig86(1.0), 1)
+    >>> round(life_hours_du_dp_fig86(1.0), 1)
     353.0
     """
     (pv1, life1), (pv2, _) = FIG86_POINTS
@@ -190,10 +190,10 @@ def life_hours_seed004_fig86(pV, extrapolate=False):
         float(life1 * (pV / pv1) ** FIG86_SLOPE)
 
 
-def pV_for_life_seed004_fig86(life, extrapolate=False):
-    """pV [N/mm²·m/s] giving ``life`` [h] on the fig. 86 line (inverse of :func:`life_hours_seed004_fig86`).
+def pV_for_life_du_dp_fig86(life, extrapolate=False):
+    """pV [N/mm²·m/s] giving ``life`` [h] on the fig. 86 line (inverse of :func:`life_hours_du_dp_fig86`).
 
-    >>> round(pV_for_life_seed004_fig86(200.0) / KGF_PER_CM2, 6)
+    >>> round(pV_for_life_du_dp_fig86(200.0) / KGF_PER_CM2, 6)
     18.0
     """
     (pv1, life1), (_, life2) = FIG86_POINTS
@@ -206,14 +206,14 @@ def pV_for_life_seed004_fig86(life, extrapolate=False):
 
 
 @series_aware
-def temperature_factor_seed004(T):
+def temperature_factor_du_dp(T):
     """Derating factor of the admissible pV with temperature T [°C], the DU/DP bushing handbook.
 
     1 from −200 °C to +120 °C, then falling linearly to 0.5 at +280 °C (the
     handbook says 'gradually' and 'about half'; linear is our reading).
     Outside −200 to +280 °C an :class:`OutsideMethodError` is raised.
 
-    >>> temperature_factor_seed004(100.0), temperature_factor_seed004(200.0), temperature_factor_seed004(280.0)
+    >>> temperature_factor_du_dp(100.0), temperature_factor_du_dp(200.0), temperature_factor_du_dp(280.0)
     (1.0, 0.75, 0.5)
     """
     if _outside(T, T_MIN, T_MAX):
@@ -223,14 +223,14 @@ def temperature_factor_seed004(T):
     return 1.0 - 0.5 * np.clip((np.asarray(T, dtype=float) - T_DERATE) / (T_MAX - T_DERATE), 0.0, 1.0)
 
 
-def friction_coefficient_range_seed004(V):
+def friction_coefficient_range_du_dp(V):
     """Default friction coefficient range (low, high) of DU at sliding speed V [m/s], the DU/DP bushing handbook.
 
     0.05–0.1 at 0.05–0.1 m/s (high loads); 0.1–0.2 at 0.2–5 m/s. Between
     0.1 and 0.2 m/s the handbook is silent and the envelope of both bands,
     0.05–0.2, is returned. Outside 0.05–5 m/s: NaN (no data in the handbook).
 
-    >>> friction_coefficient_range_seed004(np.array([0.07, 0.15, 1.0, 6.0]))
+    >>> friction_coefficient_range_du_dp(np.array([0.07, 0.15, 1.0, 6.0]))
     (array([0.05, 0.05, 0.1 ,  nan]), array([0.1, 0.2, 0.2, nan]))
     """
     V_arr = np.asarray(V, dtype=float)
@@ -291,7 +291,7 @@ def plain_bushing_power_loss(d, B, F, n, f=np.nan) -> PlainBushingLoss:
     with np.errstate(divide="ignore", invalid="ignore"):
         p = np.array(F_a / (d_a * B_a), dtype=float)
         V = np.array(math.pi * d_a * n_a / 60000.0, dtype=float)
-    f_low, f_high = (np.array(np.broadcast_to(x, shape), dtype=float) for x in friction_coefficient_range_seed004(V))
+    f_low, f_high = (np.array(np.broadcast_to(x, shape), dtype=float) for x in friction_coefficient_range_du_dp(V))
     given = np.isfinite(f_a)
     f_used = np.where(given, f_a, f_high)
     power = f_used * F_a * V
@@ -385,11 +385,11 @@ def _round_up(required, standard, what):
 
 
 def _loss_and_life(F, V, pV, f):
-    f_low, f_high = friction_coefficient_range_seed004(V)  # NaN outside 0.05-5 m/s
+    f_low, f_high = friction_coefficient_range_du_dp(V)  # NaN outside 0.05-5 m/s
     if f is not None:
         f_low = f_high = f
     try:
-        life = life_hours_seed004_fig86(pV)
+        life = life_hours_du_dp_fig86(pV)
         life_note = "fig. 86 two-point fit"
     except OutsideMethodError as exc:
         life, life_note = float("nan"), str(exc)
@@ -400,7 +400,7 @@ def _loss_and_life(F, V, pV, f):
 def size_bushing_kernel(F, n, d, K, p_adm, standard_lengths=None, f=None) -> dict[str, Any]:
     """Length of a cylindrical DU bushing by the DU/DP bushing handbook steps 1-4 (catalogue units).
 
-    F [N] radial load, n [1/min] (oscillation: see :func:`oscillating_speed_seed004`),
+    F [N] radial load, n [1/min] (oscillation: see :func:`oscillating_speed_du_dp`),
     d [mm] bore, K [N/mm²·m/s] admissible pV (already derated), p_adm [N/mm²]
     admissible pressure, standard_lengths [mm] (optional list), f optional
     friction coefficient.
@@ -414,8 +414,8 @@ def size_bushing_kernel(F, n, d, K, p_adm, standard_lengths=None, f=None) -> dic
         if not (math.isfinite(value) and value > 0):
             raise BushingInputError(f"{name} = {value:g} {unit}: expected a value > 0")
     V = sliding_speed(d, n)
-    l_pv = bushing_length_pV_seed004(F, n, K)
-    l_p = bushing_length_pressure_seed004(F, d, p_adm)
+    l_pv = bushing_length_pV_du_dp(F, n, K)
+    l_p = bushing_length_pressure_du_dp(F, d, p_adm)
     governing = "pV" if l_pv >= l_p else "pressure"
     required = max(l_pv, l_p)
     standard = _round_up(required, standard_lengths, "length")
@@ -444,9 +444,9 @@ def size_thrust_washer_kernel(F, n, d, K, p_adm, standard_diameters=None, f=None
     for name, value, unit in (("K", K, "N/mm²*m/s"), ("[p]", p_adm, "N/mm²")):
         if not (math.isfinite(value) and value > 0):
             raise BushingInputError(f"{name} = {value:g} {unit}: expected a value > 0")
-    width = thrust_washer_width_pV_seed004(F, n, K)
+    width = thrust_washer_width_pV_du_dp(F, n, K)
     D_pv = d + 2.0 * width
-    D_p = float(thrust_washer_outer_diameter_pressure_seed004(F, d, p_adm))
+    D_p = float(thrust_washer_outer_diameter_pressure_du_dp(F, d, p_adm))
     governing = "pV" if D_pv >= D_p else "pressure"
     required = max(D_pv, D_p)
     standard = _round_up(required, standard_diameters, "outer diameter")

@@ -27,7 +27,7 @@ Units: t [s], n [1/min], I [kg·m²], G [N], r [mm], torques [N·m] (the Schaeff
 M0 and M1 in [N·mm]). No units are checked here: :mod:`bearingheat.api.coastdown`
 is the unit boundary; the fits are in :mod:`bearingheat.analysis.coastdown`.
 
->>> round(reduced_friction_coefficient_seed003_formula2(100.0, 10.0, I=2.6, G=1100.0, r=25.0), 5)
+>>> round(reduced_friction_coefficient_tmm7m_formula2(100.0, 10.0, I=2.6, G=1100.0, r=25.0), 5)
 0.09901
 """
 from __future__ import annotations
@@ -43,10 +43,10 @@ from bearingheat.kernels import friction
 __all__ = [
     "RPM_TO_RAD_S",
     "TMM_7M",
-    "reduced_friction_coefficient_seed003_formula1",
-    "reduced_friction_coefficient_seed003_formula2",
-    "rolling_bearing_M0_seed002",
-    "rolling_bearing_M1_seed002",
+    "reduced_friction_coefficient_tmm7m_formula1",
+    "reduced_friction_coefficient_tmm7m_formula2",
+    "rolling_bearing_M0_schaeffler",
+    "rolling_bearing_M1_schaeffler",
     "savitzky_golay_irregular",
     "rundown_speed",
     "plain_torque",
@@ -60,7 +60,7 @@ TMM_7M = {"I": 2.6, "G": 1100.0, "r": 25.0}
 
 
 # --------------------------------------------------------------------------- the TMM-7M lab sheet formulas
-def reduced_friction_coefficient_seed003_formula1(dn_dt, I, G, r):
+def reduced_friction_coefficient_tmm7m_formula1(dn_dt, I, G, r):
     """Instantaneous reduced friction coefficient, the TMM-7M lab sheet formula (1).
 
     f = −π·I·(dn/dt) / (30·G·r)
@@ -72,13 +72,13 @@ def reduced_friction_coefficient_seed003_formula1(dn_dt, I, G, r):
     Valid while the rotor runs down with no driving torque (M_d = 0) and I,
     G, r > 0.
 
-    >>> round(reduced_friction_coefficient_seed003_formula1(-10.0, I=2.6, G=1100.0, r=25.0), 5)
+    >>> round(reduced_friction_coefficient_tmm7m_formula1(-10.0, I=2.6, G=1100.0, r=25.0), 5)
     0.09901
     """
     return -I * RPM_TO_RAD_S * dn_dt / (G * r / 1000.0)
 
 
-def reduced_friction_coefficient_seed003_formula2(delta_n, delta_t, I, G, r):
+def reduced_friction_coefficient_tmm7m_formula2(delta_n, delta_t, I, G, r):
     """Interval-average reduced friction coefficient, the TMM-7M lab sheet formula (2).
 
     f = π·I·Δn / (30·G·r·Δt)
@@ -91,14 +91,14 @@ def reduced_friction_coefficient_seed003_formula2(delta_n, delta_t, I, G, r):
     TMM-7M (I = 2.6 kg·m², G = 1100 N, r = 25 mm), Δn = 100 1/min in 10 s:
     f = π·2.6·100 / (30·1100·0.025·10) = 816.8 / 8250
 
-    >>> round(reduced_friction_coefficient_seed003_formula2(100.0, 10.0, I=2.6, G=1100.0, r=25.0), 5)
+    >>> round(reduced_friction_coefficient_tmm7m_formula2(100.0, 10.0, I=2.6, G=1100.0, r=25.0), 5)
     0.09901
     """
     return I * RPM_TO_RAD_S * delta_n / (G * r / 1000.0 * delta_t)
 
 
 # --------------------------------------------------------------------------- the Schaeffler catalogue rolling form
-def rolling_bearing_M0_seed002(n, nu, dM, f0):
+def rolling_bearing_M0_schaeffler(n, nu, dM, f0):
     """Speed-dependent friction torque M0 [N·mm] of one rolling bearing (the Schaeffler catalogue, p. 64).
 
     M0 = f0·(ν·n)^(2/3)·dM³·1e-7   for ν·n ≥ 2000
@@ -109,22 +109,22 @@ def rolling_bearing_M0_seed002(n, nu, dM, f0):
     :func:`bearingheat.kernels.friction.speed_dependent_torque`, in the
     argument order of the coast-down fit.
 
-    >>> round(float(rolling_bearing_M0_seed002(3000.0, 20.0, 50.0, 2.0)), 3)
+    >>> round(float(rolling_bearing_M0_schaeffler(3000.0, 20.0, 50.0, 2.0)), 3)
     38.315
-    >>> round(float(rolling_bearing_M0_seed002(50.0, 20.0, 50.0, 2.0)), 3)
+    >>> round(float(rolling_bearing_M0_schaeffler(50.0, 20.0, 50.0, 2.0)), 3)
     4.0
     """
     return friction.speed_dependent_torque(f0, nu, n, dM)
 
 
-def rolling_bearing_M1_seed002(P, dM, f1):
+def rolling_bearing_M1_schaeffler(P, dM, f1):
     """Load-dependent friction torque M1 = f1·P·dM [N·mm] of one rolling bearing (the Schaeffler catalogue, p. 64).
 
     P [N] load that determines the friction torque (P1, or F for roller
     bearings), dM [mm] mean diameter, f1 [1]. The engine kernel
     :func:`bearingheat.kernels.friction.load_dependent_torque`.
 
-    >>> rolling_bearing_M1_seed002(1000.0, 50.0, 0.0005)
+    >>> rolling_bearing_M1_schaeffler(1000.0, 50.0, 0.0005)
     25.0
     """
     return friction.load_dependent_torque(f1, P, dM)

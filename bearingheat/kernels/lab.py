@@ -125,7 +125,7 @@ def least_squares_line(x, y, *, through_origin: bool = False) -> tuple[float, fl
     return slope, intercept
 
 
-def catalogue_f0_equivalent(f0_seed000, nu):
+def catalogue_f0_equivalent(f0_dp11a, nu):
     """The Schaeffler catalogue f0 equal to a the DP11A manual f0 at viscosity ν [mm²/s] (ν·n >= 2000): f0·1e7/ν^(2/3).
 
     Equating T0 = f0·dm³·n^(2/3) (the DP11A manual) with M0 = f0'·(ν·n)^(2/3)·dm³·1e-7
@@ -134,4 +134,4 @@ def catalogue_f0_equivalent(f0_seed000, nu):
     >>> round(float(catalogue_f0_equivalent(1e-7, 8.0)), 6)
     0.25
     """
-    return np.asarray(f0_seed000, dtype=float) * 1e7 / np.power(np.asarray(nu, dtype=float), 2.0 / 3.0)
+    return np.asarray(f0_dp11a, dtype=float) * 1e7 / np.power(np.asarray(nu, dtype=float), 2.0 / 3.0)

@@ -46,25 +46,25 @@ def test_pressure_table_reads_back_as_typed_from_seed():
 def test_table_units_convert_with_pint_to_the_kernel_constant():
     u = ureg()
     assert u("kgf/cm^2").to("N/mm^2").magnitude == pytest.approx(bu.KGF_PER_CM2, rel=1e-12)
-    assert bu.pv_limit_seed004_table25("bushing_constant_load", "soft", 1000) == pytest.approx(
+    assert bu.pv_limit_du_dp_table25("bushing_constant_load", "soft", 1000) == pytest.approx(
         u.Quantity(5.65, "kgf/cm^2*m/s").to("N/mm^2*m/s").magnitude, rel=1e-12)
 
 
 def test_lost_table_cell_message():
     with pytest.raises(BushingInputError, match=re.escape(
             "the DU/DP bushing handbook table 25: K for guide, hardened shaft, 1000 h was lost in the OCR of the DU/DP bushing handbook; give K directly")):
-        bu.pv_limit_seed004_table25("guide", "hardened", 1000)
+        bu.pv_limit_du_dp_table25("guide", "hardened", 1000)
 
 
 def test_unknown_application_message():
     with pytest.raises(BushingInputError, match=re.escape(
             "the DU/DP bushing handbook table 25: application 'sleeve' unknown; expected one of bushing_constant_load, "
             "bushing_oscillating, bushing_rotating_load, guide, thrust_washer")):
-        bu.pv_limit_seed004_table25("sleeve", "soft", 1000)
+        bu.pv_limit_du_dp_table25("sleeve", "soft", 1000)
 
 
 def test_unknown_load_type_message():
     with pytest.raises(BushingInputError, match=re.escape(
             "the DU/DP bushing handbook [p]: load type 'heavy' unknown; expected one of static, rotating_fixed_load_point, "
             "moving_load_moderate, moving_load_severe")):
-        bu.pressure_limit_seed004("heavy")
+        bu.pressure_limit_du_dp("heavy")

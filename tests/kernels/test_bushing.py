@@ -22,7 +22,7 @@ def test_sliding_speed_of_the_seed_test_bushing():
 
 def test_length_from_pV_gives_back_K():
     F, n, d, K = 3000.0, 400.0, 30.0, 0.55
-    length = bu.bushing_length_pV_seed004(F, n, K)
+    length = bu.bushing_length_pV_du_dp(F, n, K)
     assert bu.bearing_pressure(F, d, length) * bu.sliding_speed(d, n) == pytest.approx(K, rel=1e-12)
 
 
@@ -30,7 +30,7 @@ def test_length_formula_in_seed_units_600K_agrees_with_SI():
     # seed: l [mm] = pi*n*P/(600*K), P [kgf], K [kgf/cm^2*m/s]
     P_kgf, n, K_seed = 200.0, 400.0, 5.65
     seed_units = math.pi * n * P_kgf / (600.0 * K_seed)
-    si = bu.bushing_length_pV_seed004(P_kgf * 9.80665, n, K_seed * bu.KGF_PER_CM2)
+    si = bu.bushing_length_pV_du_dp(P_kgf * 9.80665, n, K_seed * bu.KGF_PER_CM2)
     assert si == pytest.approx(seed_units, rel=1e-12)
 
 
@@ -38,55 +38,55 @@ def test_thrust_washer_formulas_in_seed_units_agree_with_SI():
     P_kgf, n, K_seed, d, p_seed = 150.0, 300.0, 4.25, 20.0, 565.0
     b_seed = n * P_kgf / (600.0 * K_seed)                              # (D - d)/2 = nP/(600 pV)
     D_seed = math.sqrt(d ** 2 + 400.0 * P_kgf / (p_seed * math.pi))    # D = sqrt(d^2 + 400P/([p] pi))
-    assert bu.thrust_washer_width_pV_seed004(P_kgf * 9.80665, n, K_seed * bu.KGF_PER_CM2) == pytest.approx(b_seed)
-    assert bu.thrust_washer_outer_diameter_pressure_seed004(
+    assert bu.thrust_washer_width_pV_du_dp(P_kgf * 9.80665, n, K_seed * bu.KGF_PER_CM2) == pytest.approx(b_seed)
+    assert bu.thrust_washer_outer_diameter_pressure_du_dp(
         P_kgf * 9.80665, d, p_seed * bu.KGF_PER_CM2) == pytest.approx(D_seed)
 
 
 def test_thrust_washer_width_gives_back_K_at_mean_diameter():
     F, n, d, K = 2000.0, 500.0, 25.0, 0.4
-    D = d + 2 * bu.thrust_washer_width_pV_seed004(F, n, K)
+    D = d + 2 * bu.thrust_washer_width_pV_du_dp(F, n, K)
     p = 4 * F / (math.pi * (D ** 2 - d ** 2))
     assert p * bu.sliding_speed((D + d) / 2, n) == pytest.approx(K, rel=1e-12)
 
 
 # ----------------------------------------------------------------- life and derating
 def test_life_line_passes_through_the_seed_points():
-    assert bu.life_hours_seed004_fig86(3.6 * bu.KGF_PER_CM2) == pytest.approx(1000.0, rel=1e-12)
-    assert bu.life_hours_seed004_fig86(18.0 * bu.KGF_PER_CM2) == pytest.approx(200.0, rel=1e-12)
+    assert bu.life_hours_du_dp_fig86(3.6 * bu.KGF_PER_CM2) == pytest.approx(1000.0, rel=1e-12)
+    assert bu.life_hours_du_dp_fig86(18.0 * bu.KGF_PER_CM2) == pytest.approx(200.0, rel=1e-12)
     assert bu.FIG86_SLOPE == pytest.approx(-1.0, abs=1e-12)
 
 
 @given(st.floats(min_value=0.36, max_value=1.76))
 def test_life_is_monotone_and_inverts(pv):
-    life = bu.life_hours_seed004_fig86(pv)
-    assert bu.pV_for_life_seed004_fig86(life) == pytest.approx(pv, rel=1e-9)
-    assert bu.life_hours_seed004_fig86(pv * 1.001) < life
+    life = bu.life_hours_du_dp_fig86(pv)
+    assert bu.pV_for_life_du_dp_fig86(life) == pytest.approx(pv, rel=1e-9)
+    assert bu.life_hours_du_dp_fig86(pv * 1.001) < life
 
 
 def test_life_outside_two_point_fit_message():
     with pytest.raises(OutsideMethodError, match=re.escape(
             "pV = 0.1 N/mm²*m/s is outside the two-point fit of the DU/DP bushing handbook fig. 86 "
             "(0.353 to 1.765 N/mm²*m/s, i.e. 3.6 to 18 kgf/cm²*m/s)")):
-        bu.life_hours_seed004_fig86(0.1)
-    assert bu.life_hours_seed004_fig86(0.1, extrapolate=True) == pytest.approx(3530.4, rel=1e-4)
+        bu.life_hours_du_dp_fig86(0.1)
+    assert bu.life_hours_du_dp_fig86(0.1, extrapolate=True) == pytest.approx(3530.4, rel=1e-4)
 
 
 def test_temperature_factor_values_and_continuity():
     T = np.array([-200.0, 20.0, 120.0, 120.0 + 1e-9, 200.0, 280.0])
-    np.testing.assert_allclose(bu.temperature_factor_seed004(T), [1, 1, 1, 1, 0.75, 0.5], atol=1e-9)
-    series = bu.temperature_factor_seed004(pd.Series([100.0, 200.0], index=["a", "b"]))
+    np.testing.assert_allclose(bu.temperature_factor_du_dp(T), [1, 1, 1, 1, 0.75, 0.5], atol=1e-9)
+    series = bu.temperature_factor_du_dp(pd.Series([100.0, 200.0], index=["a", "b"]))
     assert list(series) == [1.0, 0.75] and list(series.index) == ["a", "b"]
 
 
 def test_temperature_outside_range_message():
     with pytest.raises(OutsideMethodError, match=re.escape(
             "T = 300 °C is outside the range of the DU/DP bushing handbook table 25 (-200 to +280 °C)")):
-        bu.temperature_factor_seed004(300.0)
+        bu.temperature_factor_du_dp(300.0)
 
 
 def test_friction_ranges_of_the_seed():
-    low, high = bu.friction_coefficient_range_seed004(np.array([0.05, 0.1, 0.15, 0.2, 5.0, 5.1, 0.04]))
+    low, high = bu.friction_coefficient_range_du_dp(np.array([0.05, 0.1, 0.15, 0.2, 5.0, 5.1, 0.04]))
     np.testing.assert_array_equal(low, [0.05, 0.05, 0.05, 0.1, 0.1, np.nan, np.nan])
     np.testing.assert_array_equal(high, [0.1, 0.1, 0.2, 0.2, 0.2, np.nan, np.nan])
 

@@ -20,20 +20,20 @@ def test_formula2_worked_example_by_hand():
     # f = pi*I*dn / (30*G*r*dt) = pi*2.6*100 / (30*1100*0.025*10) = 816.81/8250
     by_hand = math.pi * 2.6 * 100 / (30 * 1100 * 0.025 * 10)
     assert by_hand == pytest.approx(0.099008, abs=5e-7)
-    assert cd.reduced_friction_coefficient_seed003_formula2(100.0, 10.0, 2.6, 1100.0, 25.0) == pytest.approx(by_hand)
+    assert cd.reduced_friction_coefficient_tmm7m_formula2(100.0, 10.0, 2.6, 1100.0, 25.0) == pytest.approx(by_hand)
 
 
 def test_formula1_is_formula2_for_a_straight_line():
-    assert cd.reduced_friction_coefficient_seed003_formula1(-7.5, 2.6, 1100.0, 25.0) == pytest.approx(
-        cd.reduced_friction_coefficient_seed003_formula2(75.0, 10.0, 2.6, 1100.0, 25.0))
+    assert cd.reduced_friction_coefficient_tmm7m_formula1(-7.5, 2.6, 1100.0, 25.0) == pytest.approx(
+        cd.reduced_friction_coefficient_tmm7m_formula2(75.0, 10.0, 2.6, 1100.0, 25.0))
 
 
 def test_formula2_scalar_array_series_agree():
     dn = [100.0, 50.0]
     dt = [10.0, 20.0]
-    scalar = [cd.reduced_friction_coefficient_seed003_formula2(a, b, 2.6, 1100.0, 25.0) for a, b in zip(dn, dt)]
-    array = cd.reduced_friction_coefficient_seed003_formula2(np.array(dn), np.array(dt), 2.6, 1100.0, 25.0)
-    series = cd.reduced_friction_coefficient_seed003_formula2(pd.Series(dn, index=["a", "b"]), np.array(dt),
+    scalar = [cd.reduced_friction_coefficient_tmm7m_formula2(a, b, 2.6, 1100.0, 25.0) for a, b in zip(dn, dt)]
+    array = cd.reduced_friction_coefficient_tmm7m_formula2(np.array(dn), np.array(dt), 2.6, 1100.0, 25.0)
+    series = cd.reduced_friction_coefficient_tmm7m_formula2(pd.Series(dn, index=["a", "b"]), np.array(dt),
                                                               2.6, 1100.0, 25.0)
     np.testing.assert_allclose(array, scalar)
     assert list(series.index) == ["a", "b"]
@@ -79,6 +79,6 @@ def test_rundown_speed_coulomb_closed_form_and_stop():
 # ----------------------------------------------------------------- rolling-bearing form (the Schaeffler catalogue)
 def test_M0_branches_meet_near_nu_n_2000():
     # 2000^(2/3) = 158.74: the seed's constant 160 below 2000 is within 0.8 % of the upper branch
-    above = cd.rolling_bearing_M0_seed002(100.0, 20.0, 60.0, 1.7)
-    below = cd.rolling_bearing_M0_seed002(99.999, 20.0, 60.0, 1.7)
+    above = cd.rolling_bearing_M0_schaeffler(100.0, 20.0, 60.0, 1.7)
+    below = cd.rolling_bearing_M0_schaeffler(99.999, 20.0, 60.0, 1.7)
     assert below / above == pytest.approx(160 / 2000 ** (2 / 3), rel=1e-5)

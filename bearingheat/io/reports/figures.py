@@ -13,7 +13,7 @@ import pandas as pd
 
 from bearingheat.analysis.coastdown import coastdown_analysis
 from bearingheat.calc.table import calc
-from bearingheat.catalogue.bushing import pressure_limit_seed004, pv_limit_seed004_table25
+from bearingheat.catalogue.bushing import pressure_limit_du_dp, pv_limit_du_dp_table25
 from bearingheat.io.reports import FIGURE_DPI, matplotlib_figure
 from bearingheat.io.reports.coastdown import plot_coastdown
 
@@ -55,8 +55,8 @@ def plot_bushing_pv(path, *, F_N: float = 2000.0, n_rpm: float = 500.0, d_mm: fl
                     load_type: str = "rotating_fixed_load_point") -> Path:
     """The admissible region p <= [p], p·v <= K of a DU bushing and the operating point of the docs' example."""
     Figure = matplotlib_figure()
-    K = pv_limit_seed004_table25(application, shaft, life_h)
-    p_adm = pressure_limit_seed004(load_type)
+    K = pv_limit_du_dp_table25(application, shaft, life_h)
+    p_adm = pressure_limit_du_dp(load_type)
     p = F_N / (d_mm * l_mm)                              # N/mm², projected area
     v = np.pi * d_mm * n_rpm / 60000.0                    # m/s
     speeds = np.geomspace(0.002, 10.0, 200)
