@@ -181,9 +181,8 @@ def lowest_operating_temperature(balance, T_low, T_high, *, cells: int = OPERATI
     bearing heats up). The range is scanned at ``cells + 1`` evenly spaced
     temperatures (one array call each, every row together) for the first
     step from heating (> 0) to not heating (<= 0); that step is refined by
-    :func:`~bearingheat.kernels.roots.bracketed_root`. Returns (T, status)
-    as :func:`~bearingheat.kernels.thermal.operating_temperature`: 0 for an
-    equilibrium, 1 where the bearing still heats up at T_high (no equilibrium up to it), -1
+    :func:`~bearingheat.kernels.roots.bracketed_root`. Returns (T, status),
+    status 0 for an equilibrium, 1 where the bearing still heats up at T_high (no equilibrium up to it), -1
     where it no longer heats up at T_low, 2 where the balance is NaN at an
     end. Two roots closer together than one cell may both be missed; one
     root is never missed. Rows marked ``single_root`` (a balance known to

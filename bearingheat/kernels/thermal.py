@@ -67,7 +67,6 @@ __all__ = [
     "speed_factor_exact",
     "speed_factor_catalogue_approximation",
     "permissible_speed_factor",
-    "operating_temperature",
 ]
 
 #: (π/30)·1e-3: friction power [W] per torque [N·mm] and speed [1/min] (ISO 15312, the n_θr equation).
@@ -417,36 +416,3 @@ def permissible_speed_factor(n_thr, f0, nu, dM, load_torque, Q):
     c_high, c_low = torque_coefficients(f0, dM)
     x, _, _, _ = balance_root(c_high, c_low, load_torque, nu, np.asarray(Q, dtype=float), n_thr)
     return x
-
-
-# ---- operating temperature -------------------------------------------------------------------
-
-def operating_temperature(heat_balance, T_low, T_high, *, iterations: int = 64):
-    """Temperature T [°C] in [T_low, T_high] where ``heat_balance(T)`` changes sign, vectorised bisection.
-
-    ``heat_balance(T)`` returns N_R(T) + Q_E − Q_S(T) − Q_L(T) [W] for an
-    array of temperatures (one per row): positive while the bearing still
-    heats up. Returns (T, status) where status is 0 for an equilibrium,
-    1 where the balance is still positive at T_high (no equilibrium up to
-    T_high; whether one lies above depends on how the balance goes on), −1
-    where it is already negative at T_low.
-
-    >>> import numpy as np
-    >>> T, status = operating_temperature(lambda T: 100.0 - 2.0 * (T - 20.0), np.array([0.0]), np.array([150.0]))
-    >>> T.round(9).tolist(), status.tolist()
-    ([70.0], [0])
-    """
-    lo = np.asarray(T_low, dtype=float).copy()
-    hi = np.asarray(T_high, dtype=float).copy()
-    f_lo = np.asarray(heat_balance(lo), dtype=float)
-    f_hi = np.asarray(heat_balance(hi), dtype=float)
-    status = np.where(f_hi > 0, 1, np.where(f_lo < 0, -1, 0))
-    status = np.where(np.isnan(f_lo) | np.isnan(f_hi), 2, status)
-    for _ in range(iterations):
-        mid = 0.5 * (lo + hi)
-        f_mid = np.asarray(heat_balance(mid), dtype=float)
-        heating = f_mid > 0
-        lo = np.where(heating, mid, lo)
-        hi = np.where(heating, hi, mid)
-    T = np.where(status == 0, 0.5 * (lo + hi), np.nan)
-    return T, status
