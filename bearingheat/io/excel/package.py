@@ -193,14 +193,21 @@ class _Workbook:
         element.text = value
         self.changed = True
 
+    def _sheet_name(self, sheet: _Sheet, name: str) -> etree._Element | None:
+        """The defined name ``name`` (e.g. '_xlnm.Print_Area', in any letter case) local to ``sheet``, or None."""
+        names = self.child("definedNames")
+        index = str(self.sheets.index(sheet))
+        for element in names.iter(_M + "definedName") if names is not None else ():
+            if element.get("name", "").lower() == name.lower() and element.get("localSheetId") == index:
+                return element
+        return None
+
     def print_titles(self, sheet: _Sheet, value: str) -> None:
         """Give ``sheet`` print titles (``_xlnm.Print_Titles``) unless it has some."""
-        index = str(self.sheets.index(sheet))
-        names = self.ensure_child("definedNames")
-        for element in names.iter(_M + "definedName"):
-            if element.get("name", "").lower() == "_xlnm.print_titles" and element.get("localSheetId") == index:
-                return
-        element = etree.SubElement(names, _M + "definedName", {"name": "_xlnm.Print_Titles", "localSheetId": index})
+        if self._sheet_name(sheet, "_xlnm.Print_Titles") is not None:
+            return
+        element = etree.SubElement(self.ensure_child("definedNames"), _M + "definedName",
+                                   {"name": "_xlnm.Print_Titles", "localSheetId": str(self.sheets.index(sheet))})
         element.text = value
         self.changed = True
 
@@ -208,18 +215,14 @@ class _Workbook:
         """Set the print area of ``sheet`` that the designer gave it (``_xlnm.Print_Area``) to ``value``, the whole
         new results sheet: one set for fewer supports would leave the new ones off the paper and the PDF. The
         note that says so; None where the sheet has no print area or it is ``value`` already."""
-        names = self.child("definedNames")
-        index = str(self.sheets.index(sheet))
-        for element in names.iter(_M + "definedName") if names is not None else ():
-            if element.get("name", "").lower() == "_xlnm.print_area" and element.get("localSheetId") == index:
-                old = (element.text or "").strip()
-                if old == value:
-                    return None
-                element.text = value
-                self.changed = True
-                return (f"the print area of sheet {sheet.name!r} ({old}) now covers the results written, {value}; "
-                        "set it again (Page Layout > Print Area) to print less")
-        return None
+        element = self._sheet_name(sheet, "_xlnm.Print_Area")
+        old = None if element is None else (element.text or "").strip()
+        if element is None or old == value:
+            return None
+        element.text = value
+        self.changed = True
+        return (f"the print area of sheet {sheet.name!r} ({old}) now covers the results written, {value}; "
+                "set it again (Page Layout > Print Area) to print less")
 
     def full_calc_on_load(self) -> None:
         calc = self.ensure_child("calcPr")
@@ -329,16 +332,21 @@ def _kept_setup(package: Package, sheet: _Sheet, whose: str) -> dict[str, str]:
     return kept
 
 
-def _foreign_edit(package: Package, sheet: _Sheet, shared_part: str | None, recorded: tuple[str, str] | None,
+def _old_cells(package: Package, sheet: _Sheet, shared_part: str | None) -> record.SheetCells | None:
+    """The cells of the results sheet a run wrote before (:func:`.record.read_cells`), read once for its old headers
+    and its record; None where the part is missing."""
+    data = package.read(sheet.part)
+    if data is None:
+        return None
+    return record.read_cells(data, record.shared_strings(package.read(shared_part)) if shared_part else [])
+
+
+def _foreign_edit(package: Package, sheet: _Sheet, cells: record.SheetCells, recorded: tuple[str, str] | None,
                   target: Path | None) -> list[str]:
     """Refuse to replace a results sheet that holds what bearingheat did not write (:mod:`.record`), naming the
     first such cell; into a copy (``target``) it is written with a note instead, as the workbook keeps the edit.
     The notes: that, or that a sheet without a record was checked outside its table only."""
-    data = package.read(sheet.part)
-    if data is None:
-        return []
-    shared = record.shared_strings(package.read(shared_part)) if shared_part else []
-    found = record.foreign_edit(record.read_cells(data, shared), recorded)
+    found = record.foreign_edit(cells, recorded)
     if found is None:
         return [] if recorded is not None else [
             f"sheet {sheet.name!r} has no record of the cells bearingheat wrote (an earlier version wrote it): "
@@ -479,11 +487,11 @@ def write_results_in_place(package: Package, input_sheet: str, table: pd.DataFra
         sheet = next(s for s in workbook.sheets if s.name == name)
         kept = edit.rewrite(sheet, whose)
         shared = workbook.relationship("sharedStrings")
-        if written_before:  # (the template's placeholder lists columns, but no run wrote them)
-            old_headers = references.header_row(package, sheet.part, shared[1] if shared else None)
-            foreign = _foreign_edit(package, sheet, shared[1] if shared else None,
-                                    record.record_names(workbook.names()).get(k), target)
-            notes_before.extend(foreign)
+        old_cells = _old_cells(package, sheet, shared[1] if shared else None) if written_before else None
+        if old_cells is not None:  # (the template's placeholder lists columns, but no run wrote them)
+            old_headers = references.header_row(old_cells)
+            notes_before.extend(_foreign_edit(package, sheet, old_cells, record.record_names(workbook.names()).get(k),
+                                              target))
     else:
         sheet = edit.add_sheet(name)
     names = {role: sheet_name for role, (sheet_name, _) in chosen.items()}

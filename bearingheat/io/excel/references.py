@@ -52,17 +52,11 @@ def moved_columns(old: Sequence[str | None], new: Sequence[str]) -> list[str]:
     return out
 
 
-def header_row(package: Package, part: str, shared_part: str | None) -> list[str | None]:
-    """The texts of row 1 of the worksheet ``part`` by column (inline strings, shared strings, numbers); only the
-    first row is read (:func:`bearingheat.io.excel.record.read_cells` on the text up to its end)."""
-    data = package.read(part)
-    if data is None:
-        return []
-    end = re.search(rb"</(?:\w+:)?row>", data)
-    head = data[:end.end()] if end is not None else data
-    shared = record.shared_strings(package.read(shared_part)) if shared_part and b't="s"' in head else []
-    cells = {col: value for col, row, kind, value in record.read_cells(head, shared).cells if row == 1}
-    return [cells.get(c) for c in range(1, max(cells, default=0) + 1)]
+def header_row(cells: record.SheetCells) -> list[str | None]:
+    """The texts of row 1 of a sheet read by :func:`bearingheat.io.excel.record.read_cells`, by column (inline
+    strings, shared strings, numbers)."""
+    texts = {col: value for col, row, kind, value in cells.cells if row == 1}
+    return [texts.get(c) for c in range(1, max(texts, default=0) + 1)]
 
 
 def reference_pattern(sheet: str) -> re.Pattern[str]:
