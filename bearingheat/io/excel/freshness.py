@@ -133,14 +133,16 @@ def freshness_check(ws, table, info, statuses, every) -> FreshnessCheck:
     # the header and units rows from the first to the last column read, every cell of them (a header typed
     # over a column calc passed by changes the reading as well)
     columns = [_column_index(info.letters[header]) for header in info.headers.values()]
-    last_title = info.units_row if info.units_row is not None else info.header_row
-    titles = (f"${get_column_letter(min(columns))}${info.header_row}:"
-              f"${get_column_letter(max(columns))}${last_title}") if columns else None
-    for (row, col), cell in cells.items():
-        if (columns and info.header_row <= row <= last_title and min(columns) <= col <= max(columns)
-                and cell.value is not None):
-            value = cell.value
-            snapshot.append((row, col, value if isinstance(value, (str, int, float, bool)) else str(value)))
+    last_title = info.last_title_row
+    titles = None
+    if columns:
+        first, last = min(columns), max(columns)
+        titles = f"${get_column_letter(first)}${info.header_row}:${get_column_letter(last)}${last_title}"
+        for row in range(info.header_row, last_title + 1):
+            for col in range(first, last + 1):
+                value = cells[(row, col)].value if (row, col) in cells else None
+                if value is not None:
+                    snapshot.append((row, col, value if isinstance(value, (str, int, float, bool)) else str(value)))
     for name, header in info.headers.items():
         col = _column_index(info.letters[header])
         if name == "id":
@@ -171,7 +173,7 @@ def unread_rows_check(info, results: int) -> tuple[str, str, ConditionalRule] | 
     format, so the long count is written twice, not three times (a formula has at most 8192 characters).
 
     >>> from types import SimpleNamespace
-    >>> info = SimpleNamespace(sheet="C", units_row=2, header_row=1, headers={"Fr": "Fr", "designation": "B"},
+    >>> info = SimpleNamespace(sheet="C", last_title_row=2, headers={"Fr": "Fr", "designation": "B"},
     ...                        letters={"Fr": "F", "B": "B"}, filled_rows=7)
     >>> address, formula, rule = unread_rows_check(info, 6)
     >>> address, rule.sqref, rule.formula
@@ -185,7 +187,7 @@ def unread_rows_check(info, results: int) -> tuple[str, str, ConditionalRule] | 
     if not letters:
         return None
     here = sheet_ref(info.sheet)
-    first = info.units_row if info.units_row is not None else info.header_row
+    first = info.last_title_row
     ranges = [f"{here}!{letter}{first}:{letter}1048576" for letter in letters]
     count = f'ROWS({ranges[0]})-COUNTIFS({",".join(r + "," + chr(34) * 2 for r in ranges)})'
     sheet = repr(info.sheet).replace('"', '""')

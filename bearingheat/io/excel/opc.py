@@ -82,6 +82,17 @@ def office_document(package_rels: bytes | None, path: str | os.PathLike[str]) ->
     return None
 
 
+def workbook_part(archive: zipfile.ZipFile) -> str:
+    """The workbook part of a package read as a zip file (xl/workbook.xml unless its relationships say otherwise:
+    :func:`office_document`)."""
+    try:
+        package_rels: bytes | None = archive.read("_rels/.rels")
+    except KeyError:
+        package_rels = None
+    office = office_document(package_rels, str(archive.filename))
+    return "xl/workbook.xml" if office is None else office[1]
+
+
 @dataclass
 class Package:
     """A workbook file read once: its bytes, ZIP members (in order) and the workbook part's name."""

@@ -44,7 +44,7 @@ from openpyxl.worksheet.worksheet import Worksheet
 
 from bearingheat.calc.contract import input_units, parse_header, result_column
 from bearingheat.errors import ExcelError, InputError, UnitError
-from bearingheat.io.excel.opc import MAIN, office_document, parse_part
+from bearingheat.io.excel.opc import MAIN, parse_part, workbook_part
 from bearingheat.io.excel.ownership import read_marks, sheet_ref
 from bearingheat.io.excel.rows import filled_rows, take_ambiguous_texts, totals_rows
 from bearingheat.io.files import EXCEL_SUFFIXES
@@ -109,6 +109,11 @@ class SheetInfo:
     #: as Excel's COUNTIFS(range, "") tells them from blank rows (a cell of spaces is something, a formula that
     #: shows "" is not): the count the check of --formulas compares with (:func:`.freshness.unread_rows_check`, :func:`.rows.filled_rows`)
     filled_rows: int = 0
+
+    @property
+    def last_title_row(self) -> int:
+        """The last row above the supports: the units row, or the header row of a sheet without one."""
+        return self.units_row if self.units_row is not None else self.header_row
 
     @property
     def sheet_ref(self) -> str:
@@ -421,9 +426,8 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
             if data[col_index[header]][position_of_row[row]] is None:
                 uncached.append((position_of_row[row], header, formula))
 
-    read = {col for col, header in columns if header in contract_headers.values()}
-    filled = filled_rows(stored_cells(ws), every_row, [col in read for col, _ in columns], cached, columns,
-                         units_row or header_row)
+    read = [header in contract_headers.values() for _, header in columns]
+    filled = filled_rows(stored_cells(ws), every_row, read, cached, columns, first_data - 1)
     known = input_units()
     ambiguous = take_ambiguous_texts(columns, [n is not None and known[n] not in _TEXT_UNITS for n in names], data)
     frame_columns: dict[str, pd.Series] = {}
@@ -492,22 +496,11 @@ def _refuse_header_clashes(sheet: str, header_row: int, columns: list[tuple[int,
                 "'d' and 'D [mm]', mm under d in the units row), or convert the table to a range")
 
 
-def _workbook_part(archive: zipfile.ZipFile) -> str:
-    """The workbook part of a package (xl/workbook.xml unless its relationships say otherwise:
-    :func:`bearingheat.io.excel.opc.office_document`)."""
-    try:
-        package_rels: bytes | None = archive.read("_rels/.rels")
-    except KeyError:
-        package_rels = None
-    office = office_document(package_rels, str(archive.filename))
-    return "xl/workbook.xml" if office is None else office[1]
-
-
 def _recalculates_on_load(path: Path) -> bool:
     """Whether the workbook's calcPr asks for a full recalculation on load (fullCalcOnLoad), read from the file:
     openpyxl reports the flag set for a workbook without calcPr."""
     with zipfile.ZipFile(path) as archive:
-        part = _workbook_part(archive)
+        part = workbook_part(archive)
         try:
             root = parse_part(archive.read(part), part, path)
         except KeyError:

@@ -207,8 +207,7 @@ _ATTRIBUTE_ANY = re.compile(r'(\w+="[^"]*")')
 
 
 def _cell(kind: str, inner: str, shared: list[str]) -> tuple[str, str] | None:
-    if kind == "n" and inner.startswith("<v>") and inner.endswith("</v>"):  # most cells: a number
-        return "n", _number(inner[3:-4])
+    """A cell that is not a plain number or a formula first (those :func:`read_cells` takes itself)."""
     if "f" in inner and _FORMULA.search(inner):  # (the substring test first: most cells hold no formula)
         return "f", ""
     if kind == "inlineStr":

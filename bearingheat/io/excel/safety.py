@@ -20,13 +20,13 @@ two workbooks with equal fingerprints show the same content in Excel.
 from __future__ import annotations
 
 import html
-import posixpath
 import re
 import zipfile
 
 from openpyxl import load_workbook
 from openpyxl.utils import get_column_letter
 
+from bearingheat.io.excel.opc import rels_part, resolve_target, workbook_part
 from bearingheat.io.excel.ownership import INPUT_MARK, RESULTS_MARK, read_marks, sheet_ref
 from bearingheat.io.excel.reader import defined_name_values
 from bearingheat.io.excel.record import RECORD_MARK
@@ -83,30 +83,29 @@ def _vml_sheets(archive: zipfile.ZipFile) -> dict[str, str]:
     """VML drawing part -> the name of the sheet that shows it (from the workbook's and the sheets' relationships)."""
     names = set(archive.namelist())
 
-    def targets(rels: str) -> dict[str, str]:
+    def targets(source: str) -> dict[str, str]:
+        rels = rels_part(source)
         if rels not in names:
             return {}
-        folder = rels.rsplit("_rels/", 1)[0]
         text = archive.read(rels).decode("utf-8", "replace")
         out = {}
         for element in re.findall(r"<Relationship\b[^>]*>", text):
             rid, target = re.search(r'\bId="([^"]*)"', element), re.search(r'\bTarget="([^"]*)"', element)
             if rid and target:
-                out[rid.group(1)] = posixpath.normpath(target.group(1).lstrip("/") if target.group(1).startswith("/")
-                                                       else posixpath.join(folder, target.group(1)))
+                out[rid.group(1)] = resolve_target(source, target.group(1))
         return out
 
-    if "xl/workbook.xml" not in names:
+    book = workbook_part(archive)
+    if book not in names:
         return {}
-    sheet_parts = targets("xl/_rels/workbook.xml.rels")
+    sheet_parts = targets(book)
     out = {}
-    workbook = archive.read("xl/workbook.xml").decode("utf-8", "replace")
+    workbook = archive.read(book).decode("utf-8", "replace")
     for element in re.findall(r"<(?:\w+:)?sheet\b[^>]*>", workbook):
         name, rid = re.search(r'\bname="([^"]*)"', element), re.search(r'\br:id="([^"]*)"', element)
         part = sheet_parts.get(rid.group(1)) if rid else None
         if name and part:
-            folder, base = posixpath.split(part)
-            for target in targets(posixpath.join(folder, "_rels", base + ".rels")).values():
+            for target in targets(part).values():
                 if target.endswith(".vml"):
                     out[target] = html.unescape(name.group(1))
     return out
