@@ -27,6 +27,7 @@ from bearingheat.analysis.deviations import (CONFIDENCE, change_point, consisten
                                              median_interval, robust_scale)
 from bearingheat.analysis.passthrough import unread_columns
 from bearingheat.calc.contract import parse_header, readable_header
+from bearingheat.calc.conversion import numbers_of, row_number, row_numbers
 from bearingheat.calc.thermal import thermal_reference_speed_details
 from bearingheat.catalogue.friction import resolve
 from bearingheat.catalogue.thermal import reference_conditions
@@ -106,9 +107,7 @@ def _convert(values: pd.Series, header: str, unit_text: str | None, target: str,
     ``positive`` names what the column holds, a number that is not finite
     and > 0, and, where ``required``, a blank cell. Such a cell is NaN.
     """
-    if decimal == "," and values.dtype == object:  # '3,2' is 3.2 and '1.480' no number, as calc reads them
-        values = values.map(lambda v: (None if "." in v else v.replace(",", ".")) if isinstance(v, str) else v)
-    numbers = pd.to_numeric(values, errors="coerce").to_numpy(dtype=float)
+    numbers = numbers_of(values, decimal)  # ('3,2' is 3.2 and '1.480' no number with a decimal comma, as calc reads)
     raw = values.to_numpy(dtype=object)
     blank = values.isna().to_numpy() | values.astype(str).str.strip().eq("").to_numpy()
     expected = f" ({positive} must be a finite number > 0)" if positive else ""
@@ -134,9 +133,9 @@ def _convert(values: pd.Series, header: str, unit_text: str | None, target: str,
 def _row_names(table: pd.DataFrame, names: np.ndarray) -> list[str]:
     """'row 5 (624-2Z)' of each row: the file line where the table was read from a CSV (``attrs['lines']``,
     as calc cites rows), else the row's position counting from 1."""
-    lines = table.attrs.get("lines")
-    numbers = list(lines) if lines is not None and len(lines) == len(table) else range(1, len(table) + 1)
-    return [f"row {line} ({name})" if name else f"row {line}" for line, name in zip(numbers, names)]
+    rows = row_numbers(table)
+    return [f"row {row_number(rows, i)} ({name})" if name else f"row {row_number(rows, i)}"
+            for i, name in enumerate(names)]
 
 
 def rounding_step(n: npt.ArrayLike, steps: Sequence[tuple[float, float]] = ROUNDING_STEPS) -> np.ndarray:

@@ -88,6 +88,25 @@ def test_cells_that_are_no_number_or_out_of_range_name_row_column_value_and_rang
         f"Rows not computed ({len(bad)}), left out of every group:"] + [f"  {BAD_CELLS[i][2]}" for i in bad]
 
 
+def test_a_list_with_decimal_commas_reads_a_point_as_no_number(tmp_path):
+    """With decimal commas '3,2' is 3.2 and '1.480' no number, as calc reads them: '1.480' in d was read as 1.48 mm
+    and '6.300' in n_B as 6.3 1/min without a reason where pandas reads text columns as its str dtype."""
+    table = synthetic_catalogue()
+    table = table[table["series"] == "62"].reset_index(drop=True).astype(object)
+    for column in ("d [mm]", "D [mm]", "B [mm]", "C0 [N]", "n_B [1/min]"):
+        table[column] = [f"{value:g}".replace(".", ",") for value in table[column]]
+    table.loc[2, "d [mm]"], table.loc[3, "n_B [1/min]"] = "1.480", "6.300"
+    path = tmp_path / "list.csv"
+    table.to_csv(path, index=False, sep=";")
+    rows = audit_reference_speeds(read_table(path, sep=";", decimal=","))
+    clean = audit_reference_speeds(series_62(tmp_path)[0])
+    assert list(rows["reason"].iloc[2:4]) == [
+        "row 4 (624): '1.480' is not a number for d [mm] (the bore d must be a finite number > 0)",
+        "row 5 (624-2Z): '6.300' is not a number for n_B [1/min] (a published speed must be a finite number > 0)"]
+    assert (rows["reason"].drop(index=[2, 3]) == "").all()
+    np.testing.assert_array_equal(rows["n_thr_tables"].drop(index=[2, 3]), clean["n_thr_tables"].drop(index=[2, 3]))
+
+
 def test_rows_of_a_frame_are_numbered_from_1():
     table = pd.DataFrame({"designation": ["6205", "6206"], "d [mm]": [25, 30], "D [mm]": [52, 62],
                           "B [mm]": [15, 16], "C0 [N]": [7800, 11200], "n_B [1/min]": [14400, float("inf")]})
