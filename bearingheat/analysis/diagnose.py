@@ -48,8 +48,8 @@ from bearingheat.calc.messages import Labels
 from bearingheat.calc.fill import fill_from_catalogue
 from bearingheat.calc.models import DEFAULT_MODEL, compute_supports
 from bearingheat.calc.supports import SupportArrays, per_distinct
-from bearingheat.calc.conversion import (blank_cell, lookalike_column, not_a_number, to_catalogue_units,
-                                         with_decimal_point)
+from bearingheat.calc.conversion import (blank_cell, lookalike_column, not_a_number, numbers_of, row_number,
+                                         row_numbers, to_catalogue_units)
 from bearingheat.errors import DiagnoseError, InputError, UnitError
 from bearingheat.kernels import friction
 from bearingheat.units import convert_column, parse_unit
@@ -124,27 +124,6 @@ class MeasuredData:
     def row(self, position: int) -> str:
         """How a message names the row at ``position``: 'row 5' for the file's line 5 (as calc cites it)."""
         return f"row {row_number(self.rows, position)}"
-
-
-def row_numbers(table: pd.DataFrame) -> np.ndarray | None:
-    """The row numbers messages cite for a table: the file's line of each row of a CSV
-    (``attrs['lines']``, read by :func:`bearingheat.io.tables.read_table`, as calc cites them); None where the
-    source has no lines (a DataFrame, Parquet): then a row is its position + 1."""
-    lines = table.attrs.get("lines")
-    return None if lines is None or len(lines) != len(table) else np.fromiter(lines, dtype=np.int64, count=len(table))
-
-
-def row_number(rows: np.ndarray | None, position: int) -> int:
-    """The number of the row at ``position`` (:func:`row_numbers`)."""
-    return int(rows[position]) if rows is not None else position + 1
-
-
-def numbers_of(values: pd.Series, decimal: str = ".") -> np.ndarray:
-    """The cells of a measured column as numbers, text read with the file's decimal mark (``attrs['decimal']``,
-    '.' or ','); cells that are no numbers are NaN (each distinct text looked at once)."""
-    if decimal == "," and not pd.api.types.is_numeric_dtype(values.dtype):
-        values = pd.Series(per_distinct(values, with_decimal_point), index=values.index, dtype=object)
-    return pd.to_numeric(values, errors="coerce").to_numpy(dtype=float)
 
 
 def _measured_column(table: pd.DataFrame, name: str, row_errors: list[list[str]], rows: np.ndarray | None,
@@ -613,7 +592,7 @@ def diagnose_measurements(measured: MeasuredData, *, k: int = 5, seed: int = 0,
     """Run the catalogue model on a measured table read by :func:`read_measurements` and :func:`diagnose` it."""
     data, rows, excluded = model_data(measured)
     user_groups = measured.group[rows] if measured.group is not None else None
-    numbers = np.array([row_number(measured.rows, int(i)) for i in rows], dtype=np.int64)
+    numbers = measured.rows[rows] if measured.rows is not None else rows + 1  # (row_number of each, at once)
     return diagnose(data, k=k, seed=seed, groups=user_groups, candidates=candidates, excluded=excluded,
                     rows=numbers)
 

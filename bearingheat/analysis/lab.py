@@ -24,10 +24,9 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
-from bearingheat.analysis.diagnose import numbers_of, row_number, row_numbers
 from bearingheat.analysis.passthrough import unread_columns
 from bearingheat.calc.contract import parse_header
-from bearingheat.calc.conversion import not_a_number
+from bearingheat.calc.conversion import not_a_number, numbers_of, row_number, row_numbers
 from bearingheat.calc.table import calc
 from bearingheat.catalogue.lab import (
     LOAD_COEFFICIENT_RADIAL,

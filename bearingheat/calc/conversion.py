@@ -27,7 +27,8 @@ from bearingheat.errors import InputError, UnitError
 from bearingheat.units import convert_column
 
 __all__ = ["to_catalogue_units", "ConvertedTable", "refuse_result_columns", "not_a_number", "with_decimal_point",
-           "blank_cell", "OTHER_UNIT_FORM", "lookalike_column", "Lookalike", "results_spelled_otherwise"]
+           "blank_cell", "numbers_of", "row_numbers", "row_number", "lookalike_column", "Lookalike",
+           "results_spelled_otherwise"]
 
 
 @dataclass
@@ -135,6 +136,27 @@ def with_decimal_point(value):
     return None if "." in value else value.replace(",", ".")
 
 
+def row_numbers(table: pd.DataFrame) -> np.ndarray | None:
+    """The row numbers messages cite for a table: the file's line of each row of a CSV
+    (``attrs['lines']``, read by :func:`bearingheat.io.tables.read_table`, as calc cites them); None where the
+    source has no lines (a DataFrame, Parquet): then a row is its position + 1."""
+    lines = table.attrs.get("lines")
+    return None if lines is None or len(lines) != len(table) else np.fromiter(lines, dtype=np.int64, count=len(table))
+
+
+def row_number(rows: np.ndarray | None, position: int) -> int:
+    """The number of the row at ``position`` (:func:`row_numbers`)."""
+    return int(rows[position]) if rows is not None else position + 1
+
+
+def numbers_of(values: pd.Series, decimal: str = ".") -> np.ndarray:
+    """The cells of a column as numbers, text read with the file's decimal mark (``attrs['decimal']``,
+    '.' or ','); cells that are no numbers are NaN (each distinct text looked at once)."""
+    if decimal == "," and not pd.api.types.is_numeric_dtype(values.dtype):
+        values = pd.Series(per_distinct(values, with_decimal_point), index=values.index, dtype=object)
+    return pd.to_numeric(values, errors="coerce").to_numpy(dtype=float)
+
+
 def _as_typed(value):
     """A cell as a message shows it: a date or time (a date typed into a number cell) as the sheet's text."""
     if isinstance(value, datetime.datetime) and value.time() == datetime.time(0):
@@ -218,7 +240,7 @@ def to_catalogue_units(table: pd.DataFrame, *, units: dict[str, str] | None = No
 
 
 #: a header that writes its unit another way than 'name [unit]': 'Fr (kN)', 'Fr, kN', 'Fr/kN', 'Fr in kN'
-OTHER_UNIT_FORM = re.compile(r"^\s*(\w+)\s*(?:\((.+)\)|,\s*(.+)|/\s*(.+)|\s+in\s+(.+))\s*$")
+_OTHER_UNIT_FORM = re.compile(r"^\s*(\w+)\s*(?:\((.+)\)|,\s*(.+)|/\s*(.+)|\s+in\s+(.+))\s*$")
 
 
 class Lookalike(NamedTuple):
@@ -239,7 +261,7 @@ class Lookalike(NamedTuple):
 def lookalike_column(headers, known: Mapping[str, str], *, never_missed: Collection[str] = (),
                      text_in_other_form: bool = False) -> Lookalike | None:
     """The first header that is not read but looks like a column of ``known`` (name -> unit, '' for a text column)
-    the table lacks, or None: the unit written another way ('Fr (kN)', :data:`OTHER_UNIT_FORM`) or the name in
+    the table lacks, or None: the unit written another way ('Fr (kN)', :data:`_OTHER_UNIT_FORM`) or the name in
     other letter case ('FR', 'fr [kN]', 'Arrangement'; names of two or more letters).
 
     A column of ``never_missed`` (a label, only passed through) is not looked for. A text column written in the
@@ -266,7 +288,7 @@ def lookalike_column(headers, known: Mapping[str, str], *, never_missed: Collect
     for header, (name, unit) in names.items():
         if name in known:
             continue
-        other_form = OTHER_UNIT_FORM.match(name)
+        other_form = _OTHER_UNIT_FORM.match(name)
         base, typed = (other_form.group(1), next(g for g in other_form.groups()[1:] if g)) if other_form \
             else (name, unit)
         meant = base if base in exact else by_case.get(base.casefold()) if len(base) > 1 else None
@@ -297,8 +319,9 @@ def _calc_results(table: pd.DataFrame) -> bool:
     columns): a status column holding only what calc writes."""
     if "status" not in table.columns:
         return False
-    given = table["status"].dropna()
-    return bool(given.map(lambda value: isinstance(value, str) and value.strip() in _STATUSES).all())
+    given = table["status"].dropna()  # (each distinct text looked at once)
+    return bool(per_distinct(given, lambda value: isinstance(value, str) and value.strip() in _STATUSES)
+                .astype(bool).all())
 
 
 def refuse_result_columns(table: pd.DataFrame) -> None:
