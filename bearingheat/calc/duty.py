@@ -31,7 +31,7 @@ from bearingheat.calc.supports import number_column, text_column
 from bearingheat.calc.conversion import blank_cell, to_catalogue_units
 from bearingheat.errors import DutyCycleError
 
-__all__ = ["SHARE_TOLERANCE", "DUTY_UNITS", "has_duty_cycle", "duty_cycle"]
+__all__ = ["SHARE_TOLERANCE", "DUTY_UNITS", "support_headers", "has_duty_cycle", "duty_cycle"]
 
 #: the shares of a support must sum to 1 within this (0.1 %)
 SHARE_TOLERANCE = 1e-3
@@ -39,6 +39,16 @@ SHARE_TOLERANCE = 1e-3
 DUTY_UNITS = {"support": "", "designation": "", "cases": "1", "MR_mean": "N*mm", "NR_mean": "W",
               "energy_per_hour": "W*h", "energy": "W*h", "T_op_max": "degC", "T_op_max_case": "",
               "n_per_margin_min": "1", "n_per_margin_case": "", "status": "", "message": ""}
+
+
+def support_headers(headers) -> list:
+    """The headers among ``headers`` that name the ``support`` column of a duty cycle (with any unit text), the
+    only columns :func:`has_duty_cycle` looks at; a table without them has no duty cycle.
+
+    >>> support_headers(["id", "support", "n [rpm]"])
+    ['support']
+    """
+    return [h for h in headers if str(h).split("[")[0].strip() == "support"]
 
 
 def has_duty_cycle(table: pd.DataFrame) -> bool:
@@ -51,7 +61,7 @@ def has_duty_cycle(table: pd.DataFrame) -> bool:
     >>> has_duty_cycle(pd.DataFrame({"support": [None, " "], "n [rpm]": [1000, 2000]}))
     False
     """
-    headers = [h for h in table.columns if str(h).split("[")[0].strip() == "support"]
+    headers = support_headers(table.columns)
     if not headers or len(table) == 0:
         return bool(headers)
     return any(not all(blank_cell(value) for value in pd.unique(table[h].to_numpy(dtype=object))) for h in headers)

@@ -7,7 +7,7 @@ import sys
 from pathlib import Path
 
 from bearingheat.calc.contract import help_text
-from bearingheat.calc.duty import duty_cycle, has_duty_cycle
+from bearingheat.calc.duty import duty_cycle, has_duty_cycle, support_headers
 from bearingheat.calc.models import DEFAULT_MODEL, MODELS
 from bearingheat.calc.thermal import (DEFAULT_SPEED_FACTOR_METHOD, DEFAULT_VISCOSITY_AT, SPEED_FACTOR_METHODS,
                                      VISCOSITY_AT)
@@ -243,9 +243,10 @@ def run_table(args: argparse.Namespace, source: Path, target: Path | None) -> in
     try:
         results = calc_file(source, sep=args.sep, decimal=args.decimal, progress=Progress(enabled=not args.quiet),
                             **_calc_options(args))
-        has_duty = has_duty_cycle(pd.DataFrame(columns=results.column_names))  # (its headers: a support column)
+        supports = support_headers(results.column_names)  # (only its support column tells a duty cycle)
+        has_duty = bool(supports) and has_duty_cycle(results.select(supports).to_pandas())
         result = results.to_pandas() if args.json or has_duty else None
-        duty = duty_cycle(result) if result is not None and has_duty_cycle(result) else None
+        duty = duty_cycle(result) if result is not None and has_duty else None
         if duty is not None and target is not None:
             _write_duty_beside(duty, target, source, args)
         if target is not None:

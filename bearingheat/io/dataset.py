@@ -34,7 +34,7 @@ import pyarrow.parquet as parquet
 
 from bearingheat.calc.contract import parse_header
 from bearingheat.calc.distributed import result_layout
-from bearingheat.calc.duty import duty_cycle, has_duty_cycle
+from bearingheat.calc.duty import duty_cycle, has_duty_cycle, support_headers
 from bearingheat.errors import BearingheatError, InputError, OutputFileError
 from bearingheat.io.arrow import parquet_writer, write_arrow
 from bearingheat.io.files import run_folder, safe_output, stale_run_folders
@@ -283,7 +283,7 @@ def plan_dataset(files: list[str], target, *, overwrite: bool = False, **options
     schema = _results_schema(columns.empty_table(), options, layout)
     pieces = [piece for path in files for piece in fleet_pieces(path)]
     duty = None
-    if has_duty_cycle(pd.DataFrame(columns=columns.names)):
+    if support_headers(columns.names):  # (a support column blank in every part: no summary, see _duty_summary)
         duty = safe_output(target.with_name(f"{target.name}.duty.parquet"), force=overwrite, inputs=files)
     return DatasetPlan(files, target, overwrite, columns, options, layout, schema, pieces, duty)
 
