@@ -43,7 +43,7 @@ from bearingheat.kernels.thermal import friction_heat, friction_power
 __all__ = ["FrictionModel", "FrictionPower", "MODELS", "DEFAULT_MODEL", "get_model", "compute_supports",
            "RESULT_UNITS", "M2_REPORT_UNITS", "PLAIN_REPORT_UNITS", "MODEL_REPORT_UNITS", "EXTRA_INPUTS",
            "model_inputs", "support_arrays_of", "row_model_names", "SKF", "failed_rows", "plain_bushing_rows",
-           "results_at_viscosity"]
+           "results_at_viscosity", "set_rows"]
 
 Evaluation = Callable[[SupportArrays, Labels, "F2Chart | None"], "tuple[dict[str, np.ndarray], list[Problem]]"]
 
@@ -212,7 +212,7 @@ def plain_bushing_rows(results: pd.DataFrame) -> np.ndarray:
     return (results["bearing_type"] == contract.PLAIN_TYPES[0]).to_numpy(dtype=bool)
 
 
-def _set_rows(results: pd.DataFrame, name: str, rows: np.ndarray, values) -> None:
+def set_rows(results: pd.DataFrame, name: str, rows: np.ndarray, values) -> None:
     """Write ``values`` into the rows ``rows`` of the number column ``name`` of ``results`` (a new column of NaN
     where it is absent)."""
     column = (results[name].to_numpy(dtype=float).copy() if name in results.columns
@@ -386,20 +386,20 @@ def results_at_viscosity(frame: pd.DataFrame, results: pd.DataFrame, changed: np
         with np.errstate(all="ignore"):
             part = updates[code](supports, {name: results[name].to_numpy(dtype=float)[rows] for name in RESULTS})
         for name, values in part.items():
-            _set_rows(results, name, rows, values)
+            set_rows(results, name, rows, values)
     rows = np.flatnonzero(again)
     if len(rows):
         part = compute_supports(frame.iloc[rows].reset_index(drop=True), f2_chart=f2_chart,
                                 labels=(labels or Labels()).subset(rows), model=model)
         for name in part.columns.drop(["model", "bearing_type", "series"]):
             if part[name].dtype.kind in "fiub":
-                _set_rows(results, name, rows, part[name].to_numpy(dtype=float))
+                set_rows(results, name, rows, part[name].to_numpy(dtype=float))
             else:  # status, message: categoricals
                 results[name] = pd.Series(with_texts(results[name], rows.tolist(), part[name].tolist()),
                                           index=results.index, copy=False)
         for name in results.columns.difference(part.columns):  # a result none of these rows has any more
             if results[name].dtype == np.float64:
-                _set_rows(results, name, rows, np.nan)
+                set_rows(results, name, rows, np.nan)
     return results
 
 

@@ -42,7 +42,8 @@ import numpy as np
 import pandas as pd
 
 from bearingheat.calc.contract import columns, register_choices
-from bearingheat.calc.models import DEFAULT_MODEL, FrictionPower, failed_rows, plain_bushing_rows, results_at_viscosity
+from bearingheat.calc.models import (DEFAULT_MODEL, FrictionPower, failed_rows, plain_bushing_rows, results_at_viscosity,
+                                    set_rows)
 from bearingheat.calc.operating_temperature import (BELOW_AMBIENT_SEARCH, OPERATING_TEMPERATURE_LIMIT,
                                                     lowest_operating_temperature, operating_point)
 from bearingheat.calc.permissible_speed import (DEFAULT_SPEED_FACTOR_METHOD, SPEED_FACTOR_METHODS, SpeedFactorMethod,
@@ -272,22 +273,18 @@ def _stand_in_f2(frame, results, pending, labels, model, f2_chart):
 
 def _rows_put_back(trial: pd.DataFrame, results: pd.DataFrame, rows: np.ndarray) -> pd.DataFrame:
     """``trial`` (:func:`~bearingheat.calc.models.results_at_viscosity` of a copy of ``results``) with the rows
-    ``rows`` as they are in ``results``: its numbers (NaN in a column only the trial has: a row with one of those
-    is on the chart's curves, so it is never put back, and the column stays), status and message; the model,
-    bearing type and series are the trial's own (it leaves them as they were)."""
+    ``rows`` as they are in ``results``, written into it: its numbers (NaN in a column only the trial has: a row
+    with one of those is on the chart's curves, so it is never put back, and the column stays), status and
+    message; the model, bearing type and series are the trial's own (it leaves them as they were)."""
     positions = np.flatnonzero(rows)
-    columns = {}
     for name in trial.columns:
         if name in ("status", "message"):
-            columns[name] = pd.Series(with_texts(trial[name], positions.tolist(), results[name].iloc[positions]),
-                                      index=trial.index, copy=False)
+            trial[name] = pd.Series(with_texts(trial[name], positions.tolist(), results[name].iloc[positions]),
+                                    index=trial.index, copy=False)
         elif trial[name].dtype == np.float64:
-            before = results[name].to_numpy(dtype=float) if name in results.columns else np.nan
-            columns[name] = pd.Series(np.where(rows, before, trial[name].to_numpy(dtype=float)), index=trial.index,
-                                      copy=False)
-        else:
-            columns[name] = trial[name]
-    return pd.DataFrame(columns, index=trial.index, copy=False)
+            set_rows(trial, name, positions,
+                     results[name].to_numpy(dtype=float)[positions] if name in results.columns else np.nan)
+    return trial
 
 
 def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str = "exact",
