@@ -175,13 +175,16 @@ def fill_from_coefficients(table: pd.DataFrame, coefficients: pd.DataFrame) -> p
     designation and lubrication (the audit's 'bearing' and 'lubrication'); a value in the table wins."""
     known = coefficient_uncertainties(coefficients)
     named = table.rename(columns={h: _name(h) for h in table.columns})
-    keys = list(zip(text_column(named, "designation"), text_column(named, "lubrication")))
+    # each distinct (designation, lubrication) looked up once (missing texts come back as NaN)
+    codes, pairs = pd.factorize(pd.MultiIndex.from_arrays([text_column(named, "designation"),
+                                                           text_column(named, "lubrication")]))
+    texts = [(d if isinstance(d, str) else "", lub if isinstance(lub, str) else None) for d, lub in pairs]
     # a row takes the fit of its bearing in its lubrication (an older file's fit of the bearing in any)
-    found = [known.get((d or "", lub), known.get((d or "", None), {})) for d, lub in keys]
+    found = [known.get((d, lub), known.get((d, None), {})) for d, lub in texts]
     out = table.copy()
     for name in UNCERTAINTY_INPUTS:
         header = next((h for h in table.columns if _name(h) == name), name)
         given = number_column(out.rename(columns={header: name}), name)
-        fitted = np.array([fit.get(name, np.nan) for fit in found], dtype=float)
+        fitted = np.array([fit.get(name, np.nan) for fit in found], dtype=float)[codes]
         out[header] = np.where(np.isnan(given), fitted, given)
     return out
