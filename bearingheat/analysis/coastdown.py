@@ -114,7 +114,6 @@ class ModelFit:
     fitted: np.ndarray  # model n at the samples [1/min]
     cut_at_bound: np.ndarray  # True where the interval's low end is the parameter's bound (M_c >= 0), not t·SE below
 
-
     def value(self, name: str) -> float:
         return float(self.values[self.parameters.index(name)]) if name in self.parameters else 0.0
 

@@ -11,7 +11,6 @@ from bearingheat.errors import BearingheatError, UnitError
 from bearingheat.io.coastdown import read_rundown
 from bearingheat.io.files import check_outputs
 from bearingheat.io.reports.coastdown import coastdown_summary, render_report, write_coastdown_outputs
-from bearingheat.kernels.coastdown import TMM_7M
 from bearingheat.units import parse_quantity, ureg
 
 
@@ -121,7 +120,7 @@ def run(args: argparse.Namespace) -> int:
             if missing:
                 raise UsageError(f"--spindle needs {' and '.join(missing)}")
             result.spindle = analyse_spindle_coastdown(
-                t, n, I=rig.get("I", TMM_7M["I"] * ureg()("kg*m^2")), nu=_quantity(args.nu, "--nu"), dM=_quantity(args.dM, "--dM"),
+                t, n, I=result.I * ureg()("kg*m^2"), nu=_quantity(args.nu, "--nu"), dM=_quantity(args.dM, "--dM"),
                 bearings=args.bearings, P=None if args.P is None else _quantity(args.P, "--P"),
                 f0_catalogue=args.f0)
     except BearingheatError as exc:

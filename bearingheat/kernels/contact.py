@@ -306,10 +306,15 @@ def stiffness_characteristic(z, d_w, d_m, alpha0, r_i, r_o, *, deflection_coeffi
 
 
 # --------------------------------------------------------------------------- working contact angle
+def _cosine_drop(alpha0_rad, x_rad):
+    """cos α0 − cos(α0 + x) = 2·sin(α0 + x/2)·sin(x/2), x = α − α0 [rad]: from the increment itself, without the
+    cancellation of the difference, and exact for an x below the spacing of floats at α0."""
+    return 2.0 * np.sin(alpha0_rad + x_rad / 2.0) * np.sin(x_rad / 2.0)
+
+
 def _deformation_term(alpha0_rad, x_rad):
-    """cos α0 / cos(α0 + x) − 1 = 2·sin(α0 + x/2)·sin(x/2) / cos(α0 + x), x = α − α0 [rad]: from the increment itself,
-    without the cancellation of cos α0 − cos α, and exact for an x below the spacing of floats at α0."""
-    return 2.0 * np.sin(alpha0_rad + x_rad / 2.0) * np.sin(x_rad / 2.0) / np.cos(alpha0_rad + x_rad)
+    """cos α0 / cos(α0 + x) − 1 [1] (:func:`_cosine_drop` over cos(α0 + x)), x = α − α0 [rad]."""
+    return _cosine_drop(alpha0_rad, x_rad) / np.cos(alpha0_rad + x_rad)
 
 
 def _angle_function(alpha0_rad, x_rad):
@@ -372,6 +377,7 @@ def axial_displacement(xi_a, r_i, r_o, d_w):
     xi_a, r_i, r_o, d_w = _broadcast(xi_a, r_i, r_o, d_w)
     return xi_a * (r_i + r_o - d_w)
 
+
 def _solve_increment(load_ratio_23: float, alpha0_rad: float) -> float:
     """x = α − α0 [rad] of the working angle (so that α = α0 + x is never below α0 in floating point)."""
     if math.isnan(load_ratio_23) or math.isnan(alpha0_rad):
@@ -412,7 +418,6 @@ def _check_series_alpha0(alpha0):
     _refuse(alpha0 == 0,
             "alpha0 = {a:g} deg: the series method of Zaitsev & Voronkin needs alpha0 > 0 "
             "(no expansion in powers of x at alpha0 = 0); use working_contact_angle", a=alpha0)
-
 
 
 @_kernel
@@ -491,8 +496,8 @@ def newton_increment(Fa, C_star, alpha0, x):
     with np.errstate(divide="ignore", invalid="ignore"):
         # (Fa/Fa_k)^(2/3) as (Fa/C*)^(2/3) over the angle function: Fa_k itself underflows at a tiny load
         load_ratio_23 = (Fa / C_star) ** (2.0 / 3.0) / _angle_function(a0r, x)
-        # cos α0 − cos α_k = 2·sin(α0 + x/2)·sin(x/2), without the cancellation of a small x (0 below x ≈ 1e-16)
-        slope = np.tan(ak) + 2.0 / 3.0 / np.tan(ak) + np.sin(ak) / (2.0 * np.sin(a0r + x / 2.0) * np.sin(x / 2.0))
+        # cos α0 − cos α_k without the cancellation of a small x (0 below x ≈ 1e-16)
+        slope = np.tan(ak) + 2.0 / 3.0 / np.tan(ak) + np.sin(ak) / _cosine_drop(a0r, x)
         step = (load_ratio_23 - 1.0) / slope
     return np.where(Fa == 0, 0.0, step)
 

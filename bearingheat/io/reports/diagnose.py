@@ -184,8 +184,8 @@ def report_markdown(diagnosis: Diagnosis, summary: dict[str, Any], key: str) -> 
         f"{summary['n_excluded']} row(s) excluded.", "",
         f"**Effect found: `{summary['effect']}`**: {summary['description']}.", "",
         f"Parameters: {format_value(summary['parameters']) or '(none)'}", "",
-        *([f"On a bound of its fit: {', '.join(bound_marks(summary['at_bound']))}: {_ON_A_BOUND}.", ""]
-          if bound_marks(summary["at_bound"]) else []),
+        *([f"On a bound of its fit: {', '.join(marks)}: {_ON_A_BOUND}.", ""]
+          if (marks := bound_marks(summary["at_bound"])) else []),
         *_domain_lines(summary),
         "## Error before and after", "",
         "| | RMSE [N·mm] | relative RMSE [%] | MAPE [%] | bias, measured − model [N·mm] |", "|---|---|---|---|---|",
@@ -213,8 +213,8 @@ def report_markdown(diagnosis: Diagnosis, summary: dict[str, Any], key: str) -> 
             lines.append(f"| {name} | not applicable: {c['reason']} | | | | | | | | no |")
             continue
         params = format_value(c["parameters"]) if len(json.dumps(c["parameters"])) < 160 else "(per bearing, see summary.json)"
-        if bound_marks(c["at_bound"]):
-            params += f"; on a bound: {', '.join(bound_marks(c['at_bound']))}"
+        if marks := bound_marks(c["at_bound"]):
+            params += f"; on a bound: {', '.join(marks)}"
         gain = f"{c['cv_improvement'] * 100:.1f} %" if c["cv_improvement"] is not None else "–"
         lines.append(f"| {name} | {params} | {format_value(c['rmse'])} | {format_value(c['cv_rmse'])} "
                      f"| {format_value(_percent(c['rel_rmse']), 3)} | {format_value(_percent(c['cv_rel_rmse']), 3)} "
@@ -254,9 +254,8 @@ def write_outputs(diagnosis: Diagnosis, out_dir: str | os.PathLike[str], *, forc
 def summary_lines(summary: dict[str, Any], out_dir: str | os.PathLike[str]) -> list[str]:
     """The outcome in a few lines for the console: the effect, the error before and after, where the report is."""
     lines = [f"effect: {summary['effect']}  parameters: {format_value(summary['parameters']) or '(none)'}"]
-    if bound_marks(summary["at_bound"]):
-        lines.append(f"on a bound of its fit (the value is the bound, not an estimate): "
-                     f"{', '.join(bound_marks(summary['at_bound']))}")
+    if marks := bound_marks(summary["at_bound"]):
+        lines.append(f"on a bound of its fit (the value is the bound, not an estimate): {', '.join(marks)}")
     lines.append(f"RMSE {summary['rmse_before']:.4g} -> {summary['rmse_after']:.4g} N*mm "
                  f"(held-out {summary['cv_rmse_before']:.4g} -> {summary['cv_rmse_after']:.4g}); "
                  f"MAPE {summary['mape_before']:.3g} -> {summary['mape_after']:.3g} %")
