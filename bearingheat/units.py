@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import functools
 import math
+import pickle
 import re
 import threading
 from typing import Any, TypeAlias, Union, overload
@@ -20,6 +21,7 @@ from typing import Any, TypeAlias, Union, overload
 import numpy as np
 import pandas as pd
 import pint
+import platformdirs  # where pint keeps its ':auto:' disk cache (pint's own choice)
 from bearingheat.errors import UnitError
 
 __all__ = [
@@ -78,15 +80,43 @@ def use_definition_cache() -> bool:
     user's cache folder) it reads them back in about 0.05 s. Changes nothing
     where the application registry was set by someone else or is already in
     use. Returns whether the cached registry is now the application registry.
+
+    pint writes a cache file in place, so a run killed while it wrote leaves
+    a file cut short, on which pint fails at every later start. Such files
+    (those that no longer unpickle) are removed and the cache is built once
+    more; if that fails too, the default registry stays (a slower start).
     """
     if not isinstance(pint.get_application_registry().get(), pint.registry.LazyRegistry):
         return False  # set by the caller, or already loaded: Quantities of it may exist
-    try:
-        registry: pint.UnitRegistry = pint.UnitRegistry(cache_folder=":auto:")
-    except Exception:  # a damaged or unreadable cache: only the start is slower, so the default registry stays
-        return False
-    pint.set_application_registry(registry)
-    return True
+    for attempt in range(2):
+        try:
+            registry: pint.UnitRegistry = pint.UnitRegistry(cache_folder=":auto:")
+        except Exception:  # a damaged or unreadable cache: only the start is slower, so the default registry stays
+            if attempt or not _remove_unreadable_cache_files():
+                return False
+        else:
+            pint.set_application_registry(registry)
+            return True
+    return False
+
+
+def _remove_unreadable_cache_files() -> bool:
+    """Remove the files of pint's disk cache (its ``:auto:`` folder, ``<user cache>/pint``) that do not unpickle;
+    whether any was removed. Readable files, those of other definitions among them, stay."""
+    removed = False
+    for path in platformdirs.user_cache_path(appname="pint", appauthor=False).glob("*.pickle"):
+        try:
+            with path.open("rb") as file:
+                pickle.load(file)
+        except OSError:
+            continue  # unreadable to this user: not a file cut short, and maybe not this user's to remove
+        except Exception:  # cut short or garbled: pint would fail on it at every start
+            try:
+                path.unlink()
+                removed = True
+            except OSError:
+                continue
+    return removed
 
 
 # Spellings found in engineers' sheets that pint does not read, or reads as

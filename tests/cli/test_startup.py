@@ -70,13 +70,26 @@ def test_the_program_keeps_pints_parsed_definitions_in_the_users_cache_and_gives
     assert {p.suffix for p in (tmp_path / "pint").iterdir()} == {".json", ".pickle"}  # pint's own cache files
 
 
-def test_a_damaged_definition_cache_only_slows_the_start(tmp_path):
+def test_a_damaged_definition_cache_is_built_again_and_other_cache_files_stay(tmp_path):
+    import pickle
     assert _program(["lookup", "6205"], tmp_path).returncode == 0
-    for pickled in (tmp_path / "pint").glob("*.pickle"):
+    folder = tmp_path / "pint"
+    written = sorted(folder.glob("*.pickle"))
+    for pickled in written:
         pickled.write_bytes(pickled.read_bytes()[:100])  # cut short, as by a run killed while it wrote
+    other = folder / "another_registry.pickle"
+    other.write_bytes(pickle.dumps({"kept": 1}))  # a readable cache file of other definitions
     damaged = _program(["lookup", "6205"], tmp_path)
     assert (damaged.returncode, damaged.stderr) == (0, "")
     assert "6205" in damaged.stdout and "C0" in damaged.stdout
+    assert sorted(folder.glob("*.pickle")) == sorted([*written, other])
+    for pickled in written:  # whole again: the next start reads them
+        with pickled.open("rb") as file:
+            pickle.load(file)
+    assert pickle.loads(other.read_bytes()) == {"kept": 1}
+    stamps = {path: path.stat().st_mtime_ns for path in written}
+    assert _program(["lookup", "6205"], tmp_path).stdout == damaged.stdout
+    assert {path: path.stat().st_mtime_ns for path in written} == stamps  # read, not written again
 
 
 def test_the_definition_cache_leaves_a_registry_in_use_alone():
