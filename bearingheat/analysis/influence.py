@@ -20,7 +20,7 @@ from typing import Any
 import numpy as np
 from scipy import stats
 
-from bearingheat.analysis.effects import Candidate, ModelData, Params, bound_side
+from bearingheat.analysis.effects import Candidate, ModelData, Params, bound_sides
 
 __all__ = ["OUTLIER_LEVEL", "SHOWN_READINGS", "INFLUENCE_RULE", "Influence", "leverage", "influence"]
 
@@ -87,9 +87,8 @@ def _jacobian_columns(candidate: Candidate, data: ModelData, params: Params, pre
         value = params[name]
         per_bearing = np.ndim(value) > 0
         current = np.asarray(value, dtype=float)
-        lows, highs = np.broadcast_to(low, current.shape), np.broadcast_to(high, current.shape)
-        free = np.array([bound_side(v, lo, hi) is None and np.isfinite(lo)
-                         for v, lo, hi in zip(current.ravel(), np.ravel(lows), np.ravel(highs))]).reshape(current.shape)
+        # inside its bounds (no side: None), and fitted (a NaN bound: a bearing whose parameter is not fitted)
+        free = ~bound_sides(current, low, high).astype(bool) & np.isfinite(np.broadcast_to(low, current.shape))
         if not free.any():
             continue
         step = np.where(free, _STEP * np.maximum(np.abs(current), 1e-12), 0.0)
