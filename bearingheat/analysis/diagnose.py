@@ -200,9 +200,7 @@ def read_measurements(table: pd.DataFrame) -> MeasuredData:
     as calc does).
     """
     if not all(readable_header(h) for h in table.columns):  # ('remark [see note]]': a note, as calc passes it)
-        attrs = dict(table.attrs)
-        table = table[[h for h in table.columns if readable_header(h)]]
-        table.attrs.update(attrs)
+        table = table[[h for h in table.columns if readable_header(h)]]  # (pandas keeps attrs on the selection)
     names = [parse_header(h)[0] for h in table.columns]
     _refuse_lookalikes(table.columns)
     if "M" not in names:
