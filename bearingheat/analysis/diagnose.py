@@ -108,6 +108,18 @@ CHOICE_METRIC = (
 # Input
 # ---------------------------------------------------------------------------------------------
 
+@dataclass(frozen=True)
+class _RowNames:
+    """How messages name the rows: ``names[position]`` is 'row 5' for the row of the file's line 5 (``rows``,
+    :func:`~bearingheat.calc.conversion.row_numbers`, as calc cites it; None: the position + 1). Each name is made
+    when asked: the influence check names at most six of its readings."""
+
+    rows: np.ndarray | None
+
+    def __getitem__(self, position: int) -> str:
+        return f"row {row_number(self.rows, position)}"
+
+
 @dataclass
 class MeasuredData:
     """A measured table split into the calc frame (catalogue units) and the measured columns."""
@@ -123,10 +135,10 @@ class MeasuredData:
 
     def row(self, position: int) -> str:
         """How a message names the row at ``position``: 'row 5' for the file's line 5 (as calc cites it)."""
-        return f"row {row_number(self.rows, position)}"
+        return _RowNames(self.rows)[position]
 
 
-def _measured_column(table: pd.DataFrame, name: str, row_errors: list[list[str]], rows: np.ndarray | None,
+def _measured_column(table: pd.DataFrame, name: str, row_errors: list[list[str]], row: _RowNames,
                      decimal: str) -> np.ndarray:
     target = MEASURED_UNITS[name]
     headers = [h for h in table.columns if parse_header(h)[0] == name]
@@ -146,7 +158,7 @@ def _measured_column(table: pd.DataFrame, name: str, row_errors: list[list[str]]
     numbers = numbers_of(raw, decimal)
     for i, (num, value) in enumerate(zip(numbers, raw.to_numpy(dtype=object))):
         if np.isnan(num) and not blank_cell(value):
-            row_errors[i].append(f"row {row_number(rows, i)}: {not_a_number(value, header, decimal)}")
+            row_errors[i].append(f"{row[i]}: {not_a_number(value, header, decimal)}")
     try:  # the unit reads (above): a refusal here is its dimension
         converted, _ = convert_column(numbers, unit_text, target, name=name, header=header)
     except UnitError as exc:
@@ -188,9 +200,7 @@ def read_measurements(table: pd.DataFrame) -> MeasuredData:
     as calc does).
     """
     if not all(readable_header(h) for h in table.columns):  # ('remark [see note]]': a note, as calc passes it)
-        attrs = dict(table.attrs)
-        table = table[[h for h in table.columns if readable_header(h)]]
-        table.attrs.update(attrs)
+        table = table[[h for h in table.columns if readable_header(h)]]  # (pandas keeps attrs on the selection)
     names = [parse_header(h)[0] for h in table.columns]
     _refuse_lookalikes(table.columns)
     if "M" not in names:
@@ -199,27 +209,24 @@ def read_measurements(table: pd.DataFrame) -> MeasuredData:
     decimal = str(table.attrs.get("decimal", "."))
     table = table.reset_index(drop=True)
     row_errors: list[list[str]] = [[] for _ in range(len(table))]
-
-    def row(i: int) -> str:
-        return f"row {row_number(rows, i)}"
-
-    M = _measured_column(table, "M", row_errors, rows, decimal)
-    T_oil = _measured_column(table, "T_oil", row_errors, rows, decimal)
-    t = _measured_column(table, "t", row_errors, rows, decimal)
+    row = _RowNames(rows)
+    M = _measured_column(table, "M", row_errors, row, decimal)
+    T_oil = _measured_column(table, "T_oil", row_errors, row, decimal)
+    t = _measured_column(table, "t", row_errors, row, decimal)
     for i, value in enumerate(M):
         if np.isnan(value) and not row_errors[i]:
-            row_errors[i].append(f"{row(i)}: M is blank; every row needs a measured torque")
+            row_errors[i].append(f"{row[i]}: M is blank; every row needs a measured torque")
         elif value <= 0:
-            row_errors[i].append(f"{row(i)}: M = {value:g} N*mm must be > 0")
+            row_errors[i].append(f"{row[i]}: M = {value:g} N*mm must be > 0")
         elif np.isinf(value):  # (one such row would make every error measure infinite)
-            row_errors[i].append(f"{row(i)}: M = {value:g} N*mm is not a finite number")
+            row_errors[i].append(f"{row[i]}: M = {value:g} N*mm is not a finite number")
     low, high = T_OIL_RANGE
     for i, value in enumerate(T_oil):
         if not np.isnan(value) and not low <= value <= high:
-            row_errors[i].append(f"{row(i)}: T_oil = {value:g} degC is outside {low:g} to {high:g} degC")
+            row_errors[i].append(f"{row[i]}: T_oil = {value:g} degC is outside {low:g} to {high:g} degC")
     for i, value in enumerate(t):
         if value < 0 or np.isinf(value):
-            row_errors[i].append(f"{row(i)}: t = {value:g} h must be >= 0 and finite")
+            row_errors[i].append(f"{row[i]}: t = {value:g} h must be >= 0 and finite")
     measured_headers = [h for h, n in zip(table.columns, names) if n in MEASURED_UNITS or n == "group"]
     try:
         converted = to_catalogue_units(table.drop(columns=measured_headers), decimal=decimal)
@@ -229,7 +236,7 @@ def read_measurements(table: pd.DataFrame) -> MeasuredData:
     frame, fill_problems, _ = fill_from_catalogue(converted.frame, converted.labels)
     for position, level, message in fill_problems:
         if level == "error":
-            row_errors[position].append(f"{row(position)}: {message}")
+            row_errors[position].append(f"{row[position]}: {message}")
     have = set(frame.columns)
     if "designation" not in have and not {"type", "series"} <= have:
         raise DiagnoseError("missing column: 'designation' (or 'type' and 'series')")
@@ -239,13 +246,13 @@ def read_measurements(table: pd.DataFrame) -> MeasuredData:
     if "lubrication" not in have and "f0" not in have:
         raise DiagnoseError("missing column: 'lubrication' (grease, oil_mist, oil_bath or circulating_oil)")
     for i, errors in enumerate(converted.row_errors):
-        row_errors[i].extend(f"{row(i)}: {e}" for e in errors)
+        row_errors[i].extend(f"{row[i]}: {e}" for e in errors)
     group = None
     if "group" in names:  # a blank label would pool the unlabelled rows of every run into one group
         header = table.columns[names.index("group")]
         labels = table[header]
         for position in np.flatnonzero(per_distinct(labels, blank_cell).astype(bool)).tolist():
-            row_errors[position].append(f"{row(position)}: {header} is blank; with a group column every row needs its "
+            row_errors[position].append(f"{row[position]}: {header} is blank; with a group column every row needs its "
                                  "label (the run it belongs to)")
         group = labels.astype(str).to_numpy()
     return MeasuredData(frame, M, T_oil, t, group, row_errors, converted.labels, rows)
@@ -516,7 +523,7 @@ def diagnose(data: ModelData, *, k: int = 5, seed: int = 0, groups: np.ndarray |
     effect, scores = _choose(data, folds, groups, k, names)
     none, chosen = scores["none"], scores[effect]
     assert none.predicted is not None and chosen.predicted is not None, "'none' and the chosen effect apply"
-    row_names = [f"row {row_number(rows, i)}" for i in range(N)]
+    row_names = _RowNames(rows)
 
     def choose_without(position: int) -> str:
         keep = np.flatnonzero(np.arange(N) != position)

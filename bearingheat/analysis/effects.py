@@ -67,6 +67,7 @@ __all__ = [
     "bearing_keys",
     "m1_load",
     "bound_side",
+    "bound_sides",
     "AT_BOUND_TOLERANCE",
 ]
 
@@ -144,17 +145,12 @@ class Candidate:
 
     def at_bound(self, data: ModelData, params: Params, rows: np.ndarray) -> dict[str, Any]:
         """Each fitted parameter as summary.json names it -> 'lower' or 'upper' where the fit of ``rows`` ended on
-        that bound (:func:`bound_side`), None inside them; a dict per bearing for a parameter per bearing."""
+        that bound (:func:`bound_sides`), None inside them; a dict per bearing for a parameter per bearing."""
         marks: dict[str, Any] = {}
         for name, (low, high) in self.limits(data, rows).items():
             public = next(p for p in self.required if p == name or p.startswith(f"{name} ["))
-            value = params[name]
-            if np.ndim(value):
-                lows, highs = np.broadcast_to(low, np.shape(value)), np.broadcast_to(high, np.shape(value))
-                marks[public] = {bearing: bound_side(v, lo, hi)
-                                 for bearing, v, lo, hi in zip(data.bearing_names, value, lows, highs)}
-            else:
-                marks[public] = bound_side(value, low, high)
+            sides = bound_sides(params[name], low, high)
+            marks[public] = dict(zip(data.bearing_names, sides.tolist())) if sides.ndim else sides.item()
         return marks
 
     def apply(self, frame: pd.DataFrame, results: pd.DataFrame, parameters: dict[str, Any], note: str, *,
@@ -216,6 +212,19 @@ def bound_side(value: float, low: float, high: float) -> str | None:
     if np.isfinite(high) and value >= high - AT_BOUND_TOLERANCE * abs(high):
         return "upper"
     return None
+
+
+def bound_sides(value: Any, low: Any, high: Any) -> np.ndarray:
+    """:func:`bound_side` of each entry of a fitted parameter ``value`` (a float, or an array per bearing) within
+    ``low`` and ``high`` (floats, or arrays of its shape): an object array of ``value``'s shape.
+
+    >>> bound_sides(np.array([0.0, 5.0, 2.0]), np.array([0.0, 0.0, np.nan]), np.array([9.0, 5.0, np.nan])).tolist()
+    ['lower', 'upper', None]
+    """
+    current = np.asarray(value, dtype=float)
+    lows, highs = np.broadcast_to(low, current.shape), np.broadcast_to(high, current.shape)
+    sides = [bound_side(v, lo, hi) for v, lo, hi in zip(current.ravel(), lows.ravel(), highs.ravel())]
+    return np.array(sides, dtype=object).reshape(current.shape)
 
 
 class NoEffect(Candidate):

@@ -15,14 +15,14 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, Protocol
 
 import numpy as np
 from scipy import stats
 
-from bearingheat.analysis.effects import Candidate, ModelData, Params, bound_side
+from bearingheat.analysis.effects import Candidate, ModelData, Params, bound_sides
 
-__all__ = ["OUTLIER_LEVEL", "SHOWN_READINGS", "INFLUENCE_RULE", "Influence", "leverage", "influence"]
+__all__ = ["OUTLIER_LEVEL", "SHOWN_READINGS", "INFLUENCE_RULE", "ReadingNames", "Influence", "leverage", "influence"]
 
 #: family-wise level of the Bonferroni outlier test of the studentised residuals
 OUTLIER_LEVEL = 0.05
@@ -37,6 +37,12 @@ INFLUENCE_RULE = (
     f"choice made again on the other rows, with the same folds; a changed choice is a warning. The choice runs on "
     f"sums of squared relative residuals, which the most outlying reading dominates; Cook's distance, shown too, "
     f"measures its pull on the chosen effect's parameters. No reading is dropped from the result.")
+
+
+class ReadingNames(Protocol):
+    """The names of the readings by position, ``names[position]``: a list, or names made when asked (diagnose's)."""
+
+    def __getitem__(self, position: int, /) -> str: ...
 
 
 @dataclass
@@ -87,9 +93,8 @@ def _jacobian_columns(candidate: Candidate, data: ModelData, params: Params, pre
         value = params[name]
         per_bearing = np.ndim(value) > 0
         current = np.asarray(value, dtype=float)
-        lows, highs = np.broadcast_to(low, current.shape), np.broadcast_to(high, current.shape)
-        free = np.array([bound_side(v, lo, hi) is None and np.isfinite(lo)
-                         for v, lo, hi in zip(current.ravel(), np.ravel(lows), np.ravel(highs))]).reshape(current.shape)
+        # inside its bounds (no side: None), and fitted (a NaN bound: a bearing whose parameter is not fitted)
+        free = ~bound_sides(current, low, high).astype(bool) & np.isfinite(np.broadcast_to(low, current.shape))
         if not free.any():
             continue
         step = np.where(free, _STEP * np.maximum(np.abs(current), 1e-12), 0.0)
@@ -135,7 +140,7 @@ def leverage(candidate: Candidate, data: ModelData, params: Params, predicted: n
     return np.clip(h, 0.0, 1.0), int(np.linalg.matrix_rank(A))
 
 
-def influence(candidate: Candidate, data: ModelData, params: Params, predicted: np.ndarray, row_names: list[str],
+def influence(candidate: Candidate, data: ModelData, params: Params, predicted: np.ndarray, row_names: ReadingNames,
               choose_without: Callable[[int], str], effect: str) -> Influence:
     """The outlier test, leverage and Cook's distance of every reading in the fit of the chosen ``effect``
     (``candidate`` with ``params`` and its ``predicted`` torque), and the choice without the most outlying flagged

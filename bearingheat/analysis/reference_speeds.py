@@ -367,6 +367,11 @@ class ReferenceSpeedAudit:
         """The bearings whose published speed is off their own series (misprints?)."""
         return self.bearings[self.bearings["outlier"]]
 
+    @property
+    def not_computed(self) -> list[str]:
+        """Why each row whose n_thr was not computed was not (its ``reason``; a row error), in the list's order."""
+        return [r for r in self.bearings["reason"] if isinstance(r, str) and r]
+
 
 #: the columns :func:`classify_reference_speeds` adds to each bearing
 CLASSIFIED_COLUMNS = ("group", "subgroup", "local_deviation", "outlier")

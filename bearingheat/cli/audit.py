@@ -148,7 +148,7 @@ def run(args: argparse.Namespace) -> int:
                 speeds = classify_reference_speeds(audit_reference_speeds(table, speed_column=args.speed_column))
                 for line in reference_speed_lines(speeds):
                     say(line)
-                not_computed = [r for r in speeds.bearings["reason"] if r]
+                not_computed = speeds.not_computed
                 flagged |= bool(len(speeds.flagged) or not_computed)   # a row not computed is a row error
                 printed["reference_speed_rows_not_computed"] = not_computed
                 printed["reference_speed_groups"] = speeds.groups.to_dict(orient="records")

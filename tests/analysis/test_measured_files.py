@@ -239,6 +239,18 @@ def test_a_header_that_is_no_name_and_unit_is_left_alone_as_calc_leaves_it(tmp_p
     pd.testing.assert_frame_equal(process_lab(read_table(lab_noted)).task1, process_lab(read_table(READINGS)).task1)
 
 
+def test_a_remark_left_out_of_the_reading_keeps_the_files_decimal_mark_and_lines(tmp_path):
+    """The columns diagnose reads are selected from the table without the remark; the selection keeps the file's
+    decimal mark and line numbers (DataFrame.attrs, which pandas carries to a column selection)."""
+    euro = _euro(MEASURED, tmp_path / "euro.csv")
+    lines = euro.read_text().splitlines()
+    lines[3] = ";".join(lines[3].split(";")[:-1] + ["19.68"])
+    euro.write_text("\n".join([f"{lines[0]};remark [see note]]"] + [f"{line};r" for line in lines[1:]]) + "\n")
+    measured = read_measurements(read_table(euro, decimal=","))
+    assert measured.row_errors[2] == ["row 4: '19.68' is not a number for M [N*mm] (the decimal mark is ',')"]
+    assert sum(map(bool, measured.row_errors)) == 1
+
+
 def test_audit_lab_and_diagnose_pass_a_remark_through_and_keep_it_where_they_write_the_rows_back(tmp_path):
     """audit (measured torque and a catalogue list) still refused 'remark [see note]]' ('cannot read the header');
     lab and the reference speed audit dropped a remark from the rows they write back. Now every command reads the

@@ -76,10 +76,10 @@ def _f1(value: float) -> str:
     return f"{value:.2e}" if pd.notna(value) else "-"
 
 
-def not_computed_lines(bearings: pd.DataFrame) -> list[str]:
-    """The rows of a catalogue list whose n_thr was not computed, with their reasons (the first
-    :data:`SHOWN_EXCLUDED`, then '... N more'); none where every row was computed."""
-    reasons = [str(r) for r in bearings["reason"] if isinstance(r, str) and r] if "reason" in bearings else []
+def not_computed_lines(reasons: list[str]) -> list[str]:
+    """The rows of a catalogue list whose n_thr was not computed, by their ``reasons``
+    (:attr:`ReferenceSpeedAudit.not_computed`: the first :data:`SHOWN_EXCLUDED`, then '... N more'); none where every
+    row was computed."""
     if not reasons:
         return []
     lines = [f"Rows not computed ({len(reasons)}), left out of every group:"]
@@ -142,7 +142,7 @@ def reference_speed_lines(audit: ReferenceSpeedAudit) -> list[str]:
         "f0 table": groups["f0_table"].map(_f0).to_numpy(),
         "f0 implied": groups["f0_implied"].map(_f0).to_numpy()})
     lines += ["All series and size classes:", table.to_string(index=False)]
-    lines += not_computed_lines(audit.bearings)
+    lines += not_computed_lines(audit.not_computed)
     lines.append(f"rule: {SYSTEMATIC_RULE}")
     lines += [f"systematic: {g}" for g in flagged["group"]]
     return lines
