@@ -48,7 +48,7 @@ from bearingheat.calc.messages import Labels
 from bearingheat.calc.fill import fill_from_catalogue
 from bearingheat.calc.models import DEFAULT_MODEL, compute_supports
 from bearingheat.calc.supports import SupportArrays, per_distinct
-from bearingheat.calc.conversion import (blank_cell, lookalike_column, not_a_number, numbers_of, row_number,
+from bearingheat.calc.conversion import (blank_cell, lookalike_column, not_a_number, numbers_of, row_name,
                                          row_numbers, to_catalogue_units)
 from bearingheat.errors import DiagnoseError, InputError, UnitError
 from bearingheat.kernels import friction
@@ -117,7 +117,7 @@ class _RowNames:
     rows: np.ndarray | None
 
     def __getitem__(self, position: int) -> str:
-        return f"row {row_number(self.rows, position)}"
+        return row_name(self.rows, position)
 
 
 @dataclass

@@ -26,7 +26,7 @@ import pandas as pd
 
 from bearingheat.analysis.passthrough import unread_columns
 from bearingheat.calc.contract import parse_header
-from bearingheat.calc.conversion import not_a_number, numbers_of, row_number, row_numbers
+from bearingheat.calc.conversion import not_a_number, numbers_of, row_name, row_numbers
 from bearingheat.calc.table import calc
 from bearingheat.catalogue.lab import (
     LOAD_COEFFICIENT_RADIAL,
@@ -91,9 +91,9 @@ def read_lab_table(table: pd.DataFrame) -> pd.DataFrame:
             i = int(bad[0])
             cell = values[header].iat[i]
             if pd.isna(cell):
-                raise LabError(f"row {row_number(rows, i)}: blank is not a number for {header}")
+                raise LabError(f"{row_name(rows, i)}: blank is not a number for {header}")
             value = cell.item() if isinstance(cell, np.generic) else cell
-            raise LabError(f"row {row_number(rows, i)}: {not_a_number(value, header, decimal)}")
+            raise LabError(f"{row_name(rows, i)}: {not_a_number(value, header, decimal)}")
         if unit_text is None or unit_text.strip() in ("", "-"):
             raise LabError(f"column {header!r}: needs a unit, e.g. '{name} [{target}]'")
         try:
@@ -108,7 +108,7 @@ def read_lab_table(table: pd.DataFrame) -> pd.DataFrame:
         bad = (col <= low) | ((col > high) if high is not None else False)
         if bad.any():
             i = int(np.flatnonzero(bad)[0])
-            raise LabError(f"row {row_number(rows, i)}: {seen[name][0]} = {typed[name][i]:g} {text}")
+            raise LabError(f"{row_name(rows, i)}: {seen[name][0]} = {typed[name][i]:g} {text}")
     return out
 
 

@@ -27,7 +27,7 @@ from bearingheat.analysis.deviations import (CONFIDENCE, change_point, consisten
                                              median_interval, robust_scale)
 from bearingheat.analysis.passthrough import unread_columns
 from bearingheat.calc.contract import parse_header, readable_header
-from bearingheat.calc.conversion import numbers_of, row_number, row_numbers
+from bearingheat.calc.conversion import numbers_of, row_name, row_numbers
 from bearingheat.calc.thermal import thermal_reference_speed_details
 from bearingheat.catalogue.friction import resolve
 from bearingheat.catalogue.thermal import reference_conditions
@@ -134,7 +134,7 @@ def _row_names(table: pd.DataFrame, names: np.ndarray) -> list[str]:
     """'row 5 (624-2Z)' of each row: the file line where the table was read from a CSV (``attrs['lines']``,
     as calc cites rows), else the row's position counting from 1."""
     rows = row_numbers(table)
-    return [f"row {row_number(rows, i)} ({name})" if name else f"row {row_number(rows, i)}"
+    return [f"{row_name(rows, i)} ({name})" if name else row_name(rows, i)
             for i, name in enumerate(names)]
 
 

@@ -27,7 +27,8 @@ from bearingheat.errors import InputError, UnitError
 from bearingheat.units import convert_column
 
 __all__ = ["to_catalogue_units", "ConvertedTable", "refuse_result_columns", "not_a_number", "with_decimal_point",
-           "blank_cell", "numbers_of", "row_numbers", "row_number", "lookalike_column", "Lookalike",
+           "blank_cell", "numbers_of", "row_numbers", "row_number", "row_name",
+           "lookalike_column", "Lookalike",
            "results_spelled_otherwise"]
 
 
@@ -147,6 +148,11 @@ def row_numbers(table: pd.DataFrame) -> np.ndarray | None:
 def row_number(rows: np.ndarray | None, position: int) -> int:
     """The number of the row at ``position`` (:func:`row_numbers`)."""
     return int(rows[position]) if rows is not None else position + 1
+
+
+def row_name(rows: np.ndarray | None, position: int) -> str:
+    """How a message names the row at ``position``: 'row 5' for the file's line 5 (:func:`row_number`)."""
+    return f"row {row_number(rows, position)}"
 
 
 def numbers_of(values: pd.Series, decimal: str = ".") -> np.ndarray:
