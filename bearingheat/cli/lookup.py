@@ -14,9 +14,9 @@ from bearingheat.io.console import print_record
 
 DESCRIPTION = """\
 Look a bearing up in the bearing table of the package (Schaeffler HR 1, June 2006:
-deep groove ball 618, 160, 60, 62, 63, 64 open and -2Z; angular contact ball 72..-B,
-73..-B; cylindrical roller N, NU, NJ, NUP of series 2, 3, 22, 23, E design; tapered
-roller 302, 303, 313, 320, 322, 323, 330, 331, 332):
+deep groove ball 618, 160, 60, 62, 63, 64 open, -2Z and -2RSR; angular contact ball
+72..-B, 73..-B, open and -2RS; cylindrical roller N, NU, NJ, NUP of series 2, 3, 22,
+23, E design; tapered roller 302, 303, 313, 320, 322, 323, 330, 331, 332):
 
   bearingheat lookup 6208
   bearingheat lookup NU208-E --json
@@ -41,7 +41,8 @@ _TEXT = ("designation", "match", "note", "family", "bearing_type", "series", "pr
 
 
 def add_arguments(parser) -> None:
-    parser.add_argument("designation", help="bearing designation, e.g. 6208, 6208-2Z, NU208-E-TVP2, 30208-A")
+    parser.add_argument("designation", help="bearing designation, e.g. 6208, 6208-2Z, 6208-2RSR, NU208-E-TVP2, "
+                                                "30208-A")
     add_json(parser)
     add_quiet(parser)
 

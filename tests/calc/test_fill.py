@@ -56,7 +56,7 @@ def test_an_unknown_designation_without_dimensions_lists_close_matches():
     assert out["status"].tolist() == ["error", "ok"]
     assert out["message"].iat[0].startswith(
         "designation: '6208-2ZZ' is not in the bearing table (Schaeffler HR 1, 2006); close matches: 6208-2Z, "
-        "6208, 608-2Z, 6320-2Z, 6308-2Z; or type the dimensions d, D (and C0)")
+        "6208-2RSR, 6208, 608-2Z, 6320-2Z; or type the dimensions d, D (and C0)")
 
 
 def test_an_unknown_designation_with_dimensions_is_computed_as_before():

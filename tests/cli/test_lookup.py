@@ -68,7 +68,7 @@ def test_unknown_designation_exits_2_with_close_matches(capsys):
     captured = capsys.readouterr()
     assert captured.out == ""
     assert captured.err == ("bearingheat lookup: error: designation: '6208-2ZZ' is not in the bearing table "
-                            "(Schaeffler HR 1, 2006); close matches: 6208-2Z, 6208, 608-2Z, 6320-2Z, 6308-2Z\n")
+                            "(Schaeffler HR 1, 2006); close matches: 6208-2Z, 6208-2RSR, 6208, 608-2Z, 6320-2Z\n")
 
 
 def test_unknown_designation_exits_2_with_json_too(capsys):
