@@ -133,7 +133,8 @@ def test_sealed_bearings_without_a_published_speed_are_skipped_not_row_errors(tm
     assert list(rows["reason"]) == [
         "", "",
         "row 6 (6206-2RSR): n_thr: the thermal method (ISO 15312, DIN 732) does not apply to bearings with "
-        "contact seals",
+        "contact seals: its reference conditions have no seal friction, and Schaeffler HR 1 prints no n_thr for "
+        "them; n_per and T_op, whose heat balance would leave the seal friction out, are not computed either",
         "row 7 (6207): n_B [1/min] is blank (a published speed must be a finite number > 0)"]
     audit = classify_reference_speeds(rows)
     assert audit.skipped == ("row 3 (6205-2RSR)", "row 5 (7205-B-2RS-TVP)")
