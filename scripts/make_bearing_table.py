@@ -1,6 +1,7 @@
-"""Generate ``tables/bearings_hr1_2006.csv`` from ``../shared/data/hr1_2006_reference_speeds.csv``.
+"""Generate ``tables/bearings_hr1_2006.csv`` from ``../shared/data/hr1_2006_reference_speeds.csv``
+and ``scripts/hr1_2006_sealed_rows.csv``.
 
-The source file holds the dimensions, load ratings, calculation factors, limiting
+The first source file holds the dimensions, load ratings, calculation factors, limiting
 and thermal reference speeds of 1034 bearings of the catalogue
 
     Schaeffler KG (INA/FAG), HR 1 "Rolling bearings", edition June 2006,
@@ -13,21 +14,29 @@ commit 68b9707fc46f43fa4d0c070323c23237becbce8b); its companion
 package ships this derived table instead, generated here and kept in sync by
 ``tests/catalogue/test_bearings.py``.
 
+That data set leaves out the bearings with contact seals, because HR 1 prints no thermal
+reference speed for them. ``scripts/hr1_2006_sealed_rows.csv`` holds them, read from the same
+text copy (its header comment gives the method, the checks and the one row left out): 87 deep
+groove ball bearings ``-2RSR`` and 16 angular contact ball bearings ``72..-B-2RS-TVP`` and
+``73..-B-2RS-TVP``, with dimensions, load ratings and limiting speed; their ``n_thr`` is blank.
+
 What the script does, and nothing else:
 
-- keeps every row, in the order of the source (catalogue page, row on the page);
+- keeps every row of both sources, in catalogue order (page, row on the page);
 - copies every number digit for digit as text (no float formatting, no rounding,
   no unit conversion: the catalogue's units mm, N and 1/min are the package's catalogue units);
 - adds the package's bearing type and prefix from :func:`bearingheat.catalogue.designation.parse_designation`,
   and refuses to write when the parser disagrees with the source's family, series, type or bore;
-- renames ``n_B`` (the catalogue's thermal reference speed) to ``n_thr``;
+- renames ``n_B`` (the catalogue's thermal reference speed) to ``n_thr``, blank for a sealed row;
+- refuses to write a sealed row whose n_B is not "–", whose mounting dimensions d_a, D_a do not lie
+  between d and D, or that differs from its open counterpart of the data set in d, D, B, C or C0;
 - writes a units row under the header (a pint unit, ``1`` dimensionless, ``-`` text) and a
   ``source`` column naming catalogue, edition, pages, table and row.
 
 Usage (deterministic: the same source gives the same bytes)::
 
     .venv/bin/python scripts/make_bearing_table.py
-    .venv/bin/python scripts/make_bearing_table.py --source PATH.csv --output PATH.csv
+    .venv/bin/python scripts/make_bearing_table.py --source PATH.csv --sealed PATH.csv --output PATH.csv
 """
 from __future__ import annotations
 
@@ -35,6 +44,7 @@ import argparse
 import csv
 import io
 import sys
+from collections import Counter
 from pathlib import Path
 
 from bearingheat.catalogue.designation import parse_designation
@@ -42,6 +52,7 @@ from bearingheat.errors import DesignationError
 
 ROOT = Path(__file__).resolve().parents[1]
 SOURCE = ROOT.parent / "shared" / "data" / "hr1_2006_reference_speeds.csv"
+SEALED = ROOT / "scripts" / "hr1_2006_sealed_rows.csv"
 OUTPUT = ROOT / "tables" / "bearings_hr1_2006.csv"
 
 SOURCE_HEADER = [
@@ -94,6 +105,20 @@ COPY = "text copy ArtemFilin1990/Mar@68b9707"
 ALWAYS = ("d [mm]", "D [mm]", "B [mm]", "C [N]", "C0 [N]", "n_G [1/min]", "n_B [1/min]")
 TAPERED_ONLY = ("T [mm]", "e [-]", "Y [-]", "Y0 [-]")
 
+SEALED_HEADER = [
+    "designation", "family", "series", "shield", "d [mm]", "D [mm]", "B [mm]", "C [N]", "C0 [N]", "n_G [1/min]",
+    "n_B [1/min]", "d_a [mm]", "D_a [mm]", "open counterpart", "page", "page_ratings", "row_on_page", "line",
+    "line_ratings",
+]
+# the contact seal of each family in HR 1 (the shield column of a sealed row)
+SEALS = {"deep groove ball": "2RSR", "angular contact ball": "2RS"}
+# the shield column -> the seal the package's parser reads from the designation
+SEAL_KINDS = {"open": "open", "2Z": "shield", "2RSR": "contact", "2RS": "contact"}
+# what a sealed row shares with its open counterpart (the same rings and balls)
+SHARED = ("d [mm]", "D [mm]", "B [mm]", "C [N]", "C0 [N]")
+# HR 1 prints this for a sealed bearing's n_B
+NO_VALUE = "–"
+
 
 class SourceError(Exception):
     """The source file is not what this script was written for."""
@@ -122,8 +147,13 @@ def convert_row(row: dict[str, str]) -> list[str]:
     if family not in FAMILY_TYPES:
         raise SourceError(f"{name}: unknown family {family!r}")
     tapered = family == "tapered roller"
+    sealed = SEAL_KINDS.get(row["shield"]) == "contact"
+    if sealed and row["n_B [1/min]"] != "":
+        raise SourceError(f"{name}: n_B = {row['n_B [1/min]']!r} given for a bearing with contact seals")
     for column in ALWAYS + TAPERED_ONLY:
         text = row[column]
+        if sealed and column == "n_B [1/min]":
+            continue
         if column in ALWAYS or tapered:
             if text == "":
                 raise SourceError(f"{name}: {column} is blank")
@@ -139,7 +169,7 @@ def convert_row(row: dict[str, str]) -> list[str]:
         "series": (parsed.series, row["series"]),
         "prefix": (parsed.prefix, row["type"]),
         "bore": (parsed.bore, float(row["d [mm]"])),
-        "shield": (parsed.seal, {"open": "open", "2Z": "shield"}.get(row["shield"], row["shield"])),
+        "shield": (parsed.seal, SEAL_KINDS.get(row["shield"], row["shield"])),
     }
     for what, (ours, theirs) in checks.items():
         if ours != theirs:
@@ -152,14 +182,56 @@ def convert_row(row: dict[str, str]) -> list[str]:
     return [row[column] if column is not None else derived[out] for out, (_, column) in COLUMNS.items()]
 
 
-def build_table(source_text: str) -> str:
-    """The text of the bearing table for the text of the source CSV."""
+def sealed_rows(sealed_text: str, source_rows: list[dict[str, str]]) -> list[dict[str, str]]:
+    """The rows of the sealed-rows file (comment lines '#' skipped) as rows of the source CSV, each checked
+    against the file's own values and against its open counterpart among ``source_rows``."""
+    reader = csv.DictReader(line for line in io.StringIO(sealed_text) if not line.startswith("#"))
+    if reader.fieldnames != SEALED_HEADER:
+        raise SourceError(f"sealed rows: unexpected header {reader.fieldnames}; expected {SEALED_HEADER}")
+    by_name = {row["designation"]: row for row in source_rows}
+    out = []
+    for row in reader:
+        name = row["designation"]
+        if row["shield"] != SEALS.get(row["family"]) or f"-{row['shield']}" not in name:
+            raise SourceError(f"{name}: seal {row['shield']!r} is not the {row['family']!r} bearings' "
+                              f"{SEALS.get(row['family'])!r} of HR 1, or not in the designation")
+        if row["n_B [1/min]"] != NO_VALUE:
+            raise SourceError(f"{name}: n_B = {row['n_B [1/min]']!r}; HR 1 prints {NO_VALUE!r} for a sealed bearing")
+        for column in ("d_a [mm]", "D_a [mm]"):
+            _check_number(row[column], name, column)
+            if not float(row["d [mm]"]) < float(row[column]) < float(row["D [mm]"]):
+                raise SourceError(f"{name}: {column} = {row[column]} is not between d = {row['d [mm]']} and "
+                                  f"D = {row['D [mm]']}: the ratings row does not belong to this bearing")
+        counterpart = by_name.get(row["open counterpart"])
+        if counterpart is None or counterpart["shield"] != "open":
+            raise SourceError(f"{name}: its open counterpart {row['open counterpart']!r} is not an open bearing "
+                              "of the source")
+        differ = [c for c in SHARED if row[c] != counterpart[c]]
+        if differ:
+            raise SourceError(f"{name}: {', '.join(f'{c} = {row[c]}' for c in differ)} differ from "
+                              f"{counterpart['designation']}'s {', '.join(counterpart[c] for c in differ)}")
+        out.append({column: row.get(column, "") for column in SOURCE_HEADER} | {"n_B [1/min]": ""})
+    return out
+
+
+def _catalogue_place(row: dict[str, str]) -> tuple[int, int]:
+    return int(row["page"]), int(row["row_on_page"])
+
+
+def build_table(source_text: str, sealed_text: str) -> str:
+    """The text of the bearing table for the texts of the source CSV and of the sealed rows."""
     reader = csv.DictReader(io.StringIO(source_text))
     if reader.fieldnames != SOURCE_HEADER:
         raise SourceError(f"unexpected header {reader.fieldnames}; expected {SOURCE_HEADER}")
-    rows = [convert_row(row) for row in reader]
+    source_rows = list(reader)
+    merged = source_rows + sealed_rows(sealed_text, source_rows)
+    twice = sorted(place for place, count in Counter(map(_catalogue_place, merged)).items() if count > 1)
+    if twice:
+        raise SourceError(f"catalogue places (page, row) given twice: {twice}")
+    # catalogue order; the source is in it already (a stable sort keeps ties, which the check above excludes)
+    rows = [convert_row(row) for row in sorted(merged, key=_catalogue_place)]
     names = [r[0] for r in rows]
-    duplicates = sorted({n for n in names if names.count(n) > 1})
+    duplicates = sorted(name for name, count in Counter(names).items() if count > 1)
     if duplicates:
         raise SourceError(f"designations given twice: {', '.join(duplicates)}")
     out = io.StringIO()
@@ -173,10 +245,11 @@ def build_table(source_text: str) -> str:
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--source", type=Path, default=SOURCE, help=f"source CSV (default {SOURCE})")
+    parser.add_argument("--sealed", type=Path, default=SEALED, help=f"sealed rows CSV (default {SEALED})")
     parser.add_argument("--output", type=Path, default=OUTPUT, help=f"table to write (default {OUTPUT})")
     args = parser.parse_args(argv)
     try:
-        text = build_table(args.source.read_text(encoding="utf-8"))
+        text = build_table(args.source.read_text(encoding="utf-8"), args.sealed.read_text(encoding="utf-8"))
     except (OSError, SourceError) as exc:
         print(f"make_bearing_table: error: {exc}", file=sys.stderr)
         return 2

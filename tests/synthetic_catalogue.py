@@ -28,11 +28,14 @@ def _round_like_hr1(n: np.ndarray) -> np.ndarray:
 
 
 def synthetic_catalogue(f0_factor=None, misprints=None) -> pd.DataFrame:
-    """The HR 1 bearings of tables/ with speeds computed from the tables, f0 scaled where told, rounded like HR 1.
+    """The HR 1 bearings of tables/ that have an n_thr, with speeds computed from the tables, f0 scaled where told,
+    rounded like HR 1.
 
     ``f0_factor``: {(series_key, smallest bore): factor}; ``misprints``: {designation: factor on the speed}.
     """
     table = bearing_table()
+    # the bearings HR 1 prints a speed for (not those with contact seals)
+    table = table[table["n_thr"].notna()].reset_index(drop=True)
     frame = table[["designation", "d", "D", "B", "T", "C0"]]
     details = thermal_reference_speed_details(frame)
     f0 = details["f0"].to_numpy(dtype=float).copy()

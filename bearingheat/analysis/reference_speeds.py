@@ -29,6 +29,7 @@ from bearingheat.analysis.passthrough import unread_columns
 from bearingheat.calc.contract import parse_header, readable_header
 from bearingheat.calc.conversion import numbers_of, row_name, row_numbers
 from bearingheat.calc.thermal import thermal_reference_speed_details
+from bearingheat.catalogue.designation import parse_designation
 from bearingheat.catalogue.friction import resolve
 from bearingheat.catalogue.thermal import reference_conditions
 from bearingheat.errors import AuditError, DesignationError, UnitError
@@ -42,6 +43,7 @@ __all__ = [
     "REFERENCE_SPEED_COLUMNS",
     "GROUP_COLUMNS",
     "ReferenceSpeedAudit",
+    "SEALED_WITHOUT_SPEED",
     "audit_reference_speeds",
     "rounding_step",
     "implied_coefficients",
@@ -82,6 +84,10 @@ SYSTEMATIC_RULE = (
 )
 #: accepted names of the published thermal reference speed column (first match wins)
 REFERENCE_SPEED_COLUMNS = ("n_thr", "n_B", "n_theta_r", "n_θr", "n_ref", "nthr")
+#: the rows the audit skips (not row errors): a catalogue prints no n_thr for a bearing with contact seals
+SEALED_WITHOUT_SPEED = ("bearings with contact seals and no published n_thr: the thermal method (ISO 15312, "
+                        "DIN 732) does not apply to them, and catalogues print none (Schaeffler HR 1: '–'); "
+                        "not audited")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -98,24 +104,29 @@ _POSITIVE = {"d": "the bore d", "D": "the outside diameter D", "B": "the width B
              "C0": "the static load rating C0", "n": "a published speed"}
 
 
+def _blank(values: pd.Series) -> np.ndarray:
+    """Where a column's cells are empty or spaces only."""
+    return values.isna().to_numpy() | values.astype(str).str.strip().eq("").to_numpy()
+
+
 def _convert(values: pd.Series, header: str, unit_text: str | None, target: str, problems: list[list[str]], *,
-             decimal: str = ".", positive: str | None = None, required: bool = False) -> np.ndarray:
+             decimal: str = ".", positive: str | None = None, required: bool | np.ndarray = False) -> np.ndarray:
     """A catalogue-list column in the catalogue unit (units.convert_column); AuditError naming the column.
 
     Each cell that is text but no number ('abc', '5 600', '5,5' where the
     decimal mark is '.') adds a problem to its row; so does, where
     ``positive`` names what the column holds, a number that is not finite
-    and > 0, and, where ``required``, a blank cell. Such a cell is NaN.
+    and > 0, and, where ``required`` (True, or a mask of the rows), a blank
+    cell. Such a cell is NaN.
     """
     numbers = numbers_of(values, decimal)  # ('3,2' is 3.2 and '1.480' no number with a decimal comma, as calc reads)
     raw = values.to_numpy(dtype=object)
-    blank = values.isna().to_numpy() | values.astype(str).str.strip().eq("").to_numpy()
+    blank = _blank(values)
     expected = f" ({positive} must be a finite number > 0)" if positive else ""
     for i in np.flatnonzero(np.isnan(numbers) & ~blank).tolist():
         problems[i].append(f"{str(raw[i]).strip()!r} is not a number for {header}{expected}")
-    if required:
-        for i in np.flatnonzero(blank).tolist():
-            problems[i].append(f"{header} is blank{expected}")
+    for i in np.flatnonzero(blank & required).tolist():
+        problems[i].append(f"{header} is blank{expected}")
     try:
         converted = convert_column(numbers, unit_text, target, name=header, header=header)[0]
     except UnitError as exc:
@@ -196,6 +207,19 @@ def implied_coefficients(details: pd.DataFrame, d: npt.ArrayLike, D: npt.ArrayLi
     return {"f0": np.where(usable, f0, np.nan), "f1": np.where(usable, f1, np.nan)}
 
 
+def _contact_sealed(designations: pd.Series) -> np.ndarray:
+    """Where a designation names contact seals (6205-2RSR, 7205-B-2RS-TVP); False where it does not resolve.
+    Each distinct designation is parsed once."""
+    codes, uniques = pd.factorize(designations)
+    sealed = []
+    for text in uniques:
+        try:
+            sealed.append(parse_designation(str(text)).seal == "contact")
+        except DesignationError:
+            sealed.append(False)
+    return np.array(sealed, dtype=bool)[codes] if len(codes) else np.zeros(0, dtype=bool)
+
+
 def _text(table: pd.DataFrame, columns: dict[str, str], names: Iterable[str]) -> np.ndarray | None:
     for name in names:
         if name in columns:
@@ -243,8 +267,12 @@ def audit_reference_speeds(table: pd.DataFrame, *, speed_column: str | None = No
     ``family`` and ``series`` name the series (else the designation's type
     and series); an optional ``shield`` (``seal``, ``variant``) column
     names the variant, which is pooled with the open bearings of its series.
+    A bearing whose designation names contact seals and whose published
+    speed is blank is skipped, not a row error: catalogues print no n_thr
+    for it (:data:`SEALED_WITHOUT_SPEED`); ``result.attrs['skipped']``
+    names these rows ('row 93 (6205-2RSR)').
 
-    Returns one row per bearing: ``designation``, ``family``, ``series``,
+    Returns one row per bearing that is not skipped: ``designation``, ``family``, ``series``,
     ``series_key`` ('family series'), ``variant``, ``d``, ``D`` [mm],
     ``n_thr_published``, ``rounding_step`` (:func:`rounding_step`),
     ``n_thr_tables`` [1/min], ``deviation`` [1] (tables/published − 1),
@@ -291,8 +319,12 @@ def audit_reference_speeds(table: pd.DataFrame, *, speed_column: str | None = No
             raise AuditError(f"missing column: '{name} [{target}]'")
         else:
             frame[name] = np.nan
-    published = _convert(table[columns[published_name]], columns[published_name], units[published_name], "1/min",
-                         problems, decimal=decimal, positive=_POSITIVE["n"], required=True)
+    published_cells = table[columns[published_name]]
+    # a blank speed of a bearing with contact seals is what a catalogue prints: skipped, not a row error
+    skipped = _blank(published_cells) & (_contact_sealed(frame["designation"]) if "designation" in frame
+                                         else np.zeros(len(table), dtype=bool))
+    published = _convert(published_cells, columns[published_name], units[published_name], "1/min",
+                         problems, decimal=decimal, positive=_POSITIVE["n"], required=~skipped)
     in_error = np.array([bool(p) for p in problems], dtype=bool)
     # a row with a bad cell is not computed (a bore that is no number is not taken from the designation)
     frame.loc[in_error, [c for c in _GEOMETRY_UNITS if c in frame.columns]] = np.nan
@@ -328,7 +360,10 @@ def audit_reference_speeds(table: pd.DataFrame, *, speed_column: str | None = No
             if name in columns]
     kept = unread_columns(table, read, {*out.columns, *CLASSIFIED_COLUMNS},
                           "the reference speed audit writes into reference_speeds.csv", AuditError)
-    return pd.concat([out, kept.set_axis(out.index)], axis=1) if len(kept.columns) else out
+    result = pd.concat([out, kept.set_axis(out.index)], axis=1) if len(kept.columns) else out
+    result = result[~skipped]
+    result.attrs["skipped"] = [name for name, skip in zip(named, skipped) if skip]
+    return result
 
 
 # ---- groups: series, size classes, outliers, flags ------------------------------------------
@@ -347,7 +382,8 @@ class ReferenceSpeedAudit:
     median deviation beyond which a group deviates, ``consistent`` how
     many series gave σ (0 where σ is SCALE_FLOOR because fewer than
     MIN_CONSISTENT series agree), ``series`` how many series have a
-    computed median deviation.
+    computed median deviation. ``skipped`` names the rows of the list that
+    :func:`audit_reference_speeds` skipped (:data:`SEALED_WITHOUT_SPEED`).
     """
 
     bearings: pd.DataFrame
@@ -356,6 +392,7 @@ class ReferenceSpeedAudit:
     threshold: float
     consistent: int
     series: int = 0
+    skipped: tuple[str, ...] = ()
 
     @property
     def flagged(self) -> pd.DataFrame:
@@ -500,7 +537,8 @@ def classify_reference_speeds(rows: pd.DataFrame, *, confidence: float = CONFIDE
     groups = pd.DataFrame(records, columns=list(GROUP_COLUMNS))
     _judge_spread(groups, split=[len(classes[k]) > 1 for k in series_keys])
     return ReferenceSpeedAudit(bearings, groups, sigma, threshold, int(np.sum(kept)),
-                               int(np.isfinite(np.asarray(whole_medians, dtype=float)).sum()))
+                               int(np.isfinite(np.asarray(whole_medians, dtype=float)).sum()),
+                               tuple(rows.attrs.get("skipped", ())))
 
 
 def _judge_spread(groups: pd.DataFrame, split: list[bool]) -> None:

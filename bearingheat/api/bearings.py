@@ -18,17 +18,19 @@ __all__ = ["bearing", "BearingData", "bearing_table", "designations"]
 def bearing(designation: str) -> BearingData:
     """The bearing ``designation`` (with or without cage and design suffixes) of the bearing table.
 
-    The table holds 1034 bearings of the Schaeffler catalogue HR 1 "Rolling
+    The table holds 1137 bearings of the Schaeffler catalogue HR 1 "Rolling
     bearings" (edition June 2006): deep groove ball bearings 618, 160, 60,
-    62, 63, 64 (open and -2Z), angular contact ball bearings 72..-B and
-    73..-B, cylindrical roller bearings N, NU, NJ, NUP of series 2, 3, 22, 23
-    (E design) and metric tapered roller bearings. The designation is
+    62, 63, 64 (open, -2Z and, with contact seals, -2RSR), angular contact
+    ball bearings 72..-B and 73..-B (open and -2RS), cylindrical roller
+    bearings N, NU, NJ, NUP of series 2, 3, 22, 23 (E design) and metric
+    tapered roller bearings. HR 1 gives no thermal reference speed n_thr
+    for the sealed bearings (NaN). The designation is
     matched in three steps, the first that finds it wins: ``exact`` (case,
     spaces and a suffix glued to the number do not matter), ``cage``
     (without cage, material, clearance and tolerance suffixes), ``design``
     (where no design suffix is given, also without the table's); see
     :mod:`bearingheat.catalogue.bearings`. Seal and shield suffixes are
-    never dropped.
+    never dropped (``6208-2RS`` finds neither ``6208-2RSR`` nor ``6208``).
 
     Parameters
     ----------
@@ -62,9 +64,12 @@ def bearing(designation: str) -> BearingData:
     >>> q = bearing("30205-A").quantities()
     >>> q["T"], q["Y"]
     (<Quantity(16.25, 'millimeter')>, <Quantity(1.6, 'dimensionless')>)
+    >>> sealed = bearing("6205-2RSR")
+    >>> sealed.C0, sealed.n_G, sealed.n_thr
+    (7800.0, 9000.0, nan)
     >>> bearing("6205-2ZZ")
     Traceback (most recent call last):
     ...
-    bearingheat.errors.DesignationError: designation: '6205-2ZZ' is not in the bearing table (Schaeffler HR 1, 2006); close matches: 6205-2Z, 6205, 625-2Z, 6320-2Z, 6305-2Z
+    bearingheat.errors.DesignationError: designation: '6205-2ZZ' is not in the bearing table (Schaeffler HR 1, 2006); close matches: 6205-2Z, 6205-2RSR, 6205, 625-2Z, 6320-2Z
     """
     return catalogue_bearings.bearing(designation)

@@ -485,7 +485,7 @@ def thermal_reference_speed(designation: str | None = None, *, d: Quantity, D: Q
     >>> thermal_reference_speed("6205-2RSR", d=25 * u.mm, D=52 * u.mm, B=15 * u.mm, C0=7.8 * u.kN)
     Traceback (most recent call last):
     ...
-    bearingheat.errors.HeatBalanceError: 6205-2RSR: n_thr: the thermal method (ISO 15312, DIN 732) does not apply to bearings with contact seals
+    bearingheat.errors.HeatBalanceError: 6205-2RSR: n_thr: the thermal method (ISO 15312, DIN 732) does not apply to bearings with contact seals: its reference conditions have no seal friction, and Schaeffler HR 1 prints no n_thr for them; n_per and T_op, whose heat balance would leave the seal friction out, are not computed either
     """
     columns = {"d": magnitude(d, "mm", "d"), "D": magnitude(D, "mm", "D"), "C0": magnitude(C0, "N", "C0")}
     if B is not None:

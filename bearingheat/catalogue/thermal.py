@@ -56,7 +56,11 @@ REFUSED_TYPES = {
     "combined": ("combined radial/thrust bearings have no single heat flow area A_r in the method "
                  "(radial: pi*B*(D+d), thrust: (pi/2)*(D^2-d^2))"),
 }
-CONTACT_SEAL_REASON = "the thermal method (ISO 15312, DIN 732) does not apply to bearings with contact seals"
+#: why a bearing with contact seals gets no n_thr, n_per or T_op: ISO 15312's reference conditions have no seal
+#: friction, HR 1 prints '–' for the n_B of its -2RSR and -2RS bearings, and the model has no seal term
+CONTACT_SEAL_REASON = ("the thermal method (ISO 15312, DIN 732) does not apply to bearings with contact seals: its "
+                       "reference conditions have no seal friction, and Schaeffler HR 1 prints no n_thr for them; "
+                       "n_per and T_op, whose heat balance would leave the seal friction out, are not computed either")
 
 
 @dataclass(frozen=True)
@@ -105,8 +109,10 @@ def method_refusal(bearing_type: str, seal: str = "open") -> str:
 
     >>> method_refusal("thrust_ball")
     'the thermal method (ISO 15312, DIN 732) does not apply to thrust ball bearings'
-    >>> method_refusal("deep_groove_ball", "contact")
-    'the thermal method (ISO 15312, DIN 732) does not apply to bearings with contact seals'
+    >>> print(method_refusal("deep_groove_ball", "contact"))
+    the thermal method (ISO 15312, DIN 732) does not apply to bearings with contact seals: its reference
+    conditions have no seal friction, and Schaeffler HR 1 prints no n_thr for them; n_per and T_op, whose heat
+    balance would leave the seal friction out, are not computed either
     >>> method_refusal("deep_groove_ball", "shield")
     ''
     """

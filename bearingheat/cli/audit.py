@@ -48,7 +48,8 @@ list can also be given with --reference-speeds.
    some sizes deviate; groups that deviate systematically are flagged with the
    f0 that reproduces their published speeds (95 % interval, allowing for the
    catalogue's rounding of speeds); single misprinted rows are listed as
-   outliers.
+   outliers. A bearing with contact seals (6205-2RSR) and a blank n_thr is
+   skipped and named, not a row error: catalogues print no n_thr for it.
 
 Output: tables on stdout (flagged groups and their implied f0 first; the rows
 left out, the first 20 and how many more); with --out-dir DIR also
@@ -151,6 +152,7 @@ def run(args: argparse.Namespace) -> int:
                 not_computed = speeds.not_computed
                 flagged |= bool(len(speeds.flagged) or not_computed)   # a row not computed is a row error
                 printed["reference_speed_rows_not_computed"] = not_computed
+                printed["reference_speed_rows_skipped"] = list(speeds.skipped)
                 printed["reference_speed_groups"] = speeds.groups.to_dict(orient="records")
                 writes.append(partial(write_reference_speeds, speeds, out_dir, force=True, inputs=inputs))
     except AuditError as exc:

@@ -27,7 +27,7 @@ def test_two_series_say_sigma_is_the_floor_not_the_scale_of_series_that_agree():
     tables' and then flagged both."""
     hr1 = bearing_table().rename(columns=HR1_COLUMNS)
     keys = audit_reference_speeds(hr1)["series_key"]
-    two = hr1[keys.isin(["deep groove ball 618", "tapered roller 313"]).to_numpy()]
+    two = hr1.loc[keys.index[keys.isin(["deep groove ball 618", "tapered roller 313"])]]  # (the audit's index)
     audit = classify_reference_speeds(audit_reference_speeds(two))
     assert (audit.scale, audit.consistent, audit.series) == (0.002, 0, 2)
     assert reference_speed_lines(audit)[1] == (
@@ -113,3 +113,41 @@ def test_rows_of_a_frame_are_numbered_from_1():
     assert list(audit_reference_speeds(table)["reason"]) == [
         "", "row 2 (6206): n_B [1/min] = inf is outside the expected range (a published speed must be a finite "
             "number > 0)"]
+
+
+# ---- bearings with contact seals: no published speed --------------------------------------------
+
+def test_sealed_bearings_without_a_published_speed_are_skipped_not_row_errors(tmp_path):
+    """HR 1 prints n_B '–' for 6205-2RSR and 7205-B-2RS-TVP: a blank speed there is what the catalogue says, so
+    the row is skipped and named; a blank speed of an open bearing stays a row error, and a sealed bearing with
+    a speed is not computed (the method does not apply)."""
+    path = tmp_path / "list.csv"
+    pd.DataFrame({
+        "designation": ["6205", "6205-2RSR", "6205-2Z", "7205-B-2RS-TVP", "6206-2RSR", "6207"],
+        "d [mm]": [25, 25, 25, 25, 30, 35], "D [mm]": [52, 52, 52, 52, 62, 72], "B [mm]": [15, 15, 15, 15, 16, 17],
+        "C0 [N]": [7800, 7800, 7800, 9300, 11200, 15300],
+        "n_B [1/min]": ["14400", "", "14400", "", "12000", ""]}).to_csv(path, index=False)
+    rows = audit_reference_speeds(read_table(path))
+    assert list(rows["designation"]) == ["6205", "6205-2Z", "6206-2RSR", "6207"]
+    assert rows.attrs["skipped"] == ["row 3 (6205-2RSR)", "row 5 (7205-B-2RS-TVP)"]
+    assert list(rows["reason"]) == [
+        "", "",
+        "row 6 (6206-2RSR): n_thr: the thermal method (ISO 15312, DIN 732) does not apply to bearings with "
+        "contact seals: its reference conditions have no seal friction, and Schaeffler HR 1 prints no n_thr for "
+        "them; n_per and T_op, whose heat balance would leave the seal friction out, are not computed either",
+        "row 7 (6207): n_B [1/min] is blank (a published speed must be a finite number > 0)"]
+    audit = classify_reference_speeds(rows)
+    assert audit.skipped == ("row 3 (6205-2RSR)", "row 5 (7205-B-2RS-TVP)")
+    assert audit.groups["bearings"].sum() == 4
+    assert reference_speed_lines(audit)[2] == (
+        "Rows skipped (2), bearings with contact seals and no published n_thr: the thermal method (ISO 15312, "
+        "DIN 732) does not apply to them, and catalogues print none (Schaeffler HR 1: '–'); not audited: "
+        "row 3 (6205-2RSR), row 5 (7205-B-2RS-TVP)")
+
+
+def test_the_shipped_table_skips_its_sealed_bearings_and_computes_every_other():
+    rows = audit_reference_speeds(bearing_table().rename(columns=HR1_COLUMNS))
+    assert len(rows) == 1034 and (rows["reason"] == "").all() and rows["n_thr_tables"].notna().all()
+    skipped = rows.attrs["skipped"]
+    assert len(skipped) == 103 and skipped[:2] == ["row 2 (623-2RSR)", "row 5 (624-2RSR)"]
+    assert "row 89 (6205-2RSR)" in skipped and not rows["variant"].isin(["2RSR", "2RS"]).any()

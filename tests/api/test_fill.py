@@ -33,7 +33,7 @@ def test_an_unknown_designation_without_dimensions_is_refused():
     with pytest.raises(bh.FrictionInputError) as info:
         bh.friction_torque("6208-2ZZ", n=1480 * u.rpm, nu=40 * u("mm^2/s"), lubrication="oil_bath")
     assert str(info.value) == ("designation: '6208-2ZZ' is not in the bearing table (Schaeffler HR 1, 2006); close "
-                               "matches: 6208-2Z, 6208, 608-2Z, 6320-2Z, 6308-2Z; or give d, D (and C0)")
+                               "matches: 6208-2Z, 6208-2RSR, 6208, 608-2Z, 6320-2Z; or give d, D (and C0)")
 
 
 def test_heat_balance_by_designation_alone():

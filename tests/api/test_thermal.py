@@ -149,6 +149,24 @@ def test_limiting_speed_caps_n_per_with_a_warning():
         in r.messages[0]
 
 
+def test_a_sealed_bearing_of_the_table_gets_its_values_but_no_thermal_speeds():
+    """6205-2RSR from the bearing table (HR 1: 25 x 52 x 15, C0 7800 N, n_B '–'): the friction is computed with
+    them; n_thr, n_per and T_op are not, and the message says why. By hand: dM = 38.5 mm, nu*n = 60000,
+    M0 = 2*60000^(2/3)*38.5^3*1e-7 = 17.492, f1 = 0.0009*sqrt(2000/7800) = 4.5573e-4,
+    M1 = f1*2000*38.5 = 35.091, MR = 52.584 N*mm, NR = MR*pi*3000/30*1e-3 = 16.520 W."""
+    sealed = heat_balance("6205-2RSR", n=3000 * u.rpm, Fr=2 * u.kN, nu=20 * u("mm^2/s"), lubrication="oil_bath",
+                          T_amb=u.Quantity(20, "degC"), T_bearing=u.Quantity(70, "degC"))
+    assert sealed.NR.to("W").magnitude == pytest.approx(16.520, abs=5e-4)
+    assert all(math.isnan(q.magnitude) for q in (sealed.n_thr, sealed.n_per, sealed.T_op))
+    assert sealed.status == ["warning"]
+    assert sealed.messages == [
+        "contact seals: their friction comes on top of the catalogue model (the Schaeffler catalogue, p. 63, lists "
+        "seal friction among the components; its formulas have no term for it); n_thr: the thermal method (ISO "
+        "15312, DIN 732) does not apply to bearings with contact seals: its reference conditions have no seal "
+        "friction, and Schaeffler HR 1 prints no n_thr for them; n_per and T_op, whose heat balance would leave "
+        "the seal friction out, are not computed either"]
+
+
 def test_method_does_not_apply_to_contact_seals_and_thrust_ball_bearings():
     sealed = heat_balance("6205-2RSR", d=25 * u.mm, D=52 * u.mm, B=15 * u.mm, C0=7.8 * u.kN, n=3000 * u.rpm,
                           Fr=2 * u.kN, nu=20 * u("mm^2/s"), T_amb=u.Quantity(20, "degC"),

@@ -41,6 +41,23 @@ def test_suffixes_match_and_the_values_are_the_catalogue_rows():
     assert out["M0 [N*mm]"].nunique() == 1
 
 
+def test_a_sealed_bearing_fills_its_values_keeps_the_seal_warning_and_gets_no_heat_balance():
+    """6208-2RSR (HR 1 p. 206/207, row 1: 40 x 80 x 18, C0 18 000 N, n_G 5600, n_B '–'): M1 takes the table's
+    C0, the speed check its own n_G (not the 20 000 1/min of 6208), and n_thr, n_per, T_op are not computed."""
+    out = calc(_row(designation="6208-2RSR", **{"n [rpm]": 6000, "T_amb [degC]": 20, "T_bearing [degC]": 70}))
+    # P0 = P1 = 2000 N; f1 = 0.0009 (2000/18000)^0.5 = 3e-4; M1 = f1 P1 dM = 3e-4 * 2000 * 60 = 36 N*mm
+    assert out["M1 [N*mm]"].iat[0] == pytest.approx(36.0, rel=1e-12)
+    assert out.loc[0, ["n_thr [1/min]", "n_per [1/min]", "T_op [degC]"]].isna().all()
+    assert out["status"].iat[0] == "warning"
+    assert out["message"].iat[0] == (
+        "contact seals: their friction comes on top of the catalogue model (the Schaeffler catalogue, p. 63, lists "
+        "seal friction among the components; its formulas have no term for it); n [rpm]: 6000 is above the "
+        "limiting speed n_G = 5600 1/min of 6208-2RSR (Schaeffler HR 1, 2006); check the speed and its unit; "
+        "n_thr: the thermal method (ISO 15312, DIN 732) does not apply to bearings with contact seals: its "
+        "reference conditions have no seal friction, and Schaeffler HR 1 prints no n_thr for them; n_per and T_op, "
+        "whose heat balance would leave the seal friction out, are not computed either")
+
+
 def test_a_typed_value_wins_and_a_disagreement_is_a_warning():
     # C0 is printed to 3 significant digits (18 kN: +-50 N); 18.04 kN agrees, 19 kN does not
     out = calc(pd.concat([_row(**{"C0 [kN]": 19.0, "D [mm]": 80.0}), _row(**{"C0 [kN]": 18.04})],
@@ -56,7 +73,7 @@ def test_an_unknown_designation_without_dimensions_lists_close_matches():
     assert out["status"].tolist() == ["error", "ok"]
     assert out["message"].iat[0].startswith(
         "designation: '6208-2ZZ' is not in the bearing table (Schaeffler HR 1, 2006); close matches: 6208-2Z, "
-        "6208, 608-2Z, 6320-2Z, 6308-2Z; or type the dimensions d, D (and C0)")
+        "6208-2RSR, 6208, 608-2Z, 6320-2Z; or type the dimensions d, D (and C0)")
 
 
 def test_an_unknown_designation_with_dimensions_is_computed_as_before():

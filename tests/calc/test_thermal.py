@@ -83,7 +83,9 @@ def test_reference_speed_rows_never_raise_and_give_reasons():
     n_thr = thermal_reference_speed_rows(frame)
     assert n_thr.isna().all()
     assert n_thr.attrs["reason"].to_dict() == {
-        "a": "n_thr: the thermal method (ISO 15312, DIN 732) does not apply to bearings with contact seals",
+        "a": "n_thr: the thermal method (ISO 15312, DIN 732) does not apply to bearings with contact seals: its "
+             "reference conditions have no seal friction, and Schaeffler HR 1 prints no n_thr for them; n_per and "
+             "T_op, whose heat balance would leave the seal friction out, are not computed either",
         "b": "n_thr: the thermal method (ISO 15312, DIN 732) does not apply to thrust ball bearings",
         "c": "designation: 'bogus' matches no row of the Schaeffler catalogue tables; give type and series explicitly instead",
         "d": "B [mm]: missing; the heat flow area A_r = pi*B*(D+d) needs the width",
@@ -239,7 +241,9 @@ def test_row_problems_are_messages_not_exceptions():
     assert out["status"].tolist() == ["warning", "error", "error", "error"]
     assert out.loc[0, "message"] == (
         "contact seals: their friction comes on top of the catalogue model (the Schaeffler catalogue, p. 63, lists seal friction among the components; its formulas have no term for it); n_thr: the thermal "
-        "method (ISO 15312, DIN 732) does not apply to bearings with contact seals")
+        "method (ISO 15312, DIN 732) does not apply to bearings with contact seals: its reference conditions have no "
+        "seal friction, and Schaeffler HR 1 prints no n_thr for them; n_per and T_op, whose heat balance would leave "
+        "the seal friction out, are not computed either")
     assert "nu100 [mm^2/s]: missing; nu40 alone does not fix the viscosity-temperature line (ASTM D341)" \
         in out.loc[1, "message"]
     assert ("n [1/min]: missing; nu from nu40/nu100 or iso_vg is taken at the operating temperature T_op, which "

@@ -102,7 +102,7 @@ def test_unknown_designation_lists_close_matches():
     with pytest.raises(DesignationError) as exc:
         parse_designation("6208X")
     assert str(exc.value) == ("designation: '6208X' matches no row of the Schaeffler catalogue tables (close matches: 6208, 6208-2Z, "
-                              "608, 6320, 6308); give type and series explicitly instead")
+                              "6208-2RSR, 608, 6320); give type and series explicitly instead")
 
 
 def test_empty_designation():

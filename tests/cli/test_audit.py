@@ -1,6 +1,7 @@
 """bearingheat audit on the command line: tables, files and exit codes."""
 from __future__ import annotations
 
+import json
 import subprocess
 import sys
 from pathlib import Path
@@ -196,3 +197,19 @@ def test_reference_speed_rows_not_computed_are_listed_and_exit_1(tmp_path, capsy
         "speed must be a finite number > 0)" for i in range(20)] + ["  ... 5 more"]
     assert main(["audit", "--reference-speeds", str(source), "-q"]) == 1
     assert capsys.readouterr() == ("", "")
+
+
+def test_sealed_bearings_without_a_published_speed_are_skipped_and_exit_0(tmp_path, capsys):
+    """6205-2RSR has no n_B in HR 1: the row is named as skipped, and it is no row error (exit 0)."""
+    path = tmp_path / "list.csv"
+    pd.DataFrame({"designation": ["6205", "6206", "6205-2RSR"], "d [mm]": [25, 30, 25], "D [mm]": [52, 62, 52],
+                  "B [mm]": [15, 16, 15], "C0 [N]": [7800, 11200, 7800],
+                  "n_B [1/min]": ["14400", "12000", ""]}).to_csv(path, index=False)
+    assert main(["audit", "--reference-speeds", str(path), "--json"]) == 0
+    printed = json.loads(capsys.readouterr().out)
+    assert printed["reference_speed_rows_skipped"] == ["row 4 (6205-2RSR)"]
+    assert printed["reference_speed_rows_not_computed"] == []
+    assert main(["audit", "--reference-speeds", str(path)]) == 0
+    assert ("Rows skipped (1), bearings with contact seals and no published n_thr: the thermal method (ISO 15312, "
+            "DIN 732) does not apply to them, and catalogues print none (Schaeffler HR 1: '–'); not audited: "
+            "row 4 (6205-2RSR)") in capsys.readouterr().out.splitlines()

@@ -29,6 +29,32 @@ def test_text_output_of_a_deep_groove_ball_bearing(capsys):
     ]
 
 
+def test_a_sealed_bearing_prints_its_values_and_says_hr1_gives_no_n_thr(capsys):
+    """6205-2RSR, HR 1 p. 202/203 row 18 (text copy lines 23099 and 23467): 25 x 52 x 15, C 14 000, C0 7 800,
+    n_G 9 000, n_B '–'."""
+    assert main(["lookup", "6205-2RSR"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert lines[lines.index("shield: 2RSR"):-1] == [
+        "shield: 2RSR",
+        "d [mm]: 25",
+        "D [mm]: 52",
+        "B [mm]: 15",
+        "C [N]: 14000",
+        "C0 [N]: 7800",
+        "n_G [1/min]: 9000",
+        "n_thr [1/min]: not given: HR 1 prints no thermal reference speed for bearings with contact seals (the "
+        "reference conditions of ISO 15312 have no seal friction)",
+    ]
+    assert lines[-1] == ("source: Schaeffler HR 1 (June 2006), p. 202 (dimensions) and p. 203 (ratings), table "
+                         "'deep groove ball bearings, single row', row 18; text copy ArtemFilin1990/Mar@68b9707")
+    # --json: null, as for every value the catalogue does not give
+    assert main(["lookup", "7205-B-2RS", "--json"]) == 0
+    record = json.loads(capsys.readouterr().out)
+    assert (record["designation"], record["match"], record["shield"]) == ("7205-B-2RS-TVP", "cage", "2RS")
+    assert (record["C [N]"], record["C0 [N]"], record["n_G [1/min]"], record["n_thr [1/min]"]) == (
+        14600.0, 9300.0, 8000.0, None)
+
+
 def test_text_output_of_a_tapered_bearing_matched_without_its_design_suffix(capsys):
     assert main(["lookup", "30208"]) == 0
     lines = capsys.readouterr().out.splitlines()
@@ -68,7 +94,7 @@ def test_unknown_designation_exits_2_with_close_matches(capsys):
     captured = capsys.readouterr()
     assert captured.out == ""
     assert captured.err == ("bearingheat lookup: error: designation: '6208-2ZZ' is not in the bearing table "
-                            "(Schaeffler HR 1, 2006); close matches: 6208-2Z, 6208, 608-2Z, 6320-2Z, 6308-2Z\n")
+                            "(Schaeffler HR 1, 2006); close matches: 6208-2Z, 6208-2RSR, 6208, 608-2Z, 6320-2Z\n")
 
 
 def test_unknown_designation_exits_2_with_json_too(capsys):

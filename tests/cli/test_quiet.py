@@ -40,7 +40,7 @@ def test_lookup_quiet_prints_nothing_and_the_exit_code_tells(capsys):
     assert main(["lookup", "6208-2ZZ", "--quiet"]) == 2
     assert capsys.readouterr() == ("", (
         "bearingheat lookup: error: designation: '6208-2ZZ' is not in the bearing table (Schaeffler HR 1, 2006); "
-        "close matches: 6208-2Z, 6208, 608-2Z, 6320-2Z, 6308-2Z\n"))
+        "close matches: 6208-2Z, 6208-2RSR, 6208, 608-2Z, 6320-2Z\n"))
 
 
 def test_plot_quiet_writes_the_figure_and_prints_nothing(tmp_path, capsys):

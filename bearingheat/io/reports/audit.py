@@ -6,7 +6,8 @@ left out are counted and listed (the first 20) and written to
 ``excluded.csv``. The reference speed audit
 (:func:`bearingheat.analysis.audit.audit_reference_speeds`, grouped by
 :func:`~bearingheat.analysis.audit.classify_reference_speeds`) is printed
-with the flagged groups and their implied f0 first, then the outliers, then
+with the rows it skipped (bearings with contact seals and no published speed),
+the flagged groups and their implied f0 first, then the outliers, then
 every group and the rows not computed with their reasons; it is written to
 ``reference_speeds.csv`` (one row per bearing: its group, deviation and
 outlier mark), ``reference_speed_series.csv`` (one row per series and size
@@ -20,7 +21,8 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from bearingheat.analysis.reference_speeds import MIN_CONSISTENT, SYSTEMATIC_RULE, ReferenceSpeedAudit
+from bearingheat.analysis.reference_speeds import (MIN_CONSISTENT, SEALED_WITHOUT_SPEED, SYSTEMATIC_RULE,
+                                                   ReferenceSpeedAudit)
 from bearingheat.io.files import write_outputs
 from bearingheat.io.tables import escape_formulas
 from bearingheat.io.reports import FIGURE_DPI, matplotlib_figure
@@ -101,6 +103,10 @@ def reference_speed_lines(audit: ReferenceSpeedAudit) -> list[str]:
     lines = ["Thermal reference speed from the tables against the published value "
              "(deviation = n_thr(tables)/n_thr(published) - 1).",
              f"{scale}; threshold = +/-{audit.threshold:.2%}."]
+    if audit.skipped:
+        more = len(audit.skipped) - SHOWN_EXCLUDED
+        lines.append(f"Rows skipped ({len(audit.skipped)}), {SEALED_WITHOUT_SPEED}: "
+                     f"{', '.join(audit.skipped[:SHOWN_EXCLUDED])}{f', ... {more} more' if more > 0 else ''}")
     flagged = audit.flagged
     if len(flagged):
         lines.append(f"Flagged groups ({len(flagged)}), with the f0 that reproduces their published speeds "
