@@ -60,7 +60,7 @@ def test_template_drop_down_lists():
         assert dv.type == "list" and str(dv.sqref) == f"{letters[name]}3:{letters[name]}10002"
         source = dv.formula1.split("!")[1].replace("$", "")
         assert [c.value for row in lists[source] for c in row] == choices
-        # a designation outside the table (6208-2Z, another catalogue) is a warning the designer may pass
+        # a designation outside the table (22208-E1, another catalogue) is a warning the designer may pass
         assert dv.errorStyle == ("warning" if name == "designation" else None)
     assert len(expected["designation"]) == 1137 and {"6208", "6205-2RSR"} <= set(expected["designation"])
 
