@@ -418,7 +418,7 @@ def _heat_balance_columns(frame: pd.DataFrame, results: pd.DataFrame, *, method:
         reason_once(i)
     T_op = np.where(usable, T_op, np.nan)
     with np.errstate(invalid="ignore", over="ignore"):
-        nu_op = nu_at(T_op)
+        nu_op = np.where(np.isnan(T_op), np.nan, nu_at(T_op))  # (a constant nu has no T_op to be taken at)
     for i in np.flatnonzero(~np.isnan(nu_op) & (nu_op < MIN_VISCOSITY)):  # ASTM D341's range; no pour point here
         message = viscosity_range_messages(nu_op[i], T_op[i])[0]
         if message:

@@ -317,3 +317,13 @@ def test_a_thrust_bearing_gets_n_thr_without_width_columns():
     assert out["status"].tolist() == ["ok"]
     assert out["n_thr [1/min]"].iat[0] == pytest.approx(brentq(reference, 1, 1e6, xtol=1e-10), rel=1e-9)
     assert round(out["n_thr [1/min]"].iat[0]) == 2414 and round(out["n_per [1/min]"].iat[0]) == 2108
+
+
+def test_nu_op_is_blank_where_T_op_is_not_computed():
+    """nu_op is the viscosity at T_op: a row without T_op (a bearing with contact seals: no heat balance) has no
+    nu_op either, also where nu is a constant column (it was shown as that constant beside a blank T_op)."""
+    rows = pd.DataFrame({"designation": ["6205-2RSR", "6205"], "lubrication": ["grease", "grease"],
+                         "n [rpm]": [6000, 6000], "Fr [kN]": [1, 1], "nu [mm^2/s]": [20, 20], "T_amb [degC]": [25, 25]})
+    out = calc(rows)
+    assert np.isnan(out["T_op [degC]"].iat[0]) and np.isnan(out["nu_op [mm^2/s]"].iat[0])
+    assert out["T_op [degC]"].iat[1] > 25 and out["nu_op [mm^2/s]"].iat[1] == 20.0
