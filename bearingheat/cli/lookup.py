@@ -14,9 +14,10 @@ from bearingheat.io.console import print_record
 
 DESCRIPTION = """\
 Look a bearing up in the bearing table of the package (Schaeffler HR 1, June 2006:
-deep groove ball 618, 160, 60, 62, 63, 64 open, -2Z and -2RSR; angular contact ball
-72..-B, 73..-B, open and -2RS; cylindrical roller N, NU, NJ, NUP of series 2, 3, 22,
-23, E design; tapered roller 302, 303, 313, 320, 322, 323, 330, 331, 332):
+deep groove ball 618, 619, 160, 60, 62, 63, 64 open, -2Z and -2RSR, 622 and 623 -2RSR;
+angular contact ball 72..-B, 73..-B, open and -2RS; cylindrical roller N, NU, NJ, NUP
+of series 2, 3, 22, 23, E design, and NU10..-M1; tapered roller 302, 303, 313, 320,
+322, 323, 329, 330, 331, 332 and the ISO 355 codes T7FC.., T4CB.., T2EE.., T5ED..):
 
   bearingheat lookup 6208
   bearingheat lookup NU208-E --json
