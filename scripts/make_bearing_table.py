@@ -22,9 +22,12 @@ groove ball bearings ``-2RSR`` and 16 angular contact ball bearings ``72..-B-2RS
 
 It also leaves out, as out of its scope, series that the friction tables cover.
 ``scripts/hr1_2006_more_series_rows.csv`` holds them, read from the same text copy (its header
-comment gives the method, the checks and the rows left out): 111 bearings, deep groove ball
-619 (open, ``-2Z``, ``-2RSR``), ``622..-2RSR`` and ``623..-2RSR``, cylindrical roller ``NU10..-M1``,
-tapered roller 329 and those HR 1 designates by an ISO 355 code (T7FC, T4CB, T2EE, T5ED).
+comment gives the method, the checks and the rows left out): 134 bearings, deep groove ball
+619 (open, ``-2Z``, ``-2RSR``), ``622..-2RSR`` and ``623..-2RSR``, angular contact ball ``70..-B-TVP``,
+``70..-B-2RS-TVP`` and ``718..-B-TVH``, cylindrical roller ``NU10..-M1`` and ``NU19..-M1``, tapered
+roller 329 and those HR 1 designates by an ISO 355 code (T7FC, T4CB, T2EE, T5ED). HR 1 prints no
+thermal reference speed for the open 70, 718 and NU19 bearings either (:data:`NO_REFERENCE_SPEED`):
+their ``n_thr`` is blank too.
 
 What the script does, and nothing else:
 
@@ -33,11 +36,12 @@ What the script does, and nothing else:
   no unit conversion: the catalogue's units mm, N and 1/min are the package's catalogue units);
 - adds the package's bearing type and prefix from :func:`bearingheat.catalogue.designation.parse_designation`,
   and refuses to write when the parser disagrees with the source's family, series, type or bore;
-- renames ``n_B`` (the catalogue's thermal reference speed) to ``n_thr``, blank for a sealed row;
+- renames ``n_B`` (the catalogue's thermal reference speed) to ``n_thr``, blank for a sealed row and for the
+  series of :data:`NO_REFERENCE_SPEED`;
 - refuses to write a sealed row whose n_B is not "–", whose mounting dimensions d_a, D_a do not lie
   between d and D, or that differs from its open counterpart of the data set in d, D, B, C or C0;
-- refuses to write a row of the more series whose n_B is "–" without contact seals or a number with
-  them, whose mounting dimensions do not lie between d and D, that differs from its open counterpart
+- refuses to write a row of the more series whose n_B is "–" without contact seals (outside the series of
+  :data:`NO_REFERENCE_SPEED`) or a number with them (or in those series), whose mounting dimensions do not lie between d and D, that differs from its open counterpart
   (when it has one) in d, D, B, C or C0, or, for a tapered bearing, whose T < B or whose e·Y is not
   0.6 ± 0.05 or Y0/Y not 0.55 ± 0.03 (the relations of HR 1's calculation factors);
 - writes a units row under the header (a pint unit, ``1`` dimensionless, ``-`` text) and a
@@ -130,6 +134,10 @@ SEAL_KINDS = {"open": "open", "2Z": "shield", "2RSR": "contact", "2RS": "contact
 SHARED = ("d [mm]", "D [mm]", "B [mm]", "C [N]", "C0 [N]")
 # HR 1 prints this for a sealed bearing's n_B
 NO_VALUE = "–"
+# (family, series) whose open bearings HR 1 prints without n_B ("–") as well: angular contact ball 70..-B-TVP
+# and 718..-B-TVH (pp. 240-245), cylindrical roller NU19..-M1 (p. 378/379); their n_thr is blank
+NO_REFERENCE_SPEED = frozenset({("angular contact ball", "70"), ("angular contact ball", "718"),
+                                ("cylindrical roller", "19")})
 
 MORE_HEADER = [
     "designation", "family", "series", "type", "shield", "d [mm]", "D [mm]", "B [mm]", "T [mm]", "C [N]", "C0 [N]",
@@ -169,12 +177,13 @@ def convert_row(row: dict[str, str]) -> list[str]:
     if family not in FAMILY_TYPES:
         raise SourceError(f"{name}: unknown family {family!r}")
     tapered = family == "tapered roller"
-    sealed = SEAL_KINDS.get(row["shield"]) == "contact"
-    if sealed and row["n_B [1/min]"] != "":
-        raise SourceError(f"{name}: n_B = {row['n_B [1/min]']!r} given for a bearing with contact seals")
+    without_speed = _without_reference_speed(row)
+    if without_speed and row["n_B [1/min]"] != "":
+        raise SourceError(f"{name}: n_B = {row['n_B [1/min]']!r} given for a bearing with contact seals or of a "
+                          "series HR 1 prints no n_B for")
     for column in ALWAYS + TAPERED_ONLY:
         text = row[column]
-        if sealed and column == "n_B [1/min]":
+        if without_speed and column == "n_B [1/min]":
             continue
         if column in ALWAYS or tapered:
             if text == "":
@@ -202,6 +211,11 @@ def convert_row(row: dict[str, str]) -> list[str]:
               f"row {row_on_page}; {COPY}")
     derived = {"bearing_type": parsed.bearing_type, "prefix": parsed.prefix, "source": source}
     return [row[column] if column is not None else derived[out] for out, (_, column) in COLUMNS.items()]
+
+
+def _without_reference_speed(row: dict[str, str]) -> bool:
+    """HR 1 prints no n_B for the row's bearing: contact seals, or a series of :data:`NO_REFERENCE_SPEED`."""
+    return SEAL_KINDS.get(row["shield"]) == "contact" or (row["family"], row["series"]) in NO_REFERENCE_SPEED
 
 
 def sealed_rows(sealed_text: str, source_rows: list[dict[str, str]]) -> list[dict[str, str]]:
@@ -274,10 +288,11 @@ def more_series_rows(more_text: str, known_rows: list[dict[str, str]]) -> list[d
     out = []
     for row in rows:
         name = row["designation"]
-        sealed = SEAL_KINDS.get(row["shield"]) == "contact"
-        if sealed != (row["n_B [1/min]"] == NO_VALUE):
+        without_speed = _without_reference_speed(row)
+        if without_speed != (row["n_B [1/min]"] == NO_VALUE):
             raise SourceError(f"{name}: n_B = {row['n_B [1/min]']!r} with shield {row['shield']!r}; HR 1 prints "
-                              f"{NO_VALUE!r} for the bearings with contact seals and for no other")
+                              f"{NO_VALUE!r} for the bearings with contact seals and for the series "
+                              f"{', '.join(sorted(series for _, series in NO_REFERENCE_SPEED))}, and for no other")
         _check_mounting(row)
         if row["open counterpart"]:
             _check_counterpart(row, by_name)
@@ -287,7 +302,7 @@ def more_series_rows(more_text: str, known_rows: list[dict[str, str]]) -> list[d
                               f"{_body(name)}")
         if row["family"] == "tapered roller":
             _check_tapered(row)
-        out.append({column: row[column] for column in SOURCE_HEADER} | ({"n_B [1/min]": ""} if sealed else {}))
+        out.append({column: row[column] for column in SOURCE_HEADER} | ({"n_B [1/min]": ""} if without_speed else {}))
     return out
 
 

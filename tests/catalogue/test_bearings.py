@@ -85,6 +85,11 @@ EXPECTED = {
     "T2EE060": (60, 115, 39, 40, 189000, 250000, 0.33, 1.8, 0.99, 6000, 3800),       # 92892 / 93435
     "T4CB120": (120, 170, 25, 27, 152000, 235000, 0.47, 1.27, 0.7, 4000, 2000),      # 96131 / 96617
     "T5ED065": (65, 120, 38, 39, 160000, 234000, 0.56, 1.07, 0.59, 5300, 3600),      # 93057 / 93589
+    # HR 1 prints n_B '–' for the whole of 70..-B, 718..-B and NU19..-M1, open bearings included
+    "7004-B-TVP": (20, 42, 12, NAN, 13400, 7500, NAN, NAN, NAN, 18000, NAN),         # 32215 / 32698
+    "7004-B-2RS-TVP": (20, 42, 12, NAN, 13400, 7500, NAN, NAN, NAN, 9500, NAN),      # 32227 / 32710
+    "71810-B-TVH": (50, 65, 7, NAN, 6950, 7350, NAN, NAN, NAN, 9500, NAN),           # 33814 / 34246
+    "NU1992-M1": (460, 620, 74, NAN, 1020000, 1960000, NAN, NAN, NAN, 1800, NAN),   # 67622 / 68047
 }
 
 
@@ -171,8 +176,8 @@ def test_more_series_rows_carry_their_source_values():
     counts = {}
     for row in rows:
         counts[row["series"]] = counts.get(row["series"], 0) + 1
-    assert counts == {"619": 19, "622": 11, "623": 9, "10": 41, "329": 16, "T7FC": 9, "T4CB": 3, "T2EE": 1,
-                      "T5ED": 2}
+    assert counts == {"619": 19, "622": 11, "623": 9, "70": 10, "718": 11, "10": 41, "19": 2, "329": 16,
+                      "T7FC": 9, "T4CB": 3, "T2EE": 1, "T5ED": 2}
     for row in rows:
         data = bearing(row["designation"])
         assert data.match == "exact" and data.designation == row["designation"]
@@ -180,8 +185,9 @@ def test_more_series_rows_carry_their_source_values():
             row["family"], row["series"], row["type"], row["shield"])
         for name, column in MORE_COLUMNS.items():
             assert _same(getattr(data, name), float(row[column]) if row[column] else NAN), (data.designation, name)
-        # HR 1 prints '–' for n_B of the bearings with contact seals, a number for every other
-        if data.contact_sealed:
+        # HR 1 prints '–' for n_B of the bearings with contact seals and of the series 70, 718 and NU19, a number
+        # for every other
+        if data.contact_sealed or row["series"] in ("70", "718", "19"):
             assert row["n_B [1/min]"] == "–" and math.isnan(data.n_thr)
         else:
             assert data.n_thr == float(row["n_B [1/min]"])
@@ -201,7 +207,10 @@ def test_more_series_rows_carry_their_source_values():
     ("32919", ",0.36,1.68,0.92,", ",0.36,1.2,0.92,",
      "32919: e·Y = 0.432 is not 0.6 ± 0.05 (e = 0.36, Y = 1.2, Y0 = 0.92): a calculation factor is misread"),
     ("61911", ",7500,", ",–,", "61911: n_B = '–' with shield 'open'; HR 1 prints '–' for the bearings with "
-                               "contact seals and for no other"),
+                               "contact seals and for the series 19, 70, 718, and for no other"),
+    ("71810-B-TVH", ",9500,–,", ",9500,5000,", "71810-B-TVH: n_B = '5000' with shield 'open'; HR 1 prints '–' for "
+                                               "the bearings with contact seals and for the series 19, 70, 718, and "
+                                               "for no other"),
     ("61909-2Z", ",14000,", ",14600,", "61909-2Z: C [N] = 14600 differ from 61909's 14000"),
     ("NU1010-M1", ",53,75,", ",53,85,", "NU1010-M1: D_a [mm] = 85 is not between d = 50 and D = 80: the ratings "
                                         "row does not belong to this bearing"),
@@ -225,7 +234,7 @@ def test_the_script_refuses_a_misread_more_series_row(tmp_path, designation, old
 
 def test_table_shape_units_and_sources():
     table = bearing_table()
-    assert len(table) == 1248 == len(designations()) == len(set(designations()))
+    assert len(table) == 1271 == len(designations()) == len(set(designations()))
     units = table_units("bearings_hr1_2006")
     assert units == {"designation": "-", "family": "-", "bearing_type": "-", "series": "-", "prefix": "-",
                      "shield": "-", "d": "mm", "D": "mm", "B": "mm", "T": "mm", "C": "N", "C0": "N", "e": "1",
@@ -234,23 +243,25 @@ def test_table_shape_units_and_sources():
                                           "tapered_roller"} < set(BEARING_TYPES)
     assert table["source"].str.startswith("Schaeffler HR 1 (June 2006), p. ").all()
     counts = table.groupby("family").size().to_dict()
-    assert counts == {"deep groove ball": 433, "angular contact ball": 116, "cylindrical roller": 449,
+    assert counts == {"deep groove ball": 433, "angular contact ball": 137, "cylindrical roller": 451,
                       "tapered roller": 250}
     assert table.groupby(["family", "shield"]).size().to_dict() == {
-        ("angular contact ball", "2RS"): 16, ("angular contact ball", "open"): 100,
-        ("cylindrical roller", "open"): 449, ("deep groove ball", "2RSR"): 115, ("deep groove ball", "2Z"): 100,
+        ("angular contact ball", "2RS"): 21, ("angular contact ball", "open"): 116,
+        ("cylindrical roller", "open"): 451, ("deep groove ball", "2RSR"): 115, ("deep groove ball", "2Z"): 100,
         ("deep groove ball", "open"): 218, ("tapered roller", "open"): 250}
     assert table.loc[table["family"] == "cylindrical roller", "prefix"].value_counts().to_dict() == {
-        "NU": 176, "NJ": 117, "NUP": 103, "N": 53}
+        "NU": 178, "NJ": 117, "NUP": 103, "N": 53}
     # T, e, Y, Y0 for tapered roller bearings only, every other value everywhere
     tapered = table["family"] == "tapered roller"
     for name in ("T", "e", "Y", "Y0"):
         assert table.loc[tapered, name].notna().all() and table.loc[~tapered, name].isna().all()
     for name in ("d", "D", "B", "C", "C0", "n_G"):
         assert (table[name] > 0).all()
-    # n_thr: HR 1 prints none for a bearing with contact seals, and one for every other bearing
-    sealed = table["shield"].isin(["2RSR", "2RS"])
-    assert table.loc[sealed, "n_thr"].isna().all() and (table.loc[~sealed, "n_thr"] > 0).all()
+    # n_thr: HR 1 prints none for a bearing with contact seals and for the series 70, 718 (angular contact ball)
+    # and NU19, and one for every other bearing
+    without = table["shield"].isin(["2RSR", "2RS"]) | table["series"].isin(["70", "718", "19"])
+    assert table.loc[without, "n_thr"].isna().all() and (table.loc[~without, "n_thr"] > 0).all()
+    assert without.sum() == 154
 
 
 @pytest.mark.parametrize("designation", sorted(EXPECTED))
@@ -306,6 +317,10 @@ def test_types_series_prefix_and_shield():
     ("61908-2RSR", "61908-2RSR", "exact"),
     ("62205-2RSR", "62205-2RSR", "exact"),
     ("NU1010-M1", "NU1010-M1", "exact"),
+    ("7004-B", "7004-B-TVP", "cage"),
+    ("7004-B-2RS", "7004-B-2RS-TVP", "cage"),
+    ("71810", "71810-B-TVH", "design"),
+    ("NU1992", "NU1992-M1", "cage"),
     ("NU1010", "NU1010-M1", "cage"),
     ("NU1011", "NU1011-E-M1", "design"),
     ("32940", "32940-A", "design"),
