@@ -16,8 +16,9 @@ DESCRIPTION = """\
 Look a bearing up in the bearing table of the package (Schaeffler HR 1, June 2006:
 deep groove ball 618, 619, 160, 60, 62, 63, 64 open, -2Z and -2RSR, 622 and 623 -2RSR;
 angular contact ball 70..-B, 72..-B, 73..-B, open and -2RS, and 718..-B; cylindrical
-roller N, NU, NJ, NUP of series 2, 3, 22, 23, E design, and NU10..-M1, NU19..-M1; tapered roller 302, 303, 313, 320,
-322, 323, 329, 330, 331, 332 and the ISO 355 codes T7FC.., T4CB.., T2EE.., T5ED..):
+roller N, NU, NJ, NUP of series 2, 3, 22, 23, E design, and NU10..-M1, NU19..-M1;
+tapered roller 302, 303, 313, 320, 322, 323, 329, 330, 331, 332 and the ISO 355 codes
+T7FC.., T4CB.., T2EE.., T5ED..):
 
   bearingheat lookup 6208
   bearingheat lookup NU208-E --json
@@ -33,9 +34,9 @@ thermal reference speed) [1/min], and source (catalogue, pages, table, row). Val
 catalogue does not give (T, e, Y, Y0 of a ball or cylindrical roller bearing) are left
 out, but for n_thr of a bearing with contact seals (6205-2RSR) the line says that HR 1
 gives none and why, and for the open bearings HR 1 prints without one (7004-B-TVP,
-71810-B-TVH, NU1992-M1) that it gives none; --json prints one JSON object with the same keys and null for them.
-With -q nothing is printed: the exit code alone says whether the designation is in the
-table.
+71810-B-TVH, NU1992-M1) that it gives none; --json prints one JSON object with the same
+keys and null for them. With -q nothing is printed: the exit code alone says whether
+the designation is in the table.
 
 Exit codes: 0 found; 2 unknown or ambiguous designation (the message lists close
 designations of the table).
