@@ -22,7 +22,7 @@ groove ball bearings ``-2RSR`` and 16 angular contact ball bearings ``72..-B-2RS
 
 It also leaves out, as out of its scope, series that the friction tables cover.
 ``scripts/hr1_2006_more_series_rows.csv`` holds them, read from the same text copy (its header
-comment gives the method, the checks and the rows left out): 134 bearings, deep groove ball
+comment gives the method, the checks and the rows left out): 140 bearings, deep groove ball
 619 (open, ``-2Z``, ``-2RSR``), ``622..-2RSR`` and ``623..-2RSR``, angular contact ball ``70..-B-TVP``,
 ``70..-B-2RS-TVP`` and ``718..-B-TVH``, cylindrical roller ``NU10..-M1`` and ``NU19..-M1``, tapered
 roller 329 and those HR 1 designates by an ISO 355 code (T7FC, T4CB, T2EE, T5ED). HR 1 prints no

@@ -18,7 +18,7 @@ __all__ = ["bearing", "BearingData", "bearing_table", "designations"]
 def bearing(designation: str) -> BearingData:
     """The bearing ``designation`` (with or without cage and design suffixes) of the bearing table.
 
-    The table holds 1271 bearings of the Schaeffler catalogue HR 1 "Rolling
+    The table holds 1277 bearings of the Schaeffler catalogue HR 1 "Rolling
     bearings" (edition June 2006): deep groove ball bearings 618, 619, 160,
     60, 62, 63, 64 (open, -2Z and, with contact seals, -2RSR) and 622, 623
     (-2RSR), angular contact ball bearings 70..-B, 72..-B and 73..-B (open

@@ -1,6 +1,6 @@
 """The bearing table: dimensions, load ratings, calculation factors and speeds by designation.
 
-``tables/bearings_hr1_2006.csv`` holds 1271 bearings of Schaeffler HR 1 "Rolling bearings"
+``tables/bearings_hr1_2006.csv`` holds 1277 bearings of Schaeffler HR 1 "Rolling bearings"
 (edition June 2006): deep groove ball bearings (series 618, 619, 160, 60, 62, 63, 64, open,
 ``-2Z`` and, with contact seals, ``-2RSR``; 622 and 623, which HR 1 prints with contact seals
 only), angular contact ball bearings 70..-B, 72..-B and 73..-B (open and ``-2RS``) and 718..-B,
@@ -259,7 +259,7 @@ def units_of_table() -> dict[str, str]:
 def bearing_table() -> pd.DataFrame:
     """The whole bearing table (a copy), numeric columns in catalogue units, blank -> NaN.
 
-    The 1271 bearings of the Schaeffler catalogue HR 1 "Rolling bearings"
+    The 1277 bearings of the Schaeffler catalogue HR 1 "Rolling bearings"
     (edition June 2006), one row per bearing in catalogue order.
 
     Parameters
@@ -286,7 +286,7 @@ def bearing_table() -> pd.DataFrame:
     --------
     >>> table = bearing_table()
     >>> len(table), float(table.loc[table["designation"] == "6208", "C0"].iloc[0])
-    (1271, 18000.0)
+    (1277, 18000.0)
     """
     return load_table(TABLE)
 
@@ -305,7 +305,7 @@ def designations() -> tuple[str, ...]:
     Returns
     -------
     tuple of str
-        The 1271 full designations, suffixes included (``"6208-2Z"``,
+        The 1277 full designations, suffixes included (``"6208-2Z"``,
         ``"NU208-E-TVP2"``, ``"30205-A"``).
 
     Raises
@@ -319,7 +319,7 @@ def designations() -> tuple[str, ...]:
     --------
     >>> names = designations()
     >>> len(names), "6208-2Z" in names, "6208-2RSR" in names, "NU208-E-TVP2" in names
-    (1271, True, True, True)
+    (1277, True, True, True)
     """
     return tuple(record.designation for record in _records())
 

@@ -79,6 +79,8 @@ EXPECTED = {
     "62305-2RSR": (25, 62, 24, NAN, 22400, 11400, NAN, NAN, NAN, 7500, NAN),         # 23189 / 23547
     "NU1010-M1": (50, 80, 16, NAN, 42500, 41500, NAN, NAN, NAN, 15000, 7400),        # 62599 / 63088
     "NU1096-M1": (480, 700, 100, NAN, 1700000, 3100000, NAN, NAN, NAN, 1500, 780),  # 67658 / 68080
+    "NU10/500-M1": (500, 720, 100, NAN, 1760000, 3200000, NAN, NAN, NAN, 1500, 750),  # 68129 / 68242 (p. 380/381)
+    "NU19/710-M1": (710, 950, 106, NAN, 2240000, 4750000, NAN, NAN, NAN, 1100, NAN),  # 68184 / 68297
     "32919": (95, 130, 23, 23, 100000, 177000, 0.36, 1.68, 0.92, 4800, 2450),        # 95078 / 95648
     "32940-A": (200, 280, 51, 51, 495000, 930000, 0.39, 1.52, 0.84, 2200, 1240),     # 97962 / 98311
     "T7FC045": (45, 95, 26.5, 29, 88000, 107000, 0.87, 0.69, 0.38, 7000, 5600),      # 91864 / 92364
@@ -176,7 +178,7 @@ def test_more_series_rows_carry_their_source_values():
     counts = {}
     for row in rows:
         counts[row["series"]] = counts.get(row["series"], 0) + 1
-    assert counts == {"619": 19, "622": 11, "623": 9, "70": 10, "718": 11, "10": 41, "19": 2, "329": 16,
+    assert counts == {"619": 19, "622": 11, "623": 9, "70": 10, "718": 11, "10": 43, "19": 6, "329": 16,
                       "T7FC": 9, "T4CB": 3, "T2EE": 1, "T5ED": 2}
     for row in rows:
         data = bearing(row["designation"])
@@ -234,7 +236,7 @@ def test_the_script_refuses_a_misread_more_series_row(tmp_path, designation, old
 
 def test_table_shape_units_and_sources():
     table = bearing_table()
-    assert len(table) == 1271 == len(designations()) == len(set(designations()))
+    assert len(table) == 1277 == len(designations()) == len(set(designations()))
     units = table_units("bearings_hr1_2006")
     assert units == {"designation": "-", "family": "-", "bearing_type": "-", "series": "-", "prefix": "-",
                      "shield": "-", "d": "mm", "D": "mm", "B": "mm", "T": "mm", "C": "N", "C0": "N", "e": "1",
@@ -243,14 +245,14 @@ def test_table_shape_units_and_sources():
                                           "tapered_roller"} < set(BEARING_TYPES)
     assert table["source"].str.startswith("Schaeffler HR 1 (June 2006), p. ").all()
     counts = table.groupby("family").size().to_dict()
-    assert counts == {"deep groove ball": 433, "angular contact ball": 137, "cylindrical roller": 451,
+    assert counts == {"deep groove ball": 433, "angular contact ball": 137, "cylindrical roller": 457,
                       "tapered roller": 250}
     assert table.groupby(["family", "shield"]).size().to_dict() == {
         ("angular contact ball", "2RS"): 21, ("angular contact ball", "open"): 116,
-        ("cylindrical roller", "open"): 451, ("deep groove ball", "2RSR"): 115, ("deep groove ball", "2Z"): 100,
+        ("cylindrical roller", "open"): 457, ("deep groove ball", "2RSR"): 115, ("deep groove ball", "2Z"): 100,
         ("deep groove ball", "open"): 218, ("tapered roller", "open"): 250}
     assert table.loc[table["family"] == "cylindrical roller", "prefix"].value_counts().to_dict() == {
-        "NU": 178, "NJ": 117, "NUP": 103, "N": 53}
+        "NU": 184, "NJ": 117, "NUP": 103, "N": 53}
     # T, e, Y, Y0 for tapered roller bearings only, every other value everywhere
     tapered = table["family"] == "tapered roller"
     for name in ("T", "e", "Y", "Y0"):
@@ -261,7 +263,7 @@ def test_table_shape_units_and_sources():
     # and NU19, and one for every other bearing
     without = table["shield"].isin(["2RSR", "2RS"]) | table["series"].isin(["70", "718", "19"])
     assert table.loc[without, "n_thr"].isna().all() and (table.loc[~without, "n_thr"] > 0).all()
-    assert without.sum() == 154
+    assert without.sum() == 158
 
 
 @pytest.mark.parametrize("designation", sorted(EXPECTED))
