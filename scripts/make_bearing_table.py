@@ -41,8 +41,9 @@ What the script does, and nothing else:
 - refuses to write a sealed row whose n_B is not "–", whose mounting dimensions d_a, D_a do not lie
   between d and D, or that differs from its open counterpart of the data set in d, D, B, C or C0;
 - refuses to write a row of the more series whose n_B is "–" without contact seals (outside the series of
-  :data:`NO_REFERENCE_SPEED`) or a number with them (or in those series), whose mounting dimensions do not lie between d and D, that differs from its open counterpart
-  (when it has one) in d, D, B, C or C0, or, for a tapered bearing, whose T < B or whose e·Y is not
+  :data:`NO_REFERENCE_SPEED`) or a number with them (or in those series), whose mounting dimensions do
+  not lie between d and D, that differs from its open counterpart (when it has one) in d, D, B, C or
+  C0, or, for a tapered bearing, whose T < B or whose e·Y is not
   0.6 ± 0.05 or Y0/Y not 0.55 ± 0.03 (the relations of HR 1's calculation factors);
 - writes a units row under the header (a pint unit, ``1`` dimensionless, ``-`` text) and a
   ``source`` column naming catalogue, edition, pages, table and row.
