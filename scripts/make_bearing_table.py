@@ -20,23 +20,39 @@ text copy (its header comment gives the method, the checks and the one row left 
 groove ball bearings ``-2RSR`` and 16 angular contact ball bearings ``72..-B-2RS-TVP`` and
 ``73..-B-2RS-TVP``, with dimensions, load ratings and limiting speed; their ``n_thr`` is blank.
 
+It also leaves out, as out of its scope, series that the friction tables cover.
+``scripts/hr1_2006_more_series_rows.csv`` holds them, read from the same text copy (its header
+comment gives the method, the checks and the rows left out): 140 bearings, deep groove ball
+619 (open, ``-2Z``, ``-2RSR``), ``622..-2RSR`` and ``623..-2RSR``, angular contact ball ``70..-B-TVP``,
+``70..-B-2RS-TVP`` and ``718..-B-TVH``, cylindrical roller ``NU10..-M1`` and ``NU19..-M1``, tapered
+roller 329 and those HR 1 designates by an ISO 355 code (T7FC, T4CB, T2EE, T5ED). HR 1 prints no
+thermal reference speed for the open 70, 718 and NU19 bearings either (:data:`NO_REFERENCE_SPEED`):
+their ``n_thr`` is blank too.
+
 What the script does, and nothing else:
 
-- keeps every row of both sources, in catalogue order (page, row on the page);
+- keeps every row of the three sources, in catalogue order (page, row on the page);
 - copies every number digit for digit as text (no float formatting, no rounding,
   no unit conversion: the catalogue's units mm, N and 1/min are the package's catalogue units);
 - adds the package's bearing type and prefix from :func:`bearingheat.catalogue.designation.parse_designation`,
   and refuses to write when the parser disagrees with the source's family, series, type or bore;
-- renames ``n_B`` (the catalogue's thermal reference speed) to ``n_thr``, blank for a sealed row;
+- renames ``n_B`` (the catalogue's thermal reference speed) to ``n_thr``, blank for a sealed row and for the
+  series of :data:`NO_REFERENCE_SPEED`;
 - refuses to write a sealed row whose n_B is not "–", whose mounting dimensions d_a, D_a do not lie
   between d and D, or that differs from its open counterpart of the data set in d, D, B, C or C0;
+- refuses to write a row of the more series whose n_B is "–" without contact seals (outside the series of
+  :data:`NO_REFERENCE_SPEED`) or a number with them (or in those series), whose mounting dimensions do
+  not lie between d and D, that differs from its open counterpart (when it has one) in d, D, B, C or
+  C0, or, for a tapered bearing, whose T < B or whose e·Y is not
+  0.6 ± 0.05 or Y0/Y not 0.55 ± 0.03 (the relations of HR 1's calculation factors);
 - writes a units row under the header (a pint unit, ``1`` dimensionless, ``-`` text) and a
   ``source`` column naming catalogue, edition, pages, table and row.
 
 Usage (deterministic: the same source gives the same bytes)::
 
     .venv/bin/python scripts/make_bearing_table.py
-    .venv/bin/python scripts/make_bearing_table.py --source PATH.csv --sealed PATH.csv --output PATH.csv
+    .venv/bin/python scripts/make_bearing_table.py --source PATH.csv --sealed PATH.csv --more PATH.csv \
+        --output PATH.csv
 """
 from __future__ import annotations
 
@@ -53,6 +69,7 @@ from bearingheat.errors import DesignationError
 ROOT = Path(__file__).resolve().parents[1]
 SOURCE = ROOT.parent / "shared" / "data" / "hr1_2006_reference_speeds.csv"
 SEALED = ROOT / "scripts" / "hr1_2006_sealed_rows.csv"
+MORE = ROOT / "scripts" / "hr1_2006_more_series_rows.csv"
 OUTPUT = ROOT / "tables" / "bearings_hr1_2006.csv"
 
 SOURCE_HEADER = [
@@ -118,6 +135,20 @@ SEAL_KINDS = {"open": "open", "2Z": "shield", "2RSR": "contact", "2RS": "contact
 SHARED = ("d [mm]", "D [mm]", "B [mm]", "C [N]", "C0 [N]")
 # HR 1 prints this for a sealed bearing's n_B
 NO_VALUE = "–"
+# (family, series) whose open bearings HR 1 prints without n_B ("–") as well: angular contact ball 70..-B-TVP
+# and 718..-B-TVH (pp. 240-245), cylindrical roller NU19..-M1 (p. 378/379); their n_thr is blank
+NO_REFERENCE_SPEED = frozenset({("angular contact ball", "70"), ("angular contact ball", "718"),
+                                ("cylindrical roller", "19")})
+
+MORE_HEADER = [
+    "designation", "family", "series", "type", "shield", "d [mm]", "D [mm]", "B [mm]", "T [mm]", "C [N]", "C0 [N]",
+    "n_G [1/min]", "n_B [1/min]", "e [-]", "Y [-]", "Y0 [-]", "d_a [mm]", "D_a [mm]", "open counterpart", "page",
+    "page_ratings", "row_on_page", "line", "line_ratings",
+]
+# the relations of HR 1's calculation factors of tapered roller bearings (hr1_2006_reference_speeds.md):
+# e·Y and Y0/Y, each (value, tolerance)
+TAPERED_E_Y = (0.6, 0.05)
+TAPERED_Y0_Y = (0.55, 0.03)
 
 
 class SourceError(Exception):
@@ -147,12 +178,13 @@ def convert_row(row: dict[str, str]) -> list[str]:
     if family not in FAMILY_TYPES:
         raise SourceError(f"{name}: unknown family {family!r}")
     tapered = family == "tapered roller"
-    sealed = SEAL_KINDS.get(row["shield"]) == "contact"
-    if sealed and row["n_B [1/min]"] != "":
-        raise SourceError(f"{name}: n_B = {row['n_B [1/min]']!r} given for a bearing with contact seals")
+    without_speed = _without_reference_speed(row)
+    if without_speed and row["n_B [1/min]"] != "":
+        raise SourceError(f"{name}: n_B = {row['n_B [1/min]']!r} given for a bearing with contact seals or of a "
+                          "series HR 1 prints no n_B for")
     for column in ALWAYS + TAPERED_ONLY:
         text = row[column]
-        if sealed and column == "n_B [1/min]":
+        if without_speed and column == "n_B [1/min]":
             continue
         if column in ALWAYS or tapered:
             if text == "":
@@ -182,6 +214,11 @@ def convert_row(row: dict[str, str]) -> list[str]:
     return [row[column] if column is not None else derived[out] for out, (_, column) in COLUMNS.items()]
 
 
+def _without_reference_speed(row: dict[str, str]) -> bool:
+    """HR 1 prints no n_B for the row's bearing: contact seals, or a series of :data:`NO_REFERENCE_SPEED`."""
+    return SEAL_KINDS.get(row["shield"]) == "contact" or (row["family"], row["series"]) in NO_REFERENCE_SPEED
+
+
 def sealed_rows(sealed_text: str, source_rows: list[dict[str, str]]) -> list[dict[str, str]]:
     """The rows of the sealed-rows file (comment lines '#' skipped) as rows of the source CSV, each checked
     against the file's own values and against its open counterpart among ``source_rows``."""
@@ -197,34 +234,96 @@ def sealed_rows(sealed_text: str, source_rows: list[dict[str, str]]) -> list[dic
                               f"{SEALS.get(row['family'])!r} of HR 1, or not in the designation")
         if row["n_B [1/min]"] != NO_VALUE:
             raise SourceError(f"{name}: n_B = {row['n_B [1/min]']!r}; HR 1 prints {NO_VALUE!r} for a sealed bearing")
-        for column in ("d_a [mm]", "D_a [mm]"):
-            _check_number(row[column], name, column)
-            if not float(row["d [mm]"]) < float(row[column]) < float(row["D [mm]"]):
-                raise SourceError(f"{name}: {column} = {row[column]} is not between d = {row['d [mm]']} and "
-                                  f"D = {row['D [mm]']}: the ratings row does not belong to this bearing")
-        counterpart = by_name.get(row["open counterpart"])
-        if counterpart is None or counterpart["shield"] != "open":
-            raise SourceError(f"{name}: its open counterpart {row['open counterpart']!r} is not an open bearing "
-                              "of the source")
-        differ = [c for c in SHARED if row[c] != counterpart[c]]
-        if differ:
-            raise SourceError(f"{name}: {', '.join(f'{c} = {row[c]}' for c in differ)} differ from "
-                              f"{counterpart['designation']}'s {', '.join(counterpart[c] for c in differ)}")
+        _check_mounting(row)
+        _check_counterpart(row, by_name)
         out.append({column: row.get(column, "") for column in SOURCE_HEADER} | {"n_B [1/min]": ""})
     return out
+
+
+def _check_mounting(row: dict[str, str]) -> None:
+    """d < d_a < D and d < D_a < D: the ratings row belongs to the bearing of the dimension row."""
+    name = row["designation"]
+    for column in ("d_a [mm]", "D_a [mm]"):
+        _check_number(row[column], name, column)
+        if not float(row["d [mm]"]) < float(row[column]) < float(row["D [mm]"]):
+            raise SourceError(f"{name}: {column} = {row[column]} is not between d = {row['d [mm]']} and "
+                              f"D = {row['D [mm]']}: the ratings row does not belong to this bearing")
+
+
+def _check_counterpart(row: dict[str, str], by_name: dict[str, dict[str, str]]) -> None:
+    """The row's open counterpart is an open bearing of ``by_name`` with the same d, D, B, C, C0."""
+    name = row["designation"]
+    counterpart = by_name.get(row["open counterpart"])
+    if counterpart is None or counterpart["shield"] != "open":
+        raise SourceError(f"{name}: its open counterpart {row['open counterpart']!r} is not an open bearing "
+                          "of the source")
+    differ = [c for c in SHARED if row[c] != counterpart[c]]
+    if differ:
+        raise SourceError(f"{name}: {', '.join(f'{c} = {row[c]}' for c in differ)} differ from "
+                          f"{counterpart['designation']}'s {', '.join(counterpart[c] for c in differ)}")
+
+
+def _check_tapered(row: dict[str, str]) -> None:
+    """T >= B, and e·Y and Y0/Y within HR 1's relations (:data:`TAPERED_E_Y`, :data:`TAPERED_Y0_Y`)."""
+    name = row["designation"]
+    for column in ("B [mm]", "T [mm]", "e [-]", "Y [-]", "Y0 [-]"):
+        _check_number(row[column], name, column)
+    width, total, e, y, y0 = (float(row[c]) for c in ("B [mm]", "T [mm]", "e [-]", "Y [-]", "Y0 [-]"))
+    if total < width:
+        raise SourceError(f"{name}: T = {row['T [mm]']} is less than B = {row['B [mm]']}")
+    for what, value, (target, tolerance) in (("e·Y", e * y, TAPERED_E_Y), ("Y0/Y", y0 / y, TAPERED_Y0_Y)):
+        if abs(value - target) > tolerance:
+            raise SourceError(f"{name}: {what} = {value:.3f} is not {target} ± {tolerance} (e = {row['e [-]']}, "
+                              f"Y = {row['Y [-]']}, Y0 = {row['Y0 [-]']}): a calculation factor is misread")
+
+
+def more_series_rows(more_text: str, known_rows: list[dict[str, str]]) -> list[dict[str, str]]:
+    """The rows of the more-series file (comment lines '#' skipped) as rows of the source CSV, each checked
+    against the file's own values and, where it names one, against its open counterpart among ``known_rows``
+    and the file's own rows."""
+    reader = csv.DictReader(line for line in io.StringIO(more_text) if not line.startswith("#"))
+    if reader.fieldnames != MORE_HEADER:
+        raise SourceError(f"more series rows: unexpected header {reader.fieldnames}; expected {MORE_HEADER}")
+    rows = list(reader)
+    by_name = {row["designation"]: row for row in known_rows + rows}
+    out = []
+    for row in rows:
+        name = row["designation"]
+        without_speed = _without_reference_speed(row)
+        if without_speed != (row["n_B [1/min]"] == NO_VALUE):
+            raise SourceError(f"{name}: n_B = {row['n_B [1/min]']!r} with shield {row['shield']!r}; HR 1 prints "
+                              f"{NO_VALUE!r} for the bearings with contact seals and for the series "
+                              f"{', '.join(sorted(series for _, series in NO_REFERENCE_SPEED))}, and for no other")
+        _check_mounting(row)
+        if row["open counterpart"]:
+            _check_counterpart(row, by_name)
+        elif row["shield"] != "open" and any(_body(n) == _body(name) and r["shield"] == "open"
+                                             for n, r in by_name.items()):
+            raise SourceError(f"{name}: names no open counterpart, but the sources hold an open bearing "
+                              f"{_body(name)}")
+        if row["family"] == "tapered roller":
+            _check_tapered(row)
+        out.append({column: row[column] for column in SOURCE_HEADER} | ({"n_B [1/min]": ""} if without_speed else {}))
+    return out
+
+
+def _body(designation: str) -> str:
+    """The designation without suffixes: '61908-2RSR' -> '61908'."""
+    return designation.split("-")[0]
 
 
 def _catalogue_place(row: dict[str, str]) -> tuple[int, int]:
     return int(row["page"]), int(row["row_on_page"])
 
 
-def build_table(source_text: str, sealed_text: str) -> str:
-    """The text of the bearing table for the texts of the source CSV and of the sealed rows."""
+def build_table(source_text: str, sealed_text: str, more_text: str) -> str:
+    """The text of the bearing table for the texts of the source CSV, of the sealed rows and of the more series."""
     reader = csv.DictReader(io.StringIO(source_text))
     if reader.fieldnames != SOURCE_HEADER:
         raise SourceError(f"unexpected header {reader.fieldnames}; expected {SOURCE_HEADER}")
     source_rows = list(reader)
     merged = source_rows + sealed_rows(sealed_text, source_rows)
+    merged += more_series_rows(more_text, merged)
     twice = sorted(place for place, count in Counter(map(_catalogue_place, merged)).items() if count > 1)
     if twice:
         raise SourceError(f"catalogue places (page, row) given twice: {twice}")
@@ -246,10 +345,11 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--source", type=Path, default=SOURCE, help=f"source CSV (default {SOURCE})")
     parser.add_argument("--sealed", type=Path, default=SEALED, help=f"sealed rows CSV (default {SEALED})")
+    parser.add_argument("--more", type=Path, default=MORE, help=f"more series rows CSV (default {MORE})")
     parser.add_argument("--output", type=Path, default=OUTPUT, help=f"table to write (default {OUTPUT})")
     args = parser.parse_args(argv)
     try:
-        text = build_table(args.source.read_text(encoding="utf-8"), args.sealed.read_text(encoding="utf-8"))
+        text = build_table(*(path.read_text(encoding="utf-8") for path in (args.source, args.sealed, args.more)))
     except (OSError, SourceError) as exc:
         print(f"make_bearing_table: error: {exc}", file=sys.stderr)
         return 2

@@ -29,6 +29,7 @@ from bearingheat.analysis.passthrough import unread_columns
 from bearingheat.calc.contract import parse_header, readable_header
 from bearingheat.calc.conversion import numbers_of, row_name, row_numbers
 from bearingheat.calc.thermal import thermal_reference_speed_details
+from bearingheat.catalogue.bearings import bearing
 from bearingheat.catalogue.designation import parse_designation
 from bearingheat.catalogue.friction import resolve
 from bearingheat.catalogue.thermal import reference_conditions
@@ -43,7 +44,7 @@ __all__ = [
     "REFERENCE_SPEED_COLUMNS",
     "GROUP_COLUMNS",
     "ReferenceSpeedAudit",
-    "SEALED_WITHOUT_SPEED",
+    "SKIPPED_WITHOUT_SPEED",
     "audit_reference_speeds",
     "rounding_step",
     "implied_coefficients",
@@ -84,10 +85,11 @@ SYSTEMATIC_RULE = (
 )
 #: accepted names of the published thermal reference speed column (first match wins)
 REFERENCE_SPEED_COLUMNS = ("n_thr", "n_B", "n_theta_r", "n_θr", "n_ref", "nthr")
-#: the rows the audit skips (not row errors): a catalogue prints no n_thr for a bearing with contact seals
-SEALED_WITHOUT_SPEED = ("bearings with contact seals and no published n_thr: the thermal method (ISO 15312, "
-                        "DIN 732) does not apply to them, and catalogues print none (Schaeffler HR 1: '–'); "
-                        "not audited")
+#: the rows the audit skips (not row errors): a blank published speed where the catalogue prints none
+SKIPPED_WITHOUT_SPEED = ("bearings with no published n_thr where catalogues print none (Schaeffler HR 1: '–'): "
+                         "those with contact seals, to which the thermal method (ISO 15312, DIN 732) does not "
+                         "apply, and those the bearing table holds without one (HR 1's 70..-B, 718..-B, NU19..); "
+                         "not audited")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -207,17 +209,28 @@ def implied_coefficients(details: pd.DataFrame, d: npt.ArrayLike, D: npt.ArrayLi
     return {"f0": np.where(usable, f0, np.nan), "f1": np.where(usable, f1, np.nan)}
 
 
-def _contact_sealed(designations: pd.Series) -> np.ndarray:
-    """Where a designation names contact seals (6205-2RSR, 7205-B-2RS-TVP); False where it does not resolve.
-    Each distinct designation is parsed once."""
+def _printed_without_speed(designations: pd.Series) -> np.ndarray:
+    """Where a designation names contact seals (6205-2RSR, 7205-B-2RS-TVP) or is, as printed, a bearing the bearing
+    table holds without n_thr (7004-B-TVP); False where it is neither or does not resolve. Each distinct designation
+    is looked up once."""
     codes, uniques = pd.factorize(designations)
-    sealed = []
-    for text in uniques:
-        try:
-            sealed.append(parse_designation(str(text)).seal == "contact")
-        except DesignationError:
-            sealed.append(False)
-    return np.array(sealed, dtype=bool)[codes] if len(codes) else np.zeros(0, dtype=bool)
+    without = [_contact_sealed(str(text)) or _table_without_speed(str(text)) for text in uniques]
+    return np.array(without, dtype=bool)[codes] if len(codes) else np.zeros(0, dtype=bool)
+
+
+def _contact_sealed(text: str) -> bool:
+    try:
+        return parse_designation(text).seal == "contact"
+    except DesignationError:
+        return False
+
+
+def _table_without_speed(text: str) -> bool:
+    try:
+        entry = bearing(text)
+    except DesignationError:
+        return False
+    return entry.match == "exact" and math.isnan(entry.n_thr)
 
 
 def _text(table: pd.DataFrame, columns: dict[str, str], names: Iterable[str]) -> np.ndarray | None:
@@ -267,10 +280,12 @@ def audit_reference_speeds(table: pd.DataFrame, *, speed_column: str | None = No
     ``family`` and ``series`` name the series (else the designation's type
     and series); an optional ``shield`` (``seal``, ``variant``) column
     names the variant, which is pooled with the open bearings of its series.
-    A bearing whose designation names contact seals and whose published
-    speed is blank is skipped, not a row error: catalogues print no n_thr
-    for it (:data:`SEALED_WITHOUT_SPEED`); ``result.attrs['skipped']``
-    names these rows ('row 93 (6205-2RSR)').
+    A bearing whose designation names contact seals, or that the bearing
+    table (Schaeffler HR 1, 2006) holds without n_thr (7004-B-TVP,
+    71810-B-TVH: HR 1 prints '–'), and whose published speed is blank is
+    skipped, not a row error: the catalogue prints no n_thr for it
+    (:data:`SKIPPED_WITHOUT_SPEED`); ``result.attrs['skipped']`` names these
+    rows ('row 93 (6205-2RSR)').
 
     Returns one row per bearing that is not skipped: ``designation``, ``family``, ``series``,
     ``series_key`` ('family series'), ``variant``, ``d``, ``D`` [mm],
@@ -320,8 +335,9 @@ def audit_reference_speeds(table: pd.DataFrame, *, speed_column: str | None = No
         else:
             frame[name] = np.nan
     published_cells = table[columns[published_name]]
-    # a blank speed of a bearing with contact seals is what a catalogue prints: skipped, not a row error
-    skipped = _blank(published_cells) & (_contact_sealed(frame["designation"]) if "designation" in frame
+    # a blank speed of a bearing with contact seals, or of one HR 1 prints without a speed, is what the catalogue
+    # prints: skipped, not a row error
+    skipped = _blank(published_cells) & (_printed_without_speed(frame["designation"]) if "designation" in frame
                                          else np.zeros(len(table), dtype=bool))
     published = _convert(published_cells, columns[published_name], units[published_name], "1/min",
                          problems, decimal=decimal, positive=_POSITIVE["n"], required=~skipped)
@@ -383,7 +399,7 @@ class ReferenceSpeedAudit:
     many series gave σ (0 where σ is SCALE_FLOOR because fewer than
     MIN_CONSISTENT series agree), ``series`` how many series have a
     computed median deviation. ``skipped`` names the rows of the list that
-    :func:`audit_reference_speeds` skipped (:data:`SEALED_WITHOUT_SPEED`).
+    :func:`audit_reference_speeds` skipped (:data:`SKIPPED_WITHOUT_SPEED`).
     """
 
     bearings: pd.DataFrame

@@ -18,13 +18,16 @@ __all__ = ["bearing", "BearingData", "bearing_table", "designations"]
 def bearing(designation: str) -> BearingData:
     """The bearing ``designation`` (with or without cage and design suffixes) of the bearing table.
 
-    The table holds 1137 bearings of the Schaeffler catalogue HR 1 "Rolling
-    bearings" (edition June 2006): deep groove ball bearings 618, 160, 60,
-    62, 63, 64 (open, -2Z and, with contact seals, -2RSR), angular contact
-    ball bearings 72..-B and 73..-B (open and -2RS), cylindrical roller
-    bearings N, NU, NJ, NUP of series 2, 3, 22, 23 (E design) and metric
-    tapered roller bearings. HR 1 gives no thermal reference speed n_thr
-    for the sealed bearings (NaN). The designation is
+    The table holds 1277 bearings of the Schaeffler catalogue HR 1 "Rolling
+    bearings" (edition June 2006): deep groove ball bearings 618, 619, 160,
+    60, 62, 63, 64 (open, -2Z and, with contact seals, -2RSR) and 622, 623
+    (-2RSR), angular contact ball bearings 70..-B, 72..-B and 73..-B (open
+    and -2RS) and 718..-B, cylindrical roller bearings N, NU, NJ, NUP of
+    series 2, 3, 22, 23 (E design), NU10..-M1 and NU19..-M1, and metric
+    tapered roller bearings, 329 and the ISO 355 codes T7FC, T4CB, T2EE,
+    T5ED among them. HR 1 gives no thermal reference speed n_thr for the
+    sealed bearings nor for the 70..-B, 718..-B and NU19 bearings (NaN).
+    The designation is
     matched in three steps, the first that finds it wins: ``exact`` (case,
     spaces and a suffix glued to the number do not matter), ``cage``
     (without cage, material, clearance and tolerance suffixes), ``design``

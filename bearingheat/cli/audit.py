@@ -48,8 +48,9 @@ list can also be given with --reference-speeds.
    some sizes deviate; groups that deviate systematically are flagged with the
    f0 that reproduces their published speeds (95 % interval, allowing for the
    catalogue's rounding of speeds); single misprinted rows are listed as
-   outliers. A bearing with contact seals (6205-2RSR) and a blank n_thr is
-   skipped and named, not a row error: catalogues print no n_thr for it.
+   outliers. A bearing with contact seals (6205-2RSR), or one HR 1 prints
+   without n_thr (7004-B-TVP, 71810-B-TVH, NU1992-M1), and a blank n_thr is
+   skipped and named, not a row error: the catalogue prints no n_thr for it.
 
 Output: tables on stdout (flagged groups and their implied f0 first; the rows
 left out, the first 20 and how many more); with --out-dir DIR also

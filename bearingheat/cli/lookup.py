@@ -14,9 +14,11 @@ from bearingheat.io.console import print_record
 
 DESCRIPTION = """\
 Look a bearing up in the bearing table of the package (Schaeffler HR 1, June 2006:
-deep groove ball 618, 160, 60, 62, 63, 64 open, -2Z and -2RSR; angular contact ball
-72..-B, 73..-B, open and -2RS; cylindrical roller N, NU, NJ, NUP of series 2, 3, 22,
-23, E design; tapered roller 302, 303, 313, 320, 322, 323, 330, 331, 332):
+deep groove ball 618, 619, 160, 60, 62, 63, 64 open, -2Z and -2RSR, 622 and 623 -2RSR;
+angular contact ball 70..-B, 72..-B, 73..-B, open and -2RS, and 718..-B; cylindrical
+roller N, NU, NJ, NUP of series 2, 3, 22, 23, E design, and NU10..-M1, NU19..-M1;
+tapered roller 302, 303, 313, 320, 322, 323, 329, 330, 331, 332 and the ISO 355 codes
+T7FC.., T4CB.., T2EE.., T5ED..):
 
   bearingheat lookup 6208
   bearingheat lookup NU208-E --json
@@ -31,9 +33,10 @@ d, D, B, T [mm], C, C0 [N], e, Y, Y0, n_G (limiting speed), n_thr (the catalogue
 thermal reference speed) [1/min], and source (catalogue, pages, table, row). Values the
 catalogue does not give (T, e, Y, Y0 of a ball or cylindrical roller bearing) are left
 out, but for n_thr of a bearing with contact seals (6205-2RSR) the line says that HR 1
-gives none and why; --json prints one JSON object with the same keys and null for them.
-With -q nothing is printed: the exit code alone says whether the designation is in the
-table.
+gives none and why, and for the open bearings HR 1 prints without one (7004-B-TVP,
+71810-B-TVH, NU1992-M1) that it gives none; --json prints one JSON object with the same
+keys and null for them. With -q nothing is printed: the exit code alone says whether
+the designation is in the table.
 
 Exit codes: 0 found; 2 unknown or ambiguous designation (the message lists close
 designations of the table).
@@ -43,6 +46,8 @@ _TEXT = ("designation", "match", "note", "family", "bearing_type", "series", "pr
 #: the n_thr line of a bearing with contact seals
 SEALED_N_THR = ("not given: HR 1 prints no thermal reference speed for bearings with contact seals (the reference "
                 "conditions of ISO 15312 have no seal friction)")
+#: the n_thr line of an open bearing HR 1 prints without one (70..-B-TVP, 718..-B-TVH, NU19..-M1)
+OPEN_WITHOUT_N_THR = "not given: HR 1 prints none for this bearing ('–')"
 
 
 def add_arguments(parser) -> None:
@@ -61,8 +66,8 @@ def run(args) -> int:
     if args.json:
         print(json.dumps(record, ensure_ascii=False))
     elif not args.quiet:
-        if data.contact_sealed and record["n_thr [1/min]"] is None:
-            record["n_thr [1/min]"] = SEALED_N_THR
+        if record["n_thr [1/min]"] is None:
+            record["n_thr [1/min]"] = SEALED_N_THR if data.contact_sealed else OPEN_WITHOUT_N_THR
         print_record({key: value for key, value in record.items() if value is not None and value != ""},
                      float_format=".15g")
     return 0

@@ -33,11 +33,12 @@ def test_two_series_say_sigma_is_the_floor_not_the_scale_of_series_that_agree():
     assert reference_speed_lines(audit)[1] == (
         "sigma = 0.20% (the floor, not estimated from the data: of the 2 series, fewer than 5 agree with the "
         "tables, too few for a robust scale); threshold = +/-1.00%.")
-    # the whole list: 14 series give sigma, as before
+    # the whole list: 16 series give sigma (the 14 of the HR 1 data set, and deep groove ball 619 and
+    # cylindrical roller 10 of the more series)
     whole = classify_reference_speeds(audit_reference_speeds(hr1))
-    assert whole.consistent == 14 and np.isclose(whole.scale, 0.0029, atol=5e-5)
+    assert whole.consistent == 16 and np.isclose(whole.scale, 0.0029, atol=5e-5)
     assert reference_speed_lines(whole)[1].startswith(
-        "sigma = 0.29% (robust scale of the median deviations of the 14 series that agree with the tables)")
+        "sigma = 0.29% (robust scale of the median deviations of the 16 series that agree with the tables)")
 
 
 # ---- cells that are no published speed or no dimension ------------------------------------------
@@ -140,14 +141,33 @@ def test_sealed_bearings_without_a_published_speed_are_skipped_not_row_errors(tm
     assert audit.skipped == ("row 3 (6205-2RSR)", "row 5 (7205-B-2RS-TVP)")
     assert audit.groups["bearings"].sum() == 4
     assert reference_speed_lines(audit)[2] == (
-        "Rows skipped (2), bearings with contact seals and no published n_thr: the thermal method (ISO 15312, "
-        "DIN 732) does not apply to them, and catalogues print none (Schaeffler HR 1: '–'); not audited: "
+        "Rows skipped (2), bearings with no published n_thr where catalogues print none (Schaeffler HR 1: '–'): "
+        "those with contact seals, to which the thermal method (ISO 15312, DIN 732) does not apply, and those the "
+        "bearing table holds without one (HR 1's 70..-B, 718..-B, NU19..); not audited: "
         "row 3 (6205-2RSR), row 5 (7205-B-2RS-TVP)")
+
+
+def test_open_bearings_hr1_prints_without_a_speed_are_skipped_too(tmp_path):
+    """HR 1 prints n_B '–' for the open 7004-B-TVP (text copy line 32698) and 71810-B-TVH (34246) too: blank there,
+    the row is skipped as the sealed ones are; 7004-B, not a designation of the bearing table as printed, and
+    7205-B-TVP, which HR 1 prints with a speed, stay row errors."""
+    path = tmp_path / "list.csv"
+    pd.DataFrame({
+        "designation": ["7004-B-TVP", "71810-B-TVH", "7004-B", "7205-B-TVP"],
+        "d [mm]": [20, 50, 20, 25], "D [mm]": [42, 65, 42, 52], "B [mm]": [12, 7, 12, 15],
+        "C0 [N]": [7500, 7350, 7500, 9300], "n_B [1/min]": ["", "", "", ""]}).to_csv(path, index=False)
+    rows = audit_reference_speeds(read_table(path))
+    assert rows.attrs["skipped"] == ["row 2 (7004-B-TVP)", "row 3 (71810-B-TVH)"]
+    assert list(rows["reason"]) == [
+        "row 4 (7004-B): n_B [1/min] is blank (a published speed must be a finite number > 0)",
+        "row 5 (7205-B-TVP): n_B [1/min] is blank (a published speed must be a finite number > 0)"]
 
 
 def test_the_shipped_table_skips_its_sealed_bearings_and_computes_every_other():
     rows = audit_reference_speeds(bearing_table().rename(columns=HR1_COLUMNS))
-    assert len(rows) == 1034 and (rows["reason"] == "").all() and rows["n_thr_tables"].notna().all()
+    assert len(rows) == 1119 and (rows["reason"] == "").all() and rows["n_thr_tables"].notna().all()
     skipped = rows.attrs["skipped"]
-    assert len(skipped) == 103 and skipped[:2] == ["row 2 (623-2RSR)", "row 5 (624-2RSR)"]
-    assert "row 89 (6205-2RSR)" in skipped and not rows["variant"].isin(["2RSR", "2RS"]).any()
+    # 136 with contact seals, 22 open ones HR 1 prints without a speed (70..-B-TVP, 718..-B-TVH, NU19..-M1)
+    assert len(skipped) == 158 and skipped[:2] == ["row 2 (623-2RSR)", "row 5 (624-2RSR)"]
+    assert {"row 97 (6205-2RSR)", "row 99 (62205-2RSR)", "row 454 (7004-B-TVP)"} <= set(skipped)
+    assert not rows["variant"].isin(["2RSR", "2RS"]).any()

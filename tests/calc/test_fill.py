@@ -58,6 +58,40 @@ def test_a_sealed_bearing_fills_its_values_keeps_the_seal_warning_and_gets_no_he
         "whose heat balance would leave the seal friction out, are not computed either")
 
 
+def test_the_more_series_fill_by_designation_alone():
+    """One bearing of each series added from HR 1 beside the data set (scripts/hr1_2006_more_series_rows.csv; text
+    copy lines of the dimension / ratings row): 61908 (23921 / 24278: 40 x 62, C0 10 000), NU1010-M1 (62599 /
+    63088: 50 x 80, C0 41 500), 32919 (95078 / 95648: 95 x 130), T7FC045 (91864 / 92364: 45 x 95), 7004-B-TVP
+    (32215 / 32698: 20 x 42, C0 7500), 71810-B-TVH (33814 / 34246: 50 x 65, C0 7350), typed as a designer types
+    them; M0 = f0 (nu n)^(2/3) dM^3 1e-7 and M1 = f1 P1 dM by hand, f0 and f1 of the Schaeffler catalogue's oil
+    bath rows 619 (1.7; f1 = 0.0007 (P0/C0)^0.5), 10 (2; 0.0002), 329 and T7FC (3; 0.0004), 70 and 718 (2;
+    0.001 (P0/C0)^0.33). HR 1 prints no n_B for 7004-B-TVP and 71810-B-TVH: n_thr is computed all the same."""
+    names = ["61908", "NU1010", "32919", "T7FC045", "7004-B", "71810"]
+    out = calc(pd.concat([_row(designation=name) for name in names], ignore_index=True))
+    assert out["status"].tolist() == ["ok"] * 6 and out["message"].tolist() == [""] * 6
+    assert out["n_thr [1/min]"].notna().all()
+    speed_term = (12 * 3000) ** (2 / 3) * 1e-7
+    for i, (f0, dM) in enumerate([(1.7, 51.0), (2.0, 65.0), (3.0, 112.5), (3.0, 70.0), (2.0, 31.0), (2.0, 57.5)]):
+        assert out.loc[i, "M0 [N*mm]"] == pytest.approx(f0 * speed_term * dM ** 3, rel=1e-12), names[i]
+    f1_61908 = 0.0007 * (2000 / 10000) ** 0.5
+    assert out.loc[0, "M1 [N*mm]"] == pytest.approx(f1_61908 * 2000 * 51.0, rel=1e-12)
+    assert out.loc[1:, "M1 [N*mm]"].tolist() == pytest.approx([
+        0.0002 * 2000 * 65.0, 0.0004 * 2000 * 112.5, 0.0004 * 2000 * 70.0,
+        0.001 * (2000 / 7500) ** 0.33 * 2000 * 31.0, 0.001 * (2000 / 7350) ** 0.33 * 2000 * 57.5], rel=1e-12)
+
+
+def test_a_622_bearing_with_grease_fills_its_values_and_keeps_the_seal_warning():
+    """62205-2RSR (HR 1 p. 202/203, row 22, text copy lines 23135 / 23499: 25 x 52 x 18, C0 7800 N, n_B '–'),
+    with grease: the Schaeffler catalogue prints no oil-bath f0 for 622. f0 = 1.1, f1 = 0.0009 (P0/C0)^0.5."""
+    out = calc(_row(designation="62205-2RSR", lubrication="grease"))
+    dM = (25 + 52) / 2
+    assert out["M0 [N*mm]"].iat[0] == pytest.approx(1.1 * (12 * 3000) ** (2 / 3) * dM ** 3 * 1e-7, rel=1e-12)
+    assert out["M1 [N*mm]"].iat[0] == pytest.approx(0.0009 * (2000 / 7800) ** 0.5 * 2000 * dM, rel=1e-12)
+    assert out["status"].iat[0] == "warning" and out["message"].iat[0].startswith(
+        "contact seals: their friction comes on top of the catalogue model")
+    assert np.isnan(out["n_thr [1/min]"].iat[0])
+
+
 def test_a_typed_value_wins_and_a_disagreement_is_a_warning():
     # C0 is printed to 3 significant digits (18 kN: +-50 N); 18.04 kN agrees, 19 kN does not
     out = calc(pd.concat([_row(**{"C0 [kN]": 19.0, "D [mm]": 80.0}), _row(**{"C0 [kN]": 18.04})],

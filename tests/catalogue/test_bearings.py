@@ -1,8 +1,8 @@
 """The bearing table (Schaeffler HR 1, 2006): in sync with its sources, looked up by designation.
 
 The expected values are typed from ../shared/data/hr1_2006_reference_speeds.csv (the catalogue values) and,
-for the sealed bearings, read by hand from the HR 1 text copy (ArtemFilin1990/Mar@68b9707,
-Rolling_bearings.md; the line numbers are given), not read through the package.
+for the sealed bearings and the more series, read by hand from the HR 1 text copy (ArtemFilin1990/Mar@68b9707,
+Rolling_bearings.md, read with newline=''; the line numbers are given), not read through the package.
 """
 import csv
 import math
@@ -22,6 +22,7 @@ ROOT = Path(__file__).resolve().parents[2]
 SCRIPT = ROOT / "scripts" / "make_bearing_table.py"
 SOURCE = ROOT.parent / "shared" / "data" / "hr1_2006_reference_speeds.csv"
 SEALED = ROOT / "scripts" / "hr1_2006_sealed_rows.csv"
+MORE = ROOT / "scripts" / "hr1_2006_more_series_rows.csv"
 TABLE = ROOT / "tables" / "bearings_hr1_2006.csv"
 needs_source = pytest.mark.skipif(not SOURCE.is_file(),
                                   reason=f"the source of the bearing table, {SOURCE}, is not on this machine")
@@ -71,6 +72,26 @@ EXPECTED = {
     "6032-2RSR": (160, 240, 38, NAN, 134000, 137000, NAN, NAN, NAN, 1700, NAN),     # 29009 / 29363
     "7205-B-2RS-TVP": (25, 52, 15, NAN, 14600, 9300, NAN, NAN, NAN, 8000, NAN),     # 32359 / 32842
     "7308-B-2RS-TVP": (40, 90, 23, NAN, 50000, 34500, NAN, NAN, NAN, 4500, NAN),    # 33264 / 33699
+    # more series, from scripts/hr1_2006_more_series_rows.csv; text copy lines of the dimension / ratings row
+    "61908": (40, 62, 12, NAN, 13700, 10000, NAN, NAN, NAN, 28000, 10000),           # 23921 / 24278
+    "61908-2Z": (40, 62, 12, NAN, 13700, 10000, NAN, NAN, NAN, 11000, 10000),        # 23939 / 24294
+    "62205-2RSR": (25, 52, 18, NAN, 14000, 7800, NAN, NAN, NAN, 9000, NAN),          # 23135 / 23499
+    "62305-2RSR": (25, 62, 24, NAN, 22400, 11400, NAN, NAN, NAN, 7500, NAN),         # 23189 / 23547
+    "NU1010-M1": (50, 80, 16, NAN, 42500, 41500, NAN, NAN, NAN, 15000, 7400),        # 62599 / 63088
+    "NU1096-M1": (480, 700, 100, NAN, 1700000, 3100000, NAN, NAN, NAN, 1500, 780),  # 67658 / 68080
+    "NU10/500-M1": (500, 720, 100, NAN, 1760000, 3200000, NAN, NAN, NAN, 1500, 750),  # 68129 / 68242 (p. 380/381)
+    "NU19/710-M1": (710, 950, 106, NAN, 2240000, 4750000, NAN, NAN, NAN, 1100, NAN),  # 68184 / 68297
+    "32919": (95, 130, 23, 23, 100000, 177000, 0.36, 1.68, 0.92, 4800, 2450),        # 95078 / 95648
+    "32940-A": (200, 280, 51, 51, 495000, 930000, 0.39, 1.52, 0.84, 2200, 1240),     # 97962 / 98311
+    "T7FC045": (45, 95, 26.5, 29, 88000, 107000, 0.87, 0.69, 0.38, 7000, 5600),      # 91864 / 92364
+    "T2EE060": (60, 115, 39, 40, 189000, 250000, 0.33, 1.8, 0.99, 6000, 3800),       # 92892 / 93435
+    "T4CB120": (120, 170, 25, 27, 152000, 235000, 0.47, 1.27, 0.7, 4000, 2000),      # 96131 / 96617
+    "T5ED065": (65, 120, 38, 39, 160000, 234000, 0.56, 1.07, 0.59, 5300, 3600),      # 93057 / 93589
+    # HR 1 prints n_B '–' for the whole of 70..-B, 718..-B and NU19..-M1, open bearings included
+    "7004-B-TVP": (20, 42, 12, NAN, 13400, 7500, NAN, NAN, NAN, 18000, NAN),         # 32215 / 32698
+    "7004-B-2RS-TVP": (20, 42, 12, NAN, 13400, 7500, NAN, NAN, NAN, 9500, NAN),      # 32227 / 32710
+    "71810-B-TVH": (50, 65, 7, NAN, 6950, 7350, NAN, NAN, NAN, 9500, NAN),           # 33814 / 34246
+    "NU1992-M1": (460, 620, 74, NAN, 1020000, 1960000, NAN, NAN, NAN, 1800, NAN),   # 67622 / 68047
 }
 
 
@@ -92,7 +113,15 @@ SEALED_COLUMNS = {"d": "d [mm]", "D": "D [mm]", "B": "B [mm]", "C": "C [N]", "C0
 
 
 def _sealed_rows() -> list[dict[str, str]]:
-    with SEALED.open(encoding="utf-8") as f:
+    return _commented_csv(SEALED)
+
+
+def _more_rows() -> list[dict[str, str]]:
+    return _commented_csv(MORE)
+
+
+def _commented_csv(path: Path) -> list[dict[str, str]]:
+    with path.open(encoding="utf-8") as f:
         return list(csv.DictReader(line for line in f if not line.startswith("#")))
 
 
@@ -106,8 +135,8 @@ def _place(data) -> tuple[int, int]:
 def test_every_row_carries_the_source_values():
     with SOURCE.open(encoding="utf-8") as f:
         rows = list(csv.DictReader(f))
-    sealed = {r["designation"] for r in _sealed_rows()}
-    assert tuple(n for n in designations() if n not in sealed) == tuple(r["designation"] for r in rows)
+    added = {r["designation"] for r in _sealed_rows() + _more_rows()}
+    assert tuple(n for n in designations() if n not in added) == tuple(r["designation"] for r in rows)
     columns = {"d": "d [mm]", "D": "D [mm]", "B": "B [mm]", "T": "T [mm]", "C": "C [N]", "C0": "C0 [N]",
                "e": "e [-]", "Y": "Y [-]", "Y0": "Y0 [-]", "n_G": "n_G [1/min]", "n_thr": "n_B [1/min]"}
     for row in rows:
@@ -140,9 +169,74 @@ def test_sealed_rows_carry_their_source_values_in_catalogue_order():
     assert places == sorted(places)
 
 
+MORE_COLUMNS = {"d": "d [mm]", "D": "D [mm]", "B": "B [mm]", "T": "T [mm]", "C": "C [N]", "C0": "C0 [N]",
+                "e": "e [-]", "Y": "Y [-]", "Y0": "Y0 [-]", "n_G": "n_G [1/min]"}
+
+
+def test_more_series_rows_carry_their_source_values():
+    rows = _more_rows()
+    counts = {}
+    for row in rows:
+        counts[row["series"]] = counts.get(row["series"], 0) + 1
+    assert counts == {"619": 19, "622": 11, "623": 9, "70": 10, "718": 11, "10": 43, "19": 6, "329": 16,
+                      "T7FC": 9, "T4CB": 3, "T2EE": 1, "T5ED": 2}
+    for row in rows:
+        data = bearing(row["designation"])
+        assert data.match == "exact" and data.designation == row["designation"]
+        assert (data.family, data.series, data.prefix, data.shield) == (
+            row["family"], row["series"], row["type"], row["shield"])
+        for name, column in MORE_COLUMNS.items():
+            assert _same(getattr(data, name), float(row[column]) if row[column] else NAN), (data.designation, name)
+        # HR 1 prints '–' for n_B of the bearings with contact seals and of the series 70, 718 and NU19, a number
+        # for every other
+        if data.contact_sealed or row["series"] in ("70", "718", "19"):
+            assert row["n_B [1/min]"] == "–" and math.isnan(data.n_thr)
+        else:
+            assert data.n_thr == float(row["n_B [1/min]"])
+        assert data.d < float(row["d_a [mm]"]) < data.D and data.d < float(row["D_a [mm]"]) < data.D
+        assert f"p. {row['page']} (dimensions) and p. {row['page_ratings']} (ratings)" in data.source
+        assert f"row {row['row_on_page']};" in data.source
+        if row["open counterpart"]:
+            counterpart = bearing(row["open counterpart"])
+            assert counterpart.shield == "open" and (counterpart.d, counterpart.D, counterpart.B, counterpart.C,
+                                                     counterpart.C0) == (data.d, data.D, data.B, data.C, data.C0)
+        if data.family == "tapered roller":
+            assert data.T >= data.B and abs(data.e * data.Y - 0.6) <= 0.05 and abs(data.Y0 / data.Y - 0.55) <= 0.03
+
+
+@needs_source
+@pytest.mark.parametrize("designation, old, new, message", [
+    ("32919", ",0.36,1.68,0.92,", ",0.36,1.2,0.92,",
+     "32919: e·Y = 0.432 is not 0.6 ± 0.05 (e = 0.36, Y = 1.2, Y0 = 0.92): a calculation factor is misread"),
+    ("61911", ",7500,", ",–,", "61911: n_B = '–' with shield 'open'; HR 1 prints '–' for the bearings with "
+                               "contact seals and for the series 19, 70, 718, and for no other"),
+    ("71810-B-TVH", ",9500,–,", ",9500,5000,", "71810-B-TVH: n_B = '5000' with shield 'open'; HR 1 prints '–' for "
+                                               "the bearings with contact seals and for the series 19, 70, 718, and "
+                                               "for no other"),
+    ("61909-2Z", ",14000,", ",14600,", "61909-2Z: C [N] = 14600 differ from 61909's 14000"),
+    ("NU1010-M1", ",53,75,", ",53,85,", "NU1010-M1: D_a [mm] = 85 is not between d = 50 and D = 80: the ratings "
+                                        "row does not belong to this bearing"),
+    ("61910-2RSR", ",61910,", ",,", "61910-2RSR: names no open counterpart, but the sources hold an open "
+                                    "bearing 61910"),
+    ("T7FC045", ",open,45,", ",open,40,", "T7FC045: the parser gives bore 45.0, the source 40.0"),
+    ("32919", ",23,23,", ",23,22,", "32919: T = 22 is less than B = 23"),
+])
+def test_the_script_refuses_a_misread_more_series_row(tmp_path, designation, old, new, message):
+    lines = MORE.read_text(encoding="utf-8").splitlines(keepends=True)
+    changed = [line.replace(old, new, 1) if line.startswith(designation + ",") else line for line in lines]
+    assert changed != lines
+    more = tmp_path / "more.csv"
+    more.write_text("".join(changed), encoding="utf-8")
+    proc = subprocess.run([sys.executable, str(SCRIPT), "--source", str(SOURCE), "--more", str(more),
+                           "--output", str(tmp_path / "bearings.csv")],
+                          capture_output=True, text=True, check=False, cwd=tmp_path)
+    assert proc.returncode == 2 and proc.stderr == f"make_bearing_table: error: {message}\n"
+    assert not (tmp_path / "bearings.csv").exists()
+
+
 def test_table_shape_units_and_sources():
     table = bearing_table()
-    assert len(table) == 1137 == len(designations()) == len(set(designations()))
+    assert len(table) == 1277 == len(designations()) == len(set(designations()))
     units = table_units("bearings_hr1_2006")
     assert units == {"designation": "-", "family": "-", "bearing_type": "-", "series": "-", "prefix": "-",
                      "shield": "-", "d": "mm", "D": "mm", "B": "mm", "T": "mm", "C": "N", "C0": "N", "e": "1",
@@ -151,23 +245,25 @@ def test_table_shape_units_and_sources():
                                           "tapered_roller"} < set(BEARING_TYPES)
     assert table["source"].str.startswith("Schaeffler HR 1 (June 2006), p. ").all()
     counts = table.groupby("family").size().to_dict()
-    assert counts == {"deep groove ball": 394, "angular contact ball": 116, "cylindrical roller": 408,
-                      "tapered roller": 219}
+    assert counts == {"deep groove ball": 433, "angular contact ball": 137, "cylindrical roller": 457,
+                      "tapered roller": 250}
     assert table.groupby(["family", "shield"]).size().to_dict() == {
-        ("angular contact ball", "2RS"): 16, ("angular contact ball", "open"): 100,
-        ("cylindrical roller", "open"): 408, ("deep groove ball", "2RSR"): 87, ("deep groove ball", "2Z"): 98,
-        ("deep groove ball", "open"): 209, ("tapered roller", "open"): 219}
+        ("angular contact ball", "2RS"): 21, ("angular contact ball", "open"): 116,
+        ("cylindrical roller", "open"): 457, ("deep groove ball", "2RSR"): 115, ("deep groove ball", "2Z"): 100,
+        ("deep groove ball", "open"): 218, ("tapered roller", "open"): 250}
     assert table.loc[table["family"] == "cylindrical roller", "prefix"].value_counts().to_dict() == {
-        "NU": 135, "NJ": 117, "NUP": 103, "N": 53}
+        "NU": 184, "NJ": 117, "NUP": 103, "N": 53}
     # T, e, Y, Y0 for tapered roller bearings only, every other value everywhere
     tapered = table["family"] == "tapered roller"
     for name in ("T", "e", "Y", "Y0"):
         assert table.loc[tapered, name].notna().all() and table.loc[~tapered, name].isna().all()
     for name in ("d", "D", "B", "C", "C0", "n_G"):
         assert (table[name] > 0).all()
-    # n_thr: HR 1 prints none for a bearing with contact seals, and one for every other bearing
-    sealed = table["shield"].isin(["2RSR", "2RS"])
-    assert table.loc[sealed, "n_thr"].isna().all() and (table.loc[~sealed, "n_thr"] > 0).all()
+    # n_thr: HR 1 prints none for a bearing with contact seals and for the series 70, 718 (angular contact ball)
+    # and NU19, and one for every other bearing
+    without = table["shield"].isin(["2RSR", "2RS"]) | table["series"].isin(["70", "718", "19"])
+    assert table.loc[without, "n_thr"].isna().all() and (table.loc[~without, "n_thr"] > 0).all()
+    assert without.sum() == 158
 
 
 @pytest.mark.parametrize("designation", sorted(EXPECTED))
@@ -219,6 +315,18 @@ def test_types_series_prefix_and_shield():
     ("320/28", "320/28-X", "design"),
     ("7208", "7208-B-JP", "design"),
     ("7205", "7205-B-JP", "design"),   # the sealed 7205-B-2RS-TVP is not 7205: its seal is not dropped
+    # the more series
+    ("61908-2RSR", "61908-2RSR", "exact"),
+    ("62205-2RSR", "62205-2RSR", "exact"),
+    ("NU1010-M1", "NU1010-M1", "exact"),
+    ("7004-B", "7004-B-TVP", "cage"),
+    ("7004-B-2RS", "7004-B-2RS-TVP", "cage"),
+    ("71810", "71810-B-TVH", "design"),
+    ("NU1992", "NU1992-M1", "cage"),
+    ("NU1010", "NU1010-M1", "cage"),
+    ("NU1011", "NU1011-E-M1", "design"),
+    ("32940", "32940-A", "design"),
+    ("t7fc045", "T7FC045", "exact"),
 ])
 def test_suffix_matching(query, designation, match):
     data = bearing(query)
@@ -244,9 +352,11 @@ NOT_IN_TABLE = "is not in the bearing table (Schaeffler HR 1, 2006)"
     # a design suffix that is given must match; the same number comes first
     ("NU208-EX", "close matches: NU208-E-TVP2, NU2348-EX-M1, NU2340-EX-M1, NU2338-EX-M1, NU2260-EX-M1"),
     # seals are never dropped nor exchanged: 2RS (the SKF name) is not HR 1's 2RSR
-    ("6208-2RS", "close matches: 6208-2RSR, 6208-2Z, 6208, 608-2RSR, 6308-2RSR"),
+    ("6208-2RS", "close matches: 6208-2RSR, 6208-2Z, 6208, 62308-2RSR, 62208-2RSR"),
     # 6217-2RSR is left out: HR 1 prints its C and C0 swapped against 6217 and 6217-2Z
     ("6217-2RSR", "close matches: 6217-2Z, 6217, 627-2RSR, 6317-2RSR, 6219-2RSR"),
+    # HR 1 prints 622 and 623 with contact seals only: the seal is not added either
+    ("62205", "close matches: 62205-2RSR, 6220, 6205, 625, 6405"),
     ("XYZ", "no close match"),
 ])
 def test_close_matches_are_full_designations(query, rest):
@@ -259,7 +369,7 @@ def test_close_matches_are_full_designations(query, rest):
     ("22208-E1", "which holds no spherical roller bearing"),   # spherical roller: not in the source
     ("51208", "which holds no thrust ball bearing"),           # thrust ball: not in the source
     ("81208", "which holds no thrust roller bearing"),
-    ("61908", "which holds no deep groove ball bearing of series 619"),
+    ("4208", "which holds no deep groove ball bearing of series 42"),
     ("NU412", "which holds no cylindrical roller bearing with cage of series 4"),
 ])
 def test_families_and_series_the_table_does_not_hold(query, scope):

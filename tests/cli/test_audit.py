@@ -210,6 +210,7 @@ def test_sealed_bearings_without_a_published_speed_are_skipped_and_exit_0(tmp_pa
     assert printed["reference_speed_rows_skipped"] == ["row 4 (6205-2RSR)"]
     assert printed["reference_speed_rows_not_computed"] == []
     assert main(["audit", "--reference-speeds", str(path)]) == 0
-    assert ("Rows skipped (1), bearings with contact seals and no published n_thr: the thermal method (ISO 15312, "
-            "DIN 732) does not apply to them, and catalogues print none (Schaeffler HR 1: '–'); not audited: "
+    assert ("Rows skipped (1), bearings with no published n_thr where catalogues print none (Schaeffler HR 1: '–'): "
+            "those with contact seals, to which the thermal method (ISO 15312, DIN 732) does not apply, and those the "
+            "bearing table holds without one (HR 1's 70..-B, 718..-B, NU19..); not audited: "
             "row 4 (6205-2RSR)") in capsys.readouterr().out.splitlines()

@@ -55,6 +55,24 @@ def test_a_sealed_bearing_prints_its_values_and_says_hr1_gives_no_n_thr(capsys):
         14600.0, 9300.0, 8000.0, None)
 
 
+def test_an_open_bearing_hr1_prints_without_n_thr_says_so(capsys):
+    """71810-B-TVH, HR 1 p. 244/245 row 1 (text copy lines 33814 and 34246): 50 x 65 x 7, C 6 950, C0 7 350,
+    n_G 9 500, n_B '–' although it has no seals."""
+    assert main(["lookup", "71810"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert lines[:2] == ["designation: 71810-B-TVH", "match: design"]
+    assert lines[lines.index("shield: open"):-1] == [
+        "shield: open",
+        "d [mm]: 50",
+        "D [mm]: 65",
+        "B [mm]: 7",
+        "C [N]: 6950",
+        "C0 [N]: 7350",
+        "n_G [1/min]: 9500",
+        "n_thr [1/min]: not given: HR 1 prints none for this bearing ('–')",
+    ]
+
+
 def test_text_output_of_a_tapered_bearing_matched_without_its_design_suffix(capsys):
     assert main(["lookup", "30208"]) == 0
     lines = capsys.readouterr().out.splitlines()

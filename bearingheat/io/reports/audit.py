@@ -6,7 +6,7 @@ left out are counted and listed (the first 20) and written to
 ``excluded.csv``. The reference speed audit
 (:func:`bearingheat.analysis.audit.audit_reference_speeds`, grouped by
 :func:`~bearingheat.analysis.audit.classify_reference_speeds`) is printed
-with the rows it skipped (bearings with contact seals and no published speed),
+with the rows it skipped (no published speed where the catalogue prints none),
 the flagged groups and their implied f0 first, then the outliers, then
 every group and the rows not computed with their reasons; it is written to
 ``reference_speeds.csv`` (one row per bearing: its group, deviation and
@@ -21,7 +21,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from bearingheat.analysis.reference_speeds import (MIN_CONSISTENT, SEALED_WITHOUT_SPEED, SYSTEMATIC_RULE,
+from bearingheat.analysis.reference_speeds import (MIN_CONSISTENT, SKIPPED_WITHOUT_SPEED, SYSTEMATIC_RULE,
                                                    ReferenceSpeedAudit)
 from bearingheat.io.files import write_outputs
 from bearingheat.io.tables import escape_formulas
@@ -105,7 +105,7 @@ def reference_speed_lines(audit: ReferenceSpeedAudit) -> list[str]:
              f"{scale}; threshold = +/-{audit.threshold:.2%}."]
     if audit.skipped:
         more = len(audit.skipped) - SHOWN_EXCLUDED
-        lines.append(f"Rows skipped ({len(audit.skipped)}), {SEALED_WITHOUT_SPEED}: "
+        lines.append(f"Rows skipped ({len(audit.skipped)}), {SKIPPED_WITHOUT_SPEED}: "
                      f"{', '.join(audit.skipped[:SHOWN_EXCLUDED])}{f', ... {more} more' if more > 0 else ''}")
     flagged = audit.flagged
     if len(flagged):

@@ -62,7 +62,7 @@ def test_template_drop_down_lists():
         assert [c.value for row in lists[source] for c in row] == choices
         # a designation outside the table (22208-E1, another catalogue) is a warning the designer may pass
         assert dv.errorStyle == ("warning" if name == "designation" else None)
-    assert len(expected["designation"]) == 1137 and {"6208", "6205-2RSR"} <= set(expected["designation"])
+    assert len(expected["designation"]) == 1277 and {"6208", "6205-2RSR"} <= set(expected["designation"])
 
 
 def test_template_has_the_heat_balance_and_model_columns_of_the_contract():
