@@ -14,7 +14,7 @@ import pandas as pd
 from bearingheat.calc.messages import Labels, Problem, at
 from bearingheat.calc.supports import SupportArrays, text_in
 from bearingheat.catalogue.f2chart import F2Chart
-from bearingheat.catalogue.contact import y0_for_contact_angle
+from bearingheat.catalogue.contact import TABLE_SOURCES, y0_for_contact_angle
 from bearingheat.kernels import friction
 
 __all__ = ["RESULTS", "EXCEL_FORMULAS", "P1_EXCEL", "F0_EXCEL", "F1_EXCEL", "evaluate_catalogue_model",
@@ -125,7 +125,7 @@ def evaluate_catalogue_model(s: SupportArrays, labels: Labels, f2_chart: F2Chart
     angular = np.equal(s.bearing_type, "angular_contact_ball")
     for col, values in (("X0", X0), ("Y0", Y0)):
         missing(col, lambda i, c=col: f"P0 of {label(i)} under axial load needs the catalogue value {c}"
-                                      + (" or the contact angle alpha (the DP11A manual, table 1: 18 to 36 deg)"
+                                      + (f" or the contact angle alpha ({TABLE_SOURCES})"
                                          if at(angular, i) else " (the DP11A manual, table 1 has none for this type)"),
                 needs_p0 & np.isnan(values) & ~angle_reported)
     P0 = friction.static_equivalent_load(Fr, Fa, X0, Y0)

@@ -76,7 +76,8 @@ def _p1_rules() -> dict[tuple[str, str], str]:
 
 @functools.lru_cache(maxsize=None)
 def _static_defaults() -> dict[str, tuple[float, float]]:
-    """The DP11A manual table 1: X0 where every row of a type agrees, Y0 where the type has one row.
+    """The static load factors (the DP11A manual table 1; HR 1 p. 237 for 40°): X0 where every row of a type
+    agrees, Y0 where the type has one row.
 
     Angular contact ball bearings get X0 = 0.5; their Y0 depends on the
     contact angle (:func:`bearingheat.catalogue.contact.y0_for_contact_angle`).

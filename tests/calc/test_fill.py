@@ -16,9 +16,9 @@ RESULTS = ["f0", "f1", "P0 [N]", "P1 [N]", "M0 [N*mm]", "M1 [N*mm]", "M2 [N*mm]"
 
 def test_designations_alone_give_the_demo_numbers():
     typed = pd.read_csv(DEMO)
-    # what a designer types: no dimensions, ratings or speeds; Y0 of the 40-degree 7210-B stays typed (the
-    # bearing table gives Y0 of tapered roller bearings only, and the contact-angle table ends at 36 degrees)
-    short = typed[["id", "designation", "arrangement", "lubrication", "n [rpm]", "Fr [kN]", "Fa [kN]", "Y0",
+    # what a designer types: no dimensions, ratings, speeds or static load factors (the demo's Y0 = 0.26 of the
+    # 40-degree 7210-B is HR 1's, p. 237)
+    short = typed[["id", "designation", "arrangement", "lubrication", "n [rpm]", "Fr [kN]", "Fa [kN]",
                    "nu [mm^2/s]", "T_amb [degC]", "T_bearing [degC]"]]
     full, filled = calc(typed), calc(short)
     for column in RESULTS:
@@ -39,6 +39,19 @@ def test_suffixes_match_and_the_values_are_the_catalogue_rows():
     # 6208: 40 x 80 mm (HR 1 p. 196); M0 = f0 (nu n)^(2/3) dM^3 1e-7 by hand, f0 = 2 (series 62, oil bath)
     assert out.loc[2, "M0 [N*mm]"] == pytest.approx(2.0 * (12 * 3000) ** (2 / 3) * 60.0 ** 3 * 1e-7, rel=1e-12)
     assert out["M0 [N*mm]"].nunique() == 1
+
+
+def test_a_40_degree_angular_contact_bearing_under_axial_load_takes_Y0_of_HR1():
+    """7205-B (HR 1 p. 240/241: 25 x 52 mm, C0 9300 N; contact angle 40 deg from the B suffix): Y0 = 0.26 and
+    X0 = 0.5 of HR 1 p. 237 ('P0 = 0,5 · F0r + 0,26 · F0a' for a single bearing); it was an error ('give Y0
+    from the catalogue')."""
+    out = calc(_row(designation="7205-B", **{"Fr [kN]": 1, "Fa [kN]": 3}))
+    assert out["status"].iat[0] == "ok"
+    P0 = 0.5 * 1000 + 0.26 * 3000                      # 1280 N > Fr
+    f1 = 0.001 * (P0 / 9300) ** 0.33                   # series 72: f1 = 0.001 (P0/C0)^0.33 (p. 68)
+    P1 = 3000 - 0.1 * 1000                             # single angular contact: P1 = Fa - 0.1 Fr (p. 68)
+    assert out["P0 [N]"].iat[0] == pytest.approx(P0, rel=1e-12)
+    assert out["M1 [N*mm]"].iat[0] == pytest.approx(f1 * P1 * (25 + 52) / 2, rel=1e-12)
 
 
 def test_a_sealed_bearing_fills_its_values_keeps_the_seal_warning_and_gets_no_heat_balance():

@@ -71,12 +71,14 @@ CASES = {
         "X0: missing; P0 of spherical roller bearing series 222 under axial load needs the catalogue value X0 "
         "(the DP11A manual, table 1 has none for this type); Y0: missing; P0 of spherical roller bearing series 222 under "
         "axial load needs the catalogue value Y0 (the DP11A manual, table 1 has none for this type)"),
-    "angular contact at 40 deg": (dict(designation="7205-B", Fa=500), "error",
-        "Y0: missing; alpha = 40 deg is outside the contact angles of the DP11A manual table 1 (18 to 36 deg); "
-        "Y0 is not extrapolated; give Y0 from the catalogue"),
+    "angular contact at 45 deg": (dict(designation="7205", alpha=45, Fa=500), "error",
+        "Y0: missing; alpha = 45 deg is outside the contact angles of the static load factors (18 to 40 deg: the "
+        "DP11A manual, table 1, 18 to 36 deg; Schaeffler HR 1, p. 237, 40 deg); Y0 is not extrapolated; give Y0 "
+        "from the catalogue"),
     "angular contact without angle": (dict(designation="7205", Fa=500), "error",
         "Y0: missing; P0 of single row angular contact ball bearing series 72 under axial load needs the catalogue "
-        "value Y0 or the contact angle alpha (the DP11A manual, table 1: 18 to 36 deg)"),
+        "value Y0 or the contact angle alpha (the DP11A manual, table 1, 18 to 36 deg; Schaeffler HR 1, p. 237, "
+        "40 deg)"),
     "radial load on a thrust ball bearing": (dict(designation="51105", D=42, Fa=1000), "error",
         "Fr [N]: 2000 on thrust ball bearing series 511: thrust ball and thrust roller bearings take no radial load "
         "(their M1 is f1*Fa*dM)"),

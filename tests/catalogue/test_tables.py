@@ -135,13 +135,15 @@ KB = [  # the Schaeffler catalogue p. 70
     ("4", "NJ", 22),
 ]
 
-STATIC = [  # the DP11A manual table 1
+STATIC = [  # the DP11A manual table 1, and the 40 deg of HR 1
     ("deep_groove_ball", 0, 0.6, 0.50),
     ("angular_contact_ball", 18, 0.5, 0.43),
     ("angular_contact_ball", 20, 0.5, 0.42),
     ("angular_contact_ball", 26, 0.5, 0.37),
     ("angular_contact_ball", 30, 0.5, 0.33),
     ("angular_contact_ball", 36, 0.5, 0.28),
+    # Schaeffler HR 1 (2006) p. 237, contact angle 40 deg, single bearing: P0 = 0,5 · F0r + 0,26 · F0a
+    ("angular_contact_ball", 40, 0.5, 0.26),
 ]
 
 LAB = [  # the DP11A manual table 3: designation, d, dm, C0
