@@ -336,9 +336,13 @@ def audit_reference_speeds(table: pd.DataFrame, *, speed_column: str | None = No
             frame[name] = np.nan
     published_cells = table[columns[published_name]]
     # a blank speed of a bearing with contact seals, or of one HR 1 prints without a speed, is what the catalogue
-    # prints: skipped, not a row error
-    skipped = _blank(published_cells) & (_printed_without_speed(frame["designation"]) if "designation" in frame
-                                         else np.zeros(len(table), dtype=bool))
+    # prints: skipped, not a row error (only the rows with a blank speed are looked up in the bearing table: a
+    # designation it does not hold costs the search for close matches)
+    skipped = _blank(published_cells)
+    if "designation" in frame and skipped.any():
+        skipped[skipped] = _printed_without_speed(frame["designation"][skipped])
+    else:
+        skipped[:] = False
     published = _convert(published_cells, columns[published_name], units[published_name], "1/min",
                          problems, decimal=decimal, positive=_POSITIVE["n"], required=~skipped)
     in_error = np.array([bool(p) for p in problems], dtype=bool)
