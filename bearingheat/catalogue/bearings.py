@@ -54,7 +54,7 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from bearingheat.catalogue.designation import BEARING_TYPES, _split, parse_designation
+from bearingheat.catalogue.designation import BEARING_TYPES, CONTACT_SEAL_SUFFIXES, _split, parse_designation
 from bearingheat.catalogue.tables import load_table, table_units
 from bearingheat.errors import DesignationError
 from bearingheat.units import normalise_unit_text, quantity
@@ -69,7 +69,6 @@ __all__ = [
     "NUMERIC",
     "CAGE_SUFFIXES",
     "DESIGN_SUFFIXES",
-    "CONTACT_SEALS",
     "MATCHES",
     "ROUNDING",
     "half_step",
@@ -92,8 +91,6 @@ CAGE_SUFFIXES = frozenset({
     "M", "M1", "MA", "MB", "MP", "MPA", "Y", "J", "JN", "JP", "JR", "TV", "TVH", "TVP", "TVP2", "TN", "TN9",
     "TNH", "C2", "C3", "C4", "C5", "CN", "P2", "P4", "P5", "P6",
 })
-#: The ``shield`` values of the bearings with two contact seals: HR 1 prints no thermal reference speed for them.
-CONTACT_SEALS = frozenset({"2RSR", "2RS"})
 #: Design suffixes of the table: E, EX (cylindrical roller), B (angular contact: 40 deg; tapered: steep),
 #: A, BA, X, XA (tapered roller).
 DESIGN_SUFFIXES = frozenset({"E", "EX", "A", "B", "BA", "X", "XA"})
@@ -209,12 +206,13 @@ class BearingData:
 
     @property
     def contact_sealed(self) -> bool:
-        """True for a bearing with contact seals (``shield`` 2RSR or 2RS), for which HR 1 gives no n_thr.
+        """True for a bearing with contact seals (``shield`` 2RSR or 2RS, suffixes of
+        :data:`~bearingheat.catalogue.designation.CONTACT_SEAL_SUFFIXES`), for which HR 1 gives no n_thr.
 
         >>> bearing("6205-2RSR").contact_sealed, bearing("6205-2Z").contact_sealed
         (True, False)
         """
-        return self.shield in CONTACT_SEALS
+        return self.shield in CONTACT_SEAL_SUFFIXES
 
     def values(self) -> dict[str, float]:
         """The numeric fields the catalogue gives (NaN ones left out), in catalogue units.

@@ -27,6 +27,7 @@ __all__ = [
     "decode_gost",
     "bore_from_code",
     "BEARING_TYPES",
+    "CONTACT_SEAL_SUFFIXES",
     "known_series",
 ]
 
@@ -52,7 +53,7 @@ BEARING_TYPES = {
 }
 
 # Suffixes of contact seals (rubbing lips) and of non-contact shields.
-_CONTACT_SEALS = {"RS", "2RS", "RSR", "2RSR", "2RS1", "RS1", "2RSH", "RSH", "LLU", "2LS", "DDU", "2RZ"}
+CONTACT_SEAL_SUFFIXES = frozenset({"RS", "2RS", "RSR", "2RSR", "2RS1", "RS1", "2RSH", "RSH", "LLU", "2LS", "DDU", "2RZ"})
 _SHIELDS = {"Z", "2Z", "ZZ", "ZR", "2ZR", "2ZRS", "LLB"}
 # Contact angle implied by a suffix of a single row angular contact ball bearing (Schaeffler/ISO practice).
 _CONTACT_ANGLE_SUFFIX = {"B": 40.0, "BE": 40.0, "AC": 25.0, "C": 15.0, "E": 25.0}
@@ -258,7 +259,7 @@ def parse_designation(text: str) -> Designation:
 
 def _finish(text, bearing_type, series, prefix, bore, width, suffixes) -> Designation:
     seal = "open"
-    if any(s in _CONTACT_SEALS for s in suffixes):
+    if any(s in CONTACT_SEAL_SUFFIXES for s in suffixes):
         seal = "contact"
     elif any(s in _SHIELDS for s in suffixes):
         seal = "shield"
