@@ -46,8 +46,11 @@ and nu*n*dM [mm^3/(s*min)] to read f2 off the chart. Row messages of a CSV
 begin with the row's line in the file: 'row 7 (id "spindle rear"): ...'.
 
 A CSV may be separated by ',', ';' or tabs, with decimal points or commas
-(found from the file; --sep and --decimal set them). Columns calc does not
-know are passed through untouched.
+(found from the file; --sep and --decimal set them). Its units may also stand
+in a units row under a header of bare names ('d' over 'mm'), as a CSV saved
+from the Excel template's sheet Supports has them; the output then names them
+in its headers ('d [mm]'). Columns calc does not know are passed through
+untouched.
 
 Output files: -o never replaces an existing file without --force, never
 writes over the input, and is written atomically (a temporary file beside it,

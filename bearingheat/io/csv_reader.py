@@ -32,6 +32,7 @@ import csv
 import io
 import re
 from pathlib import Path
+from typing import NamedTuple
 
 import numpy as np
 import pandas as pd
@@ -42,6 +43,7 @@ import pyarrow.csv as pa_csv
 from bearingheat.calc.contract import columns as contract_columns
 from bearingheat.calc.contract import input_units, parse_header
 from bearingheat.errors import InputError
+from bearingheat.io.units_row import NO_UNIT, looks_like_units_row, unit_contradicts_header
 
 __all__ = ["SEPARATORS", "CsvSource", "RowLines", "read_text", "sniff_format", "separator", "read_source",
            "refuse_duplicate_columns"]
@@ -427,6 +429,10 @@ def read_source(path, *, sep: str | None = None, decimal: str | None = None, wha
     if given_sep is not None and len(header) == 1:
         _refuse_a_separator_the_header_lacks(path, given_sep, header[0])
     refuse_duplicate_columns(path, header)
+    units = _units_row(path, raw, sep, header, lines)
+    if units is not None:  # the units row is no row of data: the readers get the file without it
+        start, end = units.span
+        raw, unchanged, lines = raw[:start] + raw[end:], False, lines[1:]
     text_columns = _text_columns(header)
     table = _read_with_pyarrow(raw, sep, decimal, header, text_columns, path if unchanged else None)
     if table is None:
@@ -442,11 +448,79 @@ def read_source(path, *, sep: str | None = None, decimal: str | None = None, wha
         keep = ~empty
         table = table.filter(pa.array(keep)) if isinstance(table, pa.Table) else table[keep].reset_index(drop=True)
         lines = np.asarray(lines)[keep] if len(lines) == rows else lines
+    if units is not None:
+        table = _with_units_in_headers(table, units.cells)
     source = CsvSource(table, None, decimal)
     if len(source) == 0:
-        raise InputError(f"{path}: no {what} (only a header row)")
+        raise InputError(f"{path}: no {what} (only a header row{' and a units row' if units is not None else ''})")
     source.lines = RowLines(lines) if len(lines) == len(source) else None
     return source
+
+
+#: a line break of a CSV text: CR LF, LF or a lone CR (as Python's csv module and _records count lines)
+_LINE_BREAK = re.compile(rb"\r\n|\r|\n")
+
+
+class UnitsRow(NamedTuple):
+    """The units row of a CSV: its cells by header (blank and '-' cells left out) and its bytes in the file
+    (start, end with its line break)."""
+
+    cells: dict[str, str]
+    span: tuple[int, int]
+
+
+def _line_span(raw: bytes, number: int) -> tuple[int, int, int]:
+    """(start, end of the text, end with the line break) of line ``number`` (1 for the first) of ``raw``; the
+    breaks are looked for up to that line only."""
+    start = 0
+    for count, match in enumerate(_LINE_BREAK.finditer(raw), start=1):
+        if count == number:
+            return start, match.start(), match.end()
+        start = match.end()
+    return start, len(raw), len(raw)  # the last line, without a line break
+
+
+def _units_row(path: Path, raw: bytes, sep: str, header: list[str], lines) -> UnitsRow | None:
+    """The units row under the header (a CSV saved from the Excel template's sheet 'Supports': ``d`` over ``mm``),
+    or None when the first row is a row of data. The rule is the Excel reader's
+    (:func:`bearingheat.io.units_row.looks_like_units_row`); a cell that is no unit or contradicts its header's
+    unit is refused, naming its line and column."""
+    if len(lines) == 0:
+        return None
+    number = int(lines[0])
+    start, text_end, end = _line_span(raw, number)
+    text = raw[start:text_end].decode("utf-8")
+    if text.count('"') % 2:  # a quoted cell that goes on in the next line: a row of data
+        return None
+    cells = next(csv.reader([text], delimiter=sep, skipinitialspace=True), [])
+    cells += [""] * (len(header) - len(cells))
+    known = input_units()
+    names = [name if name in known else None for name in (parse_header(h, strict=False)[0] for h in header)]
+    is_units, unknown = looks_like_units_row(cells, names)
+    if unknown:
+        position, why = unknown[0]
+        raise InputError(f"{path}: line {number}: {why} (column {position + 1}) in the units row under the "
+                         "header; write a unit such as kN, N, rpm, mm^2/s (docs/columns.md lists the columns)")
+    if not is_units:
+        return None
+    units = {h: cell.strip() for h, cell in zip(header, cells) if h.strip() and cell.strip() not in ("", NO_UNIT)}
+    for name, unit in units.items():
+        if unit_contradicts_header(name, unit):
+            raise InputError(f"{path}: line {number}, column {name!r}: unit {unit!r} in the units row contradicts "
+                             f"the header {name!r}; keep one of them")
+    return UnitsRow(units, (start, end))
+
+
+def _with_units_in_headers(table: pa.Table | pd.DataFrame, units: dict[str, str]) -> pa.Table | pd.DataFrame:
+    """``table`` with the units of the units row written into its headers ('d' over 'mm': 'd [mm]'), as calc and
+    the other commands read them; a header that has its unit already keeps it."""
+    def renamed(header: str) -> str:
+        unit = units.get(header)
+        return header if unit is None or parse_header(header, strict=False)[1] is not None else f"{header} [{unit}]"
+
+    if isinstance(table, pa.Table):
+        return table.rename_columns([renamed(name) for name in table.column_names])
+    return table.rename(columns=renamed)
 
 
 def _refuse_a_separator_the_header_lacks(path: Path, sep: str, header: str) -> None:

@@ -43,12 +43,13 @@ from openpyxl.workbook import Workbook
 from openpyxl.worksheet.worksheet import Worksheet
 
 from bearingheat.calc.contract import input_units, parse_header, result_column
-from bearingheat.errors import ExcelError, InputError, UnitError
+from bearingheat.errors import ExcelError, InputError
 from bearingheat.io.excel.opc import MAIN, parse_part, workbook_part
 from bearingheat.io.excel.ownership import read_marks, sheet_ref
 from bearingheat.io.excel.rows import filled_rows, take_ambiguous_texts, totals_rows
 from bearingheat.io.files import EXCEL_SUFFIXES
-from bearingheat.units import convert_column, parse_unit, quantity
+from bearingheat.io.units_row import looks_like_units_row, unit_contradicts_header
+from bearingheat.units import parse_unit, quantity
 
 if TYPE_CHECKING:
     from bearingheat.io.console import Progress
@@ -227,37 +228,6 @@ def _find_header_row(ws: Worksheet, max_col: int, merged: MergedCells) -> int:
     return best_row
 
 
-def _looks_like_units_row(values: list[object], names: list[str | None]) -> tuple[bool, list[tuple[int, str]]]:
-    """(whether the row under the header holds units, the cells of it that are no unit: (position, why)).
-
-    It holds units when its dimensional columns hold no numbers and at least
-    one unit text; a text there that is no unit ('KN') is then a typo in the
-    units row, not a sign of a row of supports."""
-    known = input_units()
-    saw_unit = False
-    unknown: list[tuple[int, str]] = []
-    for position, (value, name) in enumerate(zip(values, names)):
-        if name is None or known.get(name, "") in ("", "1"):
-            continue
-        if _is_number(value):
-            return False, []
-        text = _text(value)
-        if not text or text == "-":
-            continue
-        try:
-            float(text)
-            return False, []
-        except ValueError:
-            pass
-        try:
-            parse_unit(text, name=name)
-        except UnitError as exc:
-            unknown.append((position, str(exc)))
-            continue
-        saw_unit = True
-    return saw_unit, unknown if saw_unit else []
-
-
 def defined_name_values(workbook: Workbook) -> list[tuple[str, str | None]]:
     """(name, value) of each workbook-scoped defined name of an openpyxl workbook: what :mod:`.ownership` reads
     bearingheat's marks from."""
@@ -346,7 +316,7 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
             raw_units.append(None)
         else:
             raw_units.append(ws.cell(candidate, col).value)
-    is_units, unknown = _looks_like_units_row(raw_units, names)
+    is_units, unknown = looks_like_units_row(raw_units, names)
     if unknown:
         position, why = unknown[0]
         raise ExcelError(f"{sheet_ref(ws.title)}!{get_column_letter(columns[position][0])}{candidate}: {why} in the "
@@ -357,7 +327,7 @@ def read_sheet(workbook: Workbook, path: Path, sheet: str | None, *,
             text = _text(value)
             if text:
                 units[header] = text
-        _check_units(ws.title, header_row, units_row, columns, units)
+        _check_units(ws.title, units_row, columns, units)
     first_data = (units_row or header_row) + 1
 
     letters: dict[str, str] = {}
@@ -580,30 +550,10 @@ def contract_name(header: str) -> str | None:
     return name if name in _known_names() else None
 
 
-def _check_units(sheet: str, header_row: int, units_row: int, columns: Iterable[tuple[int, str]],
-                 units: dict[str, str]) -> None:
+def _check_units(sheet: str, units_row: int, columns: Iterable[tuple[int, str]], units: dict[str, str]) -> None:
     """A unit in the header and a different one in the units row: refuse rather than guess."""
     for col, header in columns:
-        if header not in units:
-            continue
-        try:
-            _, header_unit = parse_header(header)
-        except InputError:
-            continue
-        if header_unit is None or units[header] == "-":
-            continue
-        target = input_units().get(contract_name(header) or "", "")
-        try:  # one unit spelled two ways (rpm and 1/min, cSt and mm^2/s) gives the same numbers
-            if target in ("", "1"):
-                same = parse_unit(header_unit, name=header) == parse_unit(units[header], name=header)
-            else:
-                points = np.array([0.0, 1.0])
-                same = bool(np.allclose(convert_column(points, header_unit, target, name=header)[0],
-                                        convert_column(points, units[header], target, name=header)[0],
-                                        rtol=1e-12, atol=0.0))
-        except UnitError:
-            same = False
-        if not same:
+        if header in units and unit_contradicts_header(header, units[header]):
             raise ExcelError(f"{sheet_ref(sheet)}!{get_column_letter(col)}{units_row}: unit {units[header]!r} "
                              f"contradicts the header {header!r}; keep one of them")
 
