@@ -624,7 +624,7 @@ def _group_record(bearings: pd.DataFrame, mask: np.ndarray, subgroup: str, thres
         f1_table=float(np.nanmedian(use["f1_table"])) if use["f1_table"].notna().any() else math.nan,
         f1_implied=f1[0], f1_implied_low=f1[1], f1_implied_high=f1[2], interval_coverage=f0[3])
     if len(dev) < SYSTEMATIC_MIN_ROWS:
-        record["note"] = f"{len(dev)} bearings: too few to judge"
+        record["note"] = f"{len(dev)} bearing{'s' if len(dev) != 1 else ''}: too few to judge"
     elif not flag and _deviates(dev, threshold):
         record["note"] = "the deviation lies in one size class"
     elif systematic and f1[2] <= 0:

@@ -16,6 +16,7 @@ with matplotlib's Figure API).
 """
 from __future__ import annotations
 
+import textwrap
 from pathlib import Path
 
 import numpy as np
@@ -177,11 +178,33 @@ def write_reference_speeds(audit: ReferenceSpeedAudit, out_dir, *, force: bool =
     return write_outputs(out_dir, writers, force=force, inputs=inputs)
 
 
+def unflagged_outside_the_band(audit: ReferenceSpeedAudit) -> dict[str, str]:
+    """The groups whose median deviation lies outside the band ± the threshold but that are not flagged (too few
+    bearings to judge, or no common direction), each with its deviation and the reason: group -> '+19.7% (3
+    bearings: too few to judge)'. The figure draws them apart from the groups that agree. A series split into
+    size classes is judged by its classes (its bearings belong to them), so it is not one of these."""
+    groups = audit.groups
+    outside = groups[~groups["systematic"].astype(bool) & groups["group"].isin(audit.bearings["group"])
+                     & (groups["median_deviation"].abs().to_numpy(dtype=float) > audit.threshold)]
+    return {row["group"]: f"{row['median_deviation']:+.1%}" + (f" ({row['note']})" if row["note"] else "")
+            for row in outside.to_dict("records")}
+
+
+#: characters of a legend line of the reference-speed figure (a longer entry is wrapped: the panels keep their width)
+_LEGEND_WIDTH = 70
+
+
+def _legend_text(text: str) -> str:
+    return textwrap.fill(text, _LEGEND_WIDTH, subsequent_indent="  ")
+
+
 def draw_reference_speeds(audit: ReferenceSpeedAudit, path, *, dpi: int = FIGURE_DPI) -> None:
     """Deviation against bore for every series, one panel per family, written as a PNG (150 dpi).
 
     Series and size classes that agree with the tables are grey; flagged
     groups are coloured and named in the legend with their implied f0;
+    groups outside the band that are not flagged (too few bearings to judge)
+    are dashed and named with their deviation and the reason;
     outliers are red crosses labelled with their designation; the band is
     ± the systematic threshold.
     """
@@ -195,6 +218,7 @@ def draw_reference_speeds(audit: ReferenceSpeedAudit, path, *, dpi: int = FIGURE
     fig = Figure(figsize=(11.0, 2.9 * len(families) + 0.6), dpi=dpi, layout="constrained")
     axes = fig.subplots(len(families), 1, squeeze=False, sharex=True)[:, 0]
     flagged = audit.flagged
+    unflagged = unflagged_outside_the_band(audit)
     palette = ["tab:blue", "tab:orange", "tab:green", "tab:purple", "tab:brown", "tab:pink", "tab:olive", "tab:cyan"]
     colour = 0
     for ax, family in zip(axes, families):
@@ -202,7 +226,7 @@ def draw_reference_speeds(audit: ReferenceSpeedAudit, path, *, dpi: int = FIGURE
         ax.axhspan(-audit.threshold * 100, audit.threshold * 100, color="0.9", zorder=0,
                    label=f"±{audit.threshold:.1%}: agrees with the tables")
         ax.axhline(0.0, color="0.5", lw=0.6, zorder=1)
-        agreeing = []
+        agreeing, unjudged = [], []
         for group, rows in mine.groupby("group", sort=False):
             rows = rows.sort_values("d")
             use = rows[~rows["outlier"]]
@@ -217,12 +241,20 @@ def draw_reference_speeds(audit: ReferenceSpeedAudit, path, *, dpi: int = FIGURE
                          f"{f['f0_implied_high']:.2f}]" + ("" if f["single_f0"] else ", spread: no single f0"))
                 ax.plot(per_bore.index, per_bore.to_numpy(), "-o", color=c, lw=1.8, ms=3.5, label=label, zorder=3)
             else:
-                agreeing.append(str(rows["series"].iloc[0]) + (f" {rows['subgroup'].iloc[0]}"
-                                                               if rows["subgroup"].iloc[0] else ""))
-                ax.plot(per_bore.index, per_bore.to_numpy(), "-", color="0.55", lw=0.9, zorder=2,
-                        label="_nolegend_")
+                name = str(rows["series"].iloc[0]) + (f" {rows['subgroup'].iloc[0]}" if rows["subgroup"].iloc[0]
+                                                      else "")
+                outside = group in unflagged
+                if outside:
+                    unjudged.append(f"{name} {unflagged[group]}")
+                else:
+                    agreeing.append(name)
+                ax.plot(per_bore.index, per_bore.to_numpy(), "--o" if outside else "-", color="0.3" if outside
+                        else "0.55", lw=0.9, ms=3, mfc="none", zorder=2, label="_nolegend_")  # (a point: one bore)
         if agreeing:
-            ax.plot([], [], "-", color="0.55", lw=0.9, label="agree: " + ", ".join(agreeing))
+            ax.plot([], [], "-", color="0.55", lw=0.9, label=_legend_text("agree: " + ", ".join(agreeing)))
+        if unjudged:
+            ax.plot([], [], "--o", color="0.3", lw=0.9, ms=3, mfc="none",
+                    label="outside the band, not flagged:\n" + "\n".join(map(_legend_text, unjudged)))
         out = mine[mine["outlier"]]
         if len(out):
             ax.plot(out["d"], out["deviation"] * 100, "x", color="red", ms=7, mew=1.8, zorder=4,
