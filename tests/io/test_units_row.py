@@ -8,6 +8,8 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 from excel_helpers import EXAMPLE_CSV, EXAMPLE_XLSX
 
 from bearingheat.cli import main
@@ -141,3 +143,38 @@ def test_the_example_workbook_saved_as_csv_by_libreoffice_is_computed_as_the_exa
     for column in RESULTS + ["T_op [degC]"]:
         np.testing.assert_allclose(from_workbook[column].to_numpy(float), from_example[column].to_numpy(float),
                                    rtol=1e-12, err_msg=column)
+
+
+# ---- property: a units row reads as the same units written in the headers -----------------------------------------
+
+#: dimensional columns and spellings of their units that engineers type
+UNIT_CHOICES = {"d": ["mm", "in", "cm"], "Fr": ["kN", "N", "lbf"], "n": ["rpm", "1/min", "Hz", "U/min"],
+                "nu": ["mm^2/s", "cSt"], "T_amb": ["degC", "°C"]}
+_SEPARATORS = {",": ".", ";": ",", "\t": "."}  # separator -> a decimal mark it is used with
+
+
+@st.composite
+def _tables(draw):
+    names = draw(st.lists(st.sampled_from(sorted(UNIT_CHOICES)), min_size=1, max_size=5, unique=True))
+    units = [draw(st.sampled_from(UNIT_CHOICES[name])) for name in names]
+    cell = st.one_of(st.just(""), st.floats(0.001, 1e5, allow_nan=False).map(lambda v: f"{v:.6g}"))
+    rows = draw(st.lists(st.tuples(st.text("abcxyz 0123", min_size=1, max_size=6).map(str.strip).filter(bool),
+                                   st.lists(cell, min_size=len(names), max_size=len(names))), min_size=1, max_size=6))
+    sep = draw(st.sampled_from(sorted(_SEPARATORS)))
+    return names, units, rows, sep
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(_tables())
+def test_a_units_row_reads_as_units_in_the_headers(tmp_path_factory, table):
+    names, units, rows, sep = table
+    decimal = _SEPARATORS[sep]
+    lines = [sep.join(cell.replace(".", decimal) for cell in [identifier, *cells]) for identifier, cells in rows]
+    folder = tmp_path_factory.mktemp("units")
+    with_row = _write(folder / "row.csv", sep.join(["id", *names]), sep.join(["-", *units]), *lines)
+    in_headers = _write(folder / "headers.csv", sep.join(["id", *(f"{n} [{u}]" for n, u in zip(names, units))]),
+                        *lines)
+    expected = read_csv(in_headers)
+    read = read_csv(with_row)
+    pd.testing.assert_frame_equal(read, expected)
+    assert list(read.attrs["lines"]) == [line + 1 for line in expected.attrs["lines"]]
