@@ -15,6 +15,8 @@ number and at least one unit text.
 """
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 import numpy as np
 
 from bearingheat.calc.contract import input_units, parse_header
@@ -31,7 +33,7 @@ def _is_number(value: object) -> bool:
     return isinstance(value, (int, float)) and not isinstance(value, bool)
 
 
-def looks_like_units_row(values: list[object], names: list[str | None]) -> tuple[bool, list[tuple[int, str]]]:
+def looks_like_units_row(values: Sequence[object], names: Sequence[str | None]) -> tuple[bool, list[tuple[int, str]]]:
     """(whether the row under the header holds units, the cells of it that are no unit: (position, why)).
 
     ``values`` are the row's cells (numbers as a workbook holds them, or text as a CSV does), ``names`` the
