@@ -23,13 +23,14 @@ from bearingheat.calc.contract import input_units, parse_header
 from bearingheat.errors import InputError, UnitError
 from bearingheat.units import convert_column, parse_unit
 
-__all__ = ["looks_like_units_row", "unit_contradicts_header", "NO_UNIT"]
+__all__ = ["looks_like_units_row", "unit_contradicts_header", "is_number", "NO_UNIT"]
 
 #: a units-row cell that names no unit (a text column's, a dimensionless one's)
 NO_UNIT = "-"
 
 
-def _is_number(value: object) -> bool:
+def is_number(value: object) -> bool:
+    """Whether a cell holds a number (a workbook's int or float; a logical value TRUE is none)."""
     return isinstance(value, (int, float)) and not isinstance(value, bool)
 
 
@@ -46,7 +47,7 @@ def looks_like_units_row(values: Sequence[object], names: Sequence[str | None]) 
     for position, (value, name) in enumerate(zip(values, names)):
         if name is None or known.get(name, "") in ("", "1"):
             continue
-        if _is_number(value):
+        if is_number(value):
             return False, []
         text = "" if value is None else str(value).strip()
         if not text or text == NO_UNIT:

@@ -48,7 +48,7 @@ from bearingheat.io.excel.opc import MAIN, parse_part, workbook_part
 from bearingheat.io.excel.ownership import read_marks, sheet_ref
 from bearingheat.io.excel.rows import filled_rows, take_ambiguous_texts, totals_rows
 from bearingheat.io.files import EXCEL_SUFFIXES
-from bearingheat.io.units_row import looks_like_units_row, unit_contradicts_header
+from bearingheat.io.units_row import is_number, looks_like_units_row, unit_contradicts_header
 from bearingheat.units import parse_unit, quantity
 
 if TYPE_CHECKING:
@@ -142,13 +142,9 @@ def _text(value: object) -> str:
     return "" if value is None else str(value).strip()
 
 
-def _is_number(value: object) -> bool:
-    return isinstance(value, (int, float)) and not isinstance(value, bool)
-
-
 def _as_text_value(value: object) -> object:
     """A text-column cell as the user sees it: 6208 typed as a number is the designation '6208'."""
-    if _is_number(value):
+    if is_number(value):
         if isinstance(value, float) and value.is_integer():
             return str(int(value))
         return str(value)
@@ -488,7 +484,7 @@ def _unsaved_zeros(path: Path, workbook: Workbook, cached: dict[tuple[str, int],
     too when it writes results into a workbook (its ownership marks say so) and leaves the input sheet's cached
     values as they were: there a 0 is trusted unless every formula caches 0 (a script's workbook that
     bearingheat wrote results into)."""
-    zeros = {key for key, value in cached.items() if _is_number(value) and value == 0}
+    zeros = {key for key, value in cached.items() if is_number(value) and value == 0}
     if not zeros or not _recalculates_on_load(path):
         return set()
     if read_marks(defined_name_values(workbook)) and len(zeros) < len(cached):
@@ -560,7 +556,7 @@ def _check_units(sheet: str, units_row: int, columns: Iterable[tuple[int, str]],
 
 def _numeric_if_possible(values: list[Any]) -> pd.Series:
     present = [v for v in values if v is not None]
-    if present and all(_is_number(v) for v in present):
+    if present and all(is_number(v) for v in present):
         if len(present) == len(values) and all(isinstance(v, int) for v in present):
             return pd.Series(values, dtype="int64")
         return pd.Series([np.nan if v is None else float(v) for v in values], dtype=float)
