@@ -44,6 +44,7 @@ _EXPORTS = {
     "analyse_coastdown": "bearingheat.api.coastdown", "analyse_spindle_coastdown": "bearingheat.api.coastdown",
     "bearing": "bearingheat.api.bearings", "BearingData": "bearingheat.api.bearings",
     "bearing_table": "bearingheat.api.bearings", "designations": "bearingheat.api.bearings",
+    "bearings_with_bore": "bearingheat.api.bearings",
     "parse_designation": "bearingheat.catalogue.designation", "decode_gost": "bearingheat.catalogue.designation",
     "F2Chart": "bearingheat.catalogue.f2chart", "VMChart": "bearingheat.catalogue.vm_chart",
 }
@@ -51,7 +52,7 @@ _EXPORTS = {
 __all__ = list(_EXPORTS)
 
 if TYPE_CHECKING:  # what type checkers and IDEs see; at run time each name is imported on first use
-    from bearingheat.api.bearings import BearingData, bearing, bearing_table, designations
+    from bearingheat.api.bearings import BearingData, bearing, bearing_table, bearings_with_bore, designations
     from bearingheat.api.bushing import BushingSize, ThrustWasherSize, size_bushing, size_thrust_washer
     from bearingheat.api.coastdown import analyse_coastdown, analyse_spindle_coastdown
     from bearingheat.api.contact import BallContact, ball_bearing_contact, contact_angle_from_clearance

@@ -9,10 +9,17 @@ naming close designations of the table.
 """
 from __future__ import annotations
 
+import math
+
+import numpy as np
+import pandas as pd
+
 from bearingheat.catalogue import bearings as catalogue_bearings
 from bearingheat.catalogue.bearings import BearingData, bearing_table, designations
+from bearingheat.errors import InputError
+from bearingheat.units import QuantityLike, magnitude
 
-__all__ = ["bearing", "BearingData", "bearing_table", "designations"]
+__all__ = ["bearing", "BearingData", "bearing_table", "designations", "bearings_with_bore"]
 
 
 def bearing(designation: str) -> BearingData:
@@ -76,3 +83,66 @@ def bearing(designation: str) -> BearingData:
     bearingheat.errors.DesignationError: designation: '6205-2ZZ' is not in the bearing table (Schaeffler HR 1, 2006); close matches: 6205-2Z, 6205-2RSR, 6205, 625-2Z, 6320-2Z
     """
     return catalogue_bearings.bearing(designation)
+
+
+def bearings_with_bore(d: QuantityLike, *, D_max: QuantityLike | None = None, B_max: QuantityLike | None = None,
+                       family: str | list[str] | None = None, shield: str | list[str] | None = None) -> pd.DataFrame:
+    """The bearings of the bearing table that fit a shaft of diameter ``d``: the candidates for a support.
+
+    Parameters
+    ----------
+    d : pint.Quantity
+        Bore (the shaft seat), any length unit; matched to half the
+        catalogue's printing step (0.005 mm: ``1.5748 * u.inch`` finds 40 mm).
+    D_max, B_max : pint.Quantity, optional
+        The largest outside diameter and width the housing takes (for a
+        tapered roller bearing the width is its total width T).
+    family : str or list of str, optional
+        ``"deep groove ball"``, ``"angular contact ball"``,
+        ``"cylindrical roller"``, ``"tapered roller"``; all when None.
+    shield : str or list of str, optional
+        ``"open"``, ``"2Z"``, ``"2RSR"``, ``"2RS"``; all when None.
+
+    Returns
+    -------
+    pandas.DataFrame
+        The rows of :func:`bearing_table` (catalogue units: mm, N, 1/min),
+        in catalogue order. ``bh.calc`` computes them at an operating point
+        from their designations (see the example).
+
+    Raises
+    ------
+    bearingheat.errors.UnitError
+        For a plain number or a unit that is no length.
+    bearingheat.errors.DesignationError
+        For an unknown family or shield, and when no bearing is left: the
+        message names the nearest bores of the table, or the diameters,
+        widths, families and shields the bore offers.
+
+    Examples
+    --------
+    >>> import pint, bearingheat as bh
+    >>> u = pint.get_application_registry()
+    >>> found = bh.bearings_with_bore(40 * u.mm, D_max=80 * u.mm, family="deep groove ball", shield="open")
+    >>> found["designation"].tolist()
+    ['61908', '16008', '6008', '6208']
+    >>> point = found[["designation"]].assign(lubrication="oil_bath", **{"n [rpm]": 6000, "Fr [kN]": 2.0,
+    ...                                                                  "nu [mm^2/s]": 20.0})
+    >>> print(bh.calc(point)[["designation", "MR [N*mm]", "n_thr [1/min]"]].round(1).to_string(index=False))
+    designation  MR [N*mm]  n_thr [1/min]
+          61908       86.8         9989.3
+          16008       98.6         7825.9
+           6008       96.5        10667.5
+           6208      141.1         9325.1
+    """
+    limit = {name: math.inf if value is None else _one_length(value, name)
+             for name, value in (("D_max", D_max), ("B_max", B_max))}
+    return catalogue_bearings.bearings_with_bore(_one_length(d, "d"), families=family, shields=shield, **limit)
+
+
+def _one_length(value: QuantityLike, name: str) -> float:
+    """A scalar length Quantity in mm; :class:`InputError` for several values."""
+    millimetres = np.asarray(magnitude(value, "mm", name), dtype=float)
+    if millimetres.ndim != 0:
+        raise InputError(f"{name}: give one length, e.g. 40 * u.mm; got {millimetres.size} values")
+    return float(millimetres)

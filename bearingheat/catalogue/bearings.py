@@ -64,6 +64,9 @@ __all__ = [
     "bearing",
     "bearing_table",
     "designations",
+    "bearings_with_bore",
+    "FAMILIES",
+    "SHIELDS",
     "TABLE",
     "CATALOGUE",
     "NUMERIC",
@@ -440,6 +443,65 @@ def _scope(text: str) -> str:
     if (parsed.bearing_type, parsed.series) not in kinds:
         return f", which holds no {label} of series {parsed.series}"
     return ""
+
+
+#: the families and shield names of the bearing table, in catalogue order (its ``family`` and ``shield`` columns)
+FAMILIES = ("deep groove ball", "angular contact ball", "cylindrical roller", "tapered roller")
+SHIELDS = ("open", "2Z", "2RSR", "2RS")
+
+
+def _chosen(values: str | list[str] | tuple[str, ...] | None, allowed: tuple[str, ...], name: str) -> tuple[str, ...]:
+    """The names of ``values`` (one or several; None: all of ``allowed``), each checked against ``allowed``."""
+    if values is None:
+        return allowed
+    chosen = (values,) if isinstance(values, str) else tuple(values)
+    for value in chosen:
+        if value not in allowed:
+            raise DesignationError(f"{name}: {value!r} is none of the bearing table's: {', '.join(allowed)}")
+    return chosen
+
+
+def bearings_with_bore(d: float, *, D_max: float = math.inf, B_max: float = math.inf,
+                       families: str | list[str] | tuple[str, ...] | None = None,
+                       shields: str | list[str] | tuple[str, ...] | None = None) -> pd.DataFrame:
+    """The bearings of the table with bore ``d`` [mm] (within half its printing step, 0.005 mm), outside diameter
+    up to ``D_max`` and width up to ``B_max`` [mm] (the total width T of a tapered bearing), of the ``families``
+    and ``shields`` named (:data:`FAMILIES`, :data:`SHIELDS`; all when None): rows of :func:`bearing_table` in
+    catalogue order, with its index. :class:`DesignationError` when none is left, naming what the bore offers
+    (or the nearest bores of the table).
+
+    >>> table = bearings_with_bore(40.0, D_max=80.0, families="tapered roller")
+    >>> table["designation"].tolist(), table["T"].tolist()
+    (['32008-XA', '33108', '30208-A', '32208-A', '33208'], [19.0, 26.0, 19.75, 24.75, 32.0])
+    >>> bearings_with_bore(41.0)
+    Traceback (most recent call last):
+    ...
+    bearingheat.errors.DesignationError: d = 41 mm: no bearing of the bearing table (Schaeffler HR 1, 2006) has this bore; the nearest bores: 40, 45 mm
+    """
+    wanted_families = _chosen(families, FAMILIES, "family")
+    wanted_shields = _chosen(shields, SHIELDS, "shield")
+    table = bearing_table()
+    bores = table["d"].to_numpy(dtype=float)
+    same_bore = table[np.abs(bores - d) <= half_step("d", d)]
+    if same_bore.empty:
+        distinct = np.unique(bores)
+        nearest = sorted(distinct[np.argsort(np.abs(distinct - d), kind="stable")[:2]].tolist())
+        raise DesignationError(f"d = {d:g} mm: no bearing of the bearing table ({CATALOGUE}) has this bore; the nearest bores: "
+                               f"{', '.join(f'{b:g}' for b in nearest)} mm")
+    width = same_bore["T"].fillna(same_bore["B"]).to_numpy(dtype=float)
+    kept = same_bore[(same_bore["D"].to_numpy(dtype=float) <= D_max) & (width <= B_max)
+                     & same_bore["family"].isin(wanted_families).to_numpy()
+                     & same_bore["shield"].isin(wanted_shields).to_numpy()]
+    if kept.empty:
+        asked = [f"D <= {D_max:g} mm" if math.isfinite(D_max) else "",
+                 f"width <= {B_max:g} mm" if math.isfinite(B_max) else "", f"family {', '.join(wanted_families)}" if families is not None else "",
+                 f"shield {', '.join(wanted_shields)}" if shields is not None else ""]
+        raise DesignationError(
+            f"d = {d:g} mm: none of the {len(same_bore)} bearings of this bore in the bearing table ({CATALOGUE}) has "
+            f"{' and '.join(a for a in asked if a)} (they have D {same_bore['D'].min():g}-{same_bore['D'].max():g} mm, "
+            f"width {width.min():g}-{width.max():g} mm; families: {', '.join(dict.fromkeys(same_bore['family']))}; "
+            f"shields: {', '.join(dict.fromkeys(same_bore['shield']))})")
+    return kept
 
 
 def half_step(name: str, value: float) -> float:

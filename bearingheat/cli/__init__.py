@@ -61,6 +61,8 @@ COMMANDS: dict[str, tuple[str, str]] = {
         "trace the residuals of measured torque to a missing effect; model error before and after"),
     "lookup": ("bearingheat.cli.lookup",
         "a bearing's dimensions, load ratings, e, Y, Y0 and speeds by designation (Schaeffler HR 1, 2006)"),
+    "select": ("bearingheat.cli.select",
+        "the bearings of the table for a shaft, ranked by power loss at an operating point (n_per, T_op)"),
 }
 
 

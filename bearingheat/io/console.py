@@ -130,19 +130,20 @@ def _status(status: str) -> Text:
 
 
 def print_summary(result: pd.DataFrame | pa.Table, output: str | None, stream: IO[str] | None = None, *,
-                  console: Console | None = None) -> None:
+                  console: Console | None = None, columns: list[str] | None = None, rows: str = "supports") -> None:
     """A readable table of the main results, then one line per warning or error, then the counts.
 
     A table longer than :data:`SHOWN_ROWS` rows shows its first rows, and at most :data:`SHOWN_MESSAGES`
     messages (errors first), each followed by how many were left out. An Arrow table (the results of a big
     table) is read only in the columns shown. On a terminal (:func:`rich_console`) the table is a rich table
-    and the statuses are coloured; otherwise plain text.
+    and the statuses are coloured; otherwise plain text. ``columns``: the table's columns (its first names the
+    rows in the messages; calc's main results by default); ``rows``: what the counts count.
     """
     out = _stream(stream, console)
     rich = rich_console(out, console)
     if isinstance(result, pa.Table):
         result = result.select(summary_columns(result.column_names)).to_pandas()
-    label, shown = _shown([str(c) for c in result.columns])
+    label, shown = _shown([str(c) for c in result.columns]) if columns is None else (columns[0], columns)
     table = result[shown].head(SHOWN_ROWS)
 
     def number(x: float) -> str:
@@ -170,7 +171,7 @@ def print_summary(result: pd.DataFrame | pa.Table, output: str | None, stream: I
         notes.append(Text(f"... {len(errors) + len(warnings) - len(flagged)} more rows with messages; -o FILE "
                           "writes them all"))
     counts = result["status"].value_counts()
-    summary: list[Text | str] = [f"{len(result)} supports: "]
+    summary: list[Text | str] = [f"{len(result)} {rows}: "]
     for k, name in enumerate(("ok", "warning", "error")):
         count = counts.get(name, 0)
         summary += [", " if k else "", Text(f"{count} {name}", style=STATUS_STYLES[name] if count else "")]
@@ -184,11 +185,11 @@ def print_summary(result: pd.DataFrame | pa.Table, output: str | None, stream: I
 
 
 def print_table(frame: pd.DataFrame, stream: IO[str] | None = None, *, float_format: str | None = None,
-                title: str | None = None, console: Console | None = None) -> None:
+                title: str | None = None, console: Console | None = None, na_rep: str = "NaN") -> None:
     """A table of results: ``frame.to_string(index=False)`` in plain text, a rich table on a terminal.
 
     ``float_format`` is a format spec for floats ('.4g'; pandas' own without it); ``title`` a line before the
-    table (printed as it is in plain text).
+    table (printed as it is in plain text); ``na_rep`` the plain text of a missing value (the rich table's is '-').
     """
     out = _stream(stream, console)
     rich = rich_console(out, console)
@@ -196,7 +197,7 @@ def print_table(frame: pd.DataFrame, stream: IO[str] | None = None, *, float_for
     if rich is None:
         if title is not None:
             out.write(title + "\n")
-        out.write(frame.to_string(index=False, float_format=formatter) + "\n")
+        out.write(frame.to_string(index=False, float_format=formatter, na_rep=na_rep) + "\n")
     else:
         _draw(rich, _rich_table(frame, formatter, title))
 

@@ -9,8 +9,8 @@ from bearingheat.cli import COMMANDS, build_parser
 from bearingheat.cli.options import F2_CHART_HELP, FORCE_DIR_HELP, FORCE_FILE_HELP, JSON_HELP, QUIET_HELP
 
 #: commands that print results (--json), and those that write files (-o/--output or --out-dir)
-PRINTS = {"calc", "coastdown", "bushing", "contact", "lab", "audit", "diagnose", "lookup"}
-WRITES_FILE = {"calc", "template", "plot"}
+PRINTS = {"calc", "coastdown", "bushing", "contact", "lab", "audit", "diagnose", "lookup", "select"}
+WRITES_FILE = {"calc", "template", "plot", "select"}
 WRITES_FOLDER = {"coastdown", "lab", "audit", "diagnose"}
 #: commands with -q/--quiet: every one that prints results or names the files it wrote
 QUIET = PRINTS | WRITES_FILE | WRITES_FOLDER
@@ -81,7 +81,7 @@ def test_plot_output_is_required_and_named_alike():
     assert options["-o"].option_strings == ["-o", "--output"] and options["-o"].required
 
 
-@pytest.mark.parametrize("command", ["calc", "plot"])
+@pytest.mark.parametrize("command", ["calc", "plot", "select"])
 def test_the_commands_that_compute_m2_take_one_f2_chart_option(command):
     _, options = _help(command)
     assert (options["--f2-chart"].metavar, options["--f2-chart"].help) == ("CSV", F2_CHART_HELP)

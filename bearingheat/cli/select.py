@@ -1,0 +1,210 @@
+"""``bearingheat select``: the bearings of the bearing table for a shaft, ranked by their friction at an operating point."""
+from __future__ import annotations
+
+import argparse
+import json
+import math
+
+import numpy as np
+import pandas as pd
+
+from bearingheat.api.bearings import bearings_with_bore
+from bearingheat.calc.contract import column, range_problems
+from bearingheat.calc.models import DEFAULT_MODEL, MODELS
+from bearingheat.calc.table import calc
+from bearingheat.catalogue.bearings import FAMILIES, SHIELDS, units_of_table
+from bearingheat.catalogue.friction import LUBRICATION_F0_COLUMN
+from bearingheat.cli import UsageError
+from bearingheat.cli.options import add_f2_chart, add_force, add_json, add_output, add_quiet
+from bearingheat.errors import DesignationError, UnitError
+from bearingheat.io.console import print_summary, print_table
+from bearingheat.io.files import safe_output
+from bearingheat.io.json import json_safe
+from bearingheat.io.tables import check_table_suffix, write_table
+from bearingheat.units import Quantity, celsius, magnitude, parse_quantity
+
+DESCRIPTION = """\
+The bearings of the bearing table (Schaeffler HR 1, June 2006; 'bearingheat
+lookup --help' lists its series) that fit a shaft: bore --d, and optionally the
+largest outside diameter --D-max and width --B-max the housing takes (the total
+width T of a tapered roller bearing), the families and shields wanted:
+
+  bearingheat select --d 40mm --D-max 80mm
+  bearingheat select --d 40mm --family "deep groove ball" --shield open --shield 2Z \\
+      --n 6000rpm --Fr 2kN --nu 20mm^2/s --lubrication oil_bath --T-amb 20degC --T-bearing 70degC
+
+Without an operating point: the candidates' dimensions, load ratings and speeds,
+in catalogue order. With one (--n, --nu and --lubrication; --Fr, --Fa default to
+0): each candidate computed by 'bearingheat calc' from its designation, ranked by
+its power loss NR, the least first (the bearings that could not be computed last,
+with the reason: a cylindrical roller bearing without ribs under axial load, an
+angular contact bearing whose Y0 is not known). With --T-amb and --T-bearing also
+n_per, the speed at which the bearing reaches T_bearing, n_per/n (above 1: it
+runs below that temperature) and T_op, its operating temperature at n; --rank-by
+T_op puts the coolest first, --rank-by n_per the fastest (a larger bearing makes
+more heat but also gives more of it off). A bearing
+with contact seals (-2RSR, -2RS) is computed without its seal friction, which the
+catalogue model lacks (a warning says so), and without n_thr, n_per and T_op.
+
+Columns: designation, family, shield, d, D, B, T [mm], C, C0 [N], n_G (limiting
+speed), n_thr (thermal reference speed) [1/min]; with an operating point the
+results of calc (f0, f1, P0, P1, M0, M1, M2, MR, NR, n_thr, n_per, T_op ...),
+n_per/n, status and message.
+
+Output files: -o writes every column (CSV, Parquet, Arrow/Feather by the suffix),
+atomically, never over an existing file without --force.
+Exit codes: 0 done, at least one candidate computed (or listed); 1 no candidate
+could be computed at the operating point; 2 unusable input (no bearing of that
+bore, an unknown family, a number without unit).
+"""
+
+#: a unit of each option's kind, for the message of a number typed without one
+_EXAMPLE_UNITS = {"--d": "mm", "--D-max": "mm", "--B-max": "mm", "--n": "rpm", "--Fr": "kN", "--Fa": "kN",
+                  "--nu": "mm^2/s", "--T-amb": "degC", "--T-bearing": "degC"}
+#: operating-point option -> its calc column (converted to the column's catalogue unit)
+_OPERATING = {"n": "--n", "Fr": "--Fr", "Fa": "--Fa", "nu": "--nu", "T_amb": "--T-amb", "T_bearing": "--T-bearing"}
+#: the model's bounds of the operating point (the Schaeffler catalogue, p. 64): name -> (lowest, whether it counts)
+_LOWEST = {"n": (0.0, True), "Fr": (0.0, True), "Fa": (0.0, True), "nu": (0.0, False)}
+#: --rank-by -> (the column ranked, whether the largest comes first)
+RANKINGS = {"NR": ("NR [W]", False), "T_op": ("T_op [degC]", False), "n_per": ("n_per [1/min]", True)}
+#: the catalogue columns shown beside the results
+_CATALOGUE_SHOWN = ("designation", "D", "B", "T", "C0", "n_G")
+#: the column of the speed at which the bearing reaches T_bearing over the operating speed
+MARGIN = "n_per/n"
+#: the column of the catalogue's thermal reference speed (the contract's name for it)
+CATALOGUE_SPEED = column("n_thr_catalogue").name
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--d", required=True, help="bore (the shaft seat), e.g. 40mm")
+    parser.add_argument("--D-max", help="largest outside diameter, e.g. 90mm")
+    parser.add_argument("--B-max", help="largest width (T of a tapered roller bearing), e.g. 20mm")
+    parser.add_argument("--family", action="append", choices=FAMILIES,
+                        help="bearing family (repeat for several; all when not given)")
+    parser.add_argument("--shield", action="append", choices=SHIELDS,
+                        help="open, 2Z (shields), 2RSR or 2RS (contact seals); repeat for several")
+    parser.add_argument("--n", help="shaft speed, e.g. 6000rpm or 100Hz (the operating point)")
+    parser.add_argument("--Fr", help="radial load, e.g. 2kN (default 0)")
+    parser.add_argument("--Fa", help="axial load, e.g. 0.5kN (default 0)")
+    parser.add_argument("--nu", help="operating viscosity (base oil of a grease), e.g. 20mm^2/s")
+    parser.add_argument("--lubrication", choices=tuple(LUBRICATION_F0_COLUMN), help="how the bearing is lubricated")
+    parser.add_argument("--T-amb", help="ambient temperature for the heat balance, e.g. 20degC")
+    parser.add_argument("--T-bearing", help="admissible bearing temperature for n_per, e.g. 70degC")
+    parser.add_argument("--model", choices=list(MODELS), default=DEFAULT_MODEL, help="friction model")
+    parser.add_argument("--rank-by", choices=list(RANKINGS), default="NR",
+                        help="NR: the least power loss first (default); T_op: the coolest first; n_per: the highest "
+                             "permissible speed first (these two need --T-amb and --T-bearing)")
+    add_f2_chart(parser)
+    add_output(parser, ".csv, .parquet, .arrow or .feather")
+    add_force(parser, "FILE")
+    add_json(parser)
+    add_quiet(parser)
+
+
+def _value(args: argparse.Namespace, name: str) -> float | None:
+    """The option of calc column ``name`` in the column's catalogue unit (None when not given), checked against
+    the model's bounds and the contract's valid range."""
+    option = _OPERATING[name]
+    text = getattr(args, option[2:].replace("-", "_"))
+    if text is None:
+        return None
+    unit = column(name).unit
+    try:
+        given = parse_quantity(text, name=option, example=_EXAMPLE_UNITS[option])
+        value = float(celsius(given, option) if unit == "degC" else magnitude(given, unit, option))
+    except UnitError as exc:
+        raise UsageError(str(exc)) from exc
+    lowest, inclusive = _LOWEST.get(name, (-math.inf, True))
+    if value < lowest or (value == lowest and not inclusive):
+        raise UsageError(f"{option}: {text} must be {'>=' if inclusive else '>'} 0")
+    errors, _ = range_problems(name, np.array([value]), lambda i: f"{option}: {text}")
+    if errors:
+        raise UsageError(errors[0][1])
+    return value
+
+
+def _length(text: str, option: str) -> Quantity:
+    try:
+        return parse_quantity(text, name=option, example=_EXAMPLE_UNITS[option])
+    except UnitError as exc:
+        raise UsageError(str(exc)) from exc
+
+
+def candidates(args: argparse.Namespace) -> pd.DataFrame:
+    """The bearings of the table the options leave, in catalogue order, headers 'name [unit]'."""
+    try:
+        limits = {name: None if text is None else _length(text, option)
+                  for name, text, option in (("D_max", args.D_max, "--D-max"), ("B_max", args.B_max, "--B-max"))}
+        found = bearings_with_bore(_length(args.d, "--d"), family=args.family, shield=args.shield, **limits)
+    except (DesignationError, UnitError) as exc:
+        raise UsageError(str(exc)) from exc
+    units = units_of_table()
+    headers = {}
+    for name in found.columns:
+        shown = CATALOGUE_SPEED if name == "n_thr" else name  # (calc's own n_thr stands beside the catalogue's)
+        headers[name] = shown if units[name] in ("-", "1") else f"{shown} [{units[name]}]"
+    return found.rename(columns=headers).reset_index(drop=True)
+
+
+def ranked(table: pd.DataFrame, point: dict[str, float], lubrication: str, model: str,
+           f2_chart: str | None = None, rank_by: str = "NR") -> pd.DataFrame:
+    """The candidates computed by calc at the operating point ``point`` (calc columns in catalogue units) with
+    ``lubrication`` and the friction ``model`` (``f2_chart``: the digitised f2 chart's CSV), ranked by
+    :data:`RANKINGS` ``rank_by`` (the power loss NR by default, the least first); the rows without that result
+    (calc could not compute them, or their heat balance) come last, in catalogue order."""
+    supports = pd.DataFrame({"designation": table["designation"], "lubrication": lubrication, "model": model})
+    for name, value in point.items():
+        supports[column(name).header] = value
+    results = calc(supports, f2_chart=f2_chart)
+    kept = [c for c in results.columns if c not in supports.columns or c == "designation"]
+    merged = pd.concat([table, results[kept].drop(columns="designation")], axis=1)
+    if "n_per [1/min]" in merged.columns and point["n"] > 0:
+        merged.insert(merged.columns.get_loc("n_per [1/min]") + 1, MARGIN, merged["n_per [1/min]"] / point["n"])
+    name, largest_first = RANKINGS[rank_by]
+    values = merged[name].to_numpy(dtype=float)
+    missing = (merged["status"] == "error").to_numpy() | np.isnan(values)
+    order = np.lexsort((np.arange(len(merged)), -values if largest_first else values, missing))
+    return merged.iloc[order].reset_index(drop=True)
+
+
+def _shown(table: pd.DataFrame) -> list[str]:
+    """The columns of the printed table: the candidates' size and ratings, the main results, status."""
+    wanted = [c for c in table.columns if c.split(" [")[0] in _CATALOGUE_SHOWN and table[c].notna().any()]
+    results: tuple[str, ...] = ("MR [N*mm]", "NR [W]", "n_thr [1/min]", "n_per [1/min]", MARGIN, "T_op [degC]",
+                                "status")
+    if "status" not in table.columns:  # the candidates alone: the catalogue's speed
+        results = (f"{CATALOGUE_SPEED} [1/min]",)
+    return wanted + [c for c in results if c in table.columns]
+
+
+def run(args: argparse.Namespace) -> int:
+    target = None
+    if args.output:
+        check_table_suffix(args.output)
+        target = safe_output(args.output, force=args.force)
+    table = candidates(args)
+    point = {name: value for name in _OPERATING if (value := _value(args, name)) is not None}
+    given = [option for name, option in _OPERATING.items() if name in point] + (
+        ["--lubrication"] if args.lubrication else [])
+    missing = [option for option in ("--n", "--nu", "--lubrication") if option not in given]
+    if given and missing:
+        raise UsageError(f"the operating point ({', '.join(given)}) needs {' and '.join(missing)} too")
+    heat_balance = "T_amb" in point and "T_bearing" in point
+    if args.rank_by != "NR" and not heat_balance:
+        raise UsageError(f"--rank-by {args.rank_by} needs the heat balance: give --T-amb and --T-bearing")
+    if given:
+        point.setdefault("Fr", 0.0)
+        point.setdefault("Fa", 0.0)
+        table = ranked(table, point, args.lubrication, args.model, args.f2_chart, args.rank_by)
+    if target is not None:
+        write_table(table, target)
+    if args.json:
+        print(json.dumps(json_safe(table.to_dict("records")), ensure_ascii=False))
+    elif not args.quiet:
+        if given:
+            print_summary(table, args.output, columns=_shown(table), rows="candidates")
+        else:
+            print_table(table[_shown(table)], float_format=".6g", na_rep="-",
+                        title=f"{len(table)} candidates (catalogue order)"
+                              + (f"; written to {args.output}" if args.output else ""))
+    return 0 if not given or (table["status"] != "error").any() else 1

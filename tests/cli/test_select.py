@@ -1,0 +1,165 @@
+"""``bearingheat select`` and ``bh.bearings_with_bore``: the bearings of the table for a shaft, ranked at an
+operating point; hand calculations of the catalogue model, exact messages, files and exit codes."""
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+import pandas as pd
+import pint
+import pytest
+
+import bearingheat as bh
+from bearingheat.catalogue.bearings import FAMILIES, SHIELDS
+from bearingheat.cli import main
+from bearingheat.errors import DesignationError, InputError, UnitError
+
+u = pint.get_application_registry()
+#: deep groove ball bearings of bore 40 mm, open, D <= 80 mm (HR 1, 2006, pp. 198-205)
+OPEN_BALL_40 = ["61908", "16008", "6008", "6208"]
+POINT = ["--n", "6000rpm", "--Fr", "2kN", "--nu", "20mm^2/s", "--lubrication", "oil_bath"]
+
+
+def _torque(f0: float, f1_a: float, C0: float, d: float, D: float, Fr: float, nu: float, n: float) -> float:
+    """M_R = M0 + M1 of a radial ball bearing without axial load, by hand (the Schaeffler catalogue, pp. 64-68):
+    M0 = f0 (nu n)^(2/3) dM^3 1e-7 for nu n >= 2000; P0 = P1 = Fr; f1 = f1_a (P0/C0)^0.5; M1 = f1 P1 dM."""
+    dM = (d + D) / 2
+    return f0 * math.pow(nu * n, 2 / 3) * dM ** 3 * 1e-7 + f1_a * math.sqrt(Fr / C0) * Fr * dM
+
+
+def test_the_candidates_of_a_bore_in_catalogue_order(capsys):
+    assert main(["select", "--d", "40mm", "--D-max", "62mm"]) == 0
+    assert capsys.readouterr().out.splitlines() == [
+        "4 candidates (catalogue order)",
+        "designation  D [mm]  B [mm]  C0 [N]  n_G [1/min]  n_thr_catalogue [1/min]",
+        "      61908      62      12   10000        28000                    10000",
+        " 61908-2RSR      62      12   10000         7000                        -",
+        "   61908-2Z      62      12   10000        11000                    10000",
+        "71808-B-TVH      52       7    5850        13000                        -",
+    ]
+
+
+def test_a_bore_in_inches_and_the_filters():
+    found = bh.bearings_with_bore(1.5748 * u.inch, D_max=80 * u.mm, family="deep groove ball", shield="open")
+    assert found["designation"].tolist() == OPEN_BALL_40
+    tapered = bh.bearings_with_bore(40 * u.mm, B_max=20 * u.mm, family=["tapered roller"])
+    assert tapered["designation"].tolist() == ["32008-XA", "30208-A"]  # by T: 19 and 19.75 mm; 32208-A has 24.75
+    assert set(FAMILIES) == set(bh.bearing_table()["family"]) and set(SHIELDS) == set(bh.bearing_table()["shield"])
+
+
+def test_ranked_by_power_loss_with_hand_calculations(capsys):
+    assert main(["select", "--d", "40mm", "--D-max", "80mm", "--family", "deep groove ball", "--shield", "open",
+                 *POINT, "--json"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    # f0 (oil) and f1_a of the Schaeffler catalogue p. 66: 619 1.7/0.0007, 160 and 60 1.7/0.0007, 62 2/0.0009
+    by_hand = {"61908": _torque(1.7, 0.0007, 10000, 40, 62, 2000, 20, 6000),
+               "16008": _torque(1.7, 0.0007, 10200, 40, 68, 2000, 20, 6000),
+               "6008": _torque(1.7, 0.0007, 11600, 40, 68, 2000, 20, 6000),
+               "6208": _torque(2.0, 0.0009, 18000, 40, 80, 2000, 20, 6000)}
+    assert [r["designation"] for r in rows] == sorted(by_hand, key=by_hand.get)  # the least power loss first
+    for row in rows:
+        assert row["MR [N*mm]"] == pytest.approx(by_hand[row["designation"]], rel=1e-12)
+        assert row["NR [W]"] == pytest.approx(by_hand[row["designation"]] * 6000 / 9550, rel=1e-12)
+        assert row["status"] == "ok" and row["d [mm]"] == 40
+    assert rows[0]["designation"] == "61908" and round(rows[0]["MR [N*mm]"], 2) == 86.79
+
+
+def test_the_same_results_as_calc_of_each_designation_and_the_margin_of_the_heat_balance(tmp_path):
+    out = tmp_path / "candidates.csv"
+    assert main(["select", "--d", "40mm", "--D-max", "90mm", *POINT, "--Fa", "0.5kN", "--T-amb", "20degC",
+                 "--T-bearing", "70degC", "-o", str(out), "-q"]) == 0
+    ranked = pd.read_csv(out, keep_default_na=False, na_values=[""])
+    supports = pd.DataFrame({"designation": ranked["designation"], "lubrication": "oil_bath", "n [1/min]": 6000.0,
+                             "Fr [N]": 2000.0, "Fa [N]": 500.0, "nu [mm^2/s]": 20.0, "T_amb [degC]": 20.0,
+                             "T_bearing [degC]": 70.0})
+    alone = bh.calc(supports)
+    for name in ("MR [N*mm]", "NR [W]", "n_thr [1/min]", "n_per [1/min]", "T_op [degC]"):
+        np.testing.assert_allclose(ranked[name].to_numpy(float), alone[name].to_numpy(float), rtol=1e-12,
+                                   equal_nan=True, err_msg=name)
+    assert ranked["status"].tolist() == alone["status"].tolist()
+    np.testing.assert_allclose(ranked["n_per/n"], ranked["n_per [1/min]"] / 6000.0, rtol=1e-15)
+    computed = ranked[ranked["status"] != "error"]
+    assert (np.diff(computed["NR [W]"].to_numpy()) >= 0).all() and len(computed) == 31
+    # the bearings that cannot run here come last: NU and N without ribs under Fa, NJ and NUP without f2, 622 and
+    # 623 without an f0 for oil
+    failed = ranked[ranked["status"] == "error"]
+    assert failed.index.min() == len(computed) and len(failed) == 17
+    assert failed.loc[failed["designation"] == "NU208-E-TVP2", "message"].item() == (
+        "Fa [N]: 500 on NU cylindrical roller bearing with cage series 2: one ring has no ribs, the bearing takes "
+        "no axial load")
+    assert main(["select", "--d", "40mm", *POINT, "-o", str(out)]) == 2  # the file exists: not replaced
+
+
+def test_no_candidate_computed_is_exit_code_1(capsys):
+    assert main(["select", "--d", "40mm", "--family", "cylindrical roller", *POINT, "--Fa", "1kN"]) == 1
+    assert capsys.readouterr().out.splitlines()[-1] == "15 candidates: 0 ok, 0 warning, 15 error"
+
+
+@pytest.mark.parametrize(("arguments", "message"), [
+    (["--d", "40"], "--d: '40' has no unit; write it with one, e.g. 40mm"),
+    (["--d", "41mm"], "d = 41 mm: no bearing of the bearing table (Schaeffler HR 1, 2006) has this bore; the nearest "
+                      "bores: 40, 45 mm"),
+    (["--d", "40mm", "--D-max", "50mm"],
+     "d = 40 mm: none of the 48 bearings of this bore in the bearing table (Schaeffler HR 1, 2006) has D <= 50 mm "
+     "(they have D 52-90 mm, width 7-35.25 mm; families: deep groove ball, angular contact ball, cylindrical roller, "
+     "tapered roller; shields: open, 2RSR, 2Z, 2RS)"),
+    (["--d", "40mm", "--n", "6000rpm"], "the operating point (--n) needs --nu and --lubrication too"),
+    (["--d", "40mm", *POINT[:2], "--Fr=-2kN", *POINT[4:]], "--Fr: -2kN must be >= 0"),
+    (["--d", "40mm", *POINT[:4], "--nu", "0cSt", *POINT[6:]], "--nu: 0cSt must be > 0"),
+    (["--d", "40mm", *POINT, "--T-amb", "250degC", "--T-bearing", "70degC"],
+     "--T-amb: 250degC is outside the valid range -60 to 200 degC"),
+    (["--d", "40mm", "--n", "6000kN", *POINT[2:]], "--n: 6000 kilonewton is not a shaft speed; expected revolutions "
+                                                    "per time (1/min, rpm, Hz) or an angular speed (rad/s)"),
+])
+def test_unusable_input_is_named(capsys, arguments, message):
+    assert main(["select", *arguments]) == 2
+    assert capsys.readouterr().err == f"bearingheat select: error: {message}\n"
+
+
+def test_the_api_refuses_a_plain_number_and_an_unknown_family():
+    with pytest.raises(UnitError) as exc:
+        bh.bearings_with_bore(40)
+    assert str(exc.value).startswith("d: ")
+    with pytest.raises(DesignationError) as exc:
+        bh.bearings_with_bore(40 * u.mm, family="ball")
+    assert str(exc.value) == ("family: 'ball' is none of the bearing table's: deep groove ball, angular contact ball, "
+                              "cylindrical roller, tapered roller")
+
+
+def test_the_api_takes_one_bore():
+    with pytest.raises(InputError) as exc:
+        bh.bearings_with_bore([40, 45] * u.mm)
+    assert str(exc.value) == "d: give one length, e.g. 40 * u.mm; got 2 values"
+
+
+HEAT = ["--T-amb", "20degC", "--T-bearing", "70degC"]
+
+
+@pytest.mark.parametrize(("rank_by", "column", "largest_first"), [("T_op", "T_op [degC]", False),
+                                                                   ("n_per", "n_per [1/min]", True)])
+def test_ranked_by_the_heat_balance(capsys, rank_by, column, largest_first):
+    """The least power loss is not the coolest bearing: 61908 makes the least heat at 6000 1/min, 6008 gives off
+    more and runs coolest (57.2 degC against 64.3 degC)."""
+    assert main(["select", "--d", "40mm", "--D-max", "80mm", "--family", "deep groove ball", "--shield", "open",
+                 *POINT, *HEAT, "--rank-by", rank_by, "--json"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    values = [row[column] for row in rows]
+    assert values == sorted(values, reverse=largest_first)
+    assert [row["designation"] for row in rows] == ["6008", "6208", "61908", "16008"]
+    assert round(rows[0]["T_op [degC]"], 2) == 57.24 and round(rows[2]["T_op [degC]"], 2) == 64.32
+
+
+def test_a_sealed_bearing_without_heat_balance_comes_last_when_ranked_by_it(capsys):
+    assert main(["select", "--d", "40mm", "--D-max", "62mm", "--family", "deep groove ball", *POINT, *HEAT,
+                 "--rank-by", "T_op", "--json"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    assert [(row["designation"], row["status"]) for row in rows] == [
+        ("61908", "ok"), ("61908-2Z", "ok"), ("61908-2RSR", "warning")]
+    assert rows[-1]["T_op [degC]"] is None
+
+
+def test_ranking_by_the_heat_balance_needs_its_temperatures(capsys):
+    assert main(["select", "--d", "40mm", *POINT, "--rank-by", "n_per"]) == 2
+    assert capsys.readouterr().err == ("bearingheat select: error: --rank-by n_per needs the heat balance: give "
+                                       "--T-amb and --T-bearing\n")
