@@ -18,7 +18,7 @@ from bearingheat.cli import UsageError
 from bearingheat.cli.options import add_f2_chart, add_force, add_json, add_output, add_quiet
 from bearingheat.errors import DesignationError, UnitError
 from bearingheat.io.console import print_summary, print_table
-from bearingheat.io.files import safe_output
+from bearingheat.io.files import EXCEL_SUFFIXES, safe_output
 from bearingheat.io.json import json_safe
 from bearingheat.io.tables import check_table_suffix, write_table
 from bearingheat.units import Quantity, celsius, magnitude, parse_quantity
@@ -51,8 +51,9 @@ speed), n_thr (thermal reference speed) [1/min]; with an operating point the
 results of calc (f0, f1, P0, P1, M0, M1, M2, MR, NR, n_thr, n_per, T_op ...),
 n_per/n, status and message.
 
-Output files: -o writes every column (CSV, Parquet, Arrow/Feather by the suffix),
-atomically, never over an existing file without --force.
+Output files: -o writes every column (CSV, a new Excel workbook, Parquet,
+Arrow/Feather by the suffix), atomically, never over an existing file without
+--force.
 Exit codes: 0 done, at least one candidate computed (or listed); 1 no candidate
 could be computed at the operating point; 2 unusable input (no bearing of that
 bore, an unknown family, a number without unit).
@@ -95,7 +96,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="NR: the least power loss first (default); T_op: the coolest first; n_per: the highest "
                              "permissible speed first (these two need --T-amb and --T-bearing)")
     add_f2_chart(parser)
-    add_output(parser, ".csv, .parquet, .arrow or .feather")
+    add_output(parser, ".csv, .xlsx, .parquet, .arrow or .feather")
     add_force(parser, "FILE")
     add_json(parser)
     add_quiet(parser)
@@ -180,7 +181,7 @@ def _shown(table: pd.DataFrame) -> list[str]:
 def run(args: argparse.Namespace) -> int:
     target = None
     if args.output:
-        check_table_suffix(args.output)
+        check_table_suffix(args.output, also=EXCEL_SUFFIXES)
         target = safe_output(args.output, force=args.force)
     table = candidates(args)
     point = {name: value for name in _OPERATING if (value := _value(args, name)) is not None}
@@ -196,7 +197,10 @@ def run(args: argparse.Namespace) -> int:
         point.setdefault("Fr", 0.0)
         point.setdefault("Fa", 0.0)
         table = ranked(table, point, args.lubrication, args.model, args.f2_chart, args.rank_by)
-    if target is not None:
+    if target is not None and target.suffix.lower() in EXCEL_SUFFIXES:
+        from bearingheat.io.excel.writer import write_results_workbook  # (openpyxl only where a workbook is written)
+        write_results_workbook(table, target)
+    elif target is not None:
         write_table(table, target)
     if args.json:
         print(json.dumps(json_safe(table.to_dict("records")), ensure_ascii=False))

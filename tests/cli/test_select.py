@@ -6,6 +6,7 @@ import json
 import math
 
 import numpy as np
+import openpyxl
 import pandas as pd
 import pint
 import pytest
@@ -163,3 +164,17 @@ def test_ranking_by_the_heat_balance_needs_its_temperatures(capsys):
     assert main(["select", "--d", "40mm", *POINT, "--rank-by", "n_per"]) == 2
     assert capsys.readouterr().err == ("bearingheat select: error: --rank-by n_per needs the heat balance: give "
                                        "--T-amb and --T-bearing\n")
+
+
+def test_the_candidates_into_a_new_workbook(tmp_path, capsys):
+    out = tmp_path / "candidates.xlsx"
+    arguments = ["select", "--d", "40mm", "--D-max", "80mm", "--family", "deep groove ball", "--shield", "open",
+                 *POINT, *HEAT, "--rank-by", "T_op"]
+    assert main([*arguments, "-o", str(out), "-q"]) == 0
+    assert capsys.readouterr().out == ""
+    sheet = openpyxl.load_workbook(out)["Results"]
+    header, units = ([cell.value for cell in row] for row in sheet.iter_rows(min_row=1, max_row=2))
+    assert (units[header.index("NR")], units[header.index("T_op")], units[header.index("n_per/n")]) == (
+        "W", "degC", "1")
+    designations = [row[0].value for row in sheet.iter_rows(min_row=3)]
+    assert designations == ["6008", "6208", "61908", "16008"]
