@@ -18,7 +18,7 @@ from bearingheat.cli import UsageError, add_csv_arguments
 from bearingheat.errors import ExcelError, F2ChartError, InputError, VMChartError
 # the Excel bridge (openpyxl) and the fitted effects (scipy.optimize) are imported by the runs that use them:
 # calc of a CSV or Parquet file starts 0.4 s sooner without them
-from bearingheat.cli.options import add_f2_chart, add_force, add_json, add_output, add_quiet
+from bearingheat.cli.options import add_f2_chart, add_force, add_json, add_output, add_quiet, add_vm_chart
 from bearingheat.io.console import Progress, print_summary, print_table, summary_columns
 from bearingheat.io.dataset import (check_scheduler, compute_dataset, dask_client, dataset_columns, plan_dataset,
                                    read_dataset_columns, recover_target)
@@ -75,9 +75,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_output(parser, ".csv, .parquet, .arrow, .feather or .xlsx; with --dask a folder for the Parquet dataset",
                without="the results are printed (--dask needs it)")
     add_f2_chart(parser)
-    parser.add_argument("--vm-chart", metavar="CSV",
-                        help="digitised chart of the SKF drag loss factor VM against H/dm: oil-bath rows of the SKF "
-                             "model with a blank VM read it off (docs/skf.md gives the format)")
+    add_vm_chart(parser)
     parser.add_argument("--effects", metavar="SUMMARY_JSON",
                         help="apply an effect fitted by 'bearingheat diagnose' (its summary.json); a row outside the "
                              "speeds, sizes or loads it was fitted on gets a warning, a row of another friction "

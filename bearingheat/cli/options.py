@@ -5,7 +5,8 @@
 - ``--json``: print the results as JSON on stdout instead of text;
 - ``-q/--quiet``: print nothing but errors;
 - ``--force``: replace output files that exist (without it they are refused, exit 2);
-- ``--f2-chart CSV``: the digitised f2 chart of the commands that compute M2 (calc, plot).
+- ``--f2-chart CSV``: the digitised f2 chart of the commands that compute M2 (calc, plot, select);
+- ``--vm-chart CSV``: the digitised VM chart of the SKF model in an oil bath (calc, select).
 
 A command adds these options with the functions below and never writes their help itself;
 ``tests/cli/test_conventions.py`` checks every command against the texts here.
@@ -14,8 +15,9 @@ from __future__ import annotations
 
 import argparse
 
-__all__ = ["add_output", "add_out_dir", "add_json", "add_quiet", "add_force", "add_f2_chart", "output_help",
-           "out_dir_help", "JSON_HELP", "QUIET_HELP", "FORCE_FILE_HELP", "FORCE_DIR_HELP", "F2_CHART_HELP"]
+__all__ = ["add_output", "add_out_dir", "add_json", "add_quiet", "add_force", "add_f2_chart", "add_vm_chart",
+           "output_help", "out_dir_help", "JSON_HELP", "QUIET_HELP", "FORCE_FILE_HELP", "FORCE_DIR_HELP",
+           "F2_CHART_HELP", "VM_CHART_HELP"]
 
 JSON_HELP = "print the results as JSON instead of text"
 QUIET_HELP = "print nothing but errors"
@@ -23,6 +25,8 @@ QUIET_HELP = "print nothing but errors"
 FORCE_FILE_HELP = "replace FILE if it exists"
 FORCE_DIR_HELP = "replace the files in DIR that exist"
 F2_CHART_HELP = "digitised f2 chart (docs/friction.md gives the format)"
+VM_CHART_HELP = ("digitised chart of the SKF drag loss factor VM against H/dm: oil-bath rows of the SKF model with a "
+                 "blank VM read it off (docs/skf.md gives the format)")
 
 
 def output_help(formats: str, *, required: bool = False, without: str = "the results are printed") -> str:
@@ -72,6 +76,11 @@ def add_force(parser: argparse.ArgumentParser, what: str | None = None) -> None:
     else:
         text = f"replace {what or 'the output file'} if it exists"
     parser.add_argument("--force", action="store_true", help=text)
+
+
+def add_vm_chart(parser: argparse.ArgumentParser) -> None:
+    """``--vm-chart CSV``: the SKF model's drag loss factor VM read off the user's digitised chart."""
+    parser.add_argument("--vm-chart", metavar="CSV", help=VM_CHART_HELP)
 
 
 def add_f2_chart(parser: argparse.ArgumentParser) -> None:

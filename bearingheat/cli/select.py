@@ -15,7 +15,7 @@ from bearingheat.calc.table import calc
 from bearingheat.catalogue.bearings import FAMILIES, SHIELDS, units_of_table
 from bearingheat.catalogue.friction import LUBRICATION_F0_COLUMN
 from bearingheat.cli import UsageError
-from bearingheat.cli.options import add_f2_chart, add_force, add_json, add_output, add_quiet
+from bearingheat.cli.options import add_f2_chart, add_force, add_json, add_output, add_quiet, add_vm_chart
 from bearingheat.errors import DesignationError, UnitError
 from bearingheat.io.console import print_summary, print_table
 from bearingheat.io.files import EXCEL_SUFFIXES, safe_output
@@ -47,7 +47,8 @@ with contact seals (-2RSR, -2RS) is computed without its seal friction, which th
 catalogue model lacks (a warning says so), and without n_thr, n_per and T_op.
 
 Columns: designation, family, shield, d, D, B, T [mm], C, C0 [N], n_G (limiting
-speed), n_thr (thermal reference speed) [1/min]; with an operating point the
+speed), n_thr_catalogue (the catalogue's thermal reference speed) [1/min]; with
+an operating point also the point (lubrication, model, n, Fr, Fa, nu ...), the
 results of calc (f0, f1, P0, P1, M0, M1, M2, MR, NR, n_thr, n_per, T_op ...),
 n_per/n, status and message.
 
@@ -61,11 +62,12 @@ bore, an unknown family, a number without unit).
 
 #: a unit of each option's kind, for the message of a number typed without one
 _EXAMPLE_UNITS = {"--d": "mm", "--D-max": "mm", "--B-max": "mm", "--n": "rpm", "--Fr": "kN", "--Fa": "kN",
-                  "--nu": "mm^2/s", "--T-amb": "degC", "--T-bearing": "degC"}
+                  "--nu": "mm^2/s", "--T-amb": "degC", "--T-bearing": "degC", "--oil-level": "mm"}
 #: operating-point option -> its calc column (converted to the column's catalogue unit)
-_OPERATING = {"n": "--n", "Fr": "--Fr", "Fa": "--Fa", "nu": "--nu", "T_amb": "--T-amb", "T_bearing": "--T-bearing"}
+_OPERATING = {"n": "--n", "Fr": "--Fr", "Fa": "--Fa", "nu": "--nu", "T_amb": "--T-amb", "T_bearing": "--T-bearing",
+              "oil_level": "--oil-level"}
 #: the model's bounds of the operating point (the Schaeffler catalogue, p. 64): name -> (lowest, whether it counts)
-_LOWEST = {"n": (0.0, True), "Fr": (0.0, True), "Fa": (0.0, True), "nu": (0.0, False)}
+_LOWEST = {"n": (0.0, True), "Fr": (0.0, True), "Fa": (0.0, True), "nu": (0.0, False), "oil_level": (0.0, True)}
 #: --rank-by -> (the column ranked, whether the largest comes first)
 RANKINGS = {"NR": ("NR [W]", False), "T_op": ("T_op [degC]", False), "n_per": ("n_per [1/min]", True)}
 #: the catalogue columns shown beside the results
@@ -95,7 +97,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--rank-by", choices=list(RANKINGS), default="NR",
                         help="NR: the least power loss first (default); T_op: the coolest first; n_per: the highest "
                              "permissible speed first (these two need --T-amb and --T-bearing)")
+    parser.add_argument("--oil-level", help="SKF model in an oil bath: oil level H above the lowest contact point of "
+                                            "the outer ring raceway, e.g. 10mm")
     add_f2_chart(parser)
+    add_vm_chart(parser)
     add_output(parser, ".csv, .xlsx, .parquet, .arrow or .feather")
     add_force(parser, "FILE")
     add_json(parser)
@@ -147,18 +152,19 @@ def candidates(args: argparse.Namespace) -> pd.DataFrame:
     return found.rename(columns=headers).reset_index(drop=True)
 
 
-def ranked(table: pd.DataFrame, point: dict[str, float], lubrication: str, model: str,
-           f2_chart: str | None = None, rank_by: str = "NR") -> pd.DataFrame:
+def ranked(table: pd.DataFrame, point: dict[str, float], lubrication: str, model: str, rank_by: str = "NR", *,
+           f2_chart: str | None = None, vm_chart: str | None = None) -> pd.DataFrame:
     """The candidates computed by calc at the operating point ``point`` (calc columns in catalogue units) with
-    ``lubrication`` and the friction ``model`` (``f2_chart``: the digitised f2 chart's CSV), ranked by
+    ``lubrication`` and the friction ``model`` (``f2_chart``, ``vm_chart``: the digitised charts' CSV files, as
+    calc takes them), ranked by
     :data:`RANKINGS` ``rank_by`` (the power loss NR by default, the least first); the rows without that result
     (calc could not compute them, or their heat balance) come last, in catalogue order."""
     supports = pd.DataFrame({"designation": table["designation"], "lubrication": lubrication, "model": model})
     for name, value in point.items():
         supports[column(name).header] = value
-    results = calc(supports, f2_chart=f2_chart)
-    kept = [c for c in results.columns if c not in supports.columns or c == "designation"]
-    merged = pd.concat([table, results[kept].drop(columns="designation")], axis=1)
+    results = calc(supports, f2_chart=f2_chart, vm_chart=vm_chart)
+    # the operating point stays beside each candidate's results: a file of them says what they were computed at
+    merged = pd.concat([table, results.drop(columns="designation")], axis=1)
     if "n_per [1/min]" in merged.columns and point["n"] > 0:
         merged.insert(merged.columns.get_loc("n_per [1/min]") + 1, MARGIN, merged["n_per [1/min]"] / point["n"])
     name, largest_first = RANKINGS[rank_by]
@@ -196,7 +202,8 @@ def run(args: argparse.Namespace) -> int:
     if given:
         point.setdefault("Fr", 0.0)
         point.setdefault("Fa", 0.0)
-        table = ranked(table, point, args.lubrication, args.model, args.f2_chart, args.rank_by)
+        table = ranked(table, point, args.lubrication, args.model, args.rank_by, f2_chart=args.f2_chart,
+                       vm_chart=args.vm_chart)
     if target is not None and target.suffix.lower() in EXCEL_SUFFIXES:
         from bearingheat.io.excel.writer import write_results_workbook  # (openpyxl only where a workbook is written)
         write_results_workbook(table, target)

@@ -6,7 +6,8 @@ import re
 import pytest
 
 from bearingheat.cli import COMMANDS, build_parser
-from bearingheat.cli.options import F2_CHART_HELP, FORCE_DIR_HELP, FORCE_FILE_HELP, JSON_HELP, QUIET_HELP
+from bearingheat.cli.options import (F2_CHART_HELP, FORCE_DIR_HELP, FORCE_FILE_HELP, JSON_HELP, QUIET_HELP,
+                                     VM_CHART_HELP)
 
 #: commands that print results (--json), and those that write files (-o/--output or --out-dir)
 PRINTS = {"calc", "coastdown", "bushing", "contact", "lab", "audit", "diagnose", "lookup", "select"}
@@ -86,6 +87,12 @@ def test_the_commands_that_compute_m2_take_one_f2_chart_option(command):
     _, options = _help(command)
     assert (options["--f2-chart"].metavar, options["--f2-chart"].help) == ("CSV", F2_CHART_HELP)
     assert F2_CHART_HELP == "digitised f2 chart (docs/friction.md gives the format)"
+
+
+@pytest.mark.parametrize("command", ["calc", "select"])
+def test_the_commands_of_the_skf_model_take_one_vm_chart_option(command):
+    _, options = _help(command)
+    assert (options["--vm-chart"].metavar, options["--vm-chart"].help) == ("CSV", VM_CHART_HELP)
 
 
 def test_the_shared_help_texts():

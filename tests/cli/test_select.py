@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import math
+from pathlib import Path
 
 import numpy as np
 import openpyxl
@@ -178,3 +179,15 @@ def test_the_candidates_into_a_new_workbook(tmp_path, capsys):
         "W", "degC", "1")
     designations = [row[0].value for row in sheet.iter_rows(min_row=3)]
     assert designations == ["6008", "6208", "61908", "16008"]
+
+
+def test_the_skf_model_in_an_oil_bath_with_the_oil_level_and_the_vm_chart(capsys):
+    chart = str(Path(__file__).resolve().parents[2] / "docs" / "vm_chart_example.csv")
+    assert main(["select", "--d", "40mm", "--D-max", "80mm", "--family", "deep groove ball", "--shield", "open",
+                 *POINT, "--model", "skf", "--oil-level", "10mm", "--vm-chart", chart, "--json"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    supports = pd.DataFrame({"designation": [row["designation"] for row in rows], "lubrication": "oil_bath",
+                             "model": "skf", "n [rpm]": 6000.0, "Fr [kN]": 2.0, "nu [cSt]": 20.0, "oil_level [mm]": 10.0})
+    alone = bh.calc(supports, vm_chart=chart)
+    np.testing.assert_allclose([row["MR [N*mm]"] for row in rows], alone["MR [N*mm]"], rtol=1e-12)
+    assert [row["model"] for row in rows] == ["skf"] * 4 and all(row["status"] == "ok" for row in rows)
