@@ -18,8 +18,10 @@ from bearingheat.cli import UsageError
 from bearingheat.cli.options import add_f2_chart, add_force, add_json, add_output, add_quiet, add_vm_chart
 from bearingheat.errors import DesignationError, UnitError
 from bearingheat.io.console import print_summary, print_table
-from bearingheat.io.files import EXCEL_SUFFIXES, safe_output
+from bearingheat.io.files import EXCEL_SUFFIXES, atomic_write, safe_output
 from bearingheat.io.json import json_safe
+from bearingheat.io.reports.selection import draw_candidates
+from bearingheat.io.reports.thermal import figure_format
 from bearingheat.io.tables import check_table_suffix, write_table
 from bearingheat.units import Quantity, celsius, magnitude, parse_quantity
 
@@ -42,9 +44,9 @@ angular contact bearing whose Y0 is not known). With --T-amb and --T-bearing als
 n_per, the speed at which the bearing reaches T_bearing, n_per/n (above 1: it
 runs below that temperature) and T_op, its operating temperature at n; --rank-by
 T_op puts the coolest first, --rank-by n_per the fastest (a larger bearing makes
-more heat but also gives more of it off). A bearing
-with contact seals (-2RSR, -2RS) is computed without its seal friction, which the
-catalogue model lacks (a warning says so), and without n_thr, n_per and T_op.
+more heat but also gives more of it off). A bearing with contact seals (-2RSR,
+-2RS) is computed without its seal friction, which the catalogue model lacks (a
+warning says so), and without n_thr, n_per and T_op.
 
 Columns: designation, family, shield, d, D, B, T [mm], C, C0 [N], n_G (limiting
 speed), n_thr_catalogue (the catalogue's thermal reference speed) [1/min]; with
@@ -52,9 +54,14 @@ an operating point also the point (lubrication, model, n, Fr, Fa, nu ...), the
 results of calc (f0, f1, P0, P1, M0, M1, M2, MR, NR, n_thr, n_per, T_op ...),
 n_per/n, status and message.
 
+--plot FIGURE draws T_op against speed of the leading candidates (bearings that
+compute alike, 6008 and 6008-2Z, share one curve), each up to its n_G, with
+T_bearing and the operating speed as lines: a curve crosses T_bearing at its
+n_per.
+
 Output files: -o writes every column (CSV, a new Excel workbook, Parquet,
-Arrow/Feather by the suffix), atomically, never over an existing file without
---force.
+Arrow/Feather by the suffix); -o and --plot write atomically, never over an
+existing file without --force.
 Exit codes: 0 done, at least one candidate computed (or listed); 1 no candidate
 could be computed at the operating point; 2 unusable input (no bearing of that
 bore, an unknown family, a number without unit).
@@ -72,6 +79,8 @@ _LOWEST = {"n": (0.0, True), "Fr": (0.0, True), "Fa": (0.0, True), "nu": (0.0, F
 RANKINGS = {"NR": ("NR [W]", False), "T_op": ("T_op [degC]", False), "n_per": ("n_per [1/min]", True)}
 #: the catalogue columns shown beside the results
 _CATALOGUE_SHOWN = ("designation", "D", "B", "T", "C0", "n_G")
+#: candidates drawn by --plot (the leading ones of the ranking), and the speeds of their curves
+PLOTTED, PLOT_SPEEDS = 8, 60
 #: the column of the speed at which the bearing reaches T_bearing over the operating speed
 MARGIN = "n_per/n"
 #: the column of the catalogue's thermal reference speed (the contract's name for it)
@@ -102,6 +111,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_f2_chart(parser)
     add_vm_chart(parser)
     add_output(parser, ".csv, .xlsx, .parquet, .arrow or .feather")
+    parser.add_argument("--plot", metavar="FIGURE",
+                        help=f"draw T_op against speed of the {PLOTTED} leading candidates (needs the heat balance; "
+                             "PNG, SVG, PDF ... by the suffix)")
     add_force(parser, "FILE")
     add_json(parser)
     add_quiet(parser)
@@ -174,6 +186,45 @@ def ranked(table: pd.DataFrame, point: dict[str, float], lubrication: str, model
     return merged.iloc[order].reset_index(drop=True)
 
 
+def _alike(table: pd.DataFrame) -> list[list[int]]:
+    """The positions of ``table``'s candidates with an operating temperature, grouped where calc gives them the
+    same T_op and n_per (6008 and 6008-2Z, NU308-E and NJ308-E: one curve), in the table's order."""
+    groups: dict[tuple[float, float], list[int]] = {}
+    T_op, n_per = (table[name].to_numpy(dtype=float) for name in ("T_op [degC]", "n_per [1/min]"))
+    for position in np.flatnonzero(np.isfinite(T_op)).tolist():
+        key = (round(T_op[position], 9), round(n_per[position], 6) if math.isfinite(n_per[position]) else math.inf)
+        groups.setdefault(key, []).append(position)
+    return list(groups.values())
+
+
+def temperature_curves(table: pd.DataFrame, point: dict[str, float], lubrication: str, model: str, *,
+                       f2_chart: str | None = None, vm_chart: str | None = None) -> dict:
+    """The T_op curves over speed of the leading candidates of ``table`` (ranked, with the heat balance) for
+    :func:`bearingheat.io.reports.selection.draw_candidates`: the first :data:`PLOTTED` groups of candidates
+    alike (:func:`_alike`, one curve named by all of them), each computed by calc at :data:`PLOT_SPEEDS` speeds
+    from near 0 to past the highest n_per (at least 1.5 n); NaN above the first bearing's n_G."""
+    groups = _alike(table)[:PLOTTED]
+    leading = table.iloc[[group[0] for group in groups]]
+    n = point["n"]
+    top = max(1.5 * n, 1.1 * float(np.nanmax(leading["n_per [1/min]"].to_numpy(dtype=float), initial=0.0)))
+    speeds = np.linspace(top / PLOT_SPEEDS, top, PLOT_SPEEDS)
+    grid = pd.DataFrame({"designation": np.repeat(leading["designation"].to_numpy(), len(speeds)),
+                         "lubrication": lubrication, "model": model})
+    for name, value in point.items():
+        grid[column(name).header] = np.tile(speeds, len(leading)) if name == "n" else value
+    computed = calc(grid, f2_chart=f2_chart, vm_chart=vm_chart)["T_op [degC]"].to_numpy(dtype=float, copy=True)
+    temperatures = computed.reshape(len(leading), len(speeds))
+    limits = leading["n_G [1/min]"].to_numpy(dtype=float)
+    temperatures[speeds[None, :] > limits[:, None]] = np.nan  # (above n_G the bearing does not run)
+    names = [", ".join(table["designation"].iloc[group]) for group in groups]
+    words = (f"{lubrication}, Fr {point['Fr'] / 1e3:g} kN, Fa {point['Fa'] / 1e3:g} kN, nu {point['nu']:g} mm²/s, "
+             f"T_amb {point['T_amb']:g} °C; {model} model")
+    return {"speeds": speeds, "T_op": dict(zip(names, temperatures)), "n": n,
+            "n_per": dict(zip(names, leading["n_per [1/min]"].to_numpy(dtype=float))),
+            "T_op_at_n": dict(zip(names, leading["T_op [degC]"].to_numpy(dtype=float))),
+            "T_bearing": point["T_bearing"], "T_amb": point["T_amb"], "title": words}
+
+
 def _shown(table: pd.DataFrame) -> list[str]:
     """The columns of the printed table: the candidates' size and ratings, the main results, status."""
     wanted = [c for c in table.columns if c.split(" [")[0] in _CATALOGUE_SHOWN and table[c].notna().any()]
@@ -185,10 +236,13 @@ def _shown(table: pd.DataFrame) -> list[str]:
 
 
 def run(args: argparse.Namespace) -> int:
-    target = None
+    target = figure = None
     if args.output:
         check_table_suffix(args.output, also=EXCEL_SUFFIXES)
         target = safe_output(args.output, force=args.force)
+    if args.plot:
+        fmt = figure_format(args.plot, example="candidates.png")
+        figure = safe_output(args.plot, force=args.force, inputs=(target,) if target is not None else ())
     table = candidates(args)
     point = {name: value for name in _OPERATING if (value := _value(args, name)) is not None}
     given = [option for name, option in _OPERATING.items() if name in point] + (
@@ -199,11 +253,21 @@ def run(args: argparse.Namespace) -> int:
     heat_balance = "T_amb" in point and "T_bearing" in point
     if args.rank_by != "NR" and not heat_balance:
         raise UsageError(f"--rank-by {args.rank_by} needs the heat balance: give --T-amb and --T-bearing")
+    if figure is not None and not (given and heat_balance):
+        raise UsageError("--plot draws T_op against speed: give the operating point (--n, --nu, --lubrication) and "
+                         "--T-amb and --T-bearing")
     if given:
         point.setdefault("Fr", 0.0)
         point.setdefault("Fa", 0.0)
         table = ranked(table, point, args.lubrication, args.model, args.rank_by, f2_chart=args.f2_chart,
                        vm_chart=args.vm_chart)
+    if figure is not None:
+        if not np.isfinite(table["T_op [degC]"].to_numpy(dtype=float)).any():
+            raise UsageError(f"--plot: no candidate has an operating temperature at this point; {figure.name} is not "
+                             "written")
+        curves = temperature_curves(table, point, args.lubrication, args.model, f2_chart=args.f2_chart,
+                                    vm_chart=args.vm_chart)
+        atomic_write(figure, lambda temp: draw_candidates(curves, temp, format=fmt))
     if target is not None and target.suffix.lower() in EXCEL_SUFFIXES:
         from bearingheat.io.excel.writer import write_results_workbook  # (openpyxl only where a workbook is written)
         write_results_workbook(table, target)

@@ -11,10 +11,12 @@ import openpyxl
 import pandas as pd
 import pint
 import pytest
+from PIL import Image
 
 import bearingheat as bh
 from bearingheat.catalogue.bearings import FAMILIES, SHIELDS
-from bearingheat.cli import main
+from bearingheat.cli import build_parser, main
+from bearingheat.cli.select import PLOTTED, candidates, ranked, temperature_curves
 from bearingheat.errors import DesignationError, InputError, UnitError
 
 u = pint.get_application_registry()
@@ -191,3 +193,43 @@ def test_the_skf_model_in_an_oil_bath_with_the_oil_level_and_the_vm_chart(capsys
     alone = bh.calc(supports, vm_chart=chart)
     np.testing.assert_allclose([row["MR [N*mm]"] for row in rows], alone["MR [N*mm]"], rtol=1e-12)
     assert [row["model"] for row in rows] == ["skf"] * 4 and all(row["status"] == "ok" for row in rows)
+
+
+def test_the_temperature_curves_of_the_leading_candidates(tmp_path):
+    figure = tmp_path / "candidates.png"
+    arguments = ["select", "--d", "40mm", "--D-max", "90mm", *POINT, *HEAT, "--rank-by", "T_op"]
+    assert main([*arguments, "--plot", str(figure), "-q"]) == 0
+    with Image.open(figure) as image:
+        assert image.size == (1800, 810)
+    args = build_parser().parse_args(arguments)
+    table = candidates(args)
+    point = {"n": 6000.0, "Fr": 2000.0, "Fa": 0.0, "nu": 20.0, "T_amb": 20.0, "T_bearing": 70.0}
+    table = ranked(table, point, "oil_bath", "schaeffler", "T_op")
+    curves = temperature_curves(table, point, "oil_bath", "schaeffler")
+    names = list(curves["T_op"])
+    # alike bearings share one curve, named by all of them, in the order of the ranking
+    assert names[:2] == ["6008, 6008-2Z", "N308-E-TVP2, NU308-E-TVP2, NJ308-E-TVP2, NUP308-E-TVP2"]
+    assert len(names) == PLOTTED
+    speeds = curves["speeds"]
+    for name, temperatures in curves["T_op"].items():
+        running = temperatures[np.isfinite(temperatures)]
+        assert (np.diff(running) > 0).all(), name  # hotter the faster it runs
+        n_per = curves["n_per"][name]  # calc's n_per: where the curve crosses T_bearing
+        below, above = temperatures[speeds < n_per][-1], temperatures[speeds > n_per][0]
+        assert below < 70.0 < above, name
+    # N308-E-TVP2 stops at its n_G of 7500 1/min
+    assert np.isnan(curves["T_op"][names[1]][speeds > 7500]).all()
+    assert np.isfinite(curves["T_op"][names[1]][speeds <= 7500]).all()
+
+
+@pytest.mark.parametrize(("extra", "message"), [
+    (["--plot", "c.png"], "--plot draws T_op against speed: give the operating point (--n, --nu, --lubrication) and "
+                          "--T-amb and --T-bearing"),
+    (["--plot", "c.txt", *HEAT], "c.txt: a figure is written as .png, .svg, .svgz, .pdf, .eps, .ps, .jpg, .jpeg, .tif, "
+                                 ".tiff, .webp; name it e.g. candidates.png"),
+])
+def test_the_plot_needs_the_heat_balance_and_a_figure_format(tmp_path, monkeypatch, capsys, extra, message):
+    monkeypatch.chdir(tmp_path)
+    assert main(["select", "--d", "40mm", *POINT, *extra]) == 2
+    assert capsys.readouterr().err == f"bearingheat select: error: {message}\n"
+    assert list(tmp_path.iterdir()) == []

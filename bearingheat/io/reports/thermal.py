@@ -31,13 +31,13 @@ __all__ = ["heat_balance_curves", "draw_heat_balance", "figure_format", "FIGURE_
 FIGURE_FORMATS = ("png", "svg", "svgz", "pdf", "eps", "ps", "jpg", "jpeg", "tif", "tiff", "webp")
 
 
-def figure_format(path) -> str:
+def figure_format(path, example: str = "heat_balance.png") -> str:
     """The figure format of a file name (``plot.svg`` -> ``svg``); :class:`InputError` for an ending matplotlib
-    does not write."""
+    does not write (naming ``example`` as a name to give)."""
     suffix = Path(path).suffix.lower().lstrip(".")
     if suffix not in FIGURE_FORMATS:
         raise InputError(f"{path}: a figure is written as {', '.join('.' + f for f in FIGURE_FORMATS)}; "
-                         "name it e.g. heat_balance.png")
+                         f"name it e.g. {example}")
     return suffix
 
 
