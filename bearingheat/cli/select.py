@@ -207,6 +207,9 @@ def temperature_curves(table: pd.DataFrame, point: dict[str, float], lubrication
     leading = table.iloc[[group[0] for group in groups]]
     n = point["n"]
     top = max(1.5 * n, 1.1 * float(np.nanmax(leading["n_per [1/min]"].to_numpy(dtype=float), initial=0.0)))
+    if not top > 0:
+        raise UsageError("--plot: at n = 0 without a permissible speed n_per of any candidate there is no range of "
+                         "speeds to draw; give the operating speed")
     speeds = np.linspace(top / PLOT_SPEEDS, top, PLOT_SPEEDS)
     grid = pd.DataFrame({"designation": np.repeat(leading["designation"].to_numpy(), len(speeds)),
                          "lubrication": lubrication, "model": model})

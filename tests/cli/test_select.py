@@ -17,7 +17,7 @@ import bearingheat as bh
 from bearingheat.catalogue.bearings import FAMILIES, SHIELDS
 from bearingheat.cli import build_parser, main
 from bearingheat.cli.select import PLOTTED, candidates, ranked, temperature_curves
-from bearingheat.errors import DesignationError, InputError, UnitError
+from bearingheat.errors import DesignationError, InputError, UnitError, UsageError
 
 u = pint.get_application_registry()
 #: deep groove ball bearings of bore 40 mm, open, D <= 80 mm (HR 1, 2006, pp. 198-205)
@@ -233,3 +233,13 @@ def test_the_plot_needs_the_heat_balance_and_a_figure_format(tmp_path, monkeypat
     assert main(["select", "--d", "40mm", *POINT, *extra]) == 2
     assert capsys.readouterr().err == f"bearingheat select: error: {message}\n"
     assert list(tmp_path.iterdir()) == []
+
+
+def test_no_range_of_speeds_to_draw_at_standstill_without_n_per():
+    table = pd.DataFrame({"designation": ["6208"], "T_op [degC]": [20.0], "n_per [1/min]": [np.nan],
+                          "n_G [1/min]": [20000.0]})
+    point = {"n": 0.0, "Fr": 2000.0, "Fa": 0.0, "nu": 20.0, "T_amb": 20.0, "T_bearing": 70.0}
+    with pytest.raises(UsageError) as exc:
+        temperature_curves(table, point, "oil_bath", "schaeffler")
+    assert str(exc.value) == ("--plot: at n = 0 without a permissible speed n_per of any candidate there is no range "
+                              "of speeds to draw; give the operating speed")
