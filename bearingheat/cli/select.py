@@ -1,4 +1,4 @@
-"""``bearingheat select``: the bearings of the bearing table for a shaft, ranked by their friction at an operating point."""
+"""``bearingheat select``: the bearings of the bearing table for a shaft seat, ranked at an operating point."""
 from __future__ import annotations
 
 import argparse
