@@ -38,6 +38,7 @@ __all__ = [
     "LabError",
     "AuditError",
     "DiagnoseError",
+    "SelectionError",
     "ExcelError",
     "WorkbookContentError",
     "SheetContentError",
@@ -137,6 +138,10 @@ class AuditError(BearingheatError):
 
 class DiagnoseError(BearingheatError):
     """Measured data that cannot be diagnosed, or a fitted effect that cannot be applied."""
+
+
+class SelectionError(BearingheatError):
+    """An operating point or ranking that choosing a bearing among the candidates cannot use."""
 
 
 class DutyCycleError(InputError):

@@ -45,6 +45,7 @@ _EXPORTS = {
     "bearing": "bearingheat.api.bearings", "BearingData": "bearingheat.api.bearings",
     "bearing_table": "bearingheat.api.bearings", "designations": "bearingheat.api.bearings",
     "bearings_with_bore": "bearingheat.api.bearings",
+    "rank_bearings": "bearingheat.api.selection", "temperature_curves": "bearingheat.api.selection",
     "parse_designation": "bearingheat.catalogue.designation", "decode_gost": "bearingheat.catalogue.designation",
     "F2Chart": "bearingheat.catalogue.f2chart", "VMChart": "bearingheat.catalogue.vm_chart",
 }
@@ -55,6 +56,7 @@ if TYPE_CHECKING:  # what type checkers and IDEs see; at run time each name is i
     from bearingheat.api.bearings import BearingData, bearing, bearing_table, bearings_with_bore, designations
     from bearingheat.api.bushing import BushingSize, ThrustWasherSize, size_bushing, size_thrust_washer
     from bearingheat.api.coastdown import analyse_coastdown, analyse_spindle_coastdown
+    from bearingheat.api.selection import rank_bearings, temperature_curves
     from bearingheat.api.contact import BallContact, ball_bearing_contact, contact_angle_from_clearance
     from bearingheat.api.friction import FrictionResult, friction_torque
     from bearingheat.api.thermal import HeatBalanceResult, heat_balance, thermal_reference_speed

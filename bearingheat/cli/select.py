@@ -3,27 +3,25 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 
-import numpy as np
 import pandas as pd
 
 from bearingheat.api.bearings import bearings_with_bore
-from bearingheat.calc.contract import column, range_problems
+from bearingheat.api.selection import (CATALOGUE_SPEED, MARGIN, RANKINGS, candidate_table, rank_bearings,
+                                       temperature_curves)
 from bearingheat.calc.models import DEFAULT_MODEL, MODELS
-from bearingheat.calc.table import calc
-from bearingheat.catalogue.bearings import FAMILIES, SHIELDS, units_of_table
+from bearingheat.catalogue.bearings import FAMILIES, SHIELDS
 from bearingheat.catalogue.friction import LUBRICATION_F0_COLUMN
 from bearingheat.cli import UsageError
 from bearingheat.cli.options import add_f2_chart, add_force, add_json, add_output, add_quiet, add_vm_chart
-from bearingheat.errors import DesignationError, UnitError
+from bearingheat.errors import UnitError
 from bearingheat.io.console import print_summary, print_table
 from bearingheat.io.files import EXCEL_SUFFIXES, atomic_write, safe_output
 from bearingheat.io.json import json_safe
 from bearingheat.io.reports.selection import draw_candidates
 from bearingheat.io.reports.thermal import figure_format
 from bearingheat.io.tables import check_table_suffix, write_table
-from bearingheat.units import Quantity, celsius, magnitude, parse_quantity
+from bearingheat.units import Quantity, parse_quantity
 
 DESCRIPTION = """\
 The bearings of the bearing table (Schaeffler HR 1, June 2006; 'bearingheat
@@ -70,21 +68,13 @@ bore, an unknown family, a number without unit).
 #: a unit of each option's kind, for the message of a number typed without one
 _EXAMPLE_UNITS = {"--d": "mm", "--D-max": "mm", "--B-max": "mm", "--n": "rpm", "--Fr": "kN", "--Fa": "kN",
                   "--nu": "mm^2/s", "--T-amb": "degC", "--T-bearing": "degC", "--oil-level": "mm"}
-#: operating-point option -> its calc column (converted to the column's catalogue unit)
+#: operating-point argument of rank_bearings -> its option
 _OPERATING = {"n": "--n", "Fr": "--Fr", "Fa": "--Fa", "nu": "--nu", "T_amb": "--T-amb", "T_bearing": "--T-bearing",
               "oil_level": "--oil-level"}
-#: the model's bounds of the operating point (the Schaeffler catalogue, p. 64): name -> (lowest, whether it counts)
-_LOWEST = {"n": (0.0, True), "Fr": (0.0, True), "Fa": (0.0, True), "nu": (0.0, False), "oil_level": (0.0, True)}
-#: --rank-by -> (the column ranked, whether the largest comes first)
-RANKINGS = {"NR": ("NR [W]", False), "T_op": ("T_op [degC]", False), "n_per": ("n_per [1/min]", True)}
-#: the catalogue columns shown beside the results
-_CATALOGUE_SHOWN = ("designation", "D", "B", "T", "C0", "n_G")
 #: candidates drawn by --plot (the leading ones of the ranking), and the speeds of their curves
 PLOTTED, PLOT_SPEEDS = 8, 60
-#: the column of the speed at which the bearing reaches T_bearing over the operating speed
-MARGIN = "n_per/n"
-#: the column of the catalogue's thermal reference speed (the contract's name for it)
-CATALOGUE_SPEED = column("n_thr_catalogue").name
+#: the catalogue columns shown beside the results
+_CATALOGUE_SHOWN = ("designation", "D", "B", "T", "C0", "n_G")
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -119,29 +109,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_quiet(parser)
 
 
-def _value(args: argparse.Namespace, name: str) -> float | None:
-    """The option of calc column ``name`` in the column's catalogue unit (None when not given), checked against
-    the model's bounds and the contract's valid range."""
-    option = _OPERATING[name]
-    text = getattr(args, option[2:].replace("-", "_"))
-    if text is None:
-        return None
-    unit = column(name).unit
-    try:
-        given = parse_quantity(text, name=option, example=_EXAMPLE_UNITS[option])
-        value = float(celsius(given, option) if unit == "degC" else magnitude(given, unit, option))
-    except UnitError as exc:
-        raise UsageError(str(exc)) from exc
-    lowest, inclusive = _LOWEST.get(name, (-math.inf, True))
-    if value < lowest or (value == lowest and not inclusive):
-        raise UsageError(f"{option}: {text} must be {'>=' if inclusive else '>'} 0")
-    errors, _ = range_problems(name, np.array([value]), lambda i: f"{option}: {text}")
-    if errors:
-        raise UsageError(errors[0][1])
-    return value
-
-
-def _length(text: str, option: str) -> Quantity:
+def _quantity(text: str, option: str) -> Quantity:
+    """An option's number with its unit (:class:`UsageError` naming the option where it has none)."""
     try:
         return parse_quantity(text, name=option, example=_EXAMPLE_UNITS[option])
     except UnitError as exc:
@@ -149,83 +118,10 @@ def _length(text: str, option: str) -> Quantity:
 
 
 def candidates(args: argparse.Namespace) -> pd.DataFrame:
-    """The bearings of the table the options leave, in catalogue order, headers 'name [unit]'."""
-    try:
-        limits = {name: None if text is None else _length(text, option)
-                  for name, text, option in (("D_max", args.D_max, "--D-max"), ("B_max", args.B_max, "--B-max"))}
-        found = bearings_with_bore(_length(args.d, "--d"), family=args.family, shield=args.shield, **limits)
-    except (DesignationError, UnitError) as exc:
-        raise UsageError(str(exc)) from exc
-    units = units_of_table()
-    headers = {}
-    for name in found.columns:
-        shown = CATALOGUE_SPEED if name == "n_thr" else name  # (calc's own n_thr stands beside the catalogue's)
-        headers[name] = shown if units[name] in ("-", "1") else f"{shown} [{units[name]}]"
-    return found.rename(columns=headers).reset_index(drop=True)
-
-
-def ranked(table: pd.DataFrame, point: dict[str, float], lubrication: str, model: str, rank_by: str = "NR", *,
-           f2_chart: str | None = None, vm_chart: str | None = None) -> pd.DataFrame:
-    """The candidates computed by calc at the operating point ``point`` (calc columns in catalogue units) with
-    ``lubrication`` and the friction ``model`` (``f2_chart``, ``vm_chart``: the digitised charts' CSV files, as
-    calc takes them), ranked by
-    :data:`RANKINGS` ``rank_by`` (the power loss NR by default, the least first); the rows without that result
-    (calc could not compute them, or their heat balance) come last, in catalogue order."""
-    supports = pd.DataFrame({"designation": table["designation"], "lubrication": lubrication, "model": model})
-    for name, value in point.items():
-        supports[column(name).header] = value
-    results = calc(supports, f2_chart=f2_chart, vm_chart=vm_chart)
-    # the operating point stays beside each candidate's results: a file of them says what they were computed at
-    merged = pd.concat([table, results.drop(columns="designation")], axis=1)
-    if "n_per [1/min]" in merged.columns and point["n"] > 0:
-        merged.insert(merged.columns.get_loc("n_per [1/min]") + 1, MARGIN, merged["n_per [1/min]"] / point["n"])
-    name, largest_first = RANKINGS[rank_by]
-    values = merged[name].to_numpy(dtype=float)
-    missing = (merged["status"] == "error").to_numpy() | np.isnan(values)
-    order = np.lexsort((np.arange(len(merged)), -values if largest_first else values, missing))
-    return merged.iloc[order].reset_index(drop=True)
-
-
-def _alike(table: pd.DataFrame) -> list[list[int]]:
-    """The positions of ``table``'s candidates with an operating temperature, grouped where calc gives them the
-    same T_op and n_per (6008 and 6008-2Z, NU308-E and NJ308-E: one curve), in the table's order."""
-    groups: dict[tuple[float, float], list[int]] = {}
-    T_op, n_per = (table[name].to_numpy(dtype=float) for name in ("T_op [degC]", "n_per [1/min]"))
-    for position in np.flatnonzero(np.isfinite(T_op)).tolist():
-        key = (round(T_op[position], 9), round(n_per[position], 6) if math.isfinite(n_per[position]) else math.inf)
-        groups.setdefault(key, []).append(position)
-    return list(groups.values())
-
-
-def temperature_curves(table: pd.DataFrame, point: dict[str, float], lubrication: str, model: str, *,
-                       f2_chart: str | None = None, vm_chart: str | None = None) -> dict:
-    """The T_op curves over speed of the leading candidates of ``table`` (ranked, with the heat balance) for
-    :func:`bearingheat.io.reports.selection.draw_candidates`: the first :data:`PLOTTED` groups of candidates
-    alike (:func:`_alike`, one curve named by all of them), each computed by calc at :data:`PLOT_SPEEDS` speeds
-    from near 0 to past the highest n_per (at least 1.5 n); NaN above the first bearing's n_G."""
-    groups = _alike(table)[:PLOTTED]
-    leading = table.iloc[[group[0] for group in groups]]
-    n = point["n"]
-    top = max(1.5 * n, 1.1 * float(np.nanmax(leading["n_per [1/min]"].to_numpy(dtype=float), initial=0.0)))
-    if not top > 0:
-        raise UsageError("--plot: at n = 0 without a permissible speed n_per of any candidate there is no range of "
-                         "speeds to draw; give the operating speed")
-    speeds = np.linspace(top / PLOT_SPEEDS, top, PLOT_SPEEDS)
-    grid = pd.DataFrame({"designation": np.repeat(leading["designation"].to_numpy(), len(speeds)),
-                         "lubrication": lubrication, "model": model})
-    for name, value in point.items():
-        grid[column(name).header] = np.tile(speeds, len(leading)) if name == "n" else value
-    computed = calc(grid, f2_chart=f2_chart, vm_chart=vm_chart)["T_op [degC]"].to_numpy(dtype=float, copy=True)
-    temperatures = computed.reshape(len(leading), len(speeds))
-    limits = leading["n_G [1/min]"].to_numpy(dtype=float)
-    temperatures[speeds[None, :] > limits[:, None]] = np.nan  # (above n_G the bearing does not run)
-    names = [", ".join(table["designation"].iloc[group]) for group in groups]
-    words = (f"{lubrication}, Fr {point['Fr'] / 1e3:g} kN, Fa {point['Fa'] / 1e3:g} kN, nu {point['nu']:g} mm²/s, "
-             f"T_amb {point['T_amb']:g} °C; {model} model")
-    return {"speeds": speeds, "T_op": dict(zip(names, temperatures)), "n": n,
-            "n_per": dict(zip(names, leading["n_per [1/min]"].to_numpy(dtype=float))),
-            "T_op_at_n": dict(zip(names, leading["T_op [degC]"].to_numpy(dtype=float))),
-            "T_bearing": point["T_bearing"], "T_amb": point["T_amb"], "title": words}
+    """The bearings of the table the options leave (rows of the bearing table), in catalogue order."""
+    limits = {name: None if text is None else _quantity(text, option)
+              for name, text, option in (("D_max", args.D_max, "--D-max"), ("B_max", args.B_max, "--B-max"))}
+    return bearings_with_bore(_quantity(args.d, "--d"), family=args.family, shield=args.shield, **limits)
 
 
 def _shown(table: pd.DataFrame) -> list[str]:
@@ -246,10 +142,10 @@ def run(args: argparse.Namespace) -> int:
     if args.plot:
         fmt = figure_format(args.plot, example="candidates.png")
         figure = safe_output(args.plot, force=args.force, inputs=(target,) if target is not None else ())
-    table = candidates(args)
-    point = {name: value for name in _OPERATING if (value := _value(args, name)) is not None}
-    given = [option for name, option in _OPERATING.items() if name in point] + (
-        ["--lubrication"] if args.lubrication else [])
+    found = candidates(args)
+    point = {name: _quantity(text, option) for name, option in _OPERATING.items()
+             if (text := getattr(args, option[2:].replace("-", "_"))) is not None}
+    given = [_OPERATING[name] for name in point] + (["--lubrication"] if args.lubrication else [])
     missing = [option for option in ("--n", "--nu", "--lubrication") if option not in given]
     if given and missing:
         raise UsageError(f"the operating point ({', '.join(given)}) needs {' and '.join(missing)} too")
@@ -259,16 +155,14 @@ def run(args: argparse.Namespace) -> int:
     if figure is not None and not (given and heat_balance):
         raise UsageError("--plot draws T_op against speed: give the operating point (--n, --nu, --lubrication) and "
                          "--T-amb and --T-bearing")
+    table = candidate_table(found)
     if given:
-        point.setdefault("Fr", 0.0)
-        point.setdefault("Fa", 0.0)
-        table = ranked(table, point, args.lubrication, args.model, args.rank_by, f2_chart=args.f2_chart,
-                       vm_chart=args.vm_chart)
+        table = rank_bearings(found, lubrication=args.lubrication, n=point["n"], nu=point["nu"], Fr=point.get("Fr"),
+                              Fa=point.get("Fa"), T_amb=point.get("T_amb"), T_bearing=point.get("T_bearing"),
+                              oil_level=point.get("oil_level"), model=args.model, rank_by=args.rank_by,
+                              f2_chart=args.f2_chart, vm_chart=args.vm_chart)
     if figure is not None:
-        if not np.isfinite(table["T_op [degC]"].to_numpy(dtype=float)).any():
-            raise UsageError(f"--plot: no candidate has an operating temperature at this point; {figure.name} is not "
-                             "written")
-        curves = temperature_curves(table, point, args.lubrication, args.model, f2_chart=args.f2_chart,
+        curves = temperature_curves(table, count=PLOTTED, points=PLOT_SPEEDS, f2_chart=args.f2_chart,
                                     vm_chart=args.vm_chart)
         atomic_write(figure, lambda temp: draw_candidates(curves, temp, format=fmt))
     if target is not None and target.suffix.lower() in EXCEL_SUFFIXES:

@@ -15,9 +15,9 @@ from PIL import Image
 
 import bearingheat as bh
 from bearingheat.catalogue.bearings import FAMILIES, SHIELDS
-from bearingheat.cli import build_parser, main
-from bearingheat.cli.select import PLOTTED, candidates, ranked, temperature_curves
-from bearingheat.errors import DesignationError, InputError, UnitError, UsageError
+from bearingheat.cli import main
+from bearingheat.cli.select import PLOTTED
+from bearingheat.errors import DesignationError, InputError, SelectionError, UnitError
 
 u = pint.get_application_registry()
 #: deep groove ball bearings of bore 40 mm, open, D <= 80 mm (HR 1, 2006, pp. 198-205)
@@ -109,11 +109,11 @@ def test_no_candidate_computed_is_exit_code_1(capsys):
      "(they have D 52-90 mm, width 7-35.25 mm; families: deep groove ball, angular contact ball, cylindrical roller, "
      "tapered roller; shields: open, 2RSR, 2Z, 2RS)"),
     (["--d", "40mm", "--n", "6000rpm"], "the operating point (--n) needs --nu and --lubrication too"),
-    (["--d", "40mm", *POINT[:2], "--Fr=-2kN", *POINT[4:]], "--Fr: -2kN must be >= 0"),
-    (["--d", "40mm", *POINT[:4], "--nu", "0cSt", *POINT[6:]], "--nu: 0cSt must be > 0"),
+    (["--d", "40mm", *POINT[:2], "--Fr=-2kN", *POINT[4:]], "Fr: -2 kN must be >= 0"),
+    (["--d", "40mm", *POINT[:4], "--nu", "0cSt", *POINT[6:]], "nu: 0 cSt must be > 0"),
     (["--d", "40mm", *POINT, "--T-amb", "250degC", "--T-bearing", "70degC"],
-     "--T-amb: 250degC is outside the valid range -60 to 200 degC"),
-    (["--d", "40mm", "--n", "6000kN", *POINT[2:]], "--n: 6000 kilonewton is not a shaft speed; expected revolutions "
+     "T_amb: 250 °C is outside the valid range -60 to 200 degC"),
+    (["--d", "40mm", "--n", "6000kN", *POINT[2:]], "n: 6000 kilonewton is not a shaft speed; expected revolutions "
                                                     "per time (1/min, rpm, Hz) or an angular speed (rad/s)"),
 ])
 def test_unusable_input_is_named(capsys, arguments, message):
@@ -201,11 +201,10 @@ def test_the_temperature_curves_of_the_leading_candidates(tmp_path):
     assert main([*arguments, "--plot", str(figure), "-q"]) == 0
     with Image.open(figure) as image:
         assert image.size == (1800, 810)
-    args = build_parser().parse_args(arguments)
-    table = candidates(args)
-    point = {"n": 6000.0, "Fr": 2000.0, "Fa": 0.0, "nu": 20.0, "T_amb": 20.0, "T_bearing": 70.0}
-    table = ranked(table, point, "oil_bath", "schaeffler", "T_op")
-    curves = temperature_curves(table, point, "oil_bath", "schaeffler")
+    found = bh.bearings_with_bore(40 * u.mm, D_max=90 * u.mm)
+    ranked = bh.rank_bearings(found, lubrication="oil_bath", n=6000 * u.rpm, nu=20 * u.cSt, Fr=2 * u.kN,
+                              T_amb=u.Quantity(20, "degC"), T_bearing=u.Quantity(70, "degC"), rank_by="T_op")
+    curves = bh.temperature_curves(ranked, count=PLOTTED)
     names = list(curves["T_op"])
     # alike bearings share one curve, named by all of them, in the order of the ranking
     assert names[:2] == ["6008, 6008-2Z", "N308-E-TVP2, NU308-E-TVP2, NJ308-E-TVP2, NUP308-E-TVP2"]
@@ -236,10 +235,11 @@ def test_the_plot_needs_the_heat_balance_and_a_figure_format(tmp_path, monkeypat
 
 
 def test_no_range_of_speeds_to_draw_at_standstill_without_n_per():
-    table = pd.DataFrame({"designation": ["6208"], "T_op [degC]": [20.0], "n_per [1/min]": [np.nan],
-                          "n_G [1/min]": [20000.0]})
-    point = {"n": 0.0, "Fr": 2000.0, "Fa": 0.0, "nu": 20.0, "T_amb": 20.0, "T_bearing": 70.0}
-    with pytest.raises(UsageError) as exc:
-        temperature_curves(table, point, "oil_bath", "schaeffler")
-    assert str(exc.value) == ("--plot: at n = 0 without a permissible speed n_per of any candidate there is no range "
-                              "of speeds to draw; give the operating speed")
+    ranked = pd.DataFrame({"designation": ["6208"], "lubrication": ["oil_bath"], "model": ["schaeffler"],
+                           "n [1/min]": [0.0], "Fr [N]": [2000.0], "Fa [N]": [0.0], "nu [mm^2/s]": [20.0],
+                           "T_amb [degC]": [20.0], "T_bearing [degC]": [70.0], "T_op [degC]": [20.0],
+                           "n_per [1/min]": [np.nan], "n_G [1/min]": [20000.0]})
+    with pytest.raises(SelectionError) as exc:
+        bh.temperature_curves(ranked)
+    assert str(exc.value) == ("at n = 0 without a permissible speed n_per of any candidate there is no range of "
+                              "speeds to draw; give the operating speed")
