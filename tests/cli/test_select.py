@@ -243,3 +243,17 @@ def test_no_range_of_speeds_to_draw_at_standstill_without_n_per():
         bh.temperature_curves(ranked)
     assert str(exc.value) == ("at n = 0 without a permissible speed n_per of any candidate there is no range of "
                               "speeds to draw; give the operating speed")
+
+
+@pytest.mark.parametrize(("options", "message"), [
+    ({"rank_by": "MR"}, "rank_by: 'MR' is none of NR, T_op, n_per"),
+    ({"rank_by": "T_op"}, "rank_by T_op needs the heat balance: give T_amb and T_bearing"),
+    ({"n": [3000, 6000] * u.rpm}, "n: give one value (one operating point); got 2 values"),
+    ({"Fa": -1 * u.N}, "Fa: -1 N must be >= 0"),
+])
+def test_rank_bearings_refuses_what_it_cannot_use(options, message):
+    found = bh.bearings_with_bore(40 * u.mm, D_max=62 * u.mm)
+    arguments = {"lubrication": "grease", "n": 6000 * u.rpm, "nu": 20 * u.cSt, **options}
+    with pytest.raises(SelectionError) as exc:
+        bh.rank_bearings(found, **arguments)
+    assert str(exc.value) == message
