@@ -177,8 +177,8 @@ def temperature_curves(ranked: pd.DataFrame, *, count: int = 8, points: int = 60
     groups = _alike(ranked)[:count]
     leading = ranked.iloc[[group[0] for group in groups]]
     first = leading.iloc[0]
-    point = {name: float(first[column(name).header]) for name in ("n", "Fr", "Fa", "nu", "T_amb", "T_bearing", "oil_level")
-             if column(name).header in leading.columns}
+    operating = ("n", "Fr", "Fa", "nu", "T_amb", "T_bearing", "oil_level")
+    point = {name: float(first[column(name).header]) for name in operating if column(name).header in leading.columns}
     n = point["n"]
     top = max(1.5 * n, 1.1 * float(np.nanmax(leading["n_per [1/min]"].to_numpy(dtype=float), initial=0.0)))
     if not top > 0:

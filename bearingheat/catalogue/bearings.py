@@ -486,15 +486,16 @@ def bearings_with_bore(d: float, *, D_max: float = math.inf, B_max: float = math
     if same_bore.empty:
         distinct = np.unique(bores)
         nearest = sorted(distinct[np.argsort(np.abs(distinct - d), kind="stable")[:2]].tolist())
-        raise DesignationError(f"d = {d:g} mm: no bearing of the bearing table ({CATALOGUE}) has this bore; the nearest bores: "
-                               f"{', '.join(f'{b:g}' for b in nearest)} mm")
+        raise DesignationError(f"d = {d:g} mm: no bearing of the bearing table ({CATALOGUE}) has this bore; the "
+                               f"nearest bores: {', '.join(f'{b:g}' for b in nearest)} mm")
     width = same_bore["T"].fillna(same_bore["B"]).to_numpy(dtype=float)
     kept = same_bore[(same_bore["D"].to_numpy(dtype=float) <= D_max) & (width <= B_max)
                      & same_bore["family"].isin(wanted_families).to_numpy()
                      & same_bore["shield"].isin(wanted_shields).to_numpy()]
     if kept.empty:
         asked = [f"D <= {D_max:g} mm" if math.isfinite(D_max) else "",
-                 f"width <= {B_max:g} mm" if math.isfinite(B_max) else "", f"family {', '.join(wanted_families)}" if families is not None else "",
+                 f"width <= {B_max:g} mm" if math.isfinite(B_max) else "",
+                 f"family {', '.join(wanted_families)}" if families is not None else "",
                  f"shield {', '.join(wanted_shields)}" if shields is not None else ""]
         raise DesignationError(
             f"d = {d:g} mm: none of the {len(same_bore)} bearings of this bore in the bearing table ({CATALOGUE}) has "

@@ -189,7 +189,8 @@ def test_the_skf_model_in_an_oil_bath_with_the_oil_level_and_the_vm_chart(capsys
                  *POINT, "--model", "skf", "--oil-level", "10mm", "--vm-chart", chart, "--json"]) == 0
     rows = json.loads(capsys.readouterr().out)
     supports = pd.DataFrame({"designation": [row["designation"] for row in rows], "lubrication": "oil_bath",
-                             "model": "skf", "n [rpm]": 6000.0, "Fr [kN]": 2.0, "nu [cSt]": 20.0, "oil_level [mm]": 10.0})
+                             "model": "skf", "n [rpm]": 6000.0, "Fr [kN]": 2.0, "nu [cSt]": 20.0,
+                             "oil_level [mm]": 10.0})
     alone = bh.calc(supports, vm_chart=chart)
     np.testing.assert_allclose([row["MR [N*mm]"] for row in rows], alone["MR [N*mm]"], rtol=1e-12)
     assert [row["model"] for row in rows] == ["skf"] * 4 and all(row["status"] == "ok" for row in rows)

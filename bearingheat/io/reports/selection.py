@@ -43,7 +43,8 @@ def draw_candidates(curves: dict, path, format: str | None = None) -> None:  # n
         ax.plot([curves["n"]], [at_n], "s", color=line.get_color(), ms=4)
     ax.axhline(curves["T_bearing"], color="tab:red", lw=1.0, ls="--",
                label=f"T_bearing = {curves['T_bearing']:g} °C\n  (a curve crosses it at n_per, ●)")
-    ax.axvline(curves["n"], color="0.3", lw=1.0, ls=":", label=f"operating n = {curves['n']:.0f} 1/min\n  (T_op there, ■)")
+    ax.axvline(curves["n"], color="0.3", lw=1.0, ls=":",
+               label=f"operating n = {curves['n']:.0f} 1/min\n  (T_op there, ■)")
     ax.set_xlabel("speed n [1/min]")
     ax.set_ylabel("operating temperature T_op [°C]")
     ax.set_xlim(speeds[0], speeds[-1])
