@@ -62,7 +62,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "lookup": ("bearingheat.cli.lookup",
         "a bearing's dimensions, load ratings, e, Y, Y0 and speeds by designation (Schaeffler HR 1, 2006)"),
     "select": ("bearingheat.cli.select",
-        "the bearings of the table for a shaft, ranked by power loss at an operating point (n_per, T_op)"),
+        "the bearings of the table for a shaft seat, ranked at an operating point by power loss, T_op or n_per"),
 }
 
 
