@@ -160,16 +160,49 @@ def _alike(ranked: pd.DataFrame) -> list[list[int]]:
 
 def temperature_curves(ranked: pd.DataFrame, *, count: int = 8, points: int = 60,
                        f2_chart: F2Chart | str | None = None, vm_chart: VMChart | str | None = None) -> dict:
-    """The operating temperature over speed of the leading candidates of :func:`rank_bearings` (with the heat
-    balance), at the operating point its columns hold.
+    """The operating temperature over speed of the leading candidates, at the operating point of the ranking.
 
-    The first ``count`` groups of candidates alike (one curve named by all of them, ``'6008, 6008-2Z'``), each
-    computed by calc at ``points`` speeds from near 0 to past the highest n_per (at least 1.5 n); NaN above the
-    first bearing's n_G. Returns ``speeds`` [1/min], ``T_op`` (name -> T_op [°C] at each speed), ``n_per`` and
-    ``T_op_at_n`` (name -> calc's value at the operating point), ``n``, ``T_bearing``, ``T_amb`` and ``title``
-    (the operating point in words), as :func:`bearingheat.io.reports.selection.draw_candidates` draws them.
-    :class:`SelectionError` when no candidate has an operating temperature, or at n = 0 without any n_per (no
-    range of speeds).
+    Parameters
+    ----------
+    ranked : pandas.DataFrame
+        The result of :func:`rank_bearings` with the heat balance (T_amb and
+        T_bearing given); its columns hold the operating point.
+    count : int
+        How many curves: the first ``count`` groups of candidates alike,
+        one curve named by all of them (``'6008, 6008-2Z'``: calc gives
+        them the same T_op and n_per), in the ranking's order.
+    points : int
+        Speeds of each curve, evenly from near 0 to past the highest n_per
+        of the curves (at least 1.5 n).
+    f2_chart, vm_chart : optional
+        Digitised charts, as calc takes them.
+
+    Returns
+    -------
+    dict
+        ``speeds`` [1/min]; ``T_op`` (name -> T_op [°C] at each speed from
+        calc, NaN above the first bearing's limiting speed n_G); ``n_per``
+        and ``T_op_at_n`` (name -> calc's value at the operating point);
+        ``n``, ``T_bearing``, ``T_amb``; ``title`` (the operating point in
+        words). :func:`bearingheat.io.reports.selection.draw_candidates`
+        draws it (``bearingheat select --plot``).
+
+    Raises
+    ------
+    bearingheat.errors.SelectionError
+        When no candidate has an operating temperature, or at n = 0 without
+        any n_per (no range of speeds).
+
+    Examples
+    --------
+    >>> import pint, bearingheat as bh
+    >>> u = pint.get_application_registry()
+    >>> found = bh.bearings_with_bore(40 * u.mm, D_max=68 * u.mm, family="deep groove ball")
+    >>> ranked = bh.rank_bearings(found, lubrication="oil_bath", n=6000 * u.rpm, nu=20 * u.cSt, Fr=2 * u.kN,
+    ...                           T_amb=u.Quantity(20, "degC"), T_bearing=u.Quantity(70, "degC"), rank_by="T_op")
+    >>> curves = bh.temperature_curves(ranked, count=2)
+    >>> list(curves["T_op"]), round(curves["n_per"]["6008, 6008-2Z"])
+    (['6008, 6008-2Z', '61908, 61908-2Z'], 7343)
     """
     if "T_op [degC]" not in ranked.columns or not np.isfinite(ranked["T_op [degC]"].to_numpy(dtype=float)).any():
         raise SelectionError("no candidate has an operating temperature at this point (the heat balance needs "
