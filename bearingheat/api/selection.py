@@ -18,7 +18,7 @@ import pandas as pd
 from bearingheat.calc.contract import column, range_problems
 from bearingheat.calc.models import DEFAULT_MODEL
 from bearingheat.calc.table import calc
-from bearingheat.catalogue.bearings import units_of_table
+from bearingheat.catalogue.bearings import table_header
 from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.catalogue.vm_chart import VMChart
 from bearingheat.errors import SelectionError
@@ -55,11 +55,7 @@ def _point_value(value: QuantityLike, name: str) -> float:
 
 def candidate_table(candidates: pd.DataFrame) -> pd.DataFrame:
     """Rows of the bearing table with 'name [unit]' headers; its n_thr is named :data:`CATALOGUE_SPEED`."""
-    units = units_of_table()
-    headers = {}
-    for name in candidates.columns:
-        shown = CATALOGUE_SPEED if name == "n_thr" else name
-        headers[name] = shown if units.get(name, "-") in ("-", "1") else f"{shown} [{units[name]}]"
+    headers = {name: table_header(name, CATALOGUE_SPEED if name == "n_thr" else None) for name in candidates.columns}
     return candidates.rename(columns=headers).reset_index(drop=True)
 
 

@@ -65,6 +65,7 @@ __all__ = [
     "bearing_table",
     "designations",
     "bearings_with_bore",
+    "table_header",
     "FAMILIES",
     "SHIELDS",
     "TABLE",
@@ -255,6 +256,17 @@ class BearingData:
 def units_of_table() -> dict[str, str]:
     """Column -> unit of the units row of the bearing table (``1`` for a dimensionless factor)."""
     return table_units(TABLE)
+
+
+def table_header(name: str, shown: str | None = None) -> str:
+    """The 'name [unit]' header of column ``name`` of the bearing table (``shown`` in place of the name where
+    given); the bare name of a text or dimensionless column.
+
+    >>> table_header("C0"), table_header("e"), table_header("family"), table_header("n_thr", "n_thr_catalogue")
+    ('C0 [N]', 'e', 'family', 'n_thr_catalogue [1/min]')
+    """
+    unit = units_of_table()[name]
+    return (shown or name) if unit in ("-", "1") else f"{shown or name} [{unit}]"
 
 
 def bearing_table() -> pd.DataFrame:

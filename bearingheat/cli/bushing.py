@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import argparse
+import functools
 import json
 import re
 import sys
@@ -11,11 +12,11 @@ import numpy as np
 from bearingheat.api.bushing import BushingSize, ThrustWasherSize, size_bushing, size_thrust_washer
 from bearingheat.catalogue.bushing import KGF_PER_CM2
 from bearingheat.cli import UsageError
-from bearingheat.cli.options import add_json, add_quiet
+from bearingheat.cli.options import add_json, add_quiet, option_quantity
 from bearingheat.io.json import json_safe
 from bearingheat.errors import BearingheatError, OutsideMethodError, UnitError
 from bearingheat.kernels.bushing import oscillating_speed_du_dp
-from bearingheat.units import magnitude, parse_quantity, quantity, speed_rpm
+from bearingheat.units import magnitude, quantity, speed_rpm
 
 
 DESCRIPTION = """\
@@ -75,11 +76,7 @@ _EXAMPLE_UNITS = {"--F": "kN", "--n": "rpm", "--d": "mm", "--life": "h", "--T": 
                   "--p-adm": "N/mm^2", "--cycles": "1/min", "--amplitude": "deg"}
 
 
-def _quantity(text, name):
-    try:
-        return parse_quantity(text, name=name, example=_EXAMPLE_UNITS.get(name))
-    except UnitError as exc:
-        raise UsageError(str(exc)) from exc
+_quantity = functools.partial(option_quantity, examples=_EXAMPLE_UNITS)
 
 
 def parse_list(text: str, name: str):

@@ -2,16 +2,18 @@
 from __future__ import annotations
 
 import argparse
+import functools
 import json
+from typing import Any
 
 from bearingheat.api.coastdown import analyse_coastdown, analyse_spindle_coastdown
 from bearingheat.cli import UsageError, add_csv_arguments
-from bearingheat.cli.options import add_force, add_json, add_out_dir, add_quiet
-from bearingheat.errors import BearingheatError, UnitError
+from bearingheat.cli.options import add_force, add_json, add_out_dir, add_quiet, option_quantity
+from bearingheat.errors import BearingheatError
 from bearingheat.io.coastdown import read_rundown
 from bearingheat.io.files import check_outputs
 from bearingheat.io.reports.coastdown import coastdown_summary, render_report, write_coastdown_outputs
-from bearingheat.units import parse_quantity, ureg
+from bearingheat.units import ureg
 
 
 DESCRIPTION = """\
@@ -90,11 +92,7 @@ _EXAMPLE_UNITS = {"--I": "kg*m^2", "--G": "N", "--r": "mm", "--dn": "rpm", "--dt
                   "--dM": "mm", "--P": "N"}
 
 
-def _quantity(text, name):
-    try:
-        return parse_quantity(text, name=name, example=_EXAMPLE_UNITS.get(name))
-    except UnitError as exc:
-        raise UsageError(str(exc)) from exc
+_quantity = functools.partial(option_quantity, examples=_EXAMPLE_UNITS)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -107,7 +105,7 @@ def run(args: argparse.Namespace) -> int:
     if args.torque_only and (args.G is not None or args.r is not None):
         raise UsageError("--torque-only computes no f and takes no --G or --r")
     # a value left out is the API's TMM-7M default (and the result names it in rig_defaults)
-    rig = {name: _quantity(getattr(args, name), f"--{name}") for name in ("I", "G", "r")
+    rig: dict[str, Any] = {name: _quantity(getattr(args, name), f"--{name}") for name in ("I", "G", "r")
            if getattr(args, name) is not None}
     if args.torque_only:
         rig.update(G=None, r=None)

@@ -5,7 +5,7 @@ import json
 import math
 
 from bearingheat.api.bearings import bearing
-from bearingheat.catalogue.bearings import NUMERIC, units_of_table
+from bearingheat.catalogue.bearings import NUMERIC, table_header
 from bearingheat.cli import UsageError
 from bearingheat.cli.options import add_json, add_quiet
 from bearingheat.errors import DesignationError
@@ -75,11 +75,9 @@ def run(args) -> int:
 
 def _record(data) -> dict:
     """The ordered output record: text fields, 'name [unit]' numbers (None for NaN), source."""
-    units = units_of_table()
     record: dict = {key: getattr(data, key) for key in _TEXT}
     for name in NUMERIC:
         value = getattr(data, name)
-        key = name if units[name] == "1" else f"{name} [{units[name]}]"
-        record[key] = None if math.isnan(value) else value
+        record[table_header(name)] = None if math.isnan(value) else value
     record["source"] = data.source
     return record

@@ -6,7 +6,8 @@
 - ``-q/--quiet``: print nothing but errors;
 - ``--force``: replace output files that exist (without it they are refused, exit 2);
 - ``--f2-chart CSV``: the digitised f2 chart of the commands that compute M2 (calc, plot, select);
-- ``--vm-chart CSV``: the digitised VM chart of the SKF model in an oil bath (calc, select).
+- ``--vm-chart CSV``: the digitised VM chart of the SKF model in an oil bath (calc, select);
+- a number with its unit (``--F 2kN``, ``--n 3000rpm``): :func:`option_quantity` reads it.
 
 A command adds these options with the functions below and never writes their help itself;
 ``tests/cli/test_conventions.py`` checks every command against the texts here.
@@ -14,8 +15,12 @@ A command adds these options with the functions below and never writes their hel
 from __future__ import annotations
 
 import argparse
+from collections.abc import Mapping
 
-__all__ = ["add_output", "add_out_dir", "add_json", "add_quiet", "add_force", "add_f2_chart", "add_vm_chart",
+from bearingheat.errors import UnitError, UsageError
+from bearingheat.units import Quantity, parse_quantity
+
+__all__ = ["option_quantity", "add_output", "add_out_dir", "add_json", "add_quiet", "add_force", "add_f2_chart", "add_vm_chart",
            "output_help", "out_dir_help", "JSON_HELP", "QUIET_HELP", "FORCE_FILE_HELP", "FORCE_DIR_HELP",
            "F2_CHART_HELP", "VM_CHART_HELP"]
 
@@ -86,3 +91,12 @@ def add_vm_chart(parser: argparse.ArgumentParser) -> None:
 def add_f2_chart(parser: argparse.ArgumentParser) -> None:
     """``--f2-chart CSV``: f2 of axially loaded cylindrical roller bearings read off the user's digitised chart."""
     parser.add_argument("--f2-chart", metavar="CSV", help=F2_CHART_HELP)
+
+
+def option_quantity(text: str, option: str, examples: Mapping[str, str]) -> Quantity:
+    """The number with its unit an option was given (``'2kN'`` for ``--F``); :class:`UsageError` naming the option
+    where it has no unit or pint cannot read it, suggesting ``examples[option]`` (a unit of the option's kind)."""
+    try:
+        return parse_quantity(text, name=option, example=examples.get(option))
+    except UnitError as exc:
+        raise UsageError(str(exc)) from exc

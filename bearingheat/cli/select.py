@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import argparse
+import functools
 import json
 
 import pandas as pd
@@ -13,15 +14,14 @@ from bearingheat.calc.models import DEFAULT_MODEL, MODELS
 from bearingheat.catalogue.bearings import FAMILIES, SHIELDS
 from bearingheat.catalogue.friction import LUBRICATION_F0_COLUMN
 from bearingheat.cli import UsageError
-from bearingheat.cli.options import add_f2_chart, add_force, add_json, add_output, add_quiet, add_vm_chart
-from bearingheat.errors import UnitError
+from bearingheat.cli.options import (add_f2_chart, add_force, add_json, add_output, add_quiet, add_vm_chart,
+                                     option_quantity)
 from bearingheat.io.console import print_summary, print_table
 from bearingheat.io.files import EXCEL_SUFFIXES, atomic_write, safe_output
 from bearingheat.io.json import json_safe
 from bearingheat.io.reports.selection import draw_candidates
 from bearingheat.io.reports.thermal import figure_format
 from bearingheat.io.tables import check_table_suffix, write_table
-from bearingheat.units import Quantity, parse_quantity
 
 DESCRIPTION = """\
 The bearings of the bearing table (Schaeffler HR 1, June 2006; 'bearingheat
@@ -109,12 +109,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_quiet(parser)
 
 
-def _quantity(text: str, option: str) -> Quantity:
-    """An option's number with its unit (:class:`UsageError` naming the option where it has none)."""
-    try:
-        return parse_quantity(text, name=option, example=_EXAMPLE_UNITS[option])
-    except UnitError as exc:
-        raise UsageError(str(exc)) from exc
+_quantity = functools.partial(option_quantity, examples=_EXAMPLE_UNITS)
 
 
 def candidates(args: argparse.Namespace) -> pd.DataFrame:
