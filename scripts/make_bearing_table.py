@@ -219,15 +219,21 @@ def _without_reference_speed(row: dict[str, str]) -> bool:
     return SEAL_KINDS.get(row["shield"]) == "contact" or (row["family"], row["series"]) in NO_REFERENCE_SPEED
 
 
+def _commented_rows(text: str, header: list[str], what: str) -> list[dict[str, str]]:
+    """The rows of a CSV text whose comment lines begin with '#'; :class:`SourceError` unless its header is
+    ``header``."""
+    reader = csv.DictReader(line for line in io.StringIO(text) if not line.startswith("#"))
+    if reader.fieldnames != header:
+        raise SourceError(f"{what}: unexpected header {reader.fieldnames}; expected {header}")
+    return list(reader)
+
+
 def sealed_rows(sealed_text: str, source_rows: list[dict[str, str]]) -> list[dict[str, str]]:
     """The rows of the sealed-rows file (comment lines '#' skipped) as rows of the source CSV, each checked
     against the file's own values and against its open counterpart among ``source_rows``."""
-    reader = csv.DictReader(line for line in io.StringIO(sealed_text) if not line.startswith("#"))
-    if reader.fieldnames != SEALED_HEADER:
-        raise SourceError(f"sealed rows: unexpected header {reader.fieldnames}; expected {SEALED_HEADER}")
     by_name = {row["designation"]: row for row in source_rows}
     out = []
-    for row in reader:
+    for row in _commented_rows(sealed_text, SEALED_HEADER, "sealed rows"):
         name = row["designation"]
         if row["shield"] != SEALS.get(row["family"]) or f"-{row['shield']}" not in name:
             raise SourceError(f"{name}: seal {row['shield']!r} is not the {row['family']!r} bearings' "
@@ -281,10 +287,7 @@ def more_series_rows(more_text: str, known_rows: list[dict[str, str]]) -> list[d
     """The rows of the more-series file (comment lines '#' skipped) as rows of the source CSV, each checked
     against the file's own values and, where it names one, against its open counterpart among ``known_rows``
     and the file's own rows."""
-    reader = csv.DictReader(line for line in io.StringIO(more_text) if not line.startswith("#"))
-    if reader.fieldnames != MORE_HEADER:
-        raise SourceError(f"more series rows: unexpected header {reader.fieldnames}; expected {MORE_HEADER}")
-    rows = list(reader)
+    rows = _commented_rows(more_text, MORE_HEADER, "more series rows")
     by_name = {row["designation"]: row for row in known_rows + rows}
     out = []
     for row in rows:
