@@ -11,6 +11,7 @@ select`` is these two functions.
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 import pandas as pd
@@ -18,10 +19,12 @@ import pandas as pd
 from bearingheat.calc.contract import column, range_problems
 from bearingheat.calc.models import DEFAULT_MODEL
 from bearingheat.calc.table import calc
+from bearingheat.calc.viscosity import viscosity_model_rows
 from bearingheat.catalogue.bearings import table_header
 from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.catalogue.vm_chart import VMChart
 from bearingheat.errors import SelectionError
+from bearingheat.kernels.viscosity import DEFAULT_VISCOSITY_INDEX
 from bearingheat.units import QuantityLike, celsius, magnitude
 
 __all__ = ["rank_bearings", "temperature_curves", "candidate_table", "RANKINGS", "MARGIN", "CATALOGUE_SPEED"]
@@ -33,7 +36,10 @@ MARGIN = "n_per/n"
 #: the column of the catalogue's thermal reference speed (the contract's name for it: calc's own n_thr stands beside)
 CATALOGUE_SPEED = column("n_thr_catalogue").name
 #: the model's bounds of the operating point (the Schaeffler catalogue, p. 64): name -> (lowest, whether it counts)
-_LOWEST = {"n": (0.0, True), "Fr": (0.0, True), "Fa": (0.0, True), "nu": (0.0, False), "oil_level": (0.0, True)}
+_LOWEST = {"n": (0.0, True), "Fr": (0.0, True), "Fa": (0.0, True), "nu": (0.0, False), "oil_level": (0.0, True),
+           "nu40": (0.0, False), "nu100": (0.0, False)}
+#: the ways to give the viscosity: the operating viscosity, or the oil's (calc takes ν at each bearing's T_op)
+VISCOSITY_SOURCES = ("nu", "iso_vg", "nu40 and nu100")
 
 
 def _point_value(value: QuantityLike, name: str) -> float:
@@ -47,6 +53,11 @@ def _point_value(value: QuantityLike, name: str) -> float:
     lowest, inclusive = _LOWEST.get(name, (-math.inf, True))
     if math.isnan(number) or number < lowest or (number == lowest and not inclusive):
         raise SelectionError(f"{name}: {typed} must be {'>=' if inclusive else '>'} 0")
+    return _in_valid_range(number, name, typed)
+
+
+def _in_valid_range(number: float, name: str, typed: str) -> float:
+    """``number`` if it lies in its column's valid range, else :class:`SelectionError` naming ``typed``."""
     errors, _ = range_problems(name, np.array([number]), lambda i: f"{name}: {typed}")
     if errors:
         raise SelectionError(errors[0][1])
@@ -59,9 +70,43 @@ def candidate_table(candidates: pd.DataFrame) -> pd.DataFrame:
     return candidates.rename(columns=headers).reset_index(drop=True)
 
 
-def rank_bearings(candidates: pd.DataFrame, *, lubrication: str, n: QuantityLike, nu: QuantityLike,
+def _oil_columns(iso_vg: float | None, VI: float | None, nu40: QuantityLike | None, nu100: QuantityLike | None,
+                 T_bearing: QuantityLike | None) -> dict[str, float]:
+    """The oil's columns of calc (iso_vg and VI, or nu40 and nu100 in mm²/s), checked by calc's own check of oil
+    data (:func:`~bearingheat.calc.viscosity.viscosity_model_rows`; :class:`SelectionError`); {} without an oil."""
+    oil = {name: _point_value(value, name) for name, value in (("nu40", nu40), ("nu100", nu100)) if value is not None}
+    oil.update({name: _plain_number(value, name) for name, value in (("iso_vg", iso_vg), ("VI", VI))
+                if value is not None})
+    if not oil:
+        return {}
+    _, _, problems = viscosity_model_rows(pd.DataFrame({name: [value] for name, value in oil.items()}))
+    if problems:
+        raise SelectionError(problems[0][2])
+    if T_bearing is None:
+        raise SelectionError(f"the oil's viscosity ({'iso_vg' if 'iso_vg' in oil else 'nu40 and nu100'}) is taken at "
+                             "each bearing's temperature: give T_bearing, and T_amb to take it at the operating "
+                             "temperature T_op")
+    if "iso_vg" in oil:
+        oil.setdefault("VI", DEFAULT_VISCOSITY_INDEX)  # (calc's default, written beside the results)
+    return oil
+
+
+def _plain_number(value: Any, name: str) -> float:
+    """A plain number argument (an ISO VG grade, a viscosity index) as a float, or :class:`SelectionError`."""
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        number = math.nan
+    if math.isnan(number):
+        raise SelectionError(f"{name}: {value!r} is not a number")
+    return _in_valid_range(number, name, f"{number:g}")
+
+
+def rank_bearings(candidates: pd.DataFrame, *, lubrication: str, n: QuantityLike, nu: QuantityLike | None = None,
                   Fr: QuantityLike | None = None, Fa: QuantityLike | None = None, T_amb: QuantityLike | None = None,
-                  T_bearing: QuantityLike | None = None, oil_level: QuantityLike | None = None,
+                  T_bearing: QuantityLike | None = None, iso_vg: float | None = None, VI: float | None = None,
+                  nu40: QuantityLike | None = None, nu100: QuantityLike | None = None,
+                  oil_level: QuantityLike | None = None,
                   model: str = DEFAULT_MODEL, rank_by: str = "NR", f2_chart: F2Chart | str | None = None,
                   vm_chart: VMChart | str | None = None) -> pd.DataFrame:
     """The candidates computed at one operating point and ranked.
@@ -72,14 +117,24 @@ def rank_bearings(candidates: pd.DataFrame, *, lubrication: str, n: QuantityLike
         Rows of the bearing table (:func:`~bearingheat.api.bearings.bearings_with_bore`).
     lubrication : str
         grease, oil_mist, oil_bath or circulating_oil.
-    n, nu : pint.Quantity
-        Shaft speed (revolutions per time) and operating viscosity.
+    n : pint.Quantity
+        Shaft speed (revolutions per time).
+    nu : pint.Quantity, optional
+        Operating viscosity (of the base oil of a grease); or give the oil
+        (``iso_vg``, or ``nu40`` and ``nu100``) instead.
     Fr, Fa : pint.Quantity, optional
         Loads (0 when not given).
     T_amb, T_bearing : pint.Quantity, optional
         Ambient and admissible bearing temperature: with both, the heat
         balance (n_thr, the permissible speed n_per, n_per/n and the
         operating temperature T_op).
+    iso_vg, VI : float, optional
+        The oil by its ISO 3448 grade and viscosity index (default 95),
+        instead of ``nu``: calc takes each bearing's viscosity at its own
+        operating temperature T_op (ASTM D341), or at T_bearing where there
+        is no T_op (no T_amb; contact seals). Needs ``T_bearing``.
+    nu40, nu100 : pint.Quantity, optional
+        The oil by its viscosities at 40 and 100 °C, as ``iso_vg``.
     oil_level : pint.Quantity, optional
         The SKF model in an oil bath: the oil level H.
     model : str
@@ -105,7 +160,9 @@ def rank_bearings(candidates: pd.DataFrame, *, lubrication: str, n: QuantityLike
     bearingheat.errors.SelectionError
         For an operating point outside the model's bounds or the valid
         ranges, an unknown ``rank_by``, or ranking by the heat balance
-        without its temperatures.
+        without its temperatures; for no viscosity or more than one
+        (``nu``, ``iso_vg``, ``nu40`` and ``nu100``), oil data that fix no
+        viscosity line, or an oil without ``T_bearing``.
     bearingheat.errors.UnitError
         For a plain number or a unit of the wrong dimension.
 
@@ -121,8 +178,18 @@ def rank_bearings(candidates: pd.DataFrame, *, lubrication: str, n: QuantityLike
     """
     if rank_by not in RANKINGS:
         raise SelectionError(f"rank_by: {rank_by!r} is none of {', '.join(RANKINGS)}")
+    typed = [name for name, value in (("nu", nu), ("iso_vg", iso_vg), ("nu40", nu40), ("nu100", nu100))
+             if value is not None]
+    sources = {source for source in VISCOSITY_SOURCES for name in typed if name in source.split(" and ")}
+    if len(sources) > 1:
+        raise SelectionError(f"the viscosity: give one of nu (the operating viscosity), iso_vg (the oil's grade, with "
+                             f"VI) or nu40 and nu100; got {' and '.join(typed)}")
     given = {"n": n, "nu": nu, "Fr": Fr, "Fa": Fa, "T_amb": T_amb, "T_bearing": T_bearing, "oil_level": oil_level}
     point = {name: _point_value(value, name) for name, value in given.items() if value is not None}
+    point.update(_oil_columns(iso_vg, VI, nu40, nu100, T_bearing))
+    if not sources:
+        raise SelectionError("the viscosity: give one of nu (the operating viscosity), iso_vg (the oil's grade, with "
+                             "VI) or nu40 and nu100; got none")
     point.setdefault("Fr", 0.0)
     point.setdefault("Fa", 0.0)
     if rank_by != "NR" and not ("T_amb" in point and "T_bearing" in point):
@@ -152,6 +219,16 @@ def _alike(ranked: pd.DataFrame) -> list[list[int]]:
         key = (round(T_op[position], 9), round(n_per[position], 6) if math.isfinite(n_per[position]) else math.inf)
         groups.setdefault(key, []).append(position)
     return list(groups.values())
+
+
+def _viscosity_words(point: dict[str, float]) -> str:
+    """The viscosity of an operating point in words: 'nu 20 mm²/s', 'ISO VG 68 (VI 95) at T_op',
+    'nu40 68, nu100 8.6 mm²/s at T_op'."""
+    if "nu" in point:
+        return f"nu {point['nu']:g} mm²/s"
+    if "iso_vg" in point:
+        return f"ISO VG {point['iso_vg']:g} (VI {point['VI']:g}) at T_op"
+    return f"nu40 {point['nu40']:g}, nu100 {point['nu100']:g} mm²/s at T_op"
 
 
 def temperature_curves(ranked: pd.DataFrame, *, count: int = 8, points: int = 60,
@@ -206,7 +283,7 @@ def temperature_curves(ranked: pd.DataFrame, *, count: int = 8, points: int = 60
     groups = _alike(ranked)[:count]
     leading = ranked.iloc[[group[0] for group in groups]]
     first = leading.iloc[0]
-    operating = ("n", "Fr", "Fa", "nu", "T_amb", "T_bearing", "oil_level")
+    operating = ("n", "Fr", "Fa", "nu", "iso_vg", "VI", "nu40", "nu100", "T_amb", "T_bearing", "oil_level")
     point = {name: float(first[column(name).header]) for name in operating if column(name).header in leading.columns}
     n = point["n"]
     top = max(1.5 * n, 1.1 * float(np.nanmax(leading["n_per [1/min]"].to_numpy(dtype=float), initial=0.0)))
@@ -224,7 +301,7 @@ def temperature_curves(ranked: pd.DataFrame, *, count: int = 8, points: int = 60
     temperatures[speeds[None, :] > limits[:, None]] = np.nan  # (above n_G the bearing does not run)
     names = [", ".join(ranked["designation"].iloc[group]) for group in groups]
     words = (f"{first['lubrication']}, Fr {point['Fr'] / 1e3:g} kN, Fa {point['Fa'] / 1e3:g} kN, "
-             f"nu {point['nu']:g} mm²/s, T_amb {point['T_amb']:g} °C; {first['model']} model")
+             f"{_viscosity_words(point)}, T_amb {point['T_amb']:g} °C; {first['model']} model")
     return {"speeds": speeds, "T_op": dict(zip(names, temperatures)), "n": n,
             "n_per": dict(zip(names, leading["n_per [1/min]"].to_numpy(dtype=float))),
             "T_op_at_n": dict(zip(names, leading["T_op [degC]"].to_numpy(dtype=float))),

@@ -4,6 +4,7 @@ from __future__ import annotations
 import argparse
 import functools
 import json
+from typing import Any
 
 import pandas as pd
 
@@ -32,25 +33,34 @@ width T of a tapered roller bearing), the families and shields wanted:
   bearingheat select --d 40mm --D-max 80mm
   bearingheat select --d 40mm --family "deep groove ball" --shield open --shield 2Z \\
       --n 6000rpm --Fr 2kN --nu 20mm^2/s --lubrication oil_bath --T-amb 20degC --T-bearing 70degC
+  bearingheat select --d 40mm --D-max 80mm --n 6000rpm --Fr 2kN --iso-vg 68 \\
+      --lubrication oil_bath --T-amb 20degC --T-bearing 70degC --rank-by T_op
 
 Without an operating point: the candidates' dimensions, load ratings and speeds,
-in catalogue order. With one (--n, --nu and --lubrication; --Fr, --Fa default to
-0): each candidate computed by 'bearingheat calc' from its designation, ranked by
-its power loss NR, the least first (the bearings that could not be computed last,
-with the reason: a cylindrical roller bearing without ribs under axial load, an
-angular contact bearing whose Y0 is not known). With --T-amb and --T-bearing also
-n_per, the speed at which the bearing reaches T_bearing, n_per/n (above 1: it
-runs below that temperature) and T_op, its operating temperature at n; --rank-by
-T_op puts the coolest first, --rank-by n_per the fastest (a larger bearing makes
-more heat but also gives more of it off). A bearing with contact seals (-2RSR,
--2RS) is computed without its seal friction, which the catalogue model lacks (a
-warning says so), and without n_thr, n_per and T_op.
+in catalogue order. With one (--n, the viscosity and --lubrication; --Fr, --Fa
+default to 0): each candidate computed by 'bearingheat calc' from its
+designation, ranked by its power loss NR, the least first (the bearings that
+could not be computed last, with the reason: a cylindrical roller bearing
+without ribs under axial load, an angular contact bearing whose Y0 is not
+known). With --T-amb and --T-bearing also n_per, the speed at which the bearing
+reaches T_bearing, n_per/n (above 1: it runs below that temperature) and T_op,
+its operating temperature at n; --rank-by T_op puts the coolest first, --rank-by
+n_per the fastest (a larger bearing makes more heat but also gives more of it
+off). A bearing with contact seals (-2RSR, -2RS) is computed without its seal
+friction, which the catalogue model lacks (a warning says so), and without
+n_thr, n_per and T_op.
+
+The viscosity is the operating viscosity --nu, the same for every candidate, or
+the oil: its ISO VG grade --iso-vg (with --VI, default 95) or --nu40 and --nu100.
+An oil needs --T-bearing: each candidate's viscosity is then taken at its own
+operating temperature T_op (with --T-amb; a hotter bearing runs in thinner oil),
+else at T_bearing (column nu_used; nu_at says where it was taken).
 
 Columns: designation, family, shield, d, D, B, T [mm], C, C0 [N], n_G (limiting
 speed), n_thr_catalogue (the catalogue's thermal reference speed) [1/min]; with
-an operating point also the point (lubrication, model, n, Fr, Fa, nu ...), the
-results of calc (f0, f1, P0, P1, M0, M1, M2, MR, NR, n_thr, n_per, T_op ...),
-n_per/n, status and message.
+an operating point also the point (lubrication, model, n, Fr, Fa, nu or the
+oil ...), the results of calc (f0, f1, P0, P1, M0, M1, M2, MR, NR, nu_used,
+n_thr, n_per, T_op ...), n_per/n, status and message.
 
 --plot FIGURE draws T_op against speed of the leading candidates (bearings that
 compute alike, 6008 and 6008-2Z, share one curve), each up to its n_G, with
@@ -67,10 +77,17 @@ bore, an unknown family, a number without unit).
 
 #: a unit of each option's kind, for the message of a number typed without one
 _EXAMPLE_UNITS = {"--d": "mm", "--D-max": "mm", "--B-max": "mm", "--n": "rpm", "--Fr": "kN", "--Fa": "kN",
-                  "--nu": "mm^2/s", "--T-amb": "degC", "--T-bearing": "degC", "--oil-level": "mm"}
-#: operating-point argument of rank_bearings -> its option
-_OPERATING = {"n": "--n", "Fr": "--Fr", "Fa": "--Fa", "nu": "--nu", "T_amb": "--T-amb", "T_bearing": "--T-bearing",
-              "oil_level": "--oil-level"}
+                  "--nu": "mm^2/s", "--nu40": "mm^2/s", "--nu100": "mm^2/s", "--T-amb": "degC",
+                  "--T-bearing": "degC", "--oil-level": "mm"}
+#: operating-point argument of rank_bearings -> its option (a Quantity)
+_OPERATING = {"n": "--n", "Fr": "--Fr", "Fa": "--Fa", "nu": "--nu", "nu40": "--nu40", "nu100": "--nu100",
+              "T_amb": "--T-amb", "T_bearing": "--T-bearing", "oil_level": "--oil-level"}
+#: the oil's plain numbers: argument of rank_bearings -> its option
+_OIL_NUMBERS = {"iso_vg": "--iso-vg", "VI": "--VI"}
+#: what an operating point needs (in words) -> the options that give it
+_NEEDED = {"--n": ("--n",),
+           "--nu (or the oil: --iso-vg, or --nu40 and --nu100)": ("--nu", "--iso-vg", "--nu40", "--nu100"),
+           "--lubrication": ("--lubrication",)}
 #: candidates drawn by --plot (the leading ones of the ranking), and the speeds of their curves
 PLOTTED, PLOT_SPEEDS = 8, 60
 #: the catalogue columns shown beside the results
@@ -89,6 +106,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--Fr", help="radial load, e.g. 2kN (default 0)")
     parser.add_argument("--Fa", help="axial load, e.g. 0.5kN (default 0)")
     parser.add_argument("--nu", help="operating viscosity (base oil of a grease), e.g. 20mm^2/s")
+    parser.add_argument("--iso-vg", type=float, help="instead of --nu: the oil's ISO VG grade, e.g. 68 (needs "
+                                                     "--T-bearing; the viscosity at each bearing's T_op)")
+    parser.add_argument("--VI", type=float, help="viscosity index of the --iso-vg oil (default 95)")
+    parser.add_argument("--nu40", help="instead of --nu: the oil's viscosity at 40 degC, e.g. 68mm^2/s (with --nu100)")
+    parser.add_argument("--nu100", help="the oil's viscosity at 100 degC, e.g. 8.6mm^2/s (with --nu40)")
     parser.add_argument("--lubrication", choices=tuple(LUBRICATION_F0_COLUMN), help="how the bearing is lubricated")
     parser.add_argument("--T-amb", help="ambient temperature for the heat balance, e.g. 20degC")
     parser.add_argument("--T-bearing", help="admissible bearing temperature for n_per, e.g. 70degC")
@@ -112,6 +134,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 _quantity = functools.partial(option_quantity, examples=_EXAMPLE_UNITS)
 
 
+def _attribute(option: str) -> str:
+    """argparse's attribute of an option: '--T-amb' -> 'T_amb'."""
+    return option[2:].replace("-", "_")
+
+
 def candidates(args: argparse.Namespace) -> pd.DataFrame:
     """The bearings of the table the options leave (rows of the bearing table), in catalogue order."""
     limits = {name: None if text is None else _quantity(text, option)
@@ -122,8 +149,8 @@ def candidates(args: argparse.Namespace) -> pd.DataFrame:
 def _shown(table: pd.DataFrame) -> list[str]:
     """The columns of the printed table: the candidates' size and ratings, the main results, status."""
     wanted = [c for c in table.columns if c.split(" [")[0] in _CATALOGUE_SHOWN and table[c].notna().any()]
-    results: tuple[str, ...] = ("MR [N*mm]", "NR [W]", "n_thr [1/min]", "n_per [1/min]", MARGIN, "T_op [degC]",
-                                "status")
+    results: tuple[str, ...] = ("MR [N*mm]", "NR [W]", "nu_used [mm^2/s]", "n_thr [1/min]", "n_per [1/min]", MARGIN,
+                                "T_op [degC]", "status")
     if "status" not in table.columns:  # the candidates alone: the catalogue's speed
         results = (f"{CATALOGUE_SPEED} [1/min]",)
     return wanted + [c for c in results if c in table.columns]
@@ -138,24 +165,25 @@ def run(args: argparse.Namespace) -> int:
         fmt = figure_format(args.plot, example="candidates.png")
         figure = safe_output(args.plot, force=args.force, inputs=(target,) if target is not None else ())
     found = candidates(args)
-    point = {name: _quantity(text, option) for name, option in _OPERATING.items()
-             if (text := getattr(args, option[2:].replace("-", "_"))) is not None}
-    given = [_OPERATING[name] for name in point] + (["--lubrication"] if args.lubrication else [])
-    missing = [option for option in ("--n", "--nu", "--lubrication") if option not in given]
+    point: dict[str, Any] = {name: _quantity(text, option) for name, option in _OPERATING.items()
+                             if (text := getattr(args, _attribute(option))) is not None}
+    point.update({name: value for name, option in _OIL_NUMBERS.items()
+                  if (value := getattr(args, _attribute(option))) is not None})
+    given = ([option for option in (*_OPERATING.values(), *_OIL_NUMBERS.values())
+              if getattr(args, _attribute(option)) is not None] + (["--lubrication"] if args.lubrication else []))
+    missing = [words for words, options in _NEEDED.items() if not set(options) & set(given)]
     if given and missing:
         raise UsageError(f"the operating point ({', '.join(given)}) needs {' and '.join(missing)} too")
     heat_balance = "T_amb" in point and "T_bearing" in point
     if args.rank_by != "NR" and not heat_balance:
         raise UsageError(f"--rank-by {args.rank_by} needs the heat balance: give --T-amb and --T-bearing")
     if figure is not None and not (given and heat_balance):
-        raise UsageError("--plot draws T_op against speed: give the operating point (--n, --nu, --lubrication) and "
-                         "--T-amb and --T-bearing")
+        raise UsageError("--plot draws T_op against speed: give the operating point (--n, the viscosity, "
+                         "--lubrication) and --T-amb and --T-bearing")
     table = candidate_table(found)
     if given:
-        table = rank_bearings(found, lubrication=args.lubrication, n=point["n"], nu=point["nu"], Fr=point.get("Fr"),
-                              Fa=point.get("Fa"), T_amb=point.get("T_amb"), T_bearing=point.get("T_bearing"),
-                              oil_level=point.get("oil_level"), model=args.model, rank_by=args.rank_by,
-                              f2_chart=args.f2_chart, vm_chart=args.vm_chart)
+        table = rank_bearings(found, lubrication=args.lubrication, model=args.model, rank_by=args.rank_by,
+                              f2_chart=args.f2_chart, vm_chart=args.vm_chart, **point)
     if figure is not None:
         curves = temperature_curves(table, count=PLOTTED, points=PLOT_SPEEDS, f2_chart=args.f2_chart,
                                     vm_chart=args.vm_chart)

@@ -108,7 +108,8 @@ def test_no_candidate_computed_is_exit_code_1(capsys):
      "d = 40 mm: none of the 48 bearings of this bore in the bearing table (Schaeffler HR 1, 2006) has D <= 50 mm "
      "(they have D 52-90 mm, width 7-35.25 mm; families: deep groove ball, angular contact ball, cylindrical roller, "
      "tapered roller; shields: open, 2RSR, 2Z, 2RS)"),
-    (["--d", "40mm", "--n", "6000rpm"], "the operating point (--n) needs --nu and --lubrication too"),
+    (["--d", "40mm", "--n", "6000rpm"], "the operating point (--n) needs --nu (or the oil: --iso-vg, or --nu40 and "
+                                        "--nu100) and --lubrication too"),
     (["--d", "40mm", *POINT[:2], "--Fr=-2kN", *POINT[4:]], "Fr: -2 kN must be >= 0"),
     (["--d", "40mm", *POINT[:4], "--nu", "0cSt", *POINT[6:]], "nu: 0 cSt must be > 0"),
     (["--d", "40mm", *POINT, "--T-amb", "250degC", "--T-bearing", "70degC"],
@@ -223,8 +224,8 @@ def test_the_temperature_curves_of_the_leading_candidates(tmp_path):
 
 
 @pytest.mark.parametrize(("extra", "message"), [
-    (["--plot", "c.png"], "--plot draws T_op against speed: give the operating point (--n, --nu, --lubrication) and "
-                          "--T-amb and --T-bearing"),
+    (["--plot", "c.png"], "--plot draws T_op against speed: give the operating point (--n, the viscosity, "
+                          "--lubrication) and --T-amb and --T-bearing"),
     (["--plot", "c.txt", *HEAT], "c.txt: a figure is written as .png, .svg, .svgz, .pdf, .eps, .ps, .jpg, .jpeg, .tif, "
                                  ".tiff, .webp; name it e.g. candidates.png"),
 ])
@@ -258,3 +259,112 @@ def test_rank_bearings_refuses_what_it_cannot_use(options, message):
     with pytest.raises(SelectionError) as exc:
         bh.rank_bearings(found, **arguments)
     assert str(exc.value) == message
+
+
+def _walther(nu40: float, nu100: float, theta: float) -> float:
+    """ν at ``theta`` [°C] on the ASTM D341 line through ν40 and ν100, by hand:
+    log10 log10(ν + 0.7) = A - B log10(T [K])."""
+    def z(nu):
+        return math.log10(math.log10(nu + 0.7))
+    B = (z(nu40) - z(nu100)) / (math.log10(373.15) - math.log10(313.15))
+    A = z(nu40) + B * math.log10(313.15)
+    return 10 ** 10 ** (A - B * math.log10(theta + 273.15)) - 0.7
+
+
+OIL_POINT = ["--n", "6000rpm", "--Fr", "2kN", "--lubrication", "oil_bath"]
+
+
+def test_an_oil_by_nu40_and_nu100_is_taken_at_t_bearing_without_t_amb(capsys):
+    assert main(["select", "--d", "40mm", "--D-max", "80mm", "--family", "deep groove ball", "--shield", "open",
+                 *OIL_POINT, "--nu40", "68cSt", "--nu100", "8.6mm^2/s", "--T-bearing", "70degC", "--json"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    nu = _walther(68.0, 8.6, 70.0)
+    assert round(nu, 2) == 19.97  # an ISO VG 68 oil at 70 degC
+    by_hand = {"61908": _torque(1.7, 0.0007, 10000, 40, 62, 2000, nu, 6000),
+               "16008": _torque(1.7, 0.0007, 10200, 40, 68, 2000, nu, 6000),
+               "6008": _torque(1.7, 0.0007, 11600, 40, 68, 2000, nu, 6000),
+               "6208": _torque(2.0, 0.0009, 18000, 40, 80, 2000, nu, 6000)}
+    assert [r["designation"] for r in rows] == sorted(by_hand, key=by_hand.get)
+    for row in rows:
+        assert row["nu_used [mm^2/s]"] == pytest.approx(nu, rel=1e-12) and row["nu_at"] == "T_bearing"
+        assert row["MR [N*mm]"] == pytest.approx(by_hand[row["designation"]], rel=1e-12)
+        assert (row["nu40 [mm^2/s]"], row["nu100 [mm^2/s]"]) == pytest.approx((68.0, 8.6), rel=1e-15)
+        assert "nu [mm^2/s]" not in row
+
+
+def test_an_iso_vg_oil_is_taken_at_each_bearings_own_operating_temperature(capsys):
+    """With T_amb the oil thins where the bearing runs hot: each candidate's viscosity is the oil's at its own
+    T_op (ASTM D341), and the results are those of calc with the same oil, designation by designation."""
+    assert main(["select", "--d", "40mm", "--D-max", "80mm", "--family", "deep groove ball", "--shield", "open",
+                 *OIL_POINT, "--iso-vg", "68", "--VI", "95", *HEAT, "--rank-by", "T_op", "--json"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    assert [row["designation"] for row in rows] == ["6008", "6208", "61908", "16008"]
+    for row in rows:
+        assert row["nu_at"] == "T_op" and (row["iso_vg"], row["VI"]) == (68.0, 95.0)
+        at_t_op = bh.oil_viscosity(u.Quantity(row["T_op [degC]"], "degC"), iso_vg=68).to("mm^2/s").magnitude
+        assert row["nu_used [mm^2/s]"] == pytest.approx(at_t_op, rel=1e-9)
+    # the hottest runs in the thinnest oil
+    assert [round(row["nu_used [mm^2/s]"], 2) for row in rows] == [26.16, 23.89, 22.38, 15.75]
+    supports = pd.DataFrame({"designation": [row["designation"] for row in rows], "lubrication": "oil_bath",
+                             "n [rpm]": 6000.0, "Fr [kN]": 2.0, "iso_vg": 68.0, "T_amb [degC]": 20.0,
+                             "T_bearing [degC]": 70.0})
+    alone = bh.calc(supports)
+    for name in ("MR [N*mm]", "NR [W]", "T_op [degC]", "n_per [1/min]"):
+        np.testing.assert_allclose([row[name] for row in rows], alone[name], rtol=1e-12)
+
+
+def test_the_temperature_curves_in_an_oil_follow_its_viscosity():
+    found = bh.bearings_with_bore(40 * u.mm, D_max=68 * u.mm, family="deep groove ball", shield="open")
+    ranked = bh.rank_bearings(found, lubrication="oil_bath", n=6000 * u.rpm, Fr=2 * u.kN, iso_vg=68,
+                              T_amb=u.Quantity(20, "degC"), T_bearing=u.Quantity(70, "degC"), rank_by="T_op")
+    curves = bh.temperature_curves(ranked, count=2, points=12)
+    assert curves["title"] == "oil_bath, Fr 2 kN, Fa 0 kN, ISO VG 68 (VI 95) at T_op, T_amb 20 °C; schaeffler model"
+    grid = pd.DataFrame({"designation": "6008", "lubrication": "oil_bath", "n [1/min]": curves["speeds"],
+                         "Fr [N]": 2000.0, "Fa [N]": 0.0, "iso_vg": 68.0, "VI": 95.0, "T_amb [degC]": 20.0,
+                         "T_bearing [degC]": 70.0})
+    np.testing.assert_allclose(curves["T_op"]["6008"], bh.calc(grid)["T_op [degC]"], rtol=1e-12)
+    assert curves["n_per"]["6008"] == pytest.approx(ranked["n_per [1/min]"].iloc[0], rel=1e-12)
+
+
+@pytest.mark.parametrize(("options", "message"), [
+    ({}, "the viscosity: give one of nu (the operating viscosity), iso_vg (the oil's grade, with VI) or nu40 and "
+         "nu100; got none"),
+    ({"nu": 20 * u.cSt, "nu40": 68 * u.cSt, "nu100": 8.6 * u.cSt},
+     "the viscosity: give one of nu (the operating viscosity), iso_vg (the oil's grade, with VI) or nu40 and "
+     "nu100; got nu and nu40 and nu100"),
+    ({"nu": 20 * u.cSt, "VI": 95}, "VI: given without iso_vg; the viscosity index only serves an ISO VG grade"),
+    ({"iso_vg": 68}, "the oil's viscosity (iso_vg) is taken at each bearing's temperature: give T_bearing, and "
+                     "T_amb to take it at the operating temperature T_op"),
+    ({"nu100": 8.6 * u.cSt, "T_bearing": u.Quantity(70, "degC")},
+     "nu40 [mm^2/s]: missing; nu100 alone does not fix the viscosity-temperature line (ASTM D341)"),
+    ({"iso_vg": 67, "T_bearing": u.Quantity(70, "degC")},
+     "iso_vg: 67 is not an ISO VG grade; expected one of 2, 3, 5, 7, 10, 15, 22, 32, 46, 68, 100, 150, 220, 320, "
+     "460, 680, 1000, 1500, 2200, 3200"),
+    ({"iso_vg": "VG68", "T_bearing": u.Quantity(70, "degC")}, "iso_vg: 'VG68' is not a number"),
+    ({"iso_vg": 68, "VI": 500, "T_bearing": u.Quantity(70, "degC")}, "VI: 500 is outside the valid range -100 to 400"),
+    ({"iso_vg": 2, "VI": -100, "T_bearing": u.Quantity(70, "degC")},
+     "VI: -100 cannot be reached by ISO VG 2 with nu100 >= 2 mm^2/s (ASTM D2270)"),
+    ({"nu40": 8 * u.cSt, "nu100": 68 * u.cSt, "T_bearing": u.Quantity(70, "degC")},
+     "nu40 [mm^2/s]: 8 must be larger than nu100 = 68"),
+    ({"nu40": 3 * u.cSt, "nu100": 1.5 * u.cSt, "T_bearing": u.Quantity(70, "degC")},
+     "nu100 [mm^2/s]: 1.5 must be >= 2 (ASTM D341)"),
+    ({"nu40": 0 * u.cSt, "nu100": 8.6 * u.cSt, "T_bearing": u.Quantity(70, "degC")}, "nu40: 0 cSt must be > 0"),
+])
+def test_rank_bearings_refuses_a_viscosity_it_cannot_use(options, message):
+    found = bh.bearings_with_bore(40 * u.mm, D_max=62 * u.mm)
+    with pytest.raises(SelectionError) as exc:
+        bh.rank_bearings(found, lubrication="oil_bath", n=6000 * u.rpm, **options)
+    assert str(exc.value) == message
+
+
+@pytest.mark.parametrize(("arguments", "message"), [
+    (["--n", "6000rpm", "--lubrication", "oil_bath", "--T-bearing", "70degC"],
+     "the operating point (--n, --T-bearing, --lubrication) needs --nu (or the oil: --iso-vg, or --nu40 and "
+     "--nu100) too"),
+    (["--iso-vg", "68"], "the operating point (--iso-vg) needs --n and --lubrication too"),
+    ([*OIL_POINT, "--nu40", "68", "--nu100", "8.6cSt", "--T-bearing", "70degC"],
+     "--nu40: '68' has no unit; write it with one, e.g. 68mm^2/s"),
+])
+def test_the_oil_options_are_checked(capsys, arguments, message):
+    assert main(["select", "--d", "40mm", *arguments]) == 2
+    assert capsys.readouterr().err == f"bearingheat select: error: {message}\n"
