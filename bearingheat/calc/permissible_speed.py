@@ -66,7 +66,8 @@ register_choices("n_per_method", lambda: tuple(SPEED_FACTOR_METHODS))
 
 def permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue, T_bearing, T_amb, carried, Q_E, power,
                            usable, methods, problems):
-    """n_per of the rows ``usable`` with a T_bearing above T_amb; ``carried`` is the heat carried away at
+    """n_per of the rows ``usable`` with a T_bearing above T_amb (and an n_thr, but rows of a model evaluated at
+    each speed, whose own root needs none); ``carried`` is the heat carried away at
     T_bearing, Q_S + Q_L [W], ``power`` the rows' :class:`~bearingheat.calc.models.FrictionPower`."""
     n_rows = len(frame)
     Q = carried - Q_E  # the heat the bearing may make itself
@@ -79,7 +80,7 @@ def permissible_speed_rows(frame, results, details, n_thr, n_thr_catalogue, T_be
                                           "degC for heat to leave through the seat"))
     rows &= T_bearing > T_amb
     n_used = np.where(np.isnan(n_thr_catalogue), n_thr, n_thr_catalogue)
-    rows &= n_used > 0
+    rows &= (n_used > 0) | ~power.closed  # (a model evaluated at each speed finds n_per without n_thr)
     for i in np.flatnonzero(rows & ~(Q > 0)):
         problems.append((int(i), "warning", f"n_per: the external heat Q_E = {Q_E[i]:g} W is not less than the heat "
                                             f"carried away {carried[i]:.4g} W at T_bearing; no speed is "

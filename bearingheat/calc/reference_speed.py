@@ -16,18 +16,23 @@ import pandas as pd
 from bearingheat.calc.supports import (coded_categorical, distinct_keys, fill_blank, first_rows, group_codes,
                                        number_column, printed_size, text_codes, text_column)
 from bearingheat.catalogue.friction import ResolvedBearing, resolve
-from bearingheat.catalogue.thermal import THERMAL_KIND, THERMAL_KINDS, method_refusal, reference_conditions
+from bearingheat.catalogue.thermal import (CONTACT_SEAL_REASON, SEAL_FRICTION_REASON, THERMAL_KIND, THERMAL_KINDS,
+                                           method_refusal, reference_conditions)
 from bearingheat.errors import DesignationError
 from bearingheat.kernels import friction
 from bearingheat.kernels.thermal import (HEAT_FLOW_AREA, balance_root, default_heat_transfer_coefficient,
                                          heat_flow_area, reference_heat_flux_density, torque_coefficients)
 
-__all__ = ["PAIR_REASON", "REFERENCE_KEYS", "thermal_reference_speed_details", "thermal_reference_speed_rows"]
+__all__ = ["PAIR_REASON", "SEAL_FRICTION", "REFERENCE_KEYS", "thermal_reference_speed_details",
+           "thermal_reference_speed_rows"]
 
 PAIR_REASON = ("n_thr: the heat balance of a bearing pair is not in the sources (ISO 15312 and the Schaeffler "
                "catalogue define A_r, the reference conditions and n_thr for single bearings); MR and NR are the "
                "pair's; give the two bearings as single rows for their heat balance")
-#: the columns n_θr depends on: rows equal in these have the same details
+#: the hidden column of the rows with contact seals whose friction results hold the seal friction (the SKF model's
+#: M_seal > 0): their heat balance applies, their n_θr does not (set by :mod:`bearingheat.calc.thermal`)
+SEAL_FRICTION = "_seal_friction"
+#: the columns n_θr depends on: rows equal in these (and in SEAL_FRICTION) have the same details
 REFERENCE_KEYS = ("designation", "type", "series", "arrangement", "d", "D", "B", "T", "d1", "D1", "C0")
 
 
@@ -47,9 +52,9 @@ def _resolved_keys(frame: pd.DataFrame) -> tuple[np.ndarray, list[tuple[Resolved
 def thermal_reference_speed_details(frame: pd.DataFrame, *, f0_scale=1.0, f1_scale=1.0,
                                     names: Sequence[str] | None = None) -> pd.DataFrame:
     """Thermal reference speed of every row with the quantities behind it (see :func:`_details`); each distinct
-    combination of the :data:`REFERENCE_KEYS` columns is computed once. ``f0_scale`` and ``f1_scale`` (per row
-    or one number) scale the table coefficients, for the uncertainty bands. ``names``: the columns wanted
-    (all where None)."""
+    combination of the :data:`REFERENCE_KEYS` columns (and :data:`SEAL_FRICTION`) is computed once. ``f0_scale``
+    and ``f1_scale`` (per row or one number) scale the table coefficients, for the uncertainty bands. ``names``:
+    the columns wanted (all where None)."""
     keys = [c for c in REFERENCE_KEYS if c in frame.columns]
 
     def chosen(details: pd.DataFrame) -> pd.DataFrame:
@@ -59,7 +64,9 @@ def thermal_reference_speed_details(frame: pd.DataFrame, *, f0_scale=1.0, f1_sca
         return chosen(_details(frame, f0_scale, f1_scale))
     if not keys or len(frame) < 2:
         return chosen(_details(frame))
-    codes = group_codes(frame, keys)
+    codes = group_codes(frame, keys)  # (the bearing groups' own codes: SEAL_FRICTION is no bearing input)
+    if SEAL_FRICTION in frame.columns:
+        codes = pd.factorize(codes * 2 + frame[SEAL_FRICTION].to_numpy(dtype=np.int64))[0]
     first = first_rows(codes)
     if len(first) == len(frame):
         return chosen(_details(frame))
@@ -117,7 +124,13 @@ def _details(frame: pd.DataFrame, f0_scale=1.0, f1_scale=1.0) -> pd.DataFrame:
         open_rows[rows] = False
 
     refusals = np.array([_refusal(res) for res, _ in resolved], dtype=object)[codes]
-    refuse(refusals.astype(bool), refusals)
+    # a sealed bearing with its seal friction in the results: the geometry of its heat balance is worked out, and
+    # only n_thr refused (after the geometry checks, which say what its balance lacks)
+    sealed = np.array([res is not None and method_refusal(res.entry.bearing_type, res.seal) == CONTACT_SEAL_REASON
+                       for res, _ in resolved], dtype=bool)[codes]
+    with_seal_friction = sealed & (frame[SEAL_FRICTION].to_numpy(dtype=bool) if SEAL_FRICTION in frame.columns
+                                   else False)
+    refuse(refusals.astype(bool) & ~with_seal_friction, refusals)
     refuse(np.asarray(text_column(frame, "arrangement"), dtype=object) == "paired", PAIR_REASON)
     kinds_of_key = np.array([THERMAL_KIND.get(e.bearing_type) or "" if e is not None else "" for e in entries],
                             dtype=object)
@@ -149,6 +162,7 @@ def _details(frame: pd.DataFrame, f0_scale=1.0, f1_scale=1.0) -> pd.DataFrame:
                 refuse((kind == k) & np.isnan(values), f"{column} [mm]: missing; {why}")
                 refuse((kind == k) & ~(values > 0), lambda i, c=column, v=values: f"{c} [mm]: {v[i]:g} must be > 0")
     geometry_ok = open_rows.copy()
+    refuse(with_seal_friction, f"n_thr: {SEAL_FRICTION_REASON}")
     f0_oil = np.array([e.f0_oil if e is not None else np.nan for e in entries], dtype=float)[codes]
     refuse(np.isnan(f0_oil), lambda i: f"n_thr: {labels[codes[i]]} has no oil-bath f0 in the Schaeffler catalogue "
                                        "(the table prints a dash)")

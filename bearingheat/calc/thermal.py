@@ -48,7 +48,8 @@ from bearingheat.calc.operating_temperature import (BELOW_AMBIENT_SEARCH, OPERAT
                                                     lowest_operating_temperature, operating_point)
 from bearingheat.calc.permissible_speed import (DEFAULT_SPEED_FACTOR_METHOD, SPEED_FACTOR_METHODS, SpeedFactorMethod,
                                                 permissible_speed_rows)
-from bearingheat.calc.reference_speed import thermal_reference_speed_details, thermal_reference_speed_rows
+from bearingheat.calc.reference_speed import (SEAL_FRICTION, thermal_reference_speed_details,
+                                              thermal_reference_speed_rows)
 from bearingheat.calc.messages import with_texts
 from bearingheat.calc.supports import coded_categorical, nonblank, number_column, text_codes, with_columns
 from bearingheat.calc.heat_flows import (HEAT_BALANCE_DETAILS, OIL_DATA, heat_flow_setup, viscosity_of_rows,
@@ -180,6 +181,22 @@ def _nu_sources(codes: np.ndarray) -> pd.Categorical:
                                      validate=False)
 
 
+def with_seal_friction(frame: pd.DataFrame, results: pd.DataFrame) -> pd.DataFrame:
+    """``frame`` with the hidden column :data:`~bearingheat.calc.reference_speed.SEAL_FRICTION` where the friction
+    results of some row hold a seal friction (``M_seal`` > 0, the SKF model with a contact seal): the heat balance
+    then applies to its bearing with contact seals (:data:`~bearingheat.catalogue.thermal.SEAL_FRICTION_REASON`)."""
+    if "M_seal" not in results.columns:
+        return frame
+    with np.errstate(invalid="ignore"):
+        sealed = results["M_seal"].to_numpy(dtype=float) > 0
+    return with_columns(frame, {SEAL_FRICTION: sealed}) if sealed.any() else frame
+
+
+def _seal_friction_rows(frame: pd.DataFrame) -> np.ndarray:
+    """The rows :func:`with_seal_friction` marked."""
+    return frame[SEAL_FRICTION].to_numpy(dtype=bool) if SEAL_FRICTION in frame.columns else np.zeros(len(frame), bool)
+
+
 def settle_viscosity(frame: pd.DataFrame, results: pd.DataFrame, *, t_limit: float = OPERATING_TEMPERATURE_LIMIT,
                      f2_chart=None, labels=None, model: str = DEFAULT_MODEL):
     """The viscosity at T_op of the rows :func:`fill_viscosity` left pending, from the one friction pass.
@@ -200,17 +217,19 @@ def settle_viscosity(frame: pd.DataFrame, results: pd.DataFrame, *, t_limit: flo
     pending = frame["_nu_pending"].to_numpy(dtype=bool)
     fallback = frame["_nu_fallback"].to_numpy(dtype=bool)
     A, B = number_column(frame, "_walther_A"), number_column(frame, "_walther_B")
-    frame = frame.drop(columns=["_nu_pending", "_nu_fallback"])
+    frame = with_seal_friction(frame.drop(columns=["_nu_pending", "_nu_fallback"]), results)
     if f2_chart is not None:
         results = _stand_in_f2(frame, results, pending, labels, model, f2_chart)
     failed_at_provisional = failed_rows(results)
     details, _, T_amb, Q_E, Q_S, Q_L = heat_flow_setup(frame)
     point = operating_point(frame, results, viscosity_of_rows(frame, A, B), ~np.isnan(A), Q_S, Q_L, Q_E, T_amb,
                             t_limit, FrictionPower(frame, results, f2_chart))
-    # a row in error is left to its own message; a bearing without a heat balance says why
+    # a row in error is left to its own message; a bearing without a heat balance says why (a sealed bearing with
+    # its seal friction has a heat balance without n_thr)
     reasons = details["reason"].array  # (a categorical where spread from the distinct bearings: no text per row)
     asked = pending & ~(failed_at_provisional | plain_bushing_rows(results))
-    refused = asked & nonblank(reasons, len(asked))
+    balanced_without_n_thr = _seal_friction_rows(frame) & ~np.isnan(details["A_r"].to_numpy(dtype=float))
+    refused = asked & nonblank(reasons, len(asked)) & ~balanced_without_n_thr
     T_op = np.where(asked & ~refused & (point.status == 0), point.T, np.nan)
     why_unsolved = {int(i): reasons[i] for i in np.flatnonzero(refused)}
     why_unsolved.update({int(i): point.why(int(i)) for i in np.flatnonzero(asked & ~refused & (point.status != 0))})
@@ -302,6 +321,7 @@ def heat_balance_rows(frame: pd.DataFrame, results: pd.DataFrame, *, method: str
     rows follows the speed and viscosity of the roots). problems are (row
     position, 'warning' | 'error', message).
     """
+    frame = with_seal_friction(frame, results)
     columns, problems = _heat_balance_columns(frame, results, method=method, t_limit=t_limit, f2_chart=f2_chart,
                                               reference_speed=reference_speed)
     _viscosity_at_bearing(frame, results, columns, problems)

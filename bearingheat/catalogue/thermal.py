@@ -24,6 +24,7 @@ __all__ = [
     "REFERENCE_KIND",
     "REFUSED_TYPES",
     "CONTACT_SEAL_REASON",
+    "SEAL_FRICTION_REASON",
     "ReferenceConditions",
     "reference_conditions",
     "method_refusal",
@@ -61,6 +62,12 @@ REFUSED_TYPES = {
 CONTACT_SEAL_REASON = ("the thermal method (ISO 15312, DIN 732) does not apply to bearings with contact seals: its "
                        "reference conditions have no seal friction, and Schaeffler HR 1 prints no n_thr for them; "
                        "n_per and T_op, whose heat balance would leave the seal friction out, are not computed either")
+#: why a bearing with contact seals whose friction model has a seal term (the SKF model's M_seal) gets no n_thr, and
+#: what its n_per and T_op are: the heat balance of DIN 732 with the seal friction in N_R, bearingheat's extension
+SEAL_FRICTION_REASON = ("ISO 15312 defines no thermal reference speed for bearings with contact seals (its reference "
+                        "conditions have no seal friction; Schaeffler HR 1 prints none for them); n_per and T_op are "
+                        "the heat balance's with the seal friction M_seal of the friction model in N_R (bearingheat's "
+                        "extension of the method, whose sources leave sealed bearings out)")
 
 
 @dataclass(frozen=True)
