@@ -13,7 +13,7 @@ import pandas as pd
 
 from bearingheat.calc.models import FrictionPower
 from bearingheat.calc.heat_flows import generic_speed, heat_flow_setup, viscosity_of_rows, walther_columns
-from bearingheat.calc.thermal import OPERATING_TEMPERATURE_LIMIT
+from bearingheat.calc.thermal import OPERATING_TEMPERATURE_LIMIT, with_seal_friction
 from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.kernels.thermal import balance_speed
 
@@ -40,6 +40,7 @@ def heat_flow_curves(frame: pd.DataFrame, results: pd.DataFrame, columns: pd.Dat
     (N_R(ν(T)) + Q_E) and ``carried_vs_temperature`` (Q_S + Q_L) [W] at the
     speed n; ``heat_at_T_op`` [W].
     """
+    frame = with_seal_friction(frame, results)  # (a sealed bearing whose model has its seal friction: A_r)
     details, k_q, T_amb, Q_E, Q_S, Q_L = heat_flow_setup(frame)
     if np.isnan(details["A_r"].iloc[0]) or np.isnan(T_amb[0]):
         return None

@@ -45,7 +45,7 @@ from bearingheat.catalogue.vm_chart import VMChart
 from bearingheat.calc.skf import fill_vm_from_chart
 from bearingheat.errors import InputError
 
-__all__ = ["calc", "require_columns", "Extension", "EXTENSIONS"]
+__all__ = ["calc", "compute_table", "ComputedTable", "require_columns", "Extension", "EXTENSIONS"]
 
 
 @dataclass(frozen=True)
@@ -222,6 +222,45 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
         return calc_dask(table, calc, model=model, f2_chart=f2_chart, vm_chart=vm_chart, units=units, effects=effects,
                          n_per_method=n_per_method, viscosity_at=viscosity_at, coefficients=coefficients,
                          uncertainty=uncertainty, decimal=decimal)
+    computed = compute_table(table, model=model, f2_chart=f2_chart, vm_chart=vm_chart, units=units, cell=cell,
+                             effects=effects, n_per_method=n_per_method, viscosity_at=viscosity_at, decimal=decimal)
+    frame, results = computed.frame, computed.results
+    out = _assemble(table, results, computed.extension_columns.values())
+    if coefficients is not None:
+        table = fill_from_coefficients(table, pd.read_csv(coefficients) if isinstance(coefficients, str)
+                                       else coefficients)
+        again = to_catalogue_units(table, units=units, cell=cell, decimal=decimal)
+        frame = fill_from_catalogue(again.frame, again.labels)[0]  # the uncertainty columns, the same fill
+    if has_uncertainty(table):
+        def recalc(perturbed: pd.DataFrame) -> pd.DataFrame:
+            return calc(perturbed, model=model, f2_chart=f2_chart, vm_chart=vm_chart, units=units, effects=effects,
+                        n_per_method=n_per_method, viscosity_at=viscosity_at, decimal=decimal)
+        bands = uncertainty_bands(table, out, frame.reset_index(drop=True).set_axis(out.index), recalc,
+                                  method=uncertainty)
+        out = pd.concat([out.drop(columns=["status", "message"]), bands, out[["status", "message"]]], axis=1)
+    return out
+
+
+@dataclass(frozen=True)
+class ComputedTable:
+    """What :func:`calc` computes of a table before it writes its result frame, in catalogue units, with the
+    table's index: ``frame``, the inputs after the fills from the bearing table and the oil data and the
+    extensions' settling (hidden ``_`` columns included); ``results``, the friction results with ``status`` and
+    ``message``, every row's messages in place; ``extension_columns``, owner -> (columns, units) of each
+    extension (``thermal``: n_thr, n_per, T_op ...) and of the VM chart (``skf``)."""
+
+    frame: pd.DataFrame
+    results: pd.DataFrame
+    extension_columns: dict[str, tuple[pd.DataFrame, dict[str, str]]]
+
+
+def compute_table(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart | str | None = None,
+                  vm_chart: VMChart | str | None = None, units: dict[str, str] | None = None,
+                  cell: Callable[[str, int], str] | None = None, effects=None,
+                  n_per_method: str = DEFAULT_SPEED_FACTOR_METHOD, viscosity_at: str = DEFAULT_VISCOSITY_AT,
+                  decimal: str = ".") -> ComputedTable:
+    """The rows of ``table`` computed as :func:`calc` computes them (its arguments), before its result frame:
+    what ``bearingheat plot`` draws a row's heat balance from. Raises as :func:`calc` does."""
     if isinstance(f2_chart, str):
         f2_chart = F2Chart.from_csv(f2_chart)
     if isinstance(vm_chart, str):
@@ -272,28 +311,15 @@ def calc(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: F2Chart |
     if effects is not None:  # a row of another model is refused, a row outside the fitted domain warned
         _add_messages(results, [(i, level, cite(m, i), level == "error")
                                 for i, level, m in effects.apply(frame, results, model=model)])
-    extension_columns = []
+    extension_columns: dict[str, tuple[pd.DataFrame, dict[str, str]]] = {}
     for ext in EXTENSIONS.values():
         with np.errstate(all="ignore"):  # rows in error are computed too, and masked afterwards
             columns, problems = ext.extend(frame, results, f2_chart=f2_chart, labels=converted.labels, model=model)
         _add_messages(results, [(i, level, cite(m, i), False) for i, level, m in problems])
-        extension_columns.append((columns, output_units(owner=ext.owner)))
+        extension_columns[ext.owner] = (columns, output_units(owner=ext.owner))
     if vm_read is not None and not np.isnan(vm_read).all():
-        extension_columns.append((pd.DataFrame({"VM_chart": vm_read}, index=results.index), {"VM_chart": "1"}))
-    out = _assemble(table, results, extension_columns)
-    if coefficients is not None:
-        table = fill_from_coefficients(table, pd.read_csv(coefficients) if isinstance(coefficients, str)
-                                       else coefficients)
-        again = to_catalogue_units(table, units=units, cell=cell, decimal=decimal)
-        frame = fill_from_catalogue(again.frame, again.labels)[0]  # the uncertainty columns, the same fill
-    if has_uncertainty(table):
-        def recalc(perturbed: pd.DataFrame) -> pd.DataFrame:
-            return calc(perturbed, model=model, f2_chart=f2_chart, vm_chart=vm_chart, units=units, effects=effects,
-                        n_per_method=n_per_method, viscosity_at=viscosity_at, decimal=decimal)
-        bands = uncertainty_bands(table, out, frame.reset_index(drop=True).set_axis(out.index), recalc,
-                                  method=uncertainty)
-        out = pd.concat([out.drop(columns=["status", "message"]), bands, out[["status", "message"]]], axis=1)
-    return out
+        extension_columns[SKF.name] = (pd.DataFrame({"VM_chart": vm_read}, index=results.index), {"VM_chart": "1"})
+    return ComputedTable(frame, results, extension_columns)
 
 
 def _implausible_relations(frame: pd.DataFrame, labels: Labels, from_table: dict[str, np.ndarray]

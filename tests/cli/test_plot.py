@@ -5,9 +5,12 @@ import subprocess
 import sys
 
 import pandas as pd
+import pytest
 from thermal_helpers import NJ208_ROW, nj208_chart, plot_table
 
+import bearingheat as bh
 from bearingheat.cli import main
+from bearingheat.io.reports.thermal import heat_balance_curves
 
 
 def test_plot_writes_a_png(tmp_path, capsys):
@@ -68,3 +71,33 @@ def test_plot_never_writes_over_its_f2_chart(tmp_path, capsys):
     before = chart.read_bytes()
     assert main(["plot", str(path), "-o", str(chart), "--force", "--f2-chart", str(chart)]) == 2
     assert chart.read_bytes() == before
+
+
+def test_a_row_of_designations_is_drawn_as_calc_computes_it(tmp_path, capsys):
+    """The plot computes its row as calc does: a designation fills d, D, B and C0 from the bearing table, oil data
+    give ν at T_op, and the crossings of the curves are calc's n_per and T_op."""
+    row = {"designation": "6208", "lubrication": "oil_bath", "n [rpm]": 3000.0, "Fr [kN]": 2.0, "iso_vg": 68.0,
+           "T_amb [degC]": 20.0, "T_bearing [degC]": 70.0}
+    path = tmp_path / "designations.csv"
+    pd.DataFrame([row]).to_csv(path, index=False)
+    assert main(["plot", str(path), "-o", str(tmp_path / "heat.png")]) == 0
+    assert capsys.readouterr() == (f"wrote {tmp_path / 'heat.png'}\n", "")
+    curves = heat_balance_curves(pd.DataFrame([row]))
+    alone = bh.calc(pd.DataFrame([row]))
+    assert (curves["status"], curves["message"]) == ("ok", "")
+    assert curves["T_op"] == alone["T_op [degC]"].iat[0] and curves["n_per"] == alone["n_per [1/min]"].iat[0]
+    # the friction heat at n_per (at T_bearing) is the heat carried away there: the curves cross at calc's n_per
+    assert curves["n_cross"] == pytest.approx(alone["n_per [1/min]"].iat[0], rel=1e-9)
+
+
+def test_a_sealed_bearing_with_the_skf_seal_friction_is_drawn(tmp_path, capsys):
+    row = {"designation": "6208-2RSR", "lubrication": "grease", "model": "skf", "n [rpm]": 3000.0, "Fr [kN]": 2.0,
+           "nu [mm^2/s]": 20.0, "seal": "RS1", "d_s [mm]": 49.0, "T_amb [degC]": 20.0, "T_bearing [degC]": 70.0}
+    path = tmp_path / "sealed.csv"
+    pd.DataFrame([row]).to_csv(path, index=False)
+    assert main(["plot", str(path), "-o", str(tmp_path / "sealed.png")]) == 0
+    assert capsys.readouterr().err.startswith("bearingheat plot: warning: n_thr: ISO 15312 defines no thermal "
+                                              "reference speed for bearings with contact seals")
+    curves = heat_balance_curves(pd.DataFrame([row]))
+    assert round(curves["T_op"], 1) == 48.6 and round(curves["n_per"]) == 4995
+    assert curves["heat_at_T_op"] == pytest.approx(curves["friction_vs_temperature"][0], rel=1e-9)  # ν fixed

@@ -16,11 +16,8 @@ from pathlib import Path
 
 import pandas as pd
 
-from bearingheat.calc.models import compute_supports
-from bearingheat.calc.conversion import to_catalogue_units
-from bearingheat.calc.table import require_columns
+from bearingheat.calc.table import compute_table
 from bearingheat.calc.heat_flow_curves import heat_flow_curves
-from bearingheat.calc.thermal import fill_viscosity, heat_balance_rows, settle_viscosity
 from bearingheat.catalogue.f2chart import F2Chart
 from bearingheat.errors import InputError
 from bearingheat.io.reports import FIGURE_DPI, matplotlib_figure
@@ -50,30 +47,21 @@ def heat_balance_curves(table: pd.DataFrame, points: int = 200, f2_chart: F2Char
     Returns a dict with ``status`` ('ok' | 'warning' | 'error'), ``message``
     and ``label`` (the row's id or designation), and where the row can be
     drawn the curves of :func:`bearingheat.calc.heat_flow_curves.heat_flow_curves`.
-    A table that cannot be used at all raises
-    :class:`~bearingheat.errors.InputError`.
+    The row is computed as ``calc`` computes it (:func:`~bearingheat.calc.table.compute_table`: designations fill
+    the dimensions, oil data the viscosity), with calc's status and message. A table that cannot be used at all
+    raises :class:`~bearingheat.errors.InputError`.
     """
-    converted = to_catalogue_units(table.iloc[:1].reset_index(drop=True))
-    frame, problems = fill_viscosity(converted.frame)
-    require_columns(frame)
-    frame, results, settled = settle_viscosity(frame, compute_supports(frame, labels=converted.labels,
-                                                                       f2_chart=f2_chart),
-                                               labels=converted.labels, f2_chart=f2_chart)
-    problems += settled
-    columns, more = heat_balance_rows(frame, results, f2_chart=f2_chart)
-    messages = [m for m in [results["message"].iloc[0]] if m] + [m for _, _, m in problems + more]
-    status = results["status"].iloc[0]
-    if any(level == "error" for _, level, _ in problems + more):
-        status = "error"
-    elif status == "ok" and problems + more:  # the heat balance's warnings (no n_per beyond the chart, say)
-        status = "warning"
-    out = {"status": status, "message": "; ".join(messages), "label": _label(table)}
+    computed = compute_table(table.iloc[:1].reset_index(drop=True), f2_chart=f2_chart)
+    frame, results = computed.frame, computed.results
+    message, status = str(results["message"].iloc[0]), str(results["status"].iloc[0])
+    out = {"status": status, "message": message, "label": _label(table)}
     if status == "error":
         return out
     if "T_amb" not in frame.columns:
-        out.update(status="error", message="; ".join(messages + ["T_amb [degC]: missing; the plot needs the "
-                                                                  "ambient temperature"]))
+        out.update(status="error", message="; ".join([m for m in (message,) if m] + [
+            "T_amb [degC]: missing; the plot needs the ambient temperature"]))
         return out
+    columns = computed.extension_columns["thermal"][0]
     curves = heat_flow_curves(frame, results, columns, points=points, f2_chart=f2_chart)
     if curves is None:
         out.update(status="error", message=out["message"] or "the heat flow area A_r cannot be computed")
