@@ -38,8 +38,11 @@ CATALOGUE_SPEED = column("n_thr_catalogue").name
 #: the model's bounds of the operating point (the Schaeffler catalogue, p. 64): name -> (lowest, whether it counts)
 _LOWEST = {"n": (0.0, True), "Fr": (0.0, True), "Fa": (0.0, True), "nu": (0.0, False), "oil_level": (0.0, True),
            "nu40": (0.0, False), "nu100": (0.0, False)}
-#: the ways to give the viscosity: the operating viscosity, or the oil's (calc takes ν at each bearing's T_op)
-VISCOSITY_SOURCES = ("nu", "iso_vg", "nu40 and nu100")
+#: the arguments that give the viscosity -> the way they give it (one way only): the operating viscosity, or the
+#: oil's (calc takes ν at each bearing's T_op)
+_VISCOSITY_SOURCE = {"nu": "nu", "iso_vg": "iso_vg", "nu40": "nu40 and nu100", "nu100": "nu40 and nu100"}
+_ONE_VISCOSITY = ("the viscosity: give one of nu (the operating viscosity), iso_vg (the oil's grade, with VI) or nu40 "
+                  "and nu100; got")
 
 
 def _point_value(value: QuantityLike, name: str) -> float:
@@ -180,16 +183,13 @@ def rank_bearings(candidates: pd.DataFrame, *, lubrication: str, n: QuantityLike
         raise SelectionError(f"rank_by: {rank_by!r} is none of {', '.join(RANKINGS)}")
     typed = [name for name, value in (("nu", nu), ("iso_vg", iso_vg), ("nu40", nu40), ("nu100", nu100))
              if value is not None]
-    sources = {source for source in VISCOSITY_SOURCES for name in typed if name in source.split(" and ")}
-    if len(sources) > 1:
-        raise SelectionError(f"the viscosity: give one of nu (the operating viscosity), iso_vg (the oil's grade, with "
-                             f"VI) or nu40 and nu100; got {' and '.join(typed)}")
+    if len({_VISCOSITY_SOURCE[name] for name in typed}) > 1:
+        raise SelectionError(f"{_ONE_VISCOSITY} {' and '.join(typed)}")
     given = {"n": n, "nu": nu, "Fr": Fr, "Fa": Fa, "T_amb": T_amb, "T_bearing": T_bearing, "oil_level": oil_level}
     point = {name: _point_value(value, name) for name, value in given.items() if value is not None}
     point.update(_oil_columns(iso_vg, VI, nu40, nu100, T_bearing))
-    if not sources:
-        raise SelectionError("the viscosity: give one of nu (the operating viscosity), iso_vg (the oil's grade, with "
-                             "VI) or nu40 and nu100; got none")
+    if not typed:
+        raise SelectionError(f"{_ONE_VISCOSITY} none")
     point.setdefault("Fr", 0.0)
     point.setdefault("Fa", 0.0)
     if rank_by != "NR" and not ("T_amb" in point and "T_bearing" in point):
