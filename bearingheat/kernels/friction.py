@@ -70,7 +70,7 @@ def speed_dependent_torque(f0, nu, n, dM):
     1.8261
     """
     nu_n = np.asarray(nu, dtype=float) * np.asarray(n, dtype=float)
-    root = np.cbrt(nu_n)  # (ν·n)^(2/3) as cbrt squared: exact for ν·n >= 0 and several times faster than power
+    root = np.cbrt(nu_n)  # (ν·n)^(2/3) as the cube root squared (power(x, 2/3) agrees to 2e-15)
     factor = np.where(nu_n >= REGIME_LIMIT, root * root, LOW_REGIME_FACTOR)
     dM = np.asarray(dM, dtype=float)
     return np.asarray(f0, dtype=float) * factor * (dM * dM * dM) * 1e-7  # dM³ as products: power() is a libm call
