@@ -13,12 +13,17 @@ import numpy as np
 import numpy.typing as npt
 import pandas as pd
 
-from bearingheat.calc.contract import column, range_problems
+from bearingheat.calc.contract import column, input_units, range_problems
+from bearingheat.calc.messages import Labels
 from bearingheat.errors import BearingheatError
 from bearingheat.units import Magnitude, QuantityLike, magnitude
 
 __all__ = ["point_warnings", "point_status", "where", "shared_index", "broadcast_shape", "dimensionless_number",
-           "converted_model_inputs"]
+           "converted_model_inputs", "ARGUMENT_LABELS"]
+
+#: calc's row messages in the API's words: an input by its argument's name, its value in catalogue units
+#: ('Fr: 20000 is above the static load rating C0 = 7800 N', as 'nu: 0.5 is outside the plausible range ...')
+ARGUMENT_LABELS = Labels({name: (name, 1.0) for name in input_units()})
 
 
 def where(i: int, shape: tuple[int, ...]) -> str:

@@ -22,12 +22,12 @@ import numpy as np
 import numpy.typing as npt
 import pandas as pd
 
-from bearingheat.api._checks import (broadcast_shape, converted_model_inputs, dimensionless_number, point_status,
-                                     point_warnings, shared_index, where)
+from bearingheat.api._checks import (ARGUMENT_LABELS, broadcast_shape, converted_model_inputs, dimensionless_number,
+                                     point_status, point_warnings, shared_index, where)
 from bearingheat.api.results import Result
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.contract import column
-from bearingheat.calc.fill import fill_arrays
+from bearingheat.calc.fill import catalogue_values, fill_arrays, implausible_relations
 from bearingheat.calc.models import DEFAULT_MODEL, MODEL_REPORT_UNITS, get_model
 from bearingheat.calc.supports import build_support_arrays
 from bearingheat.catalogue.f2chart import F2Chart
@@ -80,7 +80,9 @@ class FrictionResult(Result):
         Per operating point: 'ok', or 'warning' where the point has messages.
     messages : list of str
         Per operating point, joined by '; ': implausible magnitudes
-        (probably a unit mix-up), a contact seal whose friction is not in the
+        (probably a unit mix-up), a load above C0 or a speed above the
+        bearing table's limiting speed n_G (as calc warns of them), a
+        contact seal whose friction is not in the
         model, a cylindrical roller bearing above Fa/Fr = 0.4, notes on the
         designation, values that differ from the bearing table.
     bearing_type : str
@@ -168,7 +170,8 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
     Series broadcast against each other (one bearing, many operating points)
     and a Series in gives a Series out. A number outside its valid range
     raises; one outside its plausible range (usually a unit mix-up) is
-    returned as a warning in :attr:`FrictionResult.messages`.
+    returned as a warning in :attr:`FrictionResult.messages`, as is a load
+    above C0 or a speed above the bearing table's n_G.
 
     Parameters
     ----------
@@ -352,6 +355,8 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
     for problem in problems:  # warnings of the points they concern
         for point in np.flatnonzero(np.broadcast_to(problem.mask, (size,))):
             some.setdefault(int(point), []).append(problem.message(int(point)))
+    for point, _, message in _implausible_points(designation, arrays, shape):
+        some.setdefault(point, []).append(message)
     # notes on the bearing, on every point: the designation's notes of the catalogue model's tables where the model
     # uses them, and the bearing table's (the dimensions both models read)
     every = every + (list(supports.notes[0]) if friction_model.catalogue_keys else []) + fill_notes
@@ -389,3 +394,13 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
                        for name, unit in MODEL_REPORT_UNITS.items()
                        if name in results and name in friction_model.outputs},
     )
+
+
+def _implausible_points(designation: str | None, arrays: dict[str, np.ndarray], shape: tuple[int, ...]) -> list:
+    """calc's warnings (point, 'warning', message) of a load above C0 and a speed above the bearing table's limiting
+    speed n_G of ``designation``, at each point of the broadcast ``arrays`` (catalogue units)."""
+    size = int(np.prod(shape)) if shape else 1
+    n_G = catalogue_values([designation])[0]["n_G"][0] if designation else np.nan
+    frame = pd.DataFrame({**{name: np.broadcast_to(arrays[name], shape).ravel() for name in ("n", "Fr", "Fa", "C0")},
+                          "n_G": n_G, "designation": designation}, index=range(size))
+    return implausible_relations(frame, ARGUMENT_LABELS, {"n_G": np.ones(size, dtype=bool)})

@@ -15,13 +15,12 @@ import numpy as np
 import numpy.typing as npt
 import pandas as pd
 
-from bearingheat.api._checks import (broadcast_shape, converted_model_inputs, dimensionless_number, point_status,
-                                     point_warnings, shared_index, where)
+from bearingheat.api._checks import (ARGUMENT_LABELS, broadcast_shape, converted_model_inputs, dimensionless_number,
+                                     point_status, point_warnings, shared_index, where)
 from bearingheat.api.results import Result
 from bearingheat.calc.contract import ARRANGEMENTS, column
-from bearingheat.calc.fill import fill_from_catalogue
+from bearingheat.calc.fill import fill_from_catalogue, implausible_relations
 from bearingheat.calc.heat_flows import walther_columns
-from bearingheat.calc.messages import Labels
 from bearingheat.calc.models import DEFAULT_MODEL, compute_supports, get_model
 from bearingheat.calc.thermal import (OPERATING_TEMPERATURE_LIMIT, SPEED_FACTOR_METHODS, VISCOSITY_AT,
                                       fill_viscosity, heat_balance_rows, settle_viscosity, thermal_reference_speed_rows)
@@ -166,7 +165,7 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
     absolute (degC, K); ``dT_oil`` is a difference (K, delta_degC);
     ``iso_vg`` and ``VI`` are plain numbers. A number outside
     its valid range raises; one outside its plausible range is a warning in
-    ``messages``. A point the friction model or the balance cannot compute
+    ``messages``, as is a load above C0 or a speed above n_G. A point the friction model or the balance cannot compute
     (a missing n, a negative load, an unknown designation) gets status
     'error' and NaN, and does not raise. A point whose balance has no
     equilibrium in the search gets T_op NaN and status 'warning' (with a
@@ -370,7 +369,9 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
     frame["arrangement"] = arrangement
     for name, values in text_arrays.items():
         frame[name] = np.broadcast_to(values, shape).ravel()
-    frame, fill_problems, _ = fill_from_catalogue(frame, Labels())  # blank d, D, B, T, C0 ... from the bearing table
+    frame, fill_problems, from_table = fill_from_catalogue(frame, ARGUMENT_LABELS)  # blank d, D, B, T, C0 ... from
+    # the bearing table; a load above C0 or a speed above n_G is calc's warning
+    fill_problems += implausible_relations(frame, ARGUMENT_LABELS, from_table)
     limit = OPERATING_TEMPERATURE_LIMIT
     if t_limit is not None:
         limit = float(celsius(t_limit, "t_limit"))

@@ -19,11 +19,12 @@ import numpy as np
 import pandas as pd
 
 from bearingheat.calc.messages import Labels
-from bearingheat.calc.supports import first_rows, group_codes, number_column, text_codes, with_columns
+from bearingheat.calc.contract import input_units
+from bearingheat.calc.supports import first_rows, group_codes, number_column, text_codes, text_column, with_columns
 from bearingheat.catalogue.bearings import CATALOGUE, bearing, disagreeing, half_steps
 from bearingheat.errors import DesignationError
 
-__all__ = ["FILLED", "fill_from_catalogue", "fill_arrays", "catalogue_values"]
+__all__ = ["FILLED", "fill_from_catalogue", "fill_arrays", "catalogue_values", "implausible_relations"]
 
 #: the columns the bearing table fills (catalogue units: mm, N, 1, 1/min)
 FILLED = ("d", "D", "B", "T", "C0", "e", "Y", "Y0", "n_G")
@@ -130,3 +131,39 @@ def fill_arrays(designation: str | None, arrays: dict[str, np.ndarray], given: s
             notes.append(f"{name}: {shown:g} {_unit(name)}differs from {catalogue:g} {_unit(name)}of {designation} in "
                          f"the bearing table ({CATALOGUE}); the value given is used")
     return out, notes, errors[0]
+
+
+def implausible_relations(frame: pd.DataFrame, labels: Labels, from_table: dict[str, np.ndarray]
+                           ) -> list[tuple[int, str, str]]:
+    """Warnings (row position, 'warning', message) where inputs are each possible but not together: a load
+    above C0, a speed above n_G (catalogue units, contract names; calc's and the Python API's).
+
+    Both are usual signs of a unit mix-up (rpm typed under a header in Hz, N under kN); ``from_table``
+    marks the values the bearing table filled (:func:`fill_from_catalogue`), whose messages name the catalogue.
+    """
+    problems = []
+    n_rows = len(frame)
+
+    def user(name, i, value):
+        shown = labels.value(name, value)
+        return shown if shown == f"{value:g}" else f"{shown} ({value:g} {input_units()[name]})"
+
+    C0 = number_column(frame, "C0")
+    for name in ("Fr", "Fa"):
+        load = number_column(frame, name)
+        with np.errstate(invalid="ignore"):
+            above = np.isfinite(load) & np.isfinite(C0) & (load > C0)
+        for i in np.flatnonzero(above).tolist():
+            problems.append((i, "warning", f"{labels.name(name, i)}: {user(name, i, load[i])} is above the "
+                                                f"static load rating C0 = {C0[i]:g} N; check the load and its unit"))
+    n = number_column(frame, "n")
+    n_G = number_column(frame, "n_G")
+    catalogue_n_G = from_table.get("n_G", np.zeros(n_rows, dtype=bool))
+    with np.errstate(invalid="ignore"):
+        fast = np.isfinite(n) & (n > n_G)
+    designations = text_column(frame, "designation") if fast.any() else []  # (a Python text per row)
+    for i in np.flatnonzero(fast).tolist():
+        of = f" of {designations[i]} ({CATALOGUE})" if catalogue_n_G[i] else ""
+        problems.append((i, "warning", f"{labels.name('n', i)}: {user('n', i, n[i])} is above the limiting "
+                                            f"speed n_G = {n_G[i]:g} 1/min{of}; check the speed and its unit"))
+    return problems

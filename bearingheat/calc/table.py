@@ -31,13 +31,12 @@ from bearingheat.calc import contact, thermal
 from bearingheat.calc.thermal import (DEFAULT_SPEED_FACTOR_METHOD, DEFAULT_VISCOSITY_AT, SPEED_FACTOR_METHODS,
                                      VISCOSITY_AT)
 from bearingheat.calc.contract import PLAIN_TYPES, TEXT_DTYPE, input_units, output_header, output_units
-from bearingheat.calc.messages import ERROR, WARNING, Labels, status_codes, status_column, with_texts
-from bearingheat.calc.supports import blanks_filled, number_column, per_distinct, text_column, with_bearing_groups
+from bearingheat.calc.messages import ERROR, WARNING, status_codes, status_column, with_texts
+from bearingheat.calc.supports import blanks_filled, per_distinct, with_bearing_groups
 from bearingheat.calc.distributed import calc_dask, is_dask_frame
 from bearingheat.calc.conversion import refuse_result_columns, results_spelled_otherwise, to_catalogue_units
-from bearingheat.calc.fill import fill_from_catalogue
+from bearingheat.calc.fill import fill_from_catalogue, implausible_relations
 from bearingheat.calc.uncertainty import fill_from_coefficients, has_uncertainty, uncertainty_bands
-from bearingheat.catalogue.bearings import CATALOGUE
 from bearingheat.calc.models import (DEFAULT_MODEL, M2_REPORT_UNITS, MODEL_REPORT_UNITS, PLAIN_REPORT_UNITS,
                                      RESULT_UNITS, SKF, compute_supports, failed_rows, row_model_names)
 from bearingheat.catalogue.f2chart import F2Chart
@@ -307,7 +306,7 @@ def compute_table(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: 
                   + [(i, "warning", m, False) for i, warnings in _flagged(converted.warnings_by_row) for m in warnings]
                   + [(i, level, cite(m, i), True) for i, level, m in fill_problems if level == "error"]
                   + [(i, level, cite(m, i), False) for i, level, m in
-                     extra_problems + _implausible_relations(frame, converted.labels, from_table)])
+                     extra_problems + implausible_relations(frame, converted.labels, from_table)])
     if effects is not None:  # a row of another model is refused, a row outside the fitted domain warned
         _add_messages(results, [(i, level, cite(m, i), level == "error")
                                 for i, level, m in effects.apply(frame, results, model=model)])
@@ -320,42 +319,6 @@ def compute_table(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: 
     if vm_read is not None and not np.isnan(vm_read).all():
         extension_columns[SKF.name] = (pd.DataFrame({"VM_chart": vm_read}, index=results.index), {"VM_chart": "1"})
     return ComputedTable(frame, results, extension_columns)
-
-
-def _implausible_relations(frame: pd.DataFrame, labels: Labels, from_table: dict[str, np.ndarray]
-                           ) -> list[tuple[int, str, str]]:
-    """Warnings where inputs are each possible but not together: a load above C0, a speed above n_G.
-
-    Both are usual signs of a unit mix-up (rpm typed under a header in Hz, N under kN); ``from_table``
-    marks the values the bearing table filled (:func:`~bearingheat.calc.fill.fill_from_catalogue`),
-    whose messages name the catalogue.
-    """
-    problems = []
-    n_rows = len(frame)
-
-    def user(name, i, value):
-        shown = labels.value(name, value)
-        return shown if shown == f"{value:g}" else f"{shown} ({value:g} {input_units()[name]})"
-
-    C0 = number_column(frame, "C0")
-    for name in ("Fr", "Fa"):
-        load = number_column(frame, name)
-        with np.errstate(invalid="ignore"):
-            above = np.isfinite(load) & np.isfinite(C0) & (load > C0)
-        for i in np.flatnonzero(above).tolist():
-            problems.append((i, "warning", f"{labels.name(name, i)}: {user(name, i, load[i])} is above the "
-                                                f"static load rating C0 = {C0[i]:g} N; check the load and its unit"))
-    n = number_column(frame, "n")
-    n_G = number_column(frame, "n_G")
-    catalogue_n_G = from_table.get("n_G", np.zeros(n_rows, dtype=bool))
-    with np.errstate(invalid="ignore"):
-        fast = np.isfinite(n) & (n > n_G)
-    designations = text_column(frame, "designation") if fast.any() else []  # (a Python text per row)
-    for i in np.flatnonzero(fast).tolist():
-        of = f" of {designations[i]} ({CATALOGUE})" if catalogue_n_G[i] else ""
-        problems.append((i, "warning", f"{labels.name('n', i)}: {user('n', i, n[i])} is above the limiting "
-                                            f"speed n_G = {n_G[i]:g} 1/min{of}; check the speed and its unit"))
-    return problems
 
 
 def _flagged(row_messages: dict[int, list[str]]):

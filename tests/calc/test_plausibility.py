@@ -146,6 +146,26 @@ def test_the_api_warns_for_an_implausible_number():
     assert r.messages[0] == "nu: 0.5 is outside the plausible range 1 to 100000 mm^2/s; check the number and its unit"
 
 
+def test_the_api_warns_of_a_load_above_c0_and_a_speed_above_n_g_as_calc_does():
+    """calc's warnings of a unit mix-up, point by point, in the API's words: 20 kN on a 6205 (C0 7.8 kN), and
+    30000 1/min above its n_G of 17000 1/min (HR 1, 2006)."""
+    r = bh.friction_torque("6205", lubrication="oil_bath", n=[3000, 30000] * u.rpm, Fr=20 * u.kN, nu=12 * u("mm^2/s"))
+    load = "Fr: 20000 is above the static load rating C0 = 7800 N; check the load and its unit"
+    speed = ("n: 30000 is above the limiting speed n_G = 17000 1/min of 6205 (Schaeffler HR 1, 2006); check the speed "
+             "and its unit")
+    assert r.status == ["warning", "warning"] and r.messages == [load, f"{load}; {speed}"]
+    balance = bh.heat_balance("6205", n=30000 * u.rpm, Fr=2 * u.kN, nu=12 * u("mm^2/s"), T_amb=u.Quantity(20, "degC"),
+                              T_bearing=u.Quantity(70, "degC"))
+    assert balance.status == ["warning"] and balance.messages[0].startswith(f"{speed}; T_op: ")
+    # a limiting speed given is the user's own, named without the catalogue
+    given = bh.heat_balance("6205", n=3000 * u.rpm, Fr=2 * u.kN, nu=12 * u("mm^2/s"), n_G=2500 * u.rpm)
+    assert given.messages == ["n_G: 2500 differs from 17000 1/min of 6205 in the bearing table (Schaeffler HR 1, "
+                              "2006); the value given is used; n: 3000 is above the limiting speed n_G = 2500 1/min; "
+                              "check the speed and its unit"]
+    assert bh.friction_torque("6205", lubrication="oil_bath", n=3000 * u.rpm, Fr=2 * u.kN, nu=12 * u("mm^2/s")
+                              ).status == ["ok"]
+
+
 def test_the_heat_balance_api_raises_for_an_ambient_temperature_out_of_range():
     with pytest.raises(bh.HeatBalanceError) as exc:
         bh.heat_balance("6205", d=25 * u.mm, D=52 * u.mm, B=15 * u.mm, C0=7.8 * u.kN, n=3000 * u.rpm,
