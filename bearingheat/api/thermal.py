@@ -165,8 +165,9 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
     absolute (degC, K); ``dT_oil`` is a difference (K, delta_degC);
     ``iso_vg`` and ``VI`` are plain numbers. A number outside
     its valid range raises; one outside its plausible range is a warning in
-    ``messages``, as is a load above C0 or a speed above n_G. A point the friction model or the balance cannot compute
-    (a missing n, a negative load, an unknown designation) gets status
+    ``messages``, as is a load above C0 or a speed above n_G. A point the
+    friction model or the balance cannot compute (a missing n, a negative
+    load, an unknown designation) gets status
     'error' and NaN, and does not raise. A point whose balance has no
     equilibrium in the search gets T_op NaN and status 'warning' (with a
     given ``nu``, or with ``T_bearing`` to take ν at instead); it is an
