@@ -56,9 +56,9 @@ def test_plot_quiet_leaves_out_the_warning(tmp_path, capsys):
     assert capsys.readouterr() == (f"wrote {tmp_path / 'loud.svg'}\n", (
         "bearingheat plot: warning: n [rpm]: 30000 is above the limiting speed n_G = 17000 1/min of 6205 (Schaeffler "
         "HR 1, 2006); check the speed and its unit; "
-        "T_op: no equilibrium up to 150 degC, the upper end of the search: the friction heat still exceeds the heat carried away there; with the catalogue model the friction heat stays bounded as the "
-        "temperature rises while the heat carried away grows with it, so an equilibrium lies above; T_op is not "
-        "computed\n"))
+        "T_op: no equilibrium up to 150 degC, the upper end of the search: the friction heat still exceeds the heat "
+        "carried away there; with the catalogue model the friction heat stays bounded as the temperature rises while "
+        "the heat carried away grows with it, so an equilibrium lies above; T_op is not computed\n"))
     assert main(["plot", str(source), "--row", "0", "-o", str(tmp_path / "quiet.svg"), "-q"]) == 0
     assert capsys.readouterr() == ("", "")
     assert (tmp_path / "quiet.svg").read_text().lstrip().startswith("<?xml")
