@@ -48,7 +48,9 @@ its operating temperature at n; --rank-by T_op puts the coolest first, --rank-by
 n_per the fastest (a larger bearing makes more heat but also gives more of it
 off). A bearing with contact seals (-2RSR, -2RS) is computed without its seal
 friction, which the catalogue model lacks (a warning says so), and without
-n_thr, n_per and T_op.
+n_thr, n_per and T_op; with --model skf it comes last with the reason (the SKF
+model's seal friction needs a seal type of its table 4 and the counterface
+diameter d_s, which the bearing table does not hold: give them to calc).
 
 The viscosity is the operating viscosity --nu, the same for every candidate, or
 the oil: its ISO VG grade --iso-vg (with --VI, default 95) or --nu40 and --nu100.
