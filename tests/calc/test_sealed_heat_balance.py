@@ -120,3 +120,16 @@ def test_a_model_evaluated_at_each_speed_finds_n_per_without_n_thr():
     at_n_per = bh.calc(pd.DataFrame([{**row, "n [rpm]": n_per}]))
     assert friction_power(at_n_per["MR [N*mm]"].iat[0], n_per) == pytest.approx(K_Q * A_r * 50, rel=1e-9)
     assert np.isnan(out["n_per [1/min]"].iat[1]) and not np.isnan(out["T_op [degC]"].iat[1])
+
+
+def test_the_seal_friction_only_ever_warms_the_bearing():
+    """First principles: the seals add a torque of their own to the open bearing's at every speed, so the sealed
+    bearing runs warmer at each speed, the warmer the faster it runs, and reaches T_bearing at a lower speed."""
+    speeds = [250.0, 1000.0, 2000.0, 4000.0]
+    sealed = bh.calc(pd.DataFrame([{**ROW, "n [rpm]": n} for n in speeds]))
+    open_ = bh.calc(pd.DataFrame([{**ROW, "designation": "6208", "seal": None, "d_s [mm]": np.nan, "n [rpm]": n}
+                                  for n in speeds]))
+    np.testing.assert_allclose(sealed["MR [N*mm]"] - open_["MR [N*mm]"], M_SEAL, rtol=1e-12)
+    assert (sealed["T_op [degC]"] > open_["T_op [degC]"]).all()
+    assert (np.diff(sealed["T_op [degC]"]) > 0).all()
+    assert (sealed["n_per [1/min]"] < open_["n_per [1/min]"]).all()
