@@ -201,7 +201,8 @@ CONTRACT: tuple[Column, ...] = (
         "from the designation", "skf", template=("-", 8)),
     _in("seals", "1", "SKF model: number of seals, 0, 1 or 2 (blank: from the designation)", "skf",
         template=("1", 6)),
-    _in("d_s", "mm", "SKF model: seal counterface diameter (required for contact seals)", "skf",
+    _in("d_s", "mm", "SKF model: seal counterface diameter (required for contact seals; with it the seal friction "
+        "is in the heat balance, and a sealed bearing gets n_per and T_op)", "skf",
         template=("mm", 8)),
     _in("f0_rel_unc", "1", "relative half-width of the 95 % interval of f0 (0.1: +-10 %); gives the bands "
         "MR_low, MR_high, ...", "uncertainty"),
