@@ -27,7 +27,7 @@ from bearingheat.api._checks import (ARGUMENT_LABELS, broadcast_shape, converted
 from bearingheat.api.results import Result
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.contract import column
-from bearingheat.calc.fill import catalogue_values, fill_arrays, implausible_relations
+from bearingheat.calc.fill import fill_arrays, implausible_values
 from bearingheat.calc.models import DEFAULT_MODEL, MODEL_REPORT_UNITS, get_model
 from bearingheat.calc.supports import build_support_arrays
 from bearingheat.catalogue.f2chart import F2Chart
@@ -322,7 +322,9 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
                     for k, v in extra.items() if v is not None}
     # blank dimensions, ratings and factors from the bearing table (Schaeffler HR 1, 2006)
     typed = {k for k, v in {"d": d, "D": D, "B": B, "C0": C0, "Y": Y, "e": e, "Y0": Y0}.items() if v is not None}
-    arrays, fill_notes, unknown = fill_arrays(designation, arrays, typed)
+    # (n_G, no friction input, only for the warning of a speed above it: filled in the same lookup)
+    arrays, fill_notes, unknown = fill_arrays(designation, {**arrays, "n_G": np.asarray(np.nan)}, typed)
+    n_G = arrays.pop("n_G")
     if unknown is not None and D is None:
         raise FrictionInputError(f"{unknown}; or give d, D (and C0)")
     shape = broadcast_shape({**arrays, **extra_arrays}, FrictionInputError)
@@ -355,8 +357,13 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
     for problem in problems:  # warnings of the points they concern
         for point in np.flatnonzero(np.broadcast_to(problem.mask, (size,))):
             some.setdefault(int(point), []).append(problem.message(int(point)))
-    for point, _, message in _implausible_points(designation, arrays, shape):
-        some.setdefault(point, []).append(message)
+    # a load above C0, a speed above the bearing table's n_G: calc's warnings, point by point
+    related = {name: np.broadcast_to(value, shape).ravel()
+               for name, value in (("n", arrays["n"]), ("n_G", n_G), ("Fr", arrays["Fr"]), ("Fa", arrays["Fa"]),
+                                   ("C0", arrays["C0"]))}
+    for position, _, message in implausible_values(related, ARGUMENT_LABELS, np.ones(size, dtype=bool),
+                                                   lambda: [designation] * size):
+        some.setdefault(position, []).append(message)
     # notes on the bearing, on every point: the designation's notes of the catalogue model's tables where the model
     # uses them, and the bearing table's (the dimensions both models read)
     every = every + (list(supports.notes[0]) if friction_model.catalogue_keys else []) + fill_notes
@@ -394,13 +401,3 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
                        for name, unit in MODEL_REPORT_UNITS.items()
                        if name in results and name in friction_model.outputs},
     )
-
-
-def _implausible_points(designation: str | None, arrays: dict[str, np.ndarray], shape: tuple[int, ...]) -> list:
-    """calc's warnings (point, 'warning', message) of a load above C0 and a speed above the bearing table's limiting
-    speed n_G of ``designation``, at each point of the broadcast ``arrays`` (catalogue units)."""
-    size = int(np.prod(shape)) if shape else 1
-    n_G = catalogue_values([designation])[0]["n_G"][0] if designation else np.nan
-    frame = pd.DataFrame({**{name: np.broadcast_to(arrays[name], shape).ravel() for name in ("n", "Fr", "Fa", "C0")},
-                          "n_G": n_G, "designation": designation}, index=range(size))
-    return implausible_relations(frame, ARGUMENT_LABELS, {"n_G": np.ones(size, dtype=bool)})

@@ -13,7 +13,7 @@ table. Each distinct designation is looked up once.
 """
 from __future__ import annotations
 
-from typing import Sequence
+from collections.abc import Callable, Mapping, Sequence
 
 import numpy as np
 import pandas as pd
@@ -24,7 +24,8 @@ from bearingheat.calc.supports import first_rows, group_codes, number_column, te
 from bearingheat.catalogue.bearings import CATALOGUE, bearing, disagreeing, half_steps
 from bearingheat.errors import DesignationError
 
-__all__ = ["FILLED", "fill_from_catalogue", "fill_arrays", "catalogue_values", "implausible_relations"]
+__all__ = ["FILLED", "fill_from_catalogue", "fill_arrays", "catalogue_values", "implausible_relations",
+           "implausible_values"]
 
 #: the columns the bearing table fills (catalogue units: mm, N, 1, 1/min)
 FILLED = ("d", "D", "B", "T", "C0", "e", "Y", "Y0", "n_G")
@@ -134,36 +135,44 @@ def fill_arrays(designation: str | None, arrays: dict[str, np.ndarray], given: s
 
 
 def implausible_relations(frame: pd.DataFrame, labels: Labels, from_table: dict[str, np.ndarray]
-                           ) -> list[tuple[int, str, str]]:
+                          ) -> list[tuple[int, str, str]]:
     """Warnings (row position, 'warning', message) where inputs are each possible but not together: a load
-    above C0, a speed above n_G (catalogue units, contract names; calc's and the Python API's).
+    above C0, a speed above n_G (catalogue units, contract names).
 
     Both are usual signs of a unit mix-up (rpm typed under a header in Hz, N under kN); ``from_table``
     marks the values the bearing table filled (:func:`fill_from_catalogue`), whose messages name the catalogue.
     """
+    numbers = {name: number_column(frame, name) for name in ("n", "n_G", "Fr", "Fa", "C0")}
+    catalogue_n_G = from_table.get("n_G", np.zeros(len(frame), dtype=bool))
+    return implausible_values(numbers, labels, catalogue_n_G, lambda: text_column(frame, "designation"))
+
+
+def implausible_values(numbers: Mapping[str, np.ndarray], labels: Labels, catalogue_n_G: np.ndarray,
+                       designations: Callable[[], Sequence[str | None]]) -> list[tuple[int, str, str]]:
+    """The warnings of :func:`implausible_relations` from the rows' numbers (``numbers``: n, n_G, Fr, Fa, C0, arrays
+    of one length, catalogue units) without a frame: the Python API's points. ``catalogue_n_G`` marks the rows
+    whose n_G is the bearing table's; ``designations()`` gives each row's designation (asked only where a
+    speed is too high)."""
     problems = []
-    n_rows = len(frame)
 
     def user(name, i, value):
         shown = labels.value(name, value)
         return shown if shown == f"{value:g}" else f"{shown} ({value:g} {input_units()[name]})"
 
-    C0 = number_column(frame, "C0")
+    C0 = numbers["C0"]
     for name in ("Fr", "Fa"):
-        load = number_column(frame, name)
+        load = numbers[name]
         with np.errstate(invalid="ignore"):
             above = np.isfinite(load) & np.isfinite(C0) & (load > C0)
         for i in np.flatnonzero(above).tolist():
             problems.append((i, "warning", f"{labels.name(name, i)}: {user(name, i, load[i])} is above the "
                                                 f"static load rating C0 = {C0[i]:g} N; check the load and its unit"))
-    n = number_column(frame, "n")
-    n_G = number_column(frame, "n_G")
-    catalogue_n_G = from_table.get("n_G", np.zeros(n_rows, dtype=bool))
+    n, n_G = numbers["n"], numbers["n_G"]
     with np.errstate(invalid="ignore"):
         fast = np.isfinite(n) & (n > n_G)
-    designations = text_column(frame, "designation") if fast.any() else []  # (a Python text per row)
+    named = designations() if fast.any() else []  # (a Python text per row)
     for i in np.flatnonzero(fast).tolist():
-        of = f" of {designations[i]} ({CATALOGUE})" if catalogue_n_G[i] else ""
+        of = f" of {named[i]} ({CATALOGUE})" if catalogue_n_G[i] else ""
         problems.append((i, "warning", f"{labels.name('n', i)}: {user('n', i, n[i])} is above the limiting "
                                             f"speed n_G = {n_G[i]:g} 1/min{of}; check the speed and its unit"))
     return problems
