@@ -23,7 +23,7 @@ from bearingheat.kernels import friction
 from bearingheat.kernels.thermal import (HEAT_FLOW_AREA, balance_root, default_heat_transfer_coefficient,
                                          heat_flow_area, reference_heat_flux_density, torque_coefficients)
 
-__all__ = ["PAIR_REASON", "SEAL_FRICTION", "REFERENCE_KEYS", "thermal_reference_speed_details",
+__all__ = ["PAIR_REASON", "SEAL_FRICTION", "seal_friction_rows", "REFERENCE_KEYS", "thermal_reference_speed_details",
            "thermal_reference_speed_rows"]
 
 PAIR_REASON = ("n_thr: the heat balance of a bearing pair is not in the sources (ISO 15312 and the Schaeffler "
@@ -32,6 +32,13 @@ PAIR_REASON = ("n_thr: the heat balance of a bearing pair is not in the sources 
 #: the hidden column of the rows with contact seals whose friction results hold the seal friction (the SKF model's
 #: M_seal > 0): their heat balance applies, their n_θr does not (set by :mod:`bearingheat.calc.thermal`)
 SEAL_FRICTION = "_seal_friction"
+
+
+def seal_friction_rows(frame: pd.DataFrame) -> np.ndarray:
+    """The rows the hidden column :data:`SEAL_FRICTION` marks (none where the frame has no such column)."""
+    return frame[SEAL_FRICTION].to_numpy(dtype=bool) if SEAL_FRICTION in frame.columns else np.zeros(len(frame), bool)
+
+
 #: the columns n_θr depends on: rows equal in these (and in SEAL_FRICTION) have the same details
 REFERENCE_KEYS = ("designation", "type", "series", "arrangement", "d", "D", "B", "T", "d1", "D1", "C0")
 
@@ -66,7 +73,7 @@ def thermal_reference_speed_details(frame: pd.DataFrame, *, f0_scale=1.0, f1_sca
         return chosen(_details(frame))
     codes = group_codes(frame, keys)  # (the bearing groups' own codes: SEAL_FRICTION is no bearing input)
     if SEAL_FRICTION in frame.columns:
-        codes = pd.factorize(codes * 2 + frame[SEAL_FRICTION].to_numpy(dtype=np.int64))[0]
+        codes = pd.factorize(codes * 2 + seal_friction_rows(frame))[0]
     first = first_rows(codes)
     if len(first) == len(frame):
         return chosen(_details(frame))
@@ -128,8 +135,7 @@ def _details(frame: pd.DataFrame, f0_scale=1.0, f1_scale=1.0) -> pd.DataFrame:
     # only n_thr refused (after the geometry checks, which say what its balance lacks)
     sealed = np.array([res is not None and method_refusal(res.entry.bearing_type, res.seal) == CONTACT_SEAL_REASON
                        for res, _ in resolved], dtype=bool)[codes]
-    with_seal_friction = sealed & (frame[SEAL_FRICTION].to_numpy(dtype=bool) if SEAL_FRICTION in frame.columns
-                                   else False)
+    with_seal_friction = sealed & seal_friction_rows(frame)
     refuse(refusals.astype(bool) & ~with_seal_friction, refusals)
     refuse(np.asarray(text_column(frame, "arrangement"), dtype=object) == "paired", PAIR_REASON)
     kinds_of_key = np.array([THERMAL_KIND.get(e.bearing_type) or "" if e is not None else "" for e in entries],

@@ -48,7 +48,7 @@ from bearingheat.calc.operating_temperature import (BELOW_AMBIENT_SEARCH, OPERAT
                                                     lowest_operating_temperature, operating_point)
 from bearingheat.calc.permissible_speed import (DEFAULT_SPEED_FACTOR_METHOD, SPEED_FACTOR_METHODS, SpeedFactorMethod,
                                                 permissible_speed_rows)
-from bearingheat.calc.reference_speed import (SEAL_FRICTION, thermal_reference_speed_details,
+from bearingheat.calc.reference_speed import (SEAL_FRICTION, seal_friction_rows, thermal_reference_speed_details,
                                               thermal_reference_speed_rows)
 from bearingheat.calc.messages import with_texts
 from bearingheat.calc.supports import coded_categorical, nonblank, number_column, text_codes, with_columns
@@ -192,11 +192,6 @@ def with_seal_friction(frame: pd.DataFrame, results: pd.DataFrame) -> pd.DataFra
     return with_columns(frame, {SEAL_FRICTION: sealed}) if sealed.any() else frame
 
 
-def _seal_friction_rows(frame: pd.DataFrame) -> np.ndarray:
-    """The rows :func:`with_seal_friction` marked."""
-    return frame[SEAL_FRICTION].to_numpy(dtype=bool) if SEAL_FRICTION in frame.columns else np.zeros(len(frame), bool)
-
-
 def settle_viscosity(frame: pd.DataFrame, results: pd.DataFrame, *, t_limit: float = OPERATING_TEMPERATURE_LIMIT,
                      f2_chart=None, labels=None, model: str = DEFAULT_MODEL):
     """The viscosity at T_op of the rows :func:`fill_viscosity` left pending, from the one friction pass.
@@ -228,7 +223,7 @@ def settle_viscosity(frame: pd.DataFrame, results: pd.DataFrame, *, t_limit: flo
     # its seal friction has a heat balance without n_thr)
     reasons = details["reason"].array  # (a categorical where spread from the distinct bearings: no text per row)
     asked = pending & ~(failed_at_provisional | plain_bushing_rows(results))
-    balanced_without_n_thr = _seal_friction_rows(frame) & ~np.isnan(details["A_r"].to_numpy(dtype=float))
+    balanced_without_n_thr = seal_friction_rows(frame) & ~np.isnan(details["A_r"].to_numpy(dtype=float))
     refused = asked & nonblank(reasons, len(asked)) & ~balanced_without_n_thr
     T_op = np.where(asked & ~refused & (point.status == 0), point.T, np.nan)
     why_unsolved = {int(i): reasons[i] for i in np.flatnonzero(refused)}

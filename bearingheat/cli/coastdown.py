@@ -106,7 +106,7 @@ def run(args: argparse.Namespace) -> int:
         raise UsageError("--torque-only computes no f and takes no --G or --r")
     # a value left out is the API's TMM-7M default (and the result names it in rig_defaults)
     rig: dict[str, Any] = {name: _quantity(getattr(args, name), f"--{name}") for name in ("I", "G", "r")
-           if getattr(args, name) is not None}
+                           if getattr(args, name) is not None}
     if args.torque_only:
         rig.update(G=None, r=None)
     dn = None if args.dn is None else _quantity(args.dn, "--dn")

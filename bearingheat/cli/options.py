@@ -20,8 +20,8 @@ from collections.abc import Mapping
 from bearingheat.errors import UnitError, UsageError
 from bearingheat.units import Quantity, parse_quantity
 
-__all__ = ["option_quantity", "add_output", "add_out_dir", "add_json", "add_quiet", "add_force", "add_f2_chart", "add_vm_chart",
-           "output_help", "out_dir_help", "JSON_HELP", "QUIET_HELP", "FORCE_FILE_HELP", "FORCE_DIR_HELP",
+__all__ = ["option_quantity", "add_output", "add_out_dir", "add_json", "add_quiet", "add_force", "add_f2_chart",
+           "add_vm_chart", "output_help", "out_dir_help", "JSON_HELP", "QUIET_HELP", "FORCE_FILE_HELP", "FORCE_DIR_HELP",
            "F2_CHART_HELP", "VM_CHART_HELP"]
 
 JSON_HELP = "print the results as JSON instead of text"
