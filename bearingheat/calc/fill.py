@@ -155,7 +155,7 @@ def implausible_values(numbers: Mapping[str, np.ndarray], labels: Labels, catalo
     speed is too high)."""
     problems = []
 
-    def user(name, i, value):
+    def user(name, value):
         shown = labels.value(name, value)
         return shown if shown == f"{value:g}" else f"{shown} ({value:g} {input_units()[name]})"
 
@@ -163,16 +163,17 @@ def implausible_values(numbers: Mapping[str, np.ndarray], labels: Labels, catalo
     for name in ("Fr", "Fa"):
         load = numbers[name]
         with np.errstate(invalid="ignore"):
-            above = np.isfinite(load) & np.isfinite(C0) & (load > C0)
-        for i in np.flatnonzero(above).tolist():
-            problems.append((i, "warning", f"{labels.name(name, i)}: {user(name, i, load[i])} is above the "
-                                                f"static load rating C0 = {C0[i]:g} N; check the load and its unit"))
+            rows = np.flatnonzero(np.isfinite(load) & np.isfinite(C0) & (load > C0))
+        # (Python floats: numpy numbers format slower; 0.31 s against 0.41 s for 10^5 messages)
+        for i, value, rating in zip(rows.tolist(), load[rows].tolist(), C0[rows].tolist()):
+            problems.append((i, "warning", f"{labels.name(name, i)}: {user(name, value)} is above the static load "
+                                            f"rating C0 = {rating:g} N; check the load and its unit"))
     n, n_G = numbers["n"], numbers["n_G"]
     with np.errstate(invalid="ignore"):
-        fast = np.isfinite(n) & (n > n_G)
-    named = designations() if fast.any() else []  # (a Python text per row)
-    for i in np.flatnonzero(fast).tolist():
+        rows = np.flatnonzero(np.isfinite(n) & (n > n_G))
+    named = designations() if len(rows) else []  # (a Python text per row)
+    for i, speed, limit in zip(rows.tolist(), n[rows].tolist(), n_G[rows].tolist()):
         of = f" of {named[i]} ({CATALOGUE})" if catalogue_n_G[i] else ""
-        problems.append((i, "warning", f"{labels.name('n', i)}: {user('n', i, n[i])} is above the limiting "
-                                            f"speed n_G = {n_G[i]:g} 1/min{of}; check the speed and its unit"))
+        problems.append((i, "warning", f"{labels.name('n', i)}: {user('n', speed)} is above the limiting speed "
+                                        f"n_G = {limit:g} 1/min{of}; check the speed and its unit"))
     return problems
