@@ -255,7 +255,10 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
         The inputs a model reads beyond the catalogue model's, by contract
         column name: for the SKF model ``oil_level`` and ``d_s`` [length],
         ``VM``, ``mu_sl``, ``mu_bl``, ``seals`` (numbers), ``skf_edition``,
-        ``oil``, ``seal`` (text), ``Dw``, ``T`` [length]. Scalars or arrays,
+        ``oil``, ``seal`` (text), ``Dw``, ``T`` [length], ``C`` [force]
+        (the basic dynamic load rating; not given: the bearing table's by
+        designation; a load below the recommended minimum load, 0.01 C of
+        ball and 0.02 C of roller bearings, is a warning). Scalars or arrays,
         broadcast with the other arguments. A name the model does not read,
         or one that is an argument of friction_torque (``Fr``, ``arrangement``
         ...), is refused.
@@ -322,9 +325,15 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
                     for k, v in extra.items() if v is not None}
     # blank dimensions, ratings and factors from the bearing table (Schaeffler HR 1, 2006)
     typed = {k for k, v in {"d": d, "D": D, "B": B, "C0": C0, "Y": Y, "e": e, "Y0": Y0}.items() if v is not None}
-    # (n_G, no friction input, only for the warning of a speed above it: filled in the same lookup)
-    arrays, fill_notes, unknown = fill_arrays(designation, {**arrays, "n_G": np.asarray(np.nan)}, typed)
+    # (n_G, no friction input, only for the warning of a speed above it, and C, the SKF model's minimum load:
+    # filled in the same lookup; a C given in model_inputs is compared with the table's)
+    table_only = {"n_G": np.asarray(np.nan)}
+    if "C" in friction_model.inputs:
+        table_only["C"] = extra_arrays.get("C", np.asarray(np.nan))
+    arrays, fill_notes, unknown = fill_arrays(designation, {**arrays, **table_only},
+                                              typed | ({"C"} & set(extra_arrays)))
     n_G = arrays.pop("n_G")
+    rating = arrays.pop("C", None)
     if unknown is not None and D is None:
         raise FrictionInputError(f"{unknown}; or give d, D (and C0)")
     shape = broadcast_shape({**arrays, **extra_arrays}, FrictionInputError)
@@ -346,6 +355,8 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
                       "arrangement": arrangement,
                       **{k: (extra[k] if v.ndim == 0 else np.broadcast_to(v, shape).ravel())
                          for k, v in extra_arrays.items()}}
+    if rating is not None and "C" not in extra_arrays:
+        supports.extra["C"] = float(rating)  # the bearing table's (NaN where it has none)
     with np.errstate(all="ignore"):
         results, problems = friction_model.evaluate(supports, Labels(), f2_chart)
     errors = [p for p in problems if p.level == "error"]

@@ -281,7 +281,8 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
         contract column name: for the SKF model ``oil_level`` and ``d_s``
         [length], ``VM``, ``mu_sl``, ``mu_bl``, ``seals`` (numbers),
         ``skf_edition``, ``oil``, ``seal`` (text), ``Dw`` [length] (the
-        total width of tapered roller bearings is the argument ``T``); for
+        total width of tapered roller bearings is the argument ``T``), ``C``
+        [force] (as :func:`friction_torque` takes it); for
         either model ``Y``, the axial load factor of tapered roller
         bearings, and for the catalogue model ``e``, ``X0``, ``Y0``,
         ``f0``, ``f1`` (numbers) and ``alpha`` [angle], as

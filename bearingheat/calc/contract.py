@@ -204,6 +204,8 @@ CONTRACT: tuple[Column, ...] = (
     _in("d_s", "mm", "SKF model: seal counterface diameter (required for contact seals; with it the seal friction "
         "is in the heat balance, and a sealed bearing gets n_per and T_op)", "skf",
         template=("mm", 8)),
+    _in("C", "N", "SKF model: basic dynamic load rating; a load below the recommended minimum load, 0.01 C of ball "
+        "and 0.02 C of roller bearings, is a warning (blank: the bearing table)", "skf", template=("kN", 9)),
     _in("f0_rel_unc", "1", "relative half-width of the 95 % interval of f0 (0.1: +-10 %); gives the bands "
         "MR_low, MR_high, ...", "uncertainty"),
     _in("f1_rel_unc", "1", "relative half-width of the 95 % interval of f1", "uncertainty"),
@@ -281,6 +283,7 @@ RANGES: dict[str, tuple[tuple[float, float] | None, tuple[float, float] | None]]
     "d1": ((-_INF, 1e5), (0.5, 6000.0)),
     "D1": ((-_INF, 1e5), (0.5, 6000.0)),
     "C0": ((-_INF, 1e10), (10.0, 1e8)),           # N
+    "C": ((-_INF, 1e10), (10.0, 1e8)),
     "Fr": ((-_INF, 1e10), (-_INF, 1e8)),
     "Fa": ((-_INF, 1e10), (-_INF, 1e8)),
     "n": ((-_INF, 1e7), (-_INF, 2e5)),            # 1/min

@@ -28,7 +28,7 @@ __all__ = ["FILLED", "fill_from_catalogue", "fill_arrays", "catalogue_values", "
            "implausible_values"]
 
 #: the columns the bearing table fills (catalogue units: mm, N, 1, 1/min)
-FILLED = ("d", "D", "B", "T", "C0", "e", "Y", "Y0", "n_G")
+FILLED = ("d", "D", "B", "T", "C0", "C", "e", "Y", "Y0", "n_G")
 
 
 def catalogue_values(designations: Sequence[str | None] | np.ndarray
@@ -107,8 +107,8 @@ def fill_from_catalogue(frame: pd.DataFrame, labels: Labels
 
 
 def _unit(name: str) -> str:
-    unit = {"C0": "N", "n_G": "1/min"}.get(name, "mm" if name in ("d", "D", "B", "T") else "")
-    return f"{unit} " if unit else ""
+    unit = input_units()[name]  # (the column contract's catalogue unit; none for factors)
+    return f"{unit} " if unit not in ("", "1") else ""
 
 
 def fill_arrays(designation: str | None, arrays: dict[str, np.ndarray], given: set[str]

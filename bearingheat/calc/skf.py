@@ -117,6 +117,38 @@ def _choice(x: _Extra, name: str, default: str):
     return np.where(np.equal(value, _NONE), default, value)
 
 
+#: the recommended minimum load per basic dynamic load rating C (SKF 6000 p. 75), by rolling element
+_MINIMUM_LOAD_SHARE = {"ball": 0.01, "roller": 0.02}
+
+
+def _minimum_load_warnings(add, labels: Labels, rows: np.ndarray, ball: np.ndarray, C: np.ndarray, Fr: np.ndarray,
+                           Fa: np.ndarray, bearings: np.ndarray) -> None:
+    """Warnings where a bearing's load is below the recommended minimum load, 0.01 C of ball and 0.02 C of roller
+    bearings (SKF 6000 p. 75), under which the model does not hold (p. 89). A bearing's load is the larger of its
+    radial load (Fr/2 on each bearing of a pair) and the axial load; with C unknown only a bearing without any
+    load is warned of."""
+    ball = np.broadcast_to(ball, Fr.shape)  # (one bearing's type for all its points)
+    share = np.where(ball, _MINIMUM_LOAD_SHARE["ball"], _MINIMUM_LOAD_SHARE["roller"])
+    Fr_bearing = Fr / bearings
+    axial = Fa > Fr_bearing  # the load the warning names
+    below = rows & (np.maximum(Fr_bearing, Fa) < share * C)
+
+    def light(i):
+        column, given = ("Fa", Fa[i]) if axial[i] else ("Fr", Fr[i])
+        pair = bearings[i] > 1 and not axial[i]
+        each = f" ({labels.value('Fr', Fr_bearing[i])} on each bearing of the pair)" if pair else ""
+        kind = "ball" if ball[i] else "roller"
+        return (f"{labels.name(column, i)}: {labels.value(column, given)}{each} is below the recommended minimum load "
+                f"{labels.value(column, share[i] * C[i])} = {share[i]:g} C of a {kind} bearing (C = {C[i]:g} N, SKF "
+                "6000 p. 75); the SKF model holds at loads at or above it (p. 89), and below it the rolling elements "
+                "may skid")
+    add(below, "warning", light)
+    add(rows & np.isnan(C) & (Fr <= 0) & (Fa <= 0), "warning",
+        lambda i: f"{labels.name('Fr', i)}: 0 and {labels.name('Fa', i)}: 0: without load the SKF model's rolling and "
+                  "sliding moments are 0, but it holds only at loads at or above the recommended minimum load, 0.01 C "
+                  "of ball and 0.02 C of roller bearings (SKF 6000 pp. 75 and 89); give C to check a light load too")
+
+
 def _mapped(values, table: dict) -> np.ndarray | float:
     """table[value] per row (NaN for values not in the table)."""
     if np.ndim(values) == 0:
@@ -265,6 +297,10 @@ def evaluate_skf_model(supports: SupportArrays, labels: Labels, f2_chart: F2Char
     add(ok & carb & (Fa > 0), "warning",
         lambda i: f"{labels.name('Fa', i)}: {labels.value('Fa', Fa[i])} on a {label(i)}: CARB bearings take no "
                   "axial load; their formulas (SKF 6000 p. 91, table 2a) use Fr only")
+    C = x.number("C")
+    bad("C", C, "must be > 0", C <= 0)
+    _minimum_load_warnings(add, labels, ok & ~(C <= 0), np.isin(bearing_type, tuple(catalogue.BALL_TYPES)), C, Fr,
+                           Fa, bearings)
 
     # --- lubrication, oil, sliding coefficients (6000 pp. 98-101; 10000/3 pp. 102-103)
     lubrication = x.text("lubrication")

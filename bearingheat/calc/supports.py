@@ -385,7 +385,7 @@ def _combined_codes(parts: list[tuple[np.ndarray, int]], size: int) -> np.ndarra
 #: inputs that describe a bearing and how it is mounted and lubricated, not its operating point: calc numbers its
 #: rows by them once (:func:`with_bearing_groups`), and every later grouping by some of them reads those numbers
 BEARING_INPUTS = ("designation", "type", "series", "lubrication", "arrangement", "d", "D", "B", "T", "d1", "D1",
-                  "C0", "e", "Y", "X0", "Y0", "alpha", "n_G", "f0")
+                  "C0", "C", "e", "Y", "X0", "Y0", "alpha", "n_G", "f0")
 #: the hidden column of calc's frame that holds those numbers
 BEARING_GROUP = "_bearing_group"
 

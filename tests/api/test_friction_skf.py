@@ -98,7 +98,7 @@ def test_model_inputs_name_no_argument_of_friction_torque():
     with pytest.raises(FrictionInputError) as info:
         friction_torque(**EXAMPLE, n=3500 * u.rpm, model_inputs=dict(BATH, oil_level=2.5 * u.mm, oil_lvl=3 * u.mm))
     assert str(info.value) == ("model_inputs: 'oil_lvl' is not an input of this model; it reads oil, mu_sl, mu_bl, "
-                               "oil_level, VM, skf_edition, seal, seals, d_s, Dw, T")
+                               "oil_level, VM, skf_edition, seal, seals, d_s, C, Dw, T")
 
 
 def test_an_implausible_model_input_is_a_warning_of_the_points_it_concerns():
@@ -114,7 +114,8 @@ def test_an_implausible_model_input_is_a_warning_of_the_points_it_concerns():
 
 
 def test_only_the_notes_and_the_series_of_the_model_that_computed_the_point():
-    args = dict(n=3000 * u.rpm, nu=20 * NU, Fr=1 * u.kN, lubrication="grease", d=40 * u.mm, D=80 * u.mm)
+    # (Fr above the minimum load 0.02 C = 1.26 kN of the NU 208, below which the SKF model warns)
+    args = dict(n=3000 * u.rpm, nu=20 * NU, Fr=2 * u.kN, lubrication="grease", d=40 * u.mm, D=80 * u.mm)
     skf = friction_torque("NU 208", model="skf", **args)
     assert (skf.status, skf.messages, skf.bearing_type, skf.series) == (["ok"], [""], "cylindrical_roller", "2")
     catalogue = friction_torque("NU 208", **args)

@@ -162,7 +162,7 @@ def test_status_formula_and_conditional_formats(tmp_path):
     status = ws.cell(3, header.index("status") + 1).value
     # a header or unit, the designation, arrangement, alpha, type, series, f2 (not read for a 6208) make every
     # result stale
-    assert status.startswith("=IF(OR(SUMPRODUCT(--(Supports!$A$1:$AZ$2<>'Calc inputs'!$A$1:$AZ$2))>0,"
+    assert status.startswith("=IF(OR(SUMPRODUCT(--(Supports!$A$1:$BA$2<>'Calc inputs'!$A$1:$BA$2))>0,"
                              "Supports!B3<>'Calc inputs'!B3,Supports!J3<>'Calc inputs'!J3,")
     assert '"recalculate with bearingheat (every result)",IF(OR(Supports!C3<>\'Calc inputs\'!C3,' in status
     assert status.endswith('),"recalculate with bearingheat","ok"))')
@@ -289,7 +289,7 @@ def test_the_check_for_supports_without_results_sits_below_the_table(tmp_path):
     count = check[4:check.index(">7,")]  # the rows counted now, written twice
     assert check == (f'=IF({count}>7,"sheet \'Supports\' has "&TEXT({count}-7,"[=1]""1 support"";0"" supports""")'
                      '&" without results: recalculate with bearingheat","")')
-    assert check.count("COUNTIFS(") == 2 and check.count('1048576,""') == 2 * 52  # every column calc read
+    assert check.count("COUNTIFS(") == 2 and check.count('1048576,""') == 2 * 53  # every column calc read
     rules = {str(cf.sqref): (rule.formula[0], rule.dxf.font.b, rule.dxf.font.color.rgb)
              for cf in ws.conditional_formatting for rule in cf.rules}
     assert rules["A10"] == ("LEN($A$10)>0", True, "FFC65911")  # bold orange, as the status asking for a run
