@@ -39,6 +39,27 @@ def _nominal_angle(designation) -> float:
     return np.nan if angle is None else angle
 
 
+def _misfits(z: np.ndarray, dw: np.ndarray, pitch: np.ndarray, d: np.ndarray, D: np.ndarray) -> np.ndarray:
+    """Per row why its balls cannot sit in its bearing ('' where they can): the pitch circle lies between the bore d
+    and the outside diameter D, a ball fits into the section (D - d)/2 between them, and z balls side by side
+    around the pitch circle need Dw <= dm_pitch*sin(180°/z) (two neighbours touch there)."""
+    reasons = np.full(len(z), "", dtype=object)
+    with np.errstate(invalid="ignore"):
+        widest = np.where(z >= 2, pitch * np.sin(np.pi / np.maximum(z, 2)), np.inf)
+        checks = ((~((d < pitch) & (pitch < D)) & ~np.isnan(pitch),
+                   lambda i: f"dm_pitch = {pitch[i]:g} mm must lie between d = {d[i]:g} mm and D = {D[i]:g} mm"),
+                  (dw >= (D - d) / 2,
+                   lambda i: f"Dw = {dw[i]:g} mm must be smaller than (D - d)/2 = {(D[i] - d[i]) / 2:g} mm, the "
+                             "section between bore and outside diameter"),
+                  (dw > widest,
+                   lambda i: f"{z[i]:g} balls of Dw = {dw[i]:g} mm do not fit side by side on the pitch circle of "
+                             f"dm_pitch = {pitch[i]:g} mm: at most Dw = dm_pitch*sin(180°/z) = {widest[i]:.4g} mm"))
+    for bad, reason in checks:  # the first misfit of a row is its message
+        for i in np.flatnonzero(bad & (reasons == "")).tolist():
+            reasons[i] = reason(i)
+    return reasons
+
+
 def extend(frame: pd.DataFrame, results: pd.DataFrame, **compute):
     """The column ``Fa_min`` [N] of the ball bearing rows with geometry, and (row position, level, message) problems.
 
@@ -60,15 +81,20 @@ def extend(frame: pd.DataFrame, results: pd.DataFrame, **compute):
     ok = ~failed_rows(results)
     has_geometry = ~np.isnan(z) & ~np.isnan(dw) & ~np.isnan(pitch)
     fa_min = np.full(len(frame), np.nan)
-    checked = has_geometry & is_ball & ok
+    d, D = frame["d"].to_numpy(dtype=float), frame["D"].to_numpy(dtype=float)
+    misfit = _misfits(z, dw, pitch, d, D)
+    checked = has_geometry & is_ball & ok & (misfit == "")
     rows = np.flatnonzero(checked & ~np.isnan(alpha))
     fa_min[rows], reasons = minimum_axial_load_rows(z[rows], dw[rows], pitch[rows], n[rows], alpha[rows])
     refused = np.zeros(len(frame), dtype=bool)
     refused[rows] = reasons != ""
     reason_of = dict(zip(rows.tolist(), reasons.tolist()))
     problems = []  # messages only for the rows that have them, in row order
-    for i in np.flatnonzero((checked & np.isnan(alpha)) | refused | (Fa < fa_min)).tolist():
-        if np.isnan(alpha[i]):
+    misfits = has_geometry & is_ball & ok & (misfit != "")
+    for i in np.flatnonzero((checked & np.isnan(alpha)) | refused | (Fa < fa_min) | misfits).tolist():
+        if misfits[i]:
+            problems.append((i, "error", f"Fa_min: impossible geometry: {misfit[i]}"))
+        elif np.isnan(alpha[i]):
             problems.append((i, "warning", "Fa_min: give alpha [deg] (the contact angle) to check the minimum "
                                            "axial load against ball skidding (Zaitsev & Voronkin)"))
         elif refused[i]:

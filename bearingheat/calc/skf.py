@@ -337,6 +337,9 @@ def evaluate_skf_model(supports: SupportArrays, labels: Labels, f2_chart: F2Char
                                    "that H", jet_drag & np.isnan(H))
     bad("oil_level", H, "must be >= 0", H < 0)
     bad("Dw", Dw, "must be > 0", Dw <= 0)
+    add(ok & (Dw >= 0.5 * (D - d)), "error",
+        lambda i: f"{labels.name('Dw', i)}: {labels.value('Dw', float(Dw[i]))} must be smaller than (D - d)/2 = "
+                  f"{labels.value('Dw', 0.5 * (D[i] - d[i]))}, the section between bore and outside diameter")
     bad("VM", VM, "must be >= 0", VM < 0)
     edition = _choice(x, "skf_edition", catalogue.DEFAULT_EDITION)
     known_edition = np.isin(edition, catalogue.EDITIONS)

@@ -39,9 +39,32 @@ def test_rows_the_formula_refuses_are_errors_of_their_own_and_the_others_are_com
     out = calc(table)
     assert out["status"].tolist() == ["ok", "error", "error", "ok"]
     assert out.loc[1, "message"] == "Fa_min: z = 11.5: the number of balls must be a whole number of at least 1"
-    assert out.loc[2, "message"] == ("Fa_min: impossible geometry: pitch diameter D0 = 7 mm must exceed "
-                                     "d_w = 7.9 mm")
+    # (a pitch circle inside the bore: the bearing's own dimensions say so before the formula's d_w < D0 would)
+    assert out.loc[2, "message"] == ("Fa_min: impossible geometry: dm_pitch = 7 mm must lie between d = 25 mm and "
+                                     "D = 52 mm")
     alone = [calc(table.iloc[[i]])["Fa_min [N]"].iloc[0] for i in (0, 3)]
     assert out.loc[[0, 3], "Fa_min [N]"].tolist() == pytest.approx(alone, rel=1e-15)
     assert alone == pytest.approx([minimum_axial_load(12, 7.9, 38.5, 12000, 30.0),
                                    minimum_axial_load(12, 7.9, 38.5, 6000, 30.0)], rel=1e-12)
+
+
+def test_balls_that_cannot_sit_in_their_bearing_are_errors_naming_why():
+    """z, Dw and dm_pitch are checked against the bearing's own d and D: the pitch circle between bore and outside
+    diameter, a ball within the section (D - d)/2, and z balls side by side on the pitch circle (two neighbours
+    touch at Dw = dm_pitch*sin(180°/z)); a row of the 7205 that passes all three gets its Fa_min."""
+    base = {"designation": "7205", "d [mm]": 25, "D [mm]": 52, "C0 [N]": 9300, "alpha [deg]": 30, "z": 12,
+            "Dw [mm]": 7.9, "dm_pitch [mm]": 38.5, "lubrication": "grease", "n [rpm]": 12000, "Fr [N]": 100,
+            "nu [mm^2/s]": 20, "Fa [N]": 600}
+    table = pd.DataFrame([base, {**base, "Dw [mm]": 13.5}, {**base, "dm_pitch [mm]": 52}, {**base, "z": 16},
+                          {**base, "z": 15}])
+    out = calc(table)
+    assert out["status"].tolist() == ["ok", "error", "error", "error", "ok"]
+    assert out.loc[1, "message"] == ("Fa_min: impossible geometry: Dw = 13.5 mm must be smaller than (D - d)/2 = "
+                                     "13.5 mm, the section between bore and outside diameter")
+    assert out.loc[2, "message"] == ("Fa_min: impossible geometry: dm_pitch = 52 mm must lie between d = 25 mm and "
+                                     "D = 52 mm")
+    # 38.5*sin(180°/16) = 7.511 mm < 7.9 mm; with 15 balls 38.5*sin(12°) = 8.005 mm, room enough
+    assert out.loc[3, "message"] == ("Fa_min: impossible geometry: 16 balls of Dw = 7.9 mm do not fit side by side on "
+                                     "the pitch circle of dm_pitch = 38.5 mm: at most Dw = dm_pitch*sin(180°/z) = "
+                                     "7.511 mm")
+    assert out.loc[4, "Fa_min [N]"] == pytest.approx(minimum_axial_load(15, 7.9, 38.5, 12000, 30.0), rel=1e-12)

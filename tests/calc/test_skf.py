@@ -203,11 +203,19 @@ def test_a_double_row_series_given_as_type_and_series_has_the_drag_of_its_design
 
 def test_oil_level_low_or_high():
     """Below the centre of the lowest rolling element: Krs = 3e-8; above it the text names no starvation."""
-    results, _ = run(EXAMPLE, {**EXAMPLE, "oil_level": 10.0}, {**EXAMPLE, "oil_level": 15.0, "Dw": 40.0},
-                     {**EXAMPLE, "oil_level": 15.0, "Dw": 12.0})
+    results, _ = run(EXAMPLE, {**EXAMPLE, "oil_level": 10.0}, {**EXAMPLE, "oil_level": 6.0, "Dw": 14.0},
+                     {**EXAMPLE, "oil_level": 6.0, "Dw": 11.0})
     phi_rs = results["phi_rs"].tolist()
     assert phi_rs[0] < 1 and phi_rs[1] == 1.0      # no Dw: H >= (D − d)/4 is above the centre
-    assert phi_rs[2] < 1 and phi_rs[3] == 1.0      # Dw given: H < Dw/2 is low
+    # Dw given: H < Dw/2 is low, H >= Dw/2 is not (without Dw, 6 mm < (D − d)/4 = 10 mm would count as low)
+    assert phi_rs[2] < 1 and phi_rs[3] == 1.0
+
+
+def test_a_rolling_element_larger_than_the_ring_section_is_refused():
+    # 22208 E: (D - d)/2 = 20 mm between bore and outside diameter; a 40 mm roller is a typing or unit slip
+    results, messages = run({**EXAMPLE, "Dw": 40.0}, {**EXAMPLE, "Dw": 19.9})
+    assert messages == {0: [("error", "Dw [mm]: 40 must be smaller than (D - d)/2 = 20, the section between bore "
+                                      "and outside diameter")]}
 
 
 def test_oil_jet_drag_is_twice_the_bath_drag_at_the_given_level():
