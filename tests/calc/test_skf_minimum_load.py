@@ -26,9 +26,9 @@ def calc(*rows):
 
 
 def test_a_ball_bearing_below_a_hundredth_of_c_is_warned_of_and_at_it_is_not():
-    out = calc({"Fr [kN]": 0.1}, {"Fr [kN]": 0.14}, {"Fr [kN]": 0.2})
+    out = calc({"Fr [N]": 100}, {"Fr [N]": 140}, {"Fr [N]": 200})  # (in N: 140 N is 0.01 C to the last digit)
     assert out["status"].tolist() == ["warning", "ok", "ok"]
-    assert out["message"].iat[0] == ("Fr [kN]: 0.1 is below the recommended minimum load 0.14 = 0.01 C of a ball "
+    assert out["message"].iat[0] == ("Fr [N]: 100 is below the recommended minimum load 140 = 0.01 C of a ball "
                                      f"bearing (C = 14000 N, SKF 6000 p. 75); {SOURCE}")
     # a warning only: the moments are computed as before, and they grow with the load
     assert np.all(np.diff(out["MR [N*mm]"].to_numpy()) > 0)
