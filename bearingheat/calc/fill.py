@@ -90,9 +90,9 @@ def fill_from_catalogue(frame: pd.DataFrame, labels: Labels
         steps = half_steps(name, per_key[name])[key]
         differing = ~blank & disagreeing(name, given[first], catalogue, steps)
         if differing.any():  # the words after the column's name, once a group; the name is the row's own cell
-            typed, printed, unit = given[first].tolist(), catalogue.tolist(), _unit(name)  # Python floats format fast
-            said = {g: f": {labels.value(name, typed[g])} differs from {printed[g]:g} {unit}of "
-                       f"{designations[key[g]]} in the bearing table ({CATALOGUE}); the value given is used"
+            typed, printed = given[first].tolist(), catalogue.tolist()  # Python floats format fast
+            said = {g: f": {labels.value(name, typed[g])} differs from {_in_the_user_s_unit(labels, name, printed[g])} "
+                       f"of {designations[key[g]]} in the bearing table ({CATALOGUE}); the value given is used"
                     for g in np.flatnonzero(differing).tolist()}
             header = labels.name(name) if labels.cell is None else None
             problems.extend((i, "warning", f"{header or labels.name(name, i)}{said[groups[i]]}")
@@ -104,6 +104,13 @@ def fill_from_catalogue(frame: pd.DataFrame, labels: Labels
     if not filled:
         return frame, problems, from_table
     return with_columns(frame, filled), problems, from_table
+
+
+def _in_the_user_s_unit(labels: Labels, name: str, value: float) -> str:
+    """A catalogue value as the user's column shows it, the catalogue unit's value after it where the units differ:
+    '18 (18000 N)' under 'C0 [kN]', '15 mm' under 'B [mm]'."""
+    shown = labels.value(name, value)
+    return f"{value:g} {_unit(name)}".rstrip() if shown == f"{value:g}" else f"{shown} ({value:g} {_unit(name).rstrip()})"
 
 
 def _unit(name: str) -> str:

@@ -110,7 +110,8 @@ def test_a_typed_value_wins_and_a_disagreement_is_a_warning():
     out = calc(pd.concat([_row(**{"C0 [kN]": 19.0, "D [mm]": 80.0}), _row(**{"C0 [kN]": 18.04})],
                          ignore_index=True))
     assert out["status"].tolist() == ["warning", "ok"]
-    assert out["message"].iat[0] == ("C0 [kN]: 19 differs from 18000 N of 6208 in the bearing table "
+    # (the table's value in the column's unit, and in the catalogue unit after it)
+    assert out["message"].iat[0] == ("C0 [kN]: 19 differs from 18 (18000 N) of 6208 in the bearing table "
                                      "(Schaeffler HR 1, 2006); the value given is used")
     assert out["P0 [N]"].iat[0] == 2000.0
 

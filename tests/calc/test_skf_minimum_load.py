@@ -65,8 +65,8 @@ def test_an_axial_load_above_the_minimum_loads_the_bearing_and_one_below_is_name
 def test_a_given_c_is_used_and_one_that_differs_from_the_table_is_named():
     out = calc({"Fr [kN]": 0.1, "C [kN]": 5})
     # 0.01 C = 50 N < 100 N: no minimum-load warning, but the table's C differs
-    assert out["message"].iat[0] == ("C [kN]: 5 differs from 14000 N of 6205 in the bearing table (Schaeffler HR 1, "
-                                     "2006); the value given is used")
+    assert out["message"].iat[0] == ("C [kN]: 5 differs from 14 (14000 N) of 6205 in the bearing table (Schaeffler "
+                                     "HR 1, 2006); the value given is used")
     out = calc({"designation": "", "type": "deep_groove_ball", "series": "62", "d [mm]": 25, "D [mm]": 52,
                 "Fr [N]": 80, "C [N]": 10000})
     assert out["message"].iat[0].startswith("Fr [N]: 80 is below the recommended minimum load 100 = 0.01 C of a ball "
