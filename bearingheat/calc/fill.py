@@ -109,8 +109,8 @@ def fill_from_catalogue(frame: pd.DataFrame, labels: Labels
 def _in_the_user_s_unit(labels: Labels, name: str, value: float) -> str:
     """A catalogue value as the user's column shows it, the catalogue unit's value after it where the units differ:
     '18 (18000 N)' under 'C0 [kN]', '15 mm' under 'B [mm]'."""
-    shown = labels.value(name, value)
-    return f"{value:g} {_unit(name)}".rstrip() if shown == f"{value:g}" else f"{shown} ({value:g} {_unit(name).rstrip()})"
+    shown, unit = labels.value(name, value), _unit(name).rstrip()
+    return f"{value:g} {unit}".rstrip() if shown == f"{value:g}" else f"{shown} ({value:g} {unit})"
 
 
 def _unit(name: str) -> str:
