@@ -27,7 +27,7 @@ from bearingheat.api._checks import (ARGUMENT_LABELS, broadcast_shape, converted
 from bearingheat.api.results import Result
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.contract import column
-from bearingheat.calc.fill import fill_arrays, implausible_values
+from bearingheat.calc.fill import below_minimum_load, fill_arrays, implausible_values
 from bearingheat.calc.models import DEFAULT_MODEL, MODEL_REPORT_UNITS, get_model
 from bearingheat.calc.supports import build_support_arrays
 from bearingheat.catalogue.f2chart import F2Chart
@@ -81,7 +81,8 @@ class FrictionResult(Result):
     messages : list of str
         Per operating point, joined by '; ': implausible magnitudes
         (probably a unit mix-up), a load above C0 or a speed above the
-        bearing table's limiting speed n_G (as calc warns of them), a
+        bearing table's limiting speed n_G (as calc warns of them), a load
+        below the bearing's minimum load, a
         contact seal whose friction is not in the
         model, a cylindrical roller bearing above Fa/Fr = 0.4, notes on the
         designation, values that differ from the bearing table.
@@ -171,7 +172,9 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
     and a Series in gives a Series out. A number outside its valid range
     raises; one outside its plausible range (usually a unit mix-up) is
     returned as a warning in :attr:`FrictionResult.messages`, as is a load
-    above C0 or a speed above the bearing table's n_G.
+    above C0 or a speed above the bearing table's n_G, and a load below the
+    bearing's minimum load (C/100, or C0/60 of cylindrical roller bearings,
+    Schaeffler HR 1; the SKF model: its own rule).
 
     Parameters
     ----------
@@ -255,10 +258,12 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
         The inputs a model reads beyond the catalogue model's, by contract
         column name: for the SKF model ``oil_level`` and ``d_s`` [length],
         ``VM``, ``mu_sl``, ``mu_bl``, ``seals`` (numbers), ``skf_edition``,
-        ``oil``, ``seal`` (text), ``Dw``, ``T`` [length], ``C`` [force]
-        (the basic dynamic load rating; not given: the bearing table's by
-        designation; a load below the recommended minimum load, 0.01 C of
-        ball and 0.02 C of roller bearings, is a warning). Scalars or arrays,
+        ``oil``, ``seal`` (text), ``Dw``, ``T`` [length]; for either model
+        ``C`` [force], the basic dynamic load rating (not given: the bearing
+        table's by designation), under whose minimum load a point gets a
+        warning (the catalogue model: C/100, or C0/60 of cylindrical roller
+        bearings, Schaeffler HR 1; the SKF model: 0.01 C of ball and 0.02 C
+        of roller bearings). Scalars or arrays,
         broadcast with the other arguments. A name the model does not read,
         or one that is an argument of friction_torque (``Fr``, ``arrangement``
         ...), is refused.
@@ -325,15 +330,13 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
                     for k, v in extra.items() if v is not None}
     # blank dimensions, ratings and factors from the bearing table (Schaeffler HR 1, 2006)
     typed = {k for k, v in {"d": d, "D": D, "B": B, "C0": C0, "Y": Y, "e": e, "Y0": Y0}.items() if v is not None}
-    # (n_G, no friction input, only for the warning of a speed above it, and C, the SKF model's minimum load:
-    # filled in the same lookup; a C given in model_inputs is compared with the table's)
-    table_only = {"n_G": np.asarray(np.nan)}
-    if "C" in friction_model.inputs:
-        table_only["C"] = extra_arrays.get("C", np.asarray(np.nan))
+    # (n_G, no friction input, only for the warning of a speed above it, and C, for the minimum load: filled in the
+    # same lookup; a C given in model_inputs is compared with the table's)
+    table_only = {"n_G": np.asarray(np.nan), "C": extra_arrays.get("C", np.asarray(np.nan))}
     arrays, fill_notes, unknown = fill_arrays(designation, {**arrays, **table_only},
                                               typed | ({"C"} & set(extra_arrays)))
     n_G = arrays.pop("n_G")
-    rating = arrays.pop("C", None)
+    rating = arrays.pop("C")
     if unknown is not None and D is None:
         raise FrictionInputError(f"{unknown}; or give d, D (and C0)")
     shape = broadcast_shape({**arrays, **extra_arrays}, FrictionInputError)
@@ -355,7 +358,7 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
                       "arrangement": arrangement,
                       **{k: (extra[k] if v.ndim == 0 else np.broadcast_to(v, shape).ravel())
                          for k, v in extra_arrays.items()}}
-    if rating is not None and "C" not in extra_arrays:
+    if "C" in friction_model.inputs and "C" not in extra_arrays:
         supports.extra["C"] = float(rating)  # the bearing table's (NaN where it has none)
     with np.errstate(all="ignore"):
         results, problems = friction_model.evaluate(supports, Labels(), f2_chart)
@@ -375,6 +378,13 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
     for position, _, message in implausible_values(related, ARGUMENT_LABELS, np.ones(size, dtype=bool),
                                                    lambda: [designation] * size):
         some.setdefault(position, []).append(message)
+    if not friction_model.own_minimum_load:  # a load below the bearing table's minimum load (the SKF model: its own)
+        loads = {**{name: related[name] for name in ("Fr", "Fa", "C0")},
+                 "C": np.broadcast_to(np.asarray(rating, dtype=float), shape).ravel()}
+        types = np.broadcast_to(np.asarray(friction_model.bearing_keys(supports)[0], dtype=object), (size,))
+        for position, _, message in below_minimum_load(loads, types, ARGUMENT_LABELS, np.ones(size, dtype=bool),
+                                                       2.0 if arrangement == "paired" else 1.0):
+            some.setdefault(position, []).append(message)
     # notes on the bearing, on every point: the designation's notes of the catalogue model's tables where the model
     # uses them, and the bearing table's (the dimensions both models read)
     every = every + (list(supports.notes[0]) if friction_model.catalogue_keys else []) + fill_notes

@@ -19,7 +19,7 @@ from bearingheat.api._checks import (ARGUMENT_LABELS, broadcast_shape, converted
                                      point_status, point_warnings, shared_index, where)
 from bearingheat.api.results import Result
 from bearingheat.calc.contract import ARRANGEMENTS, column
-from bearingheat.calc.fill import fill_from_catalogue, implausible_relations
+from bearingheat.calc.fill import fill_from_catalogue, implausible_relations, minimum_load_relations
 from bearingheat.calc.heat_flows import walther_columns
 from bearingheat.calc.models import DEFAULT_MODEL, compute_supports, get_model
 from bearingheat.calc.thermal import (OPERATING_TEMPERATURE_LIMIT, SPEED_FACTOR_METHODS, VISCOSITY_AT,
@@ -165,7 +165,8 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
     absolute (degC, K); ``dT_oil`` is a difference (K, delta_degC);
     ``iso_vg`` and ``VI`` are plain numbers. A number outside
     its valid range raises; one outside its plausible range is a warning in
-    ``messages``, as is a load above C0 or a speed above n_G. A point the
+    ``messages``, as is a load above C0, a speed above n_G or a load below
+    the bearing's minimum load (as :func:`friction_torque`). A point the
     friction model or the balance cannot compute (a missing n, a negative
     load, an unknown designation) gets status
     'error' and NaN, and does not raise. A point whose balance has no
@@ -281,11 +282,12 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
         contract column name: for the SKF model ``oil_level`` and ``d_s``
         [length], ``VM``, ``mu_sl``, ``mu_bl``, ``seals`` (numbers),
         ``skf_edition``, ``oil``, ``seal`` (text), ``Dw`` [length] (the
-        total width of tapered roller bearings is the argument ``T``), ``C``
-        [force] (as :func:`friction_torque` takes it); for
+        total width of tapered roller bearings is the argument ``T``); for
         either model ``Y``, the axial load factor of tapered roller
-        bearings, and for the catalogue model ``e``, ``X0``, ``Y0``,
-        ``f0``, ``f1`` (numbers) and ``alpha`` [angle], as
+        bearings, and ``C`` [force], the basic dynamic load rating (as
+        :func:`friction_torque` takes it), and for the catalogue model
+        ``e``, ``X0``, ``Y0``, ``f0``, ``f1`` (numbers) and ``alpha``
+        [angle], as
         :func:`friction_torque` takes them. Scalars or arrays, broadcast
         with the other arguments. A name the model does not read, or one
         that is an argument of heat_balance (``T``, ``designation`` ...),
@@ -388,7 +390,7 @@ def heat_balance(designation: str | None = None, *, d: QuantityLike | None = Non
         raise HeatBalanceError("nu: missing; give nu, or nu40 and nu100, or iso_vg")
     frame, results, settled = settle_viscosity(frame, compute_supports(frame, f2_chart=f2_chart, model=model),
                                                t_limit=limit, f2_chart=f2_chart, model=model)
-    problems += settled
+    problems += settled + minimum_load_relations(frame, results, ARGUMENT_LABELS, model)
     extra, more = heat_balance_rows(frame, results, method=method, t_limit=limit, reference_speed=True,
                                     f2_chart=f2_chart)
     problems = fill_problems + problems + more

@@ -204,8 +204,9 @@ CONTRACT: tuple[Column, ...] = (
     _in("d_s", "mm", "SKF model: seal counterface diameter (required for contact seals; with it the seal friction "
         "is in the heat balance, and a sealed bearing gets n_per and T_op)", "skf",
         template=("mm", 8)),
-    _in("C", "N", "SKF model: basic dynamic load rating; a load below the recommended minimum load, 0.01 C of ball "
-        "and 0.02 C of roller bearings, is a warning (blank: the bearing table)", "skf", template=("kN", 9)),
+    _in("C", "N", "basic dynamic load rating: a load below the bearing's minimum load is a warning (the catalogue "
+        "model: C/100, or C0/60 of cylindrical roller bearings, Schaeffler HR 1; the SKF model: 0.01 C of ball and "
+        "0.02 C of roller bearings); blank: the bearing table", template=("kN", 9)),
     _in("f0_rel_unc", "1", "relative half-width of the 95 % interval of f0 (0.1: +-10 %); gives the bands "
         "MR_low, MR_high, ...", "uncertainty"),
     _in("f1_rel_unc", "1", "relative half-width of the 95 % interval of f1", "uncertainty"),

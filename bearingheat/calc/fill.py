@@ -20,12 +20,15 @@ import pandas as pd
 
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.contract import input_units
-from bearingheat.calc.supports import first_rows, group_codes, number_column, text_codes, text_column, with_columns
-from bearingheat.catalogue.bearings import CATALOGUE, bearing, disagreeing, half_steps
+from bearingheat.calc.models import failed_rows, rows_of_models
+from bearingheat.calc.supports import (bearing_rows, blanks_filled, column_codes, first_rows, group_codes,
+                                      number_column, text_codes, text_column, with_columns)
+from bearingheat.catalogue.bearings import CATALOGUE, bearing, disagreeing, half_steps, minimum_loads
+from bearingheat.catalogue.designation import BEARING_TYPES
 from bearingheat.errors import DesignationError
 
 __all__ = ["FILLED", "fill_from_catalogue", "fill_arrays", "catalogue_values", "implausible_relations",
-           "implausible_values"]
+           "implausible_values", "below_minimum_load", "minimum_load_relations"]
 
 #: the columns the bearing table fills (catalogue units: mm, N, 1, 1/min)
 FILLED = ("d", "D", "B", "T", "C0", "C", "e", "Y", "Y0", "n_G")
@@ -184,3 +187,78 @@ def implausible_values(numbers: Mapping[str, np.ndarray], labels: Labels, catalo
         problems.append((i, "warning", f"{labels.name('n', i)}: {user('n', speed)} is above the limiting speed "
                                         f"n_G = {limit:g} 1/min{of}; check the speed and its unit"))
     return problems
+
+
+def _minimum_loads(bearing_types, C: np.ndarray, C0: np.ndarray):
+    """Per row the minimum load [N] of its bearing type (NaN where HR 1 gives none or the rating is missing), and
+    what the messages need: each row's code into ``types`` and the rule of each type (None: not checked)."""
+    codes, types = column_codes(pd.Series(bearing_types, copy=False))
+    rules = [minimum_loads().get(t) if isinstance(t, str) else None for t in types]
+    # per code (the last entry: code -1, no type) the rating's divisor (NaN: not checked) and whether it is C0
+    divisor = np.array([rule.divisor if rule else np.nan for rule in rules] + [np.nan])[codes]
+    of_C0 = np.array([rule is not None and rule.rating == "C0" for rule in rules] + [False])[codes]
+    return np.where(of_C0, C0, C) / divisor, codes, types, rules
+
+
+def below_minimum_load(numbers: Mapping[str, np.ndarray],
+                       bearing_types: Sequence[str | None] | pd.Categorical | np.ndarray,
+                       labels: Labels, rows: np.ndarray, bearings: np.ndarray | float = 1.0,
+                       bearing: tuple[np.ndarray, np.ndarray] | None = None) -> list[tuple[int, str, str]]:
+    """Warnings (row position, 'warning', message) where a bearing's load is below the minimum load its type needs
+    for slippage-free running in continuous operation: C/100, or C0/60 of cylindrical roller bearings (Schaeffler
+    HR 1, 2006, :func:`~bearingheat.catalogue.bearings.minimum_loads`).
+
+    ``numbers``: Fr, Fa, C, C0 (arrays of one length in catalogue units; a blank load, NaN, is 0);
+    ``bearings``: 2 on the rows of a pair in X or O arrangement, else 1 (or one number for all rows);
+    ``bearing_types`` the type of each row (types without a minimum load in HR 1 are not checked, nor rows
+    without the rating); ``rows`` the rows to check; ``bearing`` (each row's bearing, the first row of each)
+    where rows of one bearing share type, C and C0 (calc's frame): the minimum is worked out once a bearing.
+    The catalogue's P is the equivalent dynamic load, which needs X and Y the tables do not give: the bearing's
+    load here is the larger of its radial load (Fr/2 on each bearing of a pair) and Fa, the least P can be
+    where Y >= 1.
+    """
+    C, C0 = numbers["C"], numbers["C0"]
+    if bearing is None:
+        each_row = None
+        minimum, codes, types, rules = _minimum_loads(bearing_types, C, C0)
+    else:
+        each_row, first = bearing
+        minimum, codes, types, rules = _minimum_loads(pd.Series(bearing_types, copy=False).iloc[first].array,
+                                                      C[first], C0[first])
+        minimum = minimum[each_row]
+    if not any(rules):
+        return []
+    Fr, Fa = numbers["Fr"], numbers["Fa"]
+    Fr_bearing = Fr / bearings if np.ndim(bearings) or bearings != 1 else Fr
+    each_bearing = np.broadcast_to(bearings, np.shape(Fr))
+    with np.errstate(invalid="ignore"):
+        # a blank load is 0: NaN where both are blank, below any minimum (one that is NaN is no minimum)
+        below = rows & ~(np.fmax(Fr_bearing, Fa) >= minimum) & (minimum > 0)
+    problems = []
+    for i in np.flatnonzero(below).tolist():
+        code = codes[i if each_row is None else each_row[i]]
+        rule, kind = rules[code], BEARING_TYPES[types[code]]
+        column, load_i = ("Fa", Fa[i]) if Fa[i] > Fr_bearing[i] else ("Fr", 0.0 if np.isnan(Fr[i]) else Fr[i])
+        each = f" ({labels.value('Fr', Fr_bearing[i])} on each bearing of the pair)" \
+            if column == "Fr" and each_bearing[i] > 1 else ""
+        problems.append((i, "warning", f"{labels.name(column, i)}: {labels.value(column, load_i)}{each} is below the "
+                                        f"minimum load {labels.value(column, minimum[i])} = {rule.formula} of "
+                                        f"{'an' if kind[0] in 'aeiou' else 'a'} {kind} for slippage-free running "
+                                        f"({CATALOGUE}, p. {rule.page}): the bearing may slip, the more so at high "
+                                        "speeds and accelerations"))
+    return problems
+
+
+def minimum_load_relations(frame: pd.DataFrame, results: pd.DataFrame, labels: Labels, model: str
+                           ) -> list[tuple[int, str, str]]:
+    """:func:`below_minimum_load` of calc's rows (catalogue units, contract names; ``results`` of
+    :func:`~bearingheat.calc.models.compute_supports`): the rows whose friction model does not check the minimum
+    load itself (``model``: that of rows without a ``model`` cell) and whose friction succeeded."""
+    rows = rows_of_models(frame, model, lambda m: not m.own_minimum_load) & ~failed_rows(results)
+    if not rows.any() or "bearing_type" not in results.columns:
+        return []
+    paired = np.asarray(blanks_filled(frame, "arrangement", "single") == "paired")
+    numbers = {name: number_column(frame, name) for name in ("Fr", "Fa", "C", "C0")}
+    # (the type and the ratings are the bearing's: calc's frame numbers its bearings)
+    return below_minimum_load(numbers, results["bearing_type"].array, labels, rows,
+                              np.where(paired, 2.0, 1.0) if paired.any() else 1.0, bearing_rows(frame))

@@ -42,8 +42,8 @@ from bearingheat.kernels.thermal import friction_heat, friction_power
 
 __all__ = ["FrictionModel", "FrictionPower", "MODELS", "DEFAULT_MODEL", "get_model", "compute_supports",
            "RESULT_UNITS", "M2_REPORT_UNITS", "PLAIN_REPORT_UNITS", "MODEL_REPORT_UNITS", "EXTRA_INPUTS",
-           "model_inputs", "support_arrays_of", "row_model_names", "SKF", "failed_rows", "plain_bushing_rows",
-           "results_at_viscosity", "set_rows"]
+           "model_inputs", "support_arrays_of", "row_model_names", "rows_of_models", "SKF", "failed_rows",
+           "plain_bushing_rows", "results_at_viscosity", "set_rows"]
 
 Evaluation = Callable[[SupportArrays, Labels, "F2Chart | None"], "tuple[dict[str, np.ndarray], list[Problem]]"]
 
@@ -76,6 +76,10 @@ class FrictionModel:
     (:func:`results_at_viscosity`); None means the rows are evaluated again.
     ``bearing_keys(supports) -> (type, series)`` names the bearing type and
     the series row of the model's own tables that a row was computed with.
+    ``own_minimum_load`` says whether the model checks a bearing's minimum
+    load itself (the SKF model: its source's rule, under which the model
+    does not hold); the rows of the other models get the bearing table's
+    (:func:`bearingheat.calc.fill.below_minimum_load`).
     """
 
     name: str
@@ -90,6 +94,7 @@ class FrictionModel:
     no_formulas: str = ""
     at_viscosity: Callable[[SupportArrays, dict[str, np.ndarray]], dict[str, np.ndarray]] | None = None
     bearing_keys: Callable[[SupportArrays], tuple[Any, Any]] = lambda s: (s.bearing_type, s.series)
+    own_minimum_load: bool = False
 
 
 SCHAEFFLER = FrictionModel(
@@ -115,7 +120,7 @@ SKF = FrictionModel(
            "6000 (Russian edition), chapter 'Friction', pp. 87-105, and SKF Rolling bearings 10000/3 (2017), "
            "pp. 97-114"),
     inputs=contract.columns(owner="skf") + ("designation", "type", "series", "lubrication", "arrangement", "d",
-                                             "D", "B", "C0", "Y", "Fr", "Fa", "n", "nu", "Dw", "T"),
+                                             "D", "B", "C0", "C", "Y", "Fr", "Fa", "n", "nu", "Dw", "T"),
     outputs=SKF_RESULTS,
     evaluate=_evaluate_skf,
     catalogue_keys=False,
@@ -126,6 +131,7 @@ SKF = FrictionModel(
         "phi_ish*phi_rs*M_rr": (results["phi_ish"] * results["phi_rs"] * results["M_rr"]).to_numpy(dtype=float),
         "M_sl": results["M_sl"].to_numpy(dtype=float)},
     bearing_keys=skf_bearing_keys,
+    own_minimum_load=True,
 )
 
 #: name -> model; the keys come from the models themselves
@@ -198,6 +204,13 @@ def row_model_names(frame: pd.DataFrame, default: str) -> np.ndarray:
     """The model name of every row: its ``model`` cell, else ``default`` (an object array)."""
     codes, names = _row_models(frame, default)
     return np.array(names, dtype=object)[codes]
+
+
+def rows_of_models(frame: pd.DataFrame, default: str, wanted: Callable[[FrictionModel], bool]) -> np.ndarray:
+    """Per row whether its model (its ``model`` cell, else ``default``) is a registered one for which ``wanted``
+    holds; each distinct model asked once."""
+    codes, names = _row_models(frame, default)
+    return np.array([name in MODELS and wanted(MODELS[name]) for name in names], dtype=bool)[codes]
 
 
 def failed_rows(results: pd.DataFrame) -> np.ndarray:

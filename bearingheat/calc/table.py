@@ -35,7 +35,7 @@ from bearingheat.calc.messages import ERROR, WARNING, status_codes, status_colum
 from bearingheat.calc.supports import blanks_filled, per_distinct, with_bearing_groups
 from bearingheat.calc.distributed import calc_dask, is_dask_frame
 from bearingheat.calc.conversion import refuse_result_columns, results_spelled_otherwise, to_catalogue_units
-from bearingheat.calc.fill import fill_from_catalogue, implausible_relations
+from bearingheat.calc.fill import fill_from_catalogue, implausible_relations, minimum_load_relations
 from bearingheat.calc.uncertainty import fill_from_coefficients, has_uncertainty, uncertainty_bands
 from bearingheat.calc.models import (DEFAULT_MODEL, M2_REPORT_UNITS, MODEL_REPORT_UNITS, PLAIN_REPORT_UNITS,
                                      RESULT_UNITS, SKF, compute_supports, failed_rows, row_model_names)
@@ -307,6 +307,9 @@ def compute_table(table: pd.DataFrame, *, model: str = DEFAULT_MODEL, f2_chart: 
                   + [(i, level, cite(m, i), True) for i, level, m in fill_problems if level == "error"]
                   + [(i, level, cite(m, i), False) for i, level, m in
                      extra_problems + implausible_relations(frame, converted.labels, from_table)])
+    # a load below the bearing's minimum load, on the rows that are no errors now (the SKF model's rows have its own)
+    _add_messages(results, [(i, level, cite(m, i), False)
+                            for i, level, m in minimum_load_relations(frame, results, converted.labels, model)])
     if effects is not None:  # a row of another model is refused, a row outside the fitted domain warned
         _add_messages(results, [(i, level, cite(m, i), level == "error")
                                 for i, level, m in effects.apply(frame, results, model=model)])

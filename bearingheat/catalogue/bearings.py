@@ -79,6 +79,9 @@ __all__ = [
     "half_steps",
     "disagrees",
     "disagreeing",
+    "MINIMUM_LOADS",
+    "MinimumLoad",
+    "minimum_loads",
 ]
 
 #: name of the table in ``tables/``
@@ -564,3 +567,37 @@ def disagreeing(name: str, given: np.ndarray, catalogue_values: np.ndarray, step
         steps = half_steps(name, catalogue_values)
     with np.errstate(invalid="ignore"):
         return np.abs(given - catalogue_values) > steps * (1 + 1e-9)
+
+
+#: name of the table of minimum loads in ``tables/``
+MINIMUM_LOADS = "minimum_loads_hr1_2006"
+
+
+@dataclass(frozen=True)
+class MinimumLoad:
+    """The load a bearing type needs for slippage-free running (Schaeffler HR 1, 2006): its ``rating`` ('C' or
+    'C0') divided by ``divisor``; the catalogue's ``page`` and its words (``source``)."""
+
+    rating: str
+    divisor: float
+    page: int
+    source: str
+
+    @property
+    def formula(self) -> str:
+        """'C/100', 'C0/60'."""
+        return f"{self.rating}/{self.divisor:g}"
+
+
+@functools.lru_cache(maxsize=1)
+def minimum_loads() -> dict[str, MinimumLoad]:
+    """Bearing type (:data:`~bearingheat.catalogue.designation.BEARING_TYPES`) -> its minimum load, for the types
+    HR 1 prints one for (``tables/minimum_loads_hr1_2006.csv``).
+
+    >>> minimum_loads()["deep_groove_ball"].formula, minimum_loads()["cylindrical_roller"].formula
+    ('C/100', 'C0/60')
+    """
+    table = load_table(MINIMUM_LOADS)
+    return {str(row["bearing_type"]): MinimumLoad(str(row["rating"]), float(row["divisor"]), int(row["page"]),
+                                                  str(row["source"]))
+            for row in table.to_dict("records")}

@@ -118,7 +118,7 @@ def test_model_inputs_series_are_paired_by_their_index():
      "model_inputs: 'oil_lvl' is not an input of this model; it reads oil, mu_sl, mu_bl, oil_level, VM, skf_edition, "
      "seal, seals, d_s, C, Y, Dw"),
     (dict(model_inputs=BATH), HeatBalanceError,  # the catalogue model reads no oil level
-     "model_inputs: 'oil_level' is not an input of this model; it reads Y, e, X0, Y0, alpha, f0, f1"),
+     "model_inputs: 'oil_level' is not an input of this model; it reads Y, e, X0, Y0, alpha, f0, f1, C"),
     (dict(model="skf", model_inputs=dict(BATH, T=16.25 * u.mm)), HeatBalanceError,
      "model_inputs: 'T' is an argument of heat_balance; give it as T="),
     (dict(model="skf", model_inputs=dict(BATH, designation="6206")), HeatBalanceError,
@@ -167,8 +167,8 @@ def test_friction_torque_refuses_the_same_names_naming_itself():
                                "oil_level, VM, skf_edition, seal, seals, d_s, C, Dw, T")
     with pytest.raises(FrictionInputError) as info:
         bh.friction_torque("6205", **{**args, "model": "schaeffler"}, model_inputs={"oil_level": 2.5 * u.mm})
-    assert str(info.value) == ("model_inputs: 'oil_level' is not an input of this model; it reads none besides the "
-                               "arguments of friction_torque")
+    # (C, the basic dynamic load rating of the minimum load: every other input of the model is an argument)
+    assert str(info.value) == "model_inputs: 'oil_level' is not an input of this model; it reads C"
     with pytest.raises(ModelError) as info:
         bh.friction_torque("6205", **{**args, "model": "palmgren"})
     assert str(info.value) == "model: 'palmgren' is not one of schaeffler, skf"

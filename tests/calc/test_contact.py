@@ -8,7 +8,7 @@ from bearingheat.kernels.contact import minimum_axial_load
 
 def test_minimum_axial_load_warning():
     base = {"designation": "7205", "d [mm]": 25, "D [mm]": 52, "C0 [N]": 9300, "alpha [deg]": 30, "z": 12,
-            "Dw [mm]": 7.9, "dm_pitch [mm]": 38.5, "lubrication": "grease", "n [rpm]": 12000, "Fr [N]": 100,
+            "Dw [mm]": 7.9, "dm_pitch [mm]": 38.5, "lubrication": "grease", "n [rpm]": 12000, "Fr [N]": 200,
             "nu [mm^2/s]": 20}
     table = pd.DataFrame([{**base, "Fa [N]": 10}, {**base, "Fa [N]": 500}, {**base, "alpha [deg]": None, "Fa [N]": 0, "C0 [N]": 7800,
                                                                            "designation": "6205"}])
@@ -33,7 +33,7 @@ def test_rows_the_formula_refuses_are_errors_of_their_own_and_the_others_are_com
     """Fa_min is computed for all rows in one call: a row with an impossible geometry gets the kernel's own
     refusal as its error, the rows beside it their values (as one row at a time would give them)."""
     base = {"designation": "7205", "d [mm]": 25, "D [mm]": 52, "C0 [N]": 9300, "alpha [deg]": 30, "z": 12,
-            "Dw [mm]": 7.9, "dm_pitch [mm]": 38.5, "lubrication": "grease", "n [rpm]": 12000, "Fr [N]": 100,
+            "Dw [mm]": 7.9, "dm_pitch [mm]": 38.5, "lubrication": "grease", "n [rpm]": 12000, "Fr [N]": 200,
             "nu [mm^2/s]": 20, "Fa [N]": 500}
     table = pd.DataFrame([base, {**base, "z": 11.5}, {**base, "dm_pitch [mm]": 7.0}, {**base, "n [rpm]": 6000}])
     out = calc(table)
@@ -53,7 +53,7 @@ def test_balls_that_cannot_sit_in_their_bearing_are_errors_naming_why():
     diameter, a ball within the section (D - d)/2, and z balls side by side on the pitch circle (two neighbours
     touch at Dw = dm_pitch*sin(180°/z)); a row of the 7205 that passes all three gets its Fa_min."""
     base = {"designation": "7205", "d [mm]": 25, "D [mm]": 52, "C0 [N]": 9300, "alpha [deg]": 30, "z": 12,
-            "Dw [mm]": 7.9, "dm_pitch [mm]": 38.5, "lubrication": "grease", "n [rpm]": 12000, "Fr [N]": 100,
+            "Dw [mm]": 7.9, "dm_pitch [mm]": 38.5, "lubrication": "grease", "n [rpm]": 12000, "Fr [N]": 200,
             "nu [mm^2/s]": 20, "Fa [N]": 600}
     table = pd.DataFrame([base, {**base, "Dw [mm]": 13.5}, {**base, "dm_pitch [mm]": 52}, {**base, "z": 16},
                           {**base, "z": 15}])

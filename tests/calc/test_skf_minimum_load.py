@@ -84,10 +84,14 @@ def test_without_c_only_a_bearing_without_any_load_is_warned_of():
     assert out["status"].iat[1] == "ok"
 
 
-def test_the_catalogue_model_has_no_such_limit():
-    # M0 does not depend on the load: an unloaded bearing keeps its speed-dependent friction
+def test_the_catalogue_model_keeps_its_friction_and_gets_the_bearing_table_s_rule():
+    # M0 does not depend on the load: an unloaded bearing keeps its speed-dependent friction; the warning is the
+    # bearing table's minimum load for slippage-free running (tests/calc/test_minimum_load.py), not the SKF model's
     out = calc({"model": "schaeffler", "Fr [kN]": 0.0}, {"model": "schaeffler", "Fr [kN]": 0.1})
-    assert out["status"].tolist() == ["ok", "ok"] and (out["MR [N*mm]"] > 0).all()
+    assert (out["MR [N*mm]"] > 0).all()
+    assert [m.split(" for ")[0] for m in out["message"]] == [
+        "Fr [kN]: 0 is below the minimum load 0.14 = C/100 of a deep groove ball bearing",
+        "Fr [kN]: 0.1 is below the minimum load 0.14 = C/100 of a deep groove ball bearing"]
 
 
 @pytest.mark.parametrize("value, message", [

@@ -55,9 +55,11 @@ def test_the_plain_summary_of_calc_is_unchanged(monkeypatch):
     text = _run(monkeypatch, ["calc", str(EXAMPLES / "gearbox_duty_cycle.csv")], terminal=False).splitlines()
     assert text[0].split()[:6] == ["id", "designation", "f0", "f1", "P1", "[N]"]
     assert text[1] == ("input shaft A - full load        6208   2 0.0003795    3200      88.83      72.86          "
-                       "0      161.7   25.06           9325           5009        41.54     ok")
-    assert text[7:10] == ["6 supports: 6 ok, 0 warning, 0 error", "", "duty cycle (time-weighted per support):"]
-    assert text[10].split()[:3] == ["support", "designation", "cases"]
+                       "0      161.7   25.06           9325           5009        41.54      ok")
+    # the NU208-E idles below its minimum load (Schaeffler HR 1, p. 364)
+    assert text[7].startswith('warning: row 7 (id "input shaft B - idle"): Fr [kN]: 0.4 is below the minimum load')
+    assert text[8:11] == ["6 supports: 5 ok, 1 warning, 0 error", "", "duty cycle (time-weighted per support):"]
+    assert text[11].split()[:3] == ["support", "designation", "cases"]
 
 
 def test_lookup_is_a_record_in_colour_and_the_same_lines_without(colour_terminal, monkeypatch):

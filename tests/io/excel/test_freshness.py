@@ -241,8 +241,9 @@ def test_a_viscosity_from_the_oils_curve_is_a_value_and_any_change_marks_every_r
     recalculated = convert([live, tmp_path / "edited.xlsx"], "xlsx", tmp_path / "recalculated")
     before, after = results(recalculated[0]), results(recalculated[1])
     np.testing.assert_allclose(before["MR"].astype(float), run.result["MR [N*mm]"], rtol=1e-9)
-    assert before["status"].tolist() == ["ok"] * 6
-    assert after["status"].tolist() == ["ok", NOTE_EVERY, "ok", "ok", "ok", "ok"]
+    # (the NU208-E idles below its minimum load: a warning of calc's that the recalculation keeps)
+    assert before["status"].tolist() == ["ok"] * 5 + ["warning"]
+    assert after["status"].tolist() == ["ok", NOTE_EVERY, "ok", "ok", "ok", "warning"]
 
 
 @pytest.mark.integration
