@@ -10,6 +10,12 @@ warning naming both. A designation the table does not know is fine where
 the row gives its outside diameter D (as before the table existed); where
 it does not, the row is an error that lists close designations of the
 table. Each distinct designation is looked up once.
+
+The rows' loads and speeds are then checked against the bearing's ratings
+and limits (warnings): a load above C0 or a speed above n_G
+(:func:`implausible_relations`, usually a unit mix-up), and a load below
+the minimum load the bearing needs for slippage-free running
+(:func:`minimum_load_relations`, HR 1's C/100 or C0/60).
 """
 from __future__ import annotations
 
