@@ -24,7 +24,7 @@ from collections.abc import Callable, Mapping, Sequence
 import numpy as np
 import pandas as pd
 
-from bearingheat.calc.messages import Labels
+from bearingheat.calc.messages import Labels, bearing_load
 from bearingheat.calc.contract import input_units
 from bearingheat.calc.models import failed_rows, rows_of_models
 from bearingheat.calc.supports import (bearing_rows, blanks_filled, column_codes, first_rows, group_codes,
@@ -244,11 +244,9 @@ def below_minimum_load(numbers: Mapping[str, np.ndarray],
     for i in np.flatnonzero(below).tolist():
         code = codes[i if each_row is None else each_row[i]]
         rule, kind = rules[code], BEARING_TYPES[types[code]]
-        column, load_i = ("Fa", Fa[i]) if Fa[i] > Fr_bearing[i] else ("Fr", 0.0 if np.isnan(Fr[i]) else Fr[i])
-        each = f" ({labels.value('Fr', Fr_bearing[i])} on each bearing of the pair)" \
-            if column == "Fr" and each_bearing[i] > 1 else ""
-        problems.append((i, "warning", f"{labels.name(column, i)}: {labels.value(column, load_i)}{each} is below the "
-                                        f"minimum load {labels.value(column, minimum[i])} = {rule.formula} of "
+        column, load = bearing_load(labels, i, Fr[i], Fa[i], each_bearing[i])
+        problems.append((i, "warning", f"{load} is below the minimum load {labels.value(column, minimum[i])} = "
+                                        f"{rule.formula} of "
                                         f"{'an' if kind[0] in 'aeiou' else 'a'} {kind} for slippage-free running "
                                         f"({CATALOGUE}, p. {rule.page}): the bearing may slip, the more so at high "
                                         "speeds and accelerations"))

@@ -11,7 +11,7 @@ import pandas as pd
 from bearingheat.calc.contract import input_units
 
 __all__ = ["Problem", "Labels", "at", "STATUS_LEVELS", "OK", "WARNING", "ERROR", "status_column", "status_codes",
-           "with_texts", "row_status"]
+           "with_texts", "row_status", "bearing_load"]
 
 #: a message that begins with a column's name (and its unit): 'T [mm]: ...', 'lubrication: ...'
 _LEADING_COLUMN = re.compile(r"^(\w+)(?: \[[^\]]*\])?:")
@@ -82,6 +82,17 @@ class Labels:
 def at(value, i):
     """Element i of a per-row array, or the value itself when it is one constant for all rows."""
     return value if np.ndim(value) == 0 else value[i]
+
+
+def bearing_load(labels: Labels, row: int, Fr: float, Fa: float, bearings: float) -> tuple[str, str]:
+    """(the column, the words) a minimum-load warning names a row's load by: Fa where it exceeds each bearing's
+    share of Fr (``bearings``: 2 for a pair), else Fr with that share, 'Fr [kN]: 0.28 (0.14 on each bearing of the
+    pair)'. A blank Fr (NaN) is named as 0."""
+    Fr = 0.0 if np.isnan(Fr) else Fr
+    if Fa > Fr / bearings:
+        return "Fa", f"{labels.name('Fa', row)}: {labels.value('Fa', Fa)}"
+    each = f" ({labels.value('Fr', Fr / bearings)} on each bearing of the pair)" if bearings > 1 else ""
+    return "Fr", f"{labels.name('Fr', row)}: {labels.value('Fr', Fr)}{each}"
 
 
 def status_column(codes: np.ndarray) -> pd.Categorical:

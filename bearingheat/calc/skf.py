@@ -21,7 +21,7 @@ import numpy as np
 import pandas as pd
 
 from bearingheat.calc import contract
-from bearingheat.calc.messages import Labels, Problem, at
+from bearingheat.calc.messages import Labels, Problem, at, bearing_load
 from bearingheat.calc.supports import SupportArrays, distinct_keys, number_column, per_distinct, text_codes, \
     object_column, text_or_default, value_codes
 from bearingheat.catalogue import skf as catalogue
@@ -129,16 +129,12 @@ def _minimum_load_warnings(add, labels: Labels, rows: np.ndarray, ball: np.ndarr
     load is warned of."""
     ball = np.broadcast_to(ball, Fr.shape)  # (one bearing's type for all its points)
     share = np.where(ball, _MINIMUM_LOAD_SHARE["ball"], _MINIMUM_LOAD_SHARE["roller"])
-    Fr_bearing = Fr / bearings
-    axial = Fa > Fr_bearing  # the load the warning names
-    below = rows & (np.maximum(Fr_bearing, Fa) < share * C)
+    below = rows & (np.maximum(Fr / bearings, Fa) < share * C)
 
     def light(i):
-        column, given = ("Fa", Fa[i]) if axial[i] else ("Fr", Fr[i])
-        pair = bearings[i] > 1 and not axial[i]
-        each = f" ({labels.value('Fr', Fr_bearing[i])} on each bearing of the pair)" if pair else ""
+        column, load = bearing_load(labels, i, Fr[i], Fa[i], bearings[i])
         kind = "ball" if ball[i] else "roller"
-        return (f"{labels.name(column, i)}: {labels.value(column, given)}{each} is below the recommended minimum load "
+        return (f"{load} is below the recommended minimum load "
                 f"{labels.value(column, share[i] * C[i])} = {share[i]:g} C of a {kind} bearing (C = {C[i]:g} N, SKF "
                 "6000 p. 75); the SKF model holds at loads at or above it (p. 89), and below it the rolling elements "
                 "may skid")

@@ -56,6 +56,13 @@ def test_a_pair_and_an_axial_load():
                                      "bearing " + SLIP.format(page=192))
 
 
+def test_a_blank_radial_load_is_0_and_the_axial_load_is_the_one_named():
+    # (the row's Fr cell is blank: 0; its Fa of 100 N is the load compared with C/100 = 140 N, so the message names it)
+    out = calc({"Fr [kN]": 1.0}, {"Fa [kN]": 0.1})
+    assert out["message"].iat[1] == ("Fa [kN]: 0.1 is below the minimum load 0.14 = C/100 of a deep groove ball "
+                                     "bearing " + SLIP.format(page=192))
+
+
 def test_the_skf_model_has_its_own_rule_and_a_row_in_error_none():
     out = calc({"Fr [N]": 100, "model": "skf"}, {"Fr [N]": 100, "n [rpm]": -5})
     assert out["message"].iat[0].startswith("Fr [N]: 100 is below the recommended minimum load 140 = 0.01 C of a ball "
