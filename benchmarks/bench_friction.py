@@ -13,7 +13,8 @@ Ways to the same numbers, timed in one run:
 
 Targets: (3) at least 100x faster than (1); (4) within 1.2x of (3). Also timed: (5) the mixed-row path calc
 takes (one table of all six types, support arrays built from its rows' keys), against (3).
-The points mix six bearing types, both ν·n regimes, and radial and axial loads below each bearing's C0.
+The points mix six bearing types, both ν·n regimes, and radial and axial loads between each bearing's minimum
+load and its C0.
 
     .venv/bin/python benchmarks/bench_friction.py [POINTS]     (default 10^6)
 """
@@ -29,7 +30,9 @@ from bearingheat import friction_torque
 from bearingheat.calc.friction import evaluate_catalogue_model
 from bearingheat.calc.messages import Labels
 from bearingheat.calc.supports import bearing_constants, build_support_arrays
+from bearingheat.catalogue.bearings import bearing, minimum_loads
 from bearingheat.catalogue.friction import resolve
+from bearingheat.errors import DesignationError
 from bearingheat.kernels import friction
 from common import best_in_turns, operating_points, size_argument, verdict
 
@@ -42,6 +45,16 @@ BEARINGS = [
     ("7205", dict(d=25.0, D=52.0, C0=9300.0), dict(alpha=30.0)),
     ("NA4905", dict(d=25.0, D=42.0, C0=30000.0), {}),
 ]
+
+
+def minimum_load(designation: str) -> float:
+    """The bearing table's minimum load [N] of ``designation`` (Schaeffler HR 1), 0 where it has none."""
+    try:
+        data = bearing(designation)
+    except DesignationError:  # (22210-E1 and NA4905: not in the bearing table)
+        return 0.0
+    rule = minimum_loads().get(data.bearing_type)
+    return getattr(data, rule.rating) / rule.divisor if rule else 0.0
 
 
 def _constants(designation, dims, extras):
@@ -118,13 +131,15 @@ def main(points: int = 1_000_000, repeats: int = 3, loop_sample: int = 30_000) -
     u = pint.get_application_registry()
     n, nu, Fr, Fa = operating_points(points)
     chunks = np.array_split(np.arange(points), len(BEARINGS))
-    # each bearing's loads below its C0: operating_points draws them up to 20 kN, above C0 of the 6205 and the 7205,
-    # where friction_torque warns of a unit mix-up at each point, as calc does, and (4) would time the texts of
-    # some 600 000 warnings instead of the unit boundary
-    for (_, dims, _), idx in zip(BEARINGS, chunks):
-        scale = min(1.0, dims["C0"] / 20_000.0)
-        Fr[idx] *= scale
-        Fa[idx] *= scale
+    # each bearing's loads between its minimum load and its C0: operating_points draws them from 100 N to 20 kN,
+    # above C0 of the 6205 and the 7205 and below the minimum load of the NU206-E (C0/60 = 600 N), where
+    # friction_torque warns at each point, as calc does, and (4) would time the texts of those warnings (some
+    # 600 000 above C0, 10 000 below the minimum) instead of the unit boundary
+    for (designation, dims, _), idx in zip(BEARINGS, chunks):
+        low, top = minimum_load(designation), min(dims["C0"], 20_000.0)
+        axial_share = Fa[idx] / Fr[idx]
+        Fr[idx] = low + (Fr[idx] - 100.0) / 19_900.0 * (top - low)
+        Fa[idx] = Fr[idx] * axial_share
     work = [(b, idx) for b, idx in zip(BEARINGS, chunks)]
 
     # inputs are built before the clocks start: both calls get ready arrays (or Quantities)

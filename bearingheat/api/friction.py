@@ -382,8 +382,9 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
         loads = {**{name: related[name] for name in ("Fr", "Fa", "C0")},
                  "C": np.broadcast_to(np.asarray(rating, dtype=float), shape).ravel()}
         types = np.broadcast_to(np.asarray(friction_model.bearing_keys(supports)[0], dtype=object), (size,))
+        one_bearing = (np.zeros(size, dtype=np.intp), np.zeros(1, dtype=np.intp))  # its minimum worked out once
         for position, _, message in below_minimum_load(loads, types, ARGUMENT_LABELS, np.ones(size, dtype=bool),
-                                                       2.0 if arrangement == "paired" else 1.0):
+                                                       2.0 if arrangement == "paired" else 1.0, one_bearing):
             some.setdefault(position, []).append(message)
     # notes on the bearing, on every point: the designation's notes of the catalogue model's tables where the model
     # uses them, and the bearing table's (the dimensions both models read)

@@ -198,7 +198,9 @@ def implausible_values(numbers: Mapping[str, np.ndarray], labels: Labels, catalo
 def _minimum_loads(bearing_types, C: np.ndarray, C0: np.ndarray):
     """Per row the minimum load [N] of its bearing type (NaN where HR 1 gives none or the rating is missing), and
     what the messages need: each row's code into ``types`` and the rule of each type (None: not checked)."""
-    codes, types = column_codes(pd.Series(bearing_types, copy=False))
+    # (an array of texts stays object: pandas 3 would turn it into its string dtype, text by text)
+    codes, types = column_codes(pd.Series(bearing_types, copy=False,
+                                          dtype=None if isinstance(bearing_types, pd.Categorical) else object))
     rules = [minimum_loads().get(t) if isinstance(t, str) else None for t in types]
     # per code (the last entry: code -1, no type) the rating's divisor (NaN: not checked) and whether it is C0
     divisor = np.array([rule.divisor if rule else np.nan for rule in rules] + [np.nan])[codes]
@@ -229,9 +231,11 @@ def below_minimum_load(numbers: Mapping[str, np.ndarray],
         minimum, codes, types, rules = _minimum_loads(bearing_types, C, C0)
     else:
         each_row, first = bearing
-        minimum, codes, types, rules = _minimum_loads(pd.Series(bearing_types, copy=False).iloc[first].array,
-                                                      C[first], C0[first])
-        minimum = minimum[each_row]
+        first_types = bearing_types.take(first) if isinstance(bearing_types, pd.Categorical) \
+            else np.asarray(bearing_types, dtype=object)[first]
+        minimum, codes, types, rules = _minimum_loads(first_types, C[first], C0[first])
+        # (one bearing, as in the API: its minimum as a view, not gathered to every row)
+        minimum = minimum[each_row] if len(first) > 1 else np.broadcast_to(minimum, np.shape(each_row))
     if not any(rules):
         return []
     Fr, Fa = numbers["Fr"], numbers["Fa"]
@@ -240,16 +244,19 @@ def below_minimum_load(numbers: Mapping[str, np.ndarray],
     with np.errstate(invalid="ignore"):
         # a blank load is 0: NaN where both are blank, below any minimum (one that is NaN is no minimum)
         below = rows & ~(np.fmax(Fr_bearing, Fa) >= minimum) & (minimum > 0)
+    # the words after the minimum's value, once per type
+    rule_texts = [f"{rule.formula} of {'an' if kind[0] in 'aeiou' else 'a'} {kind} for slippage-free running "
+                  f"({CATALOGUE}, p. {rule.page}): the bearing may slip, the more so at high speeds and accelerations"
+                  if rule else "" for rule, kind in zip(rules, (BEARING_TYPES.get(t, "") for t in types))]
     problems = []
-    for i in np.flatnonzero(below).tolist():
-        code = codes[i if each_row is None else each_row[i]]
-        rule, kind = rules[code], BEARING_TYPES[types[code]]
-        column, load = bearing_load(labels, i, Fr[i], Fa[i], each_bearing[i])
-        problems.append((i, "warning", f"{load} is below the minimum load {labels.value(column, minimum[i])} = "
-                                        f"{rule.formula} of "
-                                        f"{'an' if kind[0] in 'aeiou' else 'a'} {kind} for slippage-free running "
-                                        f"({CATALOGUE}, p. {rule.page}): the bearing may slip, the more so at high "
-                                        "speeds and accelerations"))
+    rows_below = np.flatnonzero(below)
+    row_codes = codes[rows_below if each_row is None else each_row[rows_below]]
+    for i, code, Fr_i, Fa_i, bearings_i, minimum_i in zip(
+            rows_below.tolist(), row_codes.tolist(), Fr[rows_below].tolist(), Fa[rows_below].tolist(),
+            each_bearing[rows_below].tolist(), minimum[rows_below].tolist()):
+        column, load = bearing_load(labels, i, Fr_i, Fa_i, bearings_i)
+        problems.append((i, "warning", f"{load} is below the minimum load {labels.value(column, minimum_i)} = "
+                                        f"{rule_texts[code]}"))
     return problems
 
 
