@@ -3,8 +3,9 @@
 The demo's supports tiled to ROWS rows (varied loads and speeds, with the heat-balance columns) in
 PARTITIONS partitions, each made on the worker that computes it (``dd.from_map``: no table travels from
 the client), computed by ``bh.calc`` on a dask.distributed LocalCluster of one worker process and then of
-two (one thread each, set up as ``bearingheat calc --dask`` sets one up: :func:`bearingheat.io.dataset.local_cluster`); the results are reduced on the workers (the sum of NR and the count of rows in
-error), as a cluster job that writes its results where it computes them. Prints the rows per second of
+two (one thread each, set up as ``bearingheat calc --dask`` sets one up:
+:func:`bearingheat.io.dataset.local_cluster`); the results are reduced on the workers (the sum of NR and the
+count of rows in error), as a cluster job that writes its results where it computes them. Prints the rows per second of
 each, the scaling ratio (target >= 1.7x on two cores) and the cost of a row against pandas calc in one
 process; and, before and after the clusters, the machine's own ceiling for that ratio: two plain processes
 computing bh.calc at once against one alone (:func:`machine_scaling`).
