@@ -175,7 +175,8 @@ def main(points: int = 1_000_000, repeats: int = 3) -> dict[str, float]:
     np.testing.assert_allclose(m_skf, np.concatenate([skf_by_formulas(a) for a in skf_args]), rtol=1e-9)
     np.testing.assert_allclose(m_skf_model, m_skf, rtol=1e-9)
     figures = {"points": points, "catalogue_kernel_s": t_cat, "catalogue_chain_s": t_chain, "skf_kernel_s": t_skf,
-               "skf_over_catalogue_kernel": t_skf / t_chain, "skf_over_catalogue_torque_formula": t_skf / t_cat, "catalogue_model_s": t_cat_model,
+               "skf_over_catalogue_kernel": t_skf / t_chain, "skf_over_catalogue_torque_formula": t_skf / t_cat,
+               "catalogue_model_s": t_cat_model,
                "skf_model_s": t_skf_model, "skf_over_catalogue_model": t_skf_model / t_cat_model}
     print(f"friction torque, {points:,} mixed points ({len(BEARINGS)} bearings, grease)")
     print(f"  catalogue M0 + M1 formula     : {t_cat:8.3f} s   (f1 and the load given)")
