@@ -372,7 +372,8 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
         for point in np.flatnonzero(np.broadcast_to(problem.mask, (size,))):
             some.setdefault(int(point), []).append(problem.message(int(point)))
     # a load above C0, a speed above the bearing table's n_G: calc's warnings, point by point
-    related = {name: np.broadcast_to(value, shape).ravel()
+    # (read only: reshape keeps a broadcast number a view where the points are one row, ravel would copy it)
+    related = {name: np.broadcast_to(value, shape).reshape(size)
                for name, value in (("n", arrays["n"]), ("n_G", n_G), ("Fr", arrays["Fr"]), ("Fa", arrays["Fa"]),
                                    ("C0", arrays["C0"]))}
     for position, _, message in implausible_values(related, ARGUMENT_LABELS, np.ones(size, dtype=bool),
@@ -380,7 +381,7 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
         some.setdefault(position, []).append(message)
     if not friction_model.own_minimum_load:  # a load below the bearing table's minimum load (the SKF model: its own)
         loads = {**{name: related[name] for name in ("Fr", "Fa", "C0")},
-                 "C": np.broadcast_to(np.asarray(rating, dtype=float), shape).ravel()}
+                 "C": np.broadcast_to(np.asarray(rating, dtype=float), shape).reshape(size)}
         types = np.broadcast_to(np.asarray(friction_model.bearing_keys(supports)[0], dtype=object), (size,))
         one_bearing = (np.zeros(size, dtype=np.intp), np.zeros(1, dtype=np.intp))  # its minimum worked out once
         for position, _, message in below_minimum_load(loads, types, ARGUMENT_LABELS, np.ones(size, dtype=bool),

@@ -27,7 +27,7 @@ import pandas as pd
 from bearingheat.calc.messages import Labels, bearing_load
 from bearingheat.calc.contract import input_units
 from bearingheat.calc.models import failed_rows, rows_of_models
-from bearingheat.calc.supports import (bearing_rows, blanks_filled, column_codes, first_rows, group_codes,
+from bearingheat.calc.supports import (bearing_rows, blanks_filled, first_rows, group_codes,
                                       number_column, text_codes, text_column, with_columns)
 from bearingheat.catalogue.bearings import CATALOGUE, bearing, disagreeing, half_steps, minimum_loads
 from bearingheat.catalogue.designation import BEARING_TYPES
@@ -198,9 +198,10 @@ def implausible_values(numbers: Mapping[str, np.ndarray], labels: Labels, catalo
 def _minimum_loads(bearing_types, C: np.ndarray, C0: np.ndarray):
     """Per row the minimum load [N] of its bearing type (NaN where HR 1 gives none or the rating is missing), and
     what the messages need: each row's code into ``types`` and the rule of each type (None: not checked)."""
-    # (an array of texts stays object: pandas 3 would turn it into its string dtype, text by text)
-    codes, types = column_codes(pd.Series(bearing_types, copy=False,
-                                          dtype=None if isinstance(bearing_types, pd.Categorical) else object))
+    if isinstance(bearing_types, pd.Categorical):
+        codes, types = bearing_types.codes, bearing_types.categories.to_numpy(dtype=object)
+    else:  # (an object array: a Series of it would become pandas 3's string dtype, text by text)
+        codes, types = pd.factorize(np.asarray(bearing_types, dtype=object), use_na_sentinel=True)
     rules = [minimum_loads().get(t) if isinstance(t, str) else None for t in types]
     # per code (the last entry: code -1, no type) the rating's divisor (NaN: not checked) and whether it is C0
     divisor = np.array([rule.divisor if rule else np.nan for rule in rules] + [np.nan])[codes]
