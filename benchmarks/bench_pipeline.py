@@ -14,16 +14,19 @@ On the demo's supports (examples/gearbox_shaft.csv) tiled to ROWS rows with vari
    ``to_parquet`` of the same file (with the heat-balance columns), each in its own process (target 5x,
    peak memory under 1 GB at 10^6 rows);
 4. the peak memory of each (its own fresh process, VmHWM; Python with the package imported is the
-   baseline, printed first).
+   baseline, printed first), and the command line's peak above that of the same command on 100 rows against
+   the size of its output table as Arrow (the issue: about twice).
 
     .venv/bin/python benchmarks/bench_pipeline.py [ROWS | --full]   (default 200 000; --full: the issue's 10^6)
 """
 from __future__ import annotations
 
+import math
 import tempfile
 from pathlib import Path
 
 import numpy as np
+import pyarrow.parquet as pq
 
 import bearingheat as bh
 from bearingheat.kernels import friction
@@ -92,11 +95,17 @@ def _peak_lines(rows: int, folder: Path) -> dict[str, str]:
                                       f"bh.calc(demo_rows({rows}, heat_balance=True))",
         "bare read_csv + to_parquet": f"import pandas as pd; pd.read_csv({str(source)!r}, engine='pyarrow')"
                                       f".to_parquet({str(folder / 'bare.parquet')!r})",
-        # the program's own entry point, as the shell runs it (sys.argv; pint's definition cache)
-        "bearingheat calc -o .parquet": f"import sys; sys.argv = ['bearingheat', 'calc', {str(source)!r}, '-o', "
-                                        f"{str(folder / 'out.parquet')!r}, '-q', '--force']; "
-                                        f"from bearingheat.cli import command_line; command_line()",
+        "bearingheat calc -o .parquet": _command_line(source, folder / "out.parquet"),
+        # the same on 100 rows: what the program holds whatever the table's size (Python, pandas, pyarrow, ...)
+        "bearingheat calc, 100 rows": _command_line(folder / "small.csv", folder / "small.parquet"),
     }
+
+
+def _command_line(source: Path, target: Path) -> str:
+    """The code of ``bearingheat calc SOURCE -o TARGET -q --force`` through the program's own entry point, as the
+    shell runs it (sys.argv; pint's definition cache)."""
+    return (f"import sys; sys.argv = ['bearingheat', 'calc', {str(source)!r}, '-o', {str(target)!r}, '-q', "
+            f"'--force']; from bearingheat.cli import command_line; command_line()")
 
 
 def main(rows: int = 200_000, repeats: int = 3, cli: bool = True) -> dict[str, float]:
@@ -143,6 +152,7 @@ def main(rows: int = 200_000, repeats: int = 3, cli: bool = True) -> dict[str, f
     with tempfile.TemporaryDirectory() as name:
         folder = Path(name)
         demo_rows(rows, heat_balance=True).to_csv(folder / "big.csv", index=False)
+        demo_rows(100, heat_balance=True).to_csv(folder / "small.csv", index=False)
         peaks, times = {}, {}
         lines = {what: code for what, code in _peak_lines(rows, folder).items() if cli or "parquet" not in what}
         # the CLI and its baseline run in turns, the shortest time of each counts (a shared machine's load comes
@@ -152,6 +162,7 @@ def main(rows: int = 200_000, repeats: int = 3, cli: bool = True) -> dict[str, f
                 elapsed, peak = peak_run(code)
                 times[what] = min(times.get(what, elapsed), elapsed)
                 peaks[what] = max(peaks.get(what, peak), peak)
+        output_mb = pq.read_table(folder / "out.parquet").nbytes / 2**20 if cli else math.nan
     if cli:
         bare, full = times["bare read_csv + to_parquet"], times["bearingheat calc -o .parquet"]
         figures.update(cli=full, cli_bare=bare, cli_peak_mb=peaks["bearingheat calc -o .parquet"],
@@ -160,6 +171,11 @@ def main(rows: int = 200_000, repeats: int = 3, cli: bool = True) -> dict[str, f
               f"+ to_parquet of the same file {bare:.2f} s (both with heat-balance columns, each in its own process, "
               f"Python start included, the shortest of {repeats} runs in turns): {full / bare:.1f}x "
               f"({verdict(full / bare, CLI_TARGET)})")
+        held = peaks["bearingheat calc -o .parquet"] - peaks["bearingheat calc, 100 rows"]
+        figures.update(cli_output_mb=output_mb, cli_held_mb=held)
+        print(f"  its peak memory above that of the same command on 100 rows (Python and its libraries): "
+              f"{held:.0f} MB, {held / output_mb:.2f}x the output table ({output_mb:.0f} MB as Arrow; the issue: "
+              "about twice)")
     print("  peak memory of each, in its own process (VmHWM):")
     for what, peak in peaks.items():
         note = f" (start and import: {times[what]:.2f} s)" if what == "python + package" else ""
