@@ -82,7 +82,7 @@ def csv_result() -> pd.DataFrame:
 
 
 def digest(path) -> str:
-    return hashlib.sha256(open(path, "rb").read()).hexdigest()
+    return hashlib.sha256(Path(path).read_bytes()).hexdigest()
 
 
 def rich_workbook(path):

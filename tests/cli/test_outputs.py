@@ -291,6 +291,7 @@ def test_in_place_is_refused_while_another_run_holds_the_workbook(tmp_path, caps
     finally:
         holder.kill()
         holder.wait()
+        holder.stdout.close()
     assert main(["calc", str(book), "--in-place", "-q"]) == 0
 
 
@@ -304,7 +305,10 @@ def test_concurrent_in_place_runs_lose_no_results_sheet(tmp_path):
         runs = {sheet: subprocess.Popen([sys.executable, "-m", "bearingheat", "calc", str(book), "--in-place",
                                          "--sheet", sheet, "-q"], stderr=subprocess.PIPE, text=True)
                 for sheet in ("Supports", "Other")}
-        codes = {sheet: (run.wait(timeout=120), run.stderr.read()) for sheet, run in runs.items()}
+        codes = {}
+        for sheet, run in runs.items():  # (communicate reads stderr while waiting and closes the pipe)
+            err = run.communicate(timeout=120)[1]
+            codes[sheet] = (run.returncode, err)
         assert any(code == 0 for code, _ in codes.values())
         for sheet, (code, err) in codes.items():
             if code == 0:
@@ -337,6 +341,7 @@ def test_kill_during_a_write_leaves_the_old_file_and_the_next_run_removes_the_te
     assert writer.stdout.readline().strip() == "writing"
     os.kill(writer.pid, signal.SIGKILL)
     writer.wait()
+    writer.stdout.close()
     assert target.read_text() == "old results"
     (temp,) = [p for p in tmp_path.iterdir() if ".bearingheat-" in p.name]
     long_ago = time.time() - STALE_SECONDS - 5
