@@ -224,8 +224,12 @@ def test_a_copy_is_what_in_place_writes_into_the_workbook(name, tmp_path):
         assert not copy.exists()
     else:
         assert case.refused or done.results_sheet == case.results[0]
-        results = openpyxl.load_workbook(copy, read_only=True)[done.results_sheet]
-        assert results.max_row == len(done.result) + (4 if case.formulas else 2)  # (formulas: the check below)
+        workbook = openpyxl.load_workbook(copy, read_only=True)  # (read only: it holds the file until closed)
+        try:
+            rows = workbook[done.results_sheet].max_row
+        finally:
+            workbook.close()
+        assert rows == len(done.result) + (4 if case.formulas else 2)  # (formulas: the check below)
     assert case.path.read_bytes() == data
     if case.refused:
         return
