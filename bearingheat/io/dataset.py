@@ -43,7 +43,7 @@ from bearingheat.io.pipeline import ROWS_PER_BLOCK, calc_block, load_options
 
 __all__ = ["check_dataset_target", "check_scheduler", "recover_target", "calc_dataset", "plan_dataset",
            "compute_dataset", "DatasetPlan", "DatasetRun", "dask_client", "local_cluster", "dataset_columns",
-           "read_dataset_columns", "part_name", "WORKER_MMAP_THRESHOLD",
+           "read_dataset_columns", "part_name", "WORKER_MMAP_THRESHOLD", "quiet_worker_shutdown",
            "dataset_files", "is_dataset"]  # (the last two from io.fleet, where they moved, for callers of this module)
 
 
@@ -68,7 +68,21 @@ def dask_client(scheduler: str | None = None, workers: int | None = None):
             yield client
         return
     with local_cluster(workers) as cluster, Client(cluster) as client:
-        yield client
+        try:
+            yield client
+        finally:
+            with contextlib.suppress(Exception):  # (a worker already gone has nothing to say)
+                client.run(quiet_worker_shutdown)
+
+
+def quiet_worker_shutdown() -> None:
+    """Run on each worker of a local cluster before it closes: its own log records below CRITICAL are dropped
+    from then on. When the cluster closes, a worker's heartbeat can still meet the scheduler that has closed
+    (dask/distributed issue 7891), and the worker logs that as an ERROR with a traceback on the terminal's
+    stderr, after the command's own last line; the results are written by then, nothing was lost."""
+    import logging
+
+    logging.getLogger("distributed.worker").setLevel(logging.CRITICAL)
 
 
 def check_scheduler(address: str) -> None:
