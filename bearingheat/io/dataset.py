@@ -21,6 +21,7 @@ inside the functions here.
 from __future__ import annotations
 
 import contextlib
+import logging
 import os
 import re
 import shutil
@@ -77,11 +78,10 @@ def dask_client(scheduler: str | None = None, workers: int | None = None):
 
 def quiet_worker_shutdown() -> None:
     """Run on each worker of a local cluster before it closes: its own log records below CRITICAL are dropped
-    from then on. When the cluster closes, a worker's heartbeat can still meet the scheduler that has closed
-    (dask/distributed issue 7891), and the worker logs that as an ERROR with a traceback on the terminal's
-    stderr, after the command's own last line; the results are written by then, nothing was lost."""
-    import logging
-
+    from then on. When the cluster closes, a worker's heartbeat can still meet the scheduler that has closed (a
+    race of Dask's own, https://github.com/dask/distributed/issues/7891), and the worker logs that as an ERROR
+    with a traceback on the terminal's stderr, after the command's own last line; the results are written by
+    then, nothing was lost."""
     logging.getLogger("distributed.worker").setLevel(logging.CRITICAL)
 
 
