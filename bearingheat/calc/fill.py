@@ -27,7 +27,7 @@ import pandas as pd
 from bearingheat.calc.messages import Labels, bearing_load
 from bearingheat.calc.contract import input_units
 from bearingheat.calc.models import failed_rows, rows_of_models
-from bearingheat.calc.supports import (bearing_rows, blanks_filled, first_rows, group_codes,
+from bearingheat.calc.supports import (bearing_rows, blanks_filled, group_rows,
                                       number_column, text_codes, text_column, with_columns)
 from bearingheat.catalogue.bearings import CATALOGUE, bearing, disagreeing, half_steps, minimum_loads
 from bearingheat.catalogue.designation import BEARING_TYPES
@@ -80,8 +80,7 @@ def fill_from_catalogue(frame: pd.DataFrame, labels: Labels
     # rows alike in designation and in every given value of FILLED have one fill and one verdict: each such group
     # is worked out on its first row and spread to its rows by the group codes
     given_names = [name for name in FILLED if name in frame.columns]
-    groups = group_codes(frame, ["designation", *given_names])
-    first = first_rows(groups)
+    groups, first = group_rows(frame, ["designation", *given_names])
     key = codes[first]
     problems: list[tuple[int, str, str]] = []
     filled: dict[str, np.ndarray] = {}

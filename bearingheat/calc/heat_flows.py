@@ -66,7 +66,8 @@ def walther_columns(frame: pd.DataFrame):
     if "_walther_A" in frame.columns:
         return number_column(frame, "_walther_A"), number_column(frame, "_walther_B"), []
     if not set(OIL_LINE_INPUTS) & set(frame.columns):  # (a VI alone is an error of viscosity_model_rows)
-        return np.full(len(frame), np.nan), np.full(len(frame), np.nan), []
+        none = np.broadcast_to(np.nan, len(frame))  # (a read-only view: no memory per row)
+        return none, none, []
     return viscosity_model_rows(frame)
 
 

@@ -13,7 +13,7 @@ from collections.abc import Sequence
 import numpy as np
 import pandas as pd
 
-from bearingheat.calc.supports import (coded_categorical, distinct_keys, fill_blank, first_rows, group_codes,
+from bearingheat.calc.supports import (coded_categorical, distinct_keys, fill_blank, first_rows, group_rows,
                                        number_column, printed_size, text_codes, text_column)
 from bearingheat.catalogue.friction import ResolvedBearing, resolve
 from bearingheat.catalogue.thermal import (CONTACT_SEAL_REASON, SEAL_FRICTION_REASON, THERMAL_KIND, THERMAL_KINDS,
@@ -71,10 +71,10 @@ def thermal_reference_speed_details(frame: pd.DataFrame, *, f0_scale=1.0, f1_sca
         return chosen(_details(frame, f0_scale, f1_scale))
     if not keys or len(frame) < 2:
         return chosen(_details(frame))
-    codes = group_codes(frame, keys)  # (the bearing groups' own codes: SEAL_FRICTION is no bearing input)
+    codes, first = group_rows(frame, keys)  # (the bearing groups' own codes: SEAL_FRICTION is no bearing input)
     if SEAL_FRICTION in frame.columns:
         codes = pd.factorize(codes * 2 + seal_friction_rows(frame))[0]
-    first = first_rows(codes)
+        first = first_rows(codes)
     if len(first) == len(frame):
         return chosen(_details(frame))
     distinct = chosen(_details(frame.iloc[first]))

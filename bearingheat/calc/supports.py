@@ -29,7 +29,7 @@ from bearingheat.errors import DesignationError
 
 __all__ = ["SupportArrays", "build_support_arrays", "bearing_constants", "NUMBER_INPUTS", "KEY_INPUTS",
            "text_column", "number_column", "zero_where_blank", "text_codes", "distinct_keys", "group_codes",
-           "text_or_default", "value_codes", "text_categorical", "fill_blank", "blanks_filled", "object_column",
+           "group_rows", "text_or_default", "value_codes", "text_categorical", "fill_blank", "blanks_filled", "object_column",
            "column_codes", "per_distinct", "coded_categorical", "first_rows", "nonblank", "text_in", "BEARING_INPUTS",
            "BEARING_GROUP", "with_columns", "with_bearing_groups", "bearing_rows", "printed_size"]
 
@@ -425,16 +425,24 @@ def bearing_rows(frame: pd.DataFrame) -> tuple[np.ndarray, np.ndarray] | None:
 
 def group_codes(frame: pd.DataFrame, names: list[str]) -> np.ndarray:
     """One code per row for its values in the columns ``names`` (missing values are one value), numbered in
-    order of first appearance: ``groupby(names).ngroup()`` without pandas' groupby machinery. The text
-    columns' codes are combined first; a number column that holds one value in each of those groups (a
-    bearing's d, D, C0 for its designation) adds nothing and is only checked; from the first that varies inside
-    a group on, the groups and the numbers are hashed together (:func:`_hashed_codes`). Where the frame numbers
-    its bearings (:func:`with_bearing_groups`) and ``names`` are all :data:`BEARING_INPUTS`, only the first row
-    of each bearing is looked at."""
+    order of first appearance: ``groupby(names).ngroup()`` without pandas' groupby machinery
+    (:func:`group_rows`)."""
+    return group_rows(frame, names)[0]
+
+
+def group_rows(frame: pd.DataFrame, names: list[str]) -> tuple[np.ndarray, np.ndarray]:
+    """(:func:`group_codes`, the first row of each group, as :func:`first_rows` finds it): found on the way, not
+    looked for again. The text columns' codes are combined first; a number column that holds one value in each
+    of those groups (a bearing's d, D, C0 for its designation) adds nothing and is only checked; from the first
+    that varies inside a group on, the groups and the numbers are hashed together (:func:`_hashed_codes`).
+    Where the frame numbers its bearings (:func:`with_bearing_groups`) and ``names`` are all
+    :data:`BEARING_INPUTS`, only the first row of each bearing is looked at."""
     numbered = bearing_rows(frame) if set(names) <= set(BEARING_INPUTS) else None
     if numbered is not None:
         bearings, first = numbered
-        return group_codes(frame[list(names)].iloc[first], names)[bearings]
+        codes, first_bearings = group_rows(frame[list(names)].iloc[first], names)
+        # (bearings are numbered in order of first appearance: a group's first row is that of its first bearing)
+        return codes[bearings], first[first_bearings]
     size = len(frame)
     text_parts = []  # (codes + 1, count + 1) of each text column: missing (-1) is a code of its own
     number_bits = []  # float columns by their bits: -0.0 and other NaNs are values of their own
@@ -448,8 +456,9 @@ def group_codes(frame: pd.DataFrame, names: list[str]) -> np.ndarray:
     first = first_rows(codes)
     for k, bits in enumerate(number_bits):
         if not np.array_equal(bits, bits[first][codes]):  # (a gather and a comparison: no hash table)
-            return _hashed_codes(([codes.view(np.uint64)] if text_parts else []) + number_bits[k:])
-    return codes
+            codes = _hashed_codes(([codes.view(np.uint64)] if text_parts else []) + number_bits[k:])
+            return codes, first_rows(codes)
+    return codes, first
 
 
 #: odd 64-bit multiplier of the hash that mixes key columns (2^64 / golden ratio)

@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from bearingheat.calc.supports import first_rows, group_codes, number_column, object_column
+from bearingheat.calc.supports import group_rows, number_column, object_column
 from bearingheat.catalogue.viscosity import iso_vg_grades
 from bearingheat.kernels.viscosity import (DEFAULT_VISCOSITY_INDEX, MIN_VISCOSITY, iso_vg_nu40,
                                            nu100_from_viscosity_index, walther_constants)
@@ -37,8 +37,7 @@ def viscosity_model_rows(frame: pd.DataFrame):
     names = [name for name in OIL_LINE_INPUTS if name in frame.columns]
     if not names or len(frame) < 2:
         return _viscosity_model(frame)
-    codes = group_codes(frame, names)
-    first = first_rows(codes)
+    codes, first = group_rows(frame, names)
     if len(first) == len(frame):
         return _viscosity_model(frame)
     A, B, distinct_problems = _viscosity_model(frame.iloc[first])

@@ -159,6 +159,8 @@ def test_group_codes_are_pandas_groups_in_order_of_first_appearance(distinct):
     names = [*frame.columns]
     expected = frame.groupby(names, sort=False, dropna=False, observed=True).ngroup().to_numpy()
     assert np.array_equal(sp.group_codes(frame, names), expected)
+    codes, first = sp.group_rows(frame, names)  # (the first rows found on the way are those of the codes)
+    assert np.array_equal(codes, expected) and np.array_equal(first, sp.first_rows(expected))
 
 
 _TEXTS = st.sampled_from(["6205", "6206", "NU208-E", None])
@@ -180,6 +182,13 @@ def test_group_codes_are_the_distinct_keys_in_order_of_first_appearance(rows, nu
     numbering: dict = {}
     expected = [numbering.setdefault(key, len(numbering)) for key in keys]
     assert sp.group_codes(frame, ["designation", "series", "d", "D"]).tolist() == expected
+    codes, first = sp.group_rows(frame, ["designation", "series", "d", "D"])
+    assert codes.tolist() == expected and first.tolist() == [expected.index(k) for k in range(len(numbering))]
+    # where the frame numbers its bearings, the groups of some of their inputs are found from each bearing's first row
+    numbered = sp.with_bearing_groups(frame)
+    for names in (["designation"], ["series", "D"], ["d"]):
+        codes, first = sp.group_rows(numbered, names)
+        assert np.array_equal(codes, sp.group_codes(frame, names)) and np.array_equal(first, sp.first_rows(codes))
 
 
 def test_group_codes_survive_a_hash_collision(monkeypatch):
@@ -192,6 +201,7 @@ def test_group_codes_survive_a_hash_collision(monkeypatch):
     names = [*frame.columns]
     expected = frame.groupby(names, sort=False, dropna=False, observed=True).ngroup().to_numpy()
     assert np.array_equal(sp.group_codes(frame, names), expected)
+    assert np.array_equal(sp.group_rows(frame, names)[1], sp.first_rows(expected))
 
 
 def test_bearing_groups_give_the_groups_of_the_columns_themselves():
@@ -265,12 +275,13 @@ def test_calc_groups_by_its_bearing_numbers_as_by_the_columns(case, monkeypatch)
     tables["filled"] = (filled, {})
     checked = []
 
-    def checked_group_codes(frame, names):
-        codes = sp.group_codes(frame, names)
+    def checked_group_rows(frame, names):
+        codes, first = sp.group_rows(frame, names)
         if sp.BEARING_GROUP in frame.columns:
-            assert np.array_equal(codes, sp.group_codes(frame.drop(columns=[sp.BEARING_GROUP]), names)), names
+            by_columns, first_by_columns = sp.group_rows(frame.drop(columns=[sp.BEARING_GROUP]), names)
+            assert np.array_equal(codes, by_columns) and np.array_equal(first, first_by_columns), names
             checked.append(tuple(names))
-        return codes
+        return codes, first
 
     original_build = sp.build_support_arrays
 
@@ -287,8 +298,8 @@ def test_calc_groups_by_its_bearing_numbers_as_by_the_columns(case, monkeypatch)
             checked.append("support arrays")
         return supports
 
-    monkeypatch.setattr(fill, "group_codes", checked_group_codes)
-    monkeypatch.setattr(reference_speed, "group_codes", checked_group_codes)
+    monkeypatch.setattr(fill, "group_rows", checked_group_rows)
+    monkeypatch.setattr(reference_speed, "group_rows", checked_group_rows)
     monkeypatch.setattr(models, "build_support_arrays", checked_build)
     table, options = tables[case]
     assert (bh.calc(table, **options)["status"] != "error").all()
