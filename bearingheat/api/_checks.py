@@ -13,7 +13,7 @@ import numpy as np
 import numpy.typing as npt
 import pandas as pd
 
-from bearingheat.calc.contract import column, input_units, range_problems
+from bearingheat.calc.contract import column, input_units, inside_ranges, range_problems
 from bearingheat.calc.messages import Labels
 from bearingheat.errors import BearingheatError
 from bearingheat.units import Magnitude, QuantityLike, magnitude
@@ -118,9 +118,14 @@ def _range_warnings(name: str, values: float | np.ndarray, shape: tuple[int, ...
     scalar = np.ndim(values) == 0
     flat = np.asarray(values, dtype=float).reshape(1) if scalar or not shape else \
         np.broadcast_to(values, shape).ravel()
-    if np.isnan(flat).any():
+    if not flat.size:
+        return []
+    low, high = flat.min(), flat.max()  # NaN where any number is NaN (numpy's min and max carry it)
+    if np.isnan(low) or np.isnan(high):
         i = int(np.flatnonzero(np.isnan(flat))[0])
         raise error(f"{name}: nan is not a number; leave the argument out where it is not known{where(i, shape)}")
+    if inside_ranges(name, low, high):  # every point finite and inside: nothing to say
+        return []
     errors, found = range_problems(name, flat, _describe(name, flat))
     if errors:
         i, message = errors[0]

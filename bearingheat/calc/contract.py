@@ -53,6 +53,7 @@ __all__ = [
     "parse_header",
     "result_column",
     "register_choices",
+    "inside_ranges",
     "range_problems",
     "RANGES",
     "RANGE_SOURCES",
@@ -483,6 +484,18 @@ def markdown_table(kind: str = "input") -> str:
     return "\n".join(rows)
 
 
+def inside_ranges(name: str, low: float, high: float) -> bool:
+    """Whether numbers from ``low`` to ``high`` are finite and inside the contract's narrower range of ``name``
+    (plausible lies inside valid), so that none of them has a range problem.
+
+    >>> inside_ranges("T_amb", 20.0, 40.0), inside_ranges("T_amb", 20.0, 250.0), inside_ranges("T_amb", 20.0, np.nan)
+    (True, False, False)
+    """
+    entry = column(name)
+    inner = entry.plausible or entry.valid
+    return bool(np.isfinite(low) and np.isfinite(high) and (inner is None or inner[0] <= low and high <= inner[1]))
+
+
 def range_problems(name: str, values: np.ndarray, describe: Callable[[int], str]
                    ) -> tuple[list[tuple[int, str]], list[tuple[int, str]]]:
     """(errors, warnings) of the numbers of an input column against its contract ranges (catalogue units).
@@ -496,11 +509,9 @@ def range_problems(name: str, values: np.ndarray, describe: Callable[[int], str]
     """
     entry = column(name)
     values = np.asarray(values, dtype=float)
-    inner = entry.plausible or entry.valid  # the narrower range (plausible lies inside valid)
-    if inner is not None and len(values):
-        low, high = np.fmin.reduce(values), np.fmax.reduce(values)  # NaN (not given) left out; NaN if all are
-        if np.isfinite(low) and np.isfinite(high) and inner[0] <= low and high <= inner[1]:  # all finite, inside
-            return [], []
+    # NaN (not given) left out of the smallest and the largest; NaN if all are
+    if len(values) and inside_ranges(name, np.fmin.reduce(values), np.fmax.reduce(values)):
+        return [], []
     unit = {"1": "", "delta_degC": "K"}.get(entry.unit, entry.unit)
     errors = [(int(i), f"{describe(int(i))} is not a finite number") for i in np.flatnonzero(np.isinf(values))]
     warnings: list[tuple[int, str]] = []
