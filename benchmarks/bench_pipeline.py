@@ -10,10 +10,11 @@ On the demo's supports (examples/gearbox_shaft.csv) tiled to ROWS rows with vari
    per-row loop of plain floats; the code of that day gives 51 ms and 13.4x on the AVX-512 machine, and calc
    took 32 s and 44 s there, the issue's 22 s and 44 s). Measured against the same formulas without
    checks, a minimal numpy version written here (P0, P1, f1, M0, M1, MR, NR in the model's order; checked
-   against calc's MR and NR to 1e-12) and against the memory-bandwidth floor (copying the per-row arrays it reads);
+   against calc's MR and NR to 1e-12) and against the memory-bandwidth floor (copying the per-row arrays it
+   reads);
 2. its torque formula alone, :func:`bearingheat.kernels.friction.catalogue_friction_torque` (M0 + M1,
    coefficients resolved), against a minimal numpy version written here and against its floor (no target;
-   the ratios of calc to it are printed too: earlier sessions held the targets against it);
+   the ratios of calc to it are printed too: until 2026-11-28 the targets were held against it);
 3. ``bh.calc(df)`` against the kernel on the same rows: the overhead of the table API (designations,
    units, checks, messages), without and with the heat-balance columns (targets 10x and 30x), and with ν taken
    from oil data at each row's operating temperature (no target: T_op is bracketed there, not a secant);
@@ -132,8 +133,9 @@ def _peak_lines(rows: int, folder: Path) -> dict[str, str]:
     source = folder / "big.csv"
     return {
         "python + package": "import bearingheat, bearingheat.cli",
-        "torque formula (M0 + M1)": (f"import numpy as np; from bearingheat.kernels import friction; r = np.random.default_rng(1); "
-                   f"a = [r.uniform(1, 2, {rows}) for _ in range(6)]; friction.catalogue_friction_torque(*a)"),
+        "torque formula (M0 + M1)": (f"import numpy as np; from bearingheat.kernels import friction; "
+                                     f"r = np.random.default_rng(1); a = [r.uniform(1, 2, {rows}) for _ in range(6)]; "
+                                     "friction.catalogue_friction_torque(*a)"),
         "bh.calc, friction only": f"import bearingheat as bh; from common import demo_rows; "
                                   f"bh.calc(demo_rows({rows}, heat_balance=False))",
         "bh.calc, with heat balance": f"import bearingheat as bh; from common import demo_rows; "
