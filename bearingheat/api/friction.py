@@ -376,15 +376,17 @@ def friction_torque(designation: str | None = None, *, n: QuantityLike, nu: Quan
     related = {name: np.broadcast_to(value, shape).reshape(size)
                for name, value in (("n", arrays["n"]), ("n_G", n_G), ("Fr", arrays["Fr"]), ("Fa", arrays["Fa"]),
                                    ("C0", arrays["C0"]))}
-    for position, _, message in implausible_values(related, ARGUMENT_LABELS, np.ones(size, dtype=bool),
+    every_point = np.broadcast_to(True, (size,))  # (read-only views: nothing per point to allocate)
+    for position, _, message in implausible_values(related, ARGUMENT_LABELS, every_point,
                                                    lambda: [designation] * size):
         some.setdefault(position, []).append(message)
     if not friction_model.own_minimum_load:  # a load below the bearing table's minimum load (the SKF model: its own)
         loads = {**{name: related[name] for name in ("Fr", "Fa", "C0")},
                  "C": np.broadcast_to(np.asarray(rating, dtype=float), shape).reshape(size)}
         types = np.broadcast_to(np.asarray(friction_model.bearing_keys(supports)[0], dtype=object), (size,))
-        one_bearing = (np.zeros(size, dtype=np.intp), np.zeros(1, dtype=np.intp))  # its minimum worked out once
-        for position, _, message in below_minimum_load(loads, types, ARGUMENT_LABELS, np.ones(size, dtype=bool),
+        # every point is of bearing 0, whose first point is 0: its minimum worked out once
+        one_bearing = (np.broadcast_to(np.intp(0), (size,)), np.zeros(1, dtype=np.intp))
+        for position, _, message in below_minimum_load(loads, types, ARGUMENT_LABELS, every_point,
                                                        2.0 if arrangement == "paired" else 1.0, one_bearing):
             some.setdefault(position, []).append(message)
     # notes on the bearing, on every point: the designation's notes of the catalogue model's tables where the model

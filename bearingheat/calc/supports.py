@@ -29,9 +29,9 @@ from bearingheat.errors import DesignationError
 
 __all__ = ["SupportArrays", "build_support_arrays", "bearing_constants", "NUMBER_INPUTS", "KEY_INPUTS",
            "text_column", "number_column", "zero_where_blank", "text_codes", "distinct_keys", "group_codes",
-           "group_rows", "text_or_default", "value_codes", "text_categorical", "fill_blank", "blanks_filled", "object_column",
-           "column_codes", "per_distinct", "coded_categorical", "first_rows", "nonblank", "text_in", "BEARING_INPUTS",
-           "BEARING_GROUP", "with_columns", "with_bearing_groups", "bearing_rows", "printed_size"]
+           "group_rows", "text_or_default", "value_codes", "text_categorical", "fill_blank", "blanks_filled",
+           "object_column", "column_codes", "per_distinct", "coded_categorical", "first_rows", "nonblank", "text_in",
+           "BEARING_INPUTS", "BEARING_GROUP", "with_columns", "with_bearing_groups", "bearing_rows", "printed_size"]
 
 #: numeric inputs of the friction model, in catalogue units
 NUMBER_INPUTS = ("d", "D", "B", "C0", "Y", "e", "X0", "Y0", "alpha", "f0", "f1", "f2", "n", "nu", "Fr", "Fa")
